@@ -1,0 +1,17 @@
+# Every dependency is a Debian 12 package (scripts/install_deps.sh installs them).
+find_package(embree 3.13 REQUIRED CONFIG)
+find_package(TBB REQUIRED CONFIG)
+find_package(glm REQUIRED CONFIG)
+find_package(TinyGLTF REQUIRED CONFIG)
+find_package(nlohmann_json REQUIRED CONFIG)
+find_package(fmt REQUIRED CONFIG)
+find_package(CLI11 REQUIRED CONFIG)
+
+# OpenImageIO's CMake config references /usr/bin/iconvert and /usr/include/opencv4 on Debian 12,
+# so it is found through pkg-config, which has no such quirks.
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(OpenImageIO REQUIRED IMPORTED_TARGET OpenImageIO)
+
+if(MATPREDICT_BUILD_TESTS)
+  find_package(Catch2 2.13 REQUIRED CONFIG)
+endif()

@@ -1,0 +1,19 @@
+# `cmake --install` exports matpredict::matgeom and matpredict::matrender for find_package(matpredict).
+include(CMakePackageConfigHelpers)
+install(TARGETS matgeom matrender EXPORT matpredictTargets
+        LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
+        INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(DIRECTORY libmatgeom/include/matgeom libmatrender/include/matrender
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(EXPORT matpredictTargets NAMESPACE matpredict::
+        DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/matpredict)
+configure_package_config_file(cmake/matpredictConfig.cmake.in
+        ${CMAKE_CURRENT_BINARY_DIR}/matpredictConfig.cmake
+        INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/matpredict)
+write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/matpredictConfigVersion.cmake
+        COMPATIBILITY SameMinorVersion)
+install(FILES ${CMAKE_CURRENT_BINARY_DIR}/matpredictConfig.cmake
+              ${CMAKE_CURRENT_BINARY_DIR}/matpredictConfigVersion.cmake
+        DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/matpredict)

@@ -1,0 +1,17 @@
+#pragma once
+// glTF 2.0 (.gltf with external or embedded buffers, and .glb) reader built on tinygltf.
+#include <string>
+
+#include "matgeom/object_asset.h"
+
+namespace matgeom {
+
+// Reads every mesh primitive of the default scene (or of all root nodes when there is none),
+// applies node transforms, converts glTF's +Y up to Blender's +Z up ((x, y, z) -> (x, -z, y)),
+// and makes one part per glTF material (primitives without one share a default slot).
+// Normals are computed (area-weighted) where missing; tangents with compute_tangents() where
+// missing and UVs exist. Throws std::runtime_error whose message starts with the path and names
+// the problem (unreadable, not glTF, index out of range, non-finite vertex, no triangles...).
+ObjectAsset read_gltf(const std::string& path);
+
+}  // namespace matgeom

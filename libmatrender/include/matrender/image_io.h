@@ -1,0 +1,31 @@
+#pragma once
+// Writing frames: linear EXR and display PNG through OpenImageIO. Every file is written to a
+// temporary name in the same folder and renamed, so a crash never leaves a half-written file.
+#include <string>
+#include <vector>
+
+#include "matrender/frame.h"
+
+namespace matrender {
+
+// Linear float EXR with the given channel names, interleaved data, row 0 = top.
+void write_exr(const std::string& path, int width, int height,
+               const std::vector<std::string>& channels, const float* data);
+
+// 8-bit PNG from linear RGB(A): exposure in stops, then the sRGB OETF ("Standard" view), clipped.
+// `alpha` may be null. Colour is premultiplied by alpha in the input, as rendered.
+void write_display_png(const std::string& path, int width, int height, const float* rgb,
+                       const float* alpha, double exposure_stops = 0.0);
+
+// 8-bit or 16-bit PNG of raw values (no transfer curve), `channels` interleaved, each value
+// mapped by v * scale + offset, rounded and clamped.
+void write_data_png(const std::string& path, int width, int height, int channels, const float* data,
+                    double scale, double offset, bool sixteen_bit);
+
+// Writes every filled buffer of `frame` into `folder` as <stem>_<pass>.<ext> and returns the
+// paths written: color.exr (RGBA), color.png (display), and per AOV an EXR (exact values) plus a
+// PNG for viewing. Creates `folder` if needed.
+std::vector<std::string> write_frame(const FrameBuffers& frame, const std::string& folder,
+                                     const std::string& stem, double exposure_stops = 0.0);
+
+}  // namespace matrender

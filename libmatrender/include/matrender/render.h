@@ -1,0 +1,42 @@
+#pragma once
+// Unidirectional path tracing with next-event estimation and MIS (docs/conventions.md).
+#include <atomic>
+#include <cstdint>
+#include <functional>
+
+#include "matrender/camera.h"
+#include "matrender/frame.h"
+#include "matrender/scene.h"
+
+namespace matrender {
+
+struct RenderSettings {
+  int samples_per_pixel = 64;
+  uint32_t seed = 0;
+  int threads = 0;  // 0 = all hardware threads; the image does not depend on this
+  // Cycles 3.4 defaults.
+  int max_bounces = 12;
+  int max_diffuse_bounces = 4;
+  int max_glossy_bounces = 4;
+  bool transparent_background = false;  // camera rays that miss give 0 instead of the background
+  uint32_t aovs = AovAll;
+  // Called from the calling thread with the finished fraction in [0, 1].
+  std::function<void(double)> progress;
+  // Checked between tiles; when it becomes true the render stops and reports cancelled.
+  const std::atomic<bool>* cancel = nullptr;
+};
+
+struct RenderStats {
+  double seconds = 0.0;
+  uint64_t camera_samples = 0;
+  uint64_t rays = 0;               // closest-hit and shadow rays traced
+  uint64_t discarded_samples = 0;  // path contributions that were NaN or Inf and were dropped
+  bool cancelled = false;
+};
+
+// Renders `scene` (committing it if needed) through `camera` into `frame` (resized to the
+// camera's resolution). Thread-safe for concurrent renders of one committed scene.
+RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& settings,
+                   FrameBuffers& frame);
+
+}  // namespace matrender

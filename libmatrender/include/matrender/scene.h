@@ -1,0 +1,56 @@
+#pragma once
+// A renderable scene: triangle meshes with one material per part, lamps and a background.
+// The BVH is built once by commit(); lamps and the background can change afterwards without
+// rebuilding it, and the same scene renders from any number of cameras.
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "matgeom/mesh.h"
+#include "matrender/light.h"
+#include "matrender/material.h"
+
+namespace matrender {
+
+class SceneData;  // internal: geometry, materials and the Embree scene
+
+class Scene {
+ public:
+  Scene();
+  ~Scene();
+  Scene(Scene&&) noexcept;
+  Scene& operator=(Scene&&) noexcept;
+
+  uint32_t add_material(Material material);
+  const Material& material(uint32_t id) const;
+  size_t material_count() const;
+
+  // Adds a copy of `mesh`. part_materials[k] is the material id of part k and must cover every
+  // part id the mesh uses. Throws std::invalid_argument for an invalid mesh or material id, and
+  // std::logic_error after commit().
+  uint32_t add_mesh(const matgeom::TriangleMesh& mesh, const std::vector<uint32_t>& part_materials);
+
+  void add_light(const Light& light);
+  void clear_lights();
+  const std::vector<Light>& lights() const;
+
+  // Uniform background radiance seen by camera rays that miss and lighting the scene.
+  void set_background(const glm::vec3& radiance);
+  glm::vec3 background() const;
+
+  // Builds the BVH (Embree, build quality high). Idempotent; render() calls it when needed.
+  void commit();
+  bool committed() const;
+
+  size_t triangle_count() const;
+  double bvh_build_seconds() const;
+
+  const SceneData& data() const;  // for the integrator and tests
+
+ private:
+  std::unique_ptr<SceneData> data_;
+};
+
+}  // namespace matrender

@@ -1,0 +1,56 @@
+#pragma once
+// Image textures: float RGBA texels in scene-linear or non-colour data, sampled bilinearly like
+// Cycles' "Linear" interpolation (texel centres at (i + 0.5) / W, no mipmaps).
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace matrender {
+
+enum class ColorSpace { SRGB, NonColor };
+enum class Wrap { Repeat, Clamp };
+
+class Texture {
+ public:
+  // Loads any format OpenImageIO reads (PNG, JPEG, EXR, TIFF, ...). Throws std::runtime_error
+  // naming the path and the problem.
+  static std::shared_ptr<const Texture> load(const std::string& path, ColorSpace space,
+                                             Wrap wrap = Wrap::Repeat);
+  // From 8-bit pixels in memory, rows top to bottom.
+  static std::shared_ptr<const Texture> from_pixels8(int width, int height, int channels,
+                                                     const uint8_t* pixels, ColorSpace space,
+                                                     Wrap wrap = Wrap::Repeat,
+                                                     std::string name = "<memory>");
+  // From float pixels (already linear), rows top to bottom.
+  static std::shared_ptr<const Texture> from_pixelsf(int width, int height, int channels,
+                                                     const float* pixels, ColorSpace space,
+                                                     Wrap wrap = Wrap::Repeat,
+                                                     std::string name = "<memory>");
+
+  // Bilinear lookup at (u, v), v = 0 at the bottom row (OpenGL/Blender UV convention).
+  // Returns linear RGBA: sRGB textures are interpolated on the encoded values and converted
+  // afterwards, as Cycles does for 8-bit images.
+  glm::vec4 sample(glm::vec2 uv) const;
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  const std::string& name() const { return name_; }
+  ColorSpace color_space() const { return space_; }
+
+ private:
+  Texture() = default;
+  int width_ = 0;
+  int height_ = 0;
+  ColorSpace space_ = ColorSpace::SRGB;
+  Wrap wrap_ = Wrap::Repeat;
+  bool convert_srgb_after_filtering_ = false;
+  std::string name_;
+  std::vector<glm::vec4> texels_;  // rows bottom to top after loading
+};
+
+using TexturePtr = std::shared_ptr<const Texture>;
+
+}  // namespace matrender
