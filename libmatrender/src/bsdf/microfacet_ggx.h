@@ -1,0 +1,64 @@
+#pragma once
+// Isotropic GGX (Trowbridge-Reitz) reflection with separable Smith shadowing, as Cycles 3.4's
+// single-scatter GGX (intern/cycles/kernel/closure/bsdf_microfacet.h), sampled from the
+// distribution of visible normals (Heitz 2018, "Sampling the GGX Distribution of Visible
+// Normals", JCGT 7(4)). Local frame: +Z is the shading normal; directions point away.
+#include <cmath>
+
+#include <glm/glm.hpp>
+
+#include "sampling/warp.h"
+
+namespace matrender {
+
+// Below this alpha^2 Cycles treats the lobe as a perfect mirror (bsdf_microfacet.h: the
+// "singular" case alpha_x * alpha_y <= 1e-7).
+constexpr float kGgxSingularAlpha2 = 1e-7f;
+
+// D(m) = alpha^2 / (pi (cos^2 (alpha^2 - 1) + 1)^2)   (Walter et al. 2007, eq. 33)
+inline float ggx_d(float cos_m, float alpha) {
+  if (cos_m <= 0.0f) return 0.0f;
+  const float a2 = alpha * alpha;
+  const float c2 = cos_m * cos_m;
+  const float denom = c2 * (a2 - 1.0f) + 1.0f;
+  return a2 / (kPi * denom * denom);
+}
+
+// Smith G1 = 2 / (1 + sqrt(1 + alpha^2 tan^2 theta))   (Walter et al. 2007, eq. 34)
+inline float ggx_g1(float cos_theta, float alpha) {
+  if (cos_theta <= 0.0f) return 0.0f;
+  const float c2 = cos_theta * cos_theta;
+  const float a2_tan2 = alpha * alpha * (1.0f - c2) / c2;
+  return 2.0f / (1.0f + std::sqrt(1.0f + a2_tan2));
+}
+
+// Visible normal for view direction wo (wo.z > 0), Heitz 2018 listing 1.
+inline glm::vec3 ggx_sample_visible_normal(const glm::vec3& wo, float alpha, glm::vec2 u) {
+  const glm::vec3 vh = glm::normalize(glm::vec3(alpha * wo.x, alpha * wo.y, wo.z));
+  const float len2 = vh.x * vh.x + vh.y * vh.y;
+  const glm::vec3 t1 = len2 > 0.0f ? glm::vec3(-vh.y, vh.x, 0.0f) / std::sqrt(len2)
+                                   : glm::vec3(1.0f, 0.0f, 0.0f);
+  const glm::vec3 t2 = glm::cross(vh, t1);
+  const float r = std::sqrt(u.x);
+  const float phi = 2.0f * kPi * u.y;
+  const float p1 = r * std::cos(phi);
+  const float s = 0.5f * (1.0f + vh.z);
+  const float p2 = (1.0f - s) * std::sqrt(std::max(0.0f, 1.0f - p1 * p1)) + s * r * std::sin(phi);
+  const glm::vec3 nh =
+      p1 * t1 + p2 * t2 + std::sqrt(std::max(0.0f, 1.0f - p1 * p1 - p2 * p2)) * vh;
+  return glm::normalize(glm::vec3(alpha * nh.x, alpha * nh.y, std::max(1e-7f, nh.z)));
+}
+
+inline glm::vec3 reflect_about(const glm::vec3& wo, const glm::vec3& m) {
+  return 2.0f * glm::dot(wo, m) * m - wo;
+}
+
+// pdf of wi under visible-normal sampling: G1(wo) D(m) / (4 cos_o)   (Heitz 2018, eq. 17 with
+// the reflection Jacobian 1 / (4 wo.m)).
+inline float ggx_reflection_pdf(const glm::vec3& wo, const glm::vec3& wi, float alpha) {
+  if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
+  const glm::vec3 m = glm::normalize(wo + wi);
+  return ggx_g1(wo.z, alpha) * ggx_d(m.z, alpha) / (4.0f * wo.z);
+}
+
+}  // namespace matrender

@@ -1,0 +1,64 @@
+#pragma once
+// The Principled BSDF of Blender 3.4 Cycles restricted to what matpredict's materials use:
+// a diffuse lobe weighted (1 - metallic) * base colour plus a GGX specular lobe with the
+// interpolated Fresnel, added on top (svm_closure.h, CLOSURE_BSDF_PRINCIPLED_ID). A material
+// without a lobe pays nothing for it: specular 0 and metallic 0 make no specular lobe at all.
+#include <glm/glm.hpp>
+
+#include "bsdf/fresnel.h"
+#include "matrender/material.h"
+
+namespace matrender {
+
+// Material inputs after texture lookups, for one shading point.
+struct PrincipledInputs {
+  glm::vec3 base_color{0.8f};
+  float metallic = 0.0f;
+  float roughness = 0.5f;
+  float specular = 0.5f;
+  float specular_tint = 0.0f;
+  DiffuseModel diffuse_model = DiffuseModel::Principled;
+};
+
+struct BsdfSample {
+  glm::vec3 wi{0.0f};
+  glm::vec3 weight{0.0f};  // f cos / pdf (for a delta lobe: its reflectance / selection prob.)
+  float pdf = 0.0f;        // solid-angle pdf of the whole mixture; 0 for a delta lobe
+  bool delta = false;      // mirror reflection of a singular GGX lobe
+  bool glossy = false;     // which lobe was sampled (Cycles' diffuse vs glossy bounce counts)
+};
+
+// All directions in the local shading frame: +Z = shading normal, pointing away from the surface.
+class PrincipledBsdf {
+ public:
+  PrincipledBsdf(const PrincipledInputs& inputs, const glm::vec3& wo);
+
+  // Sum over lobes of weight * f * cos(theta_i); *pdf receives the mixture pdf of sampling wi.
+  glm::vec3 eval(const glm::vec3& wi, float* pdf) const;
+
+  // Picks a lobe with u_lobe (proportional to the lobe's sample weight, as Cycles does) and a
+  // direction with u. Returns false when no direction could be made (no lobe, below horizon).
+  bool sample(float u_lobe, glm::vec2 u, BsdfSample* out) const;
+
+  bool has_diffuse() const { return diffuse_probability_ > 0.0f; }
+  bool has_specular() const { return diffuse_probability_ < 1.0f && specular_enabled_; }
+  // True when every lobe is a delta (light sampling cannot contribute).
+  bool is_delta_only() const { return !has_diffuse() && singular_; }
+
+  // Weight * f * cos of the lobes separately, for tests against the reference.
+  glm::vec3 eval_diffuse(const glm::vec3& wi) const;
+  glm::vec3 eval_specular(const glm::vec3& wi) const;
+
+ private:
+  glm::vec3 wo_;
+  glm::vec3 diffuse_weight_{0.0f};
+  DiffuseModel diffuse_model_;
+  float roughness_;
+  float alpha_;
+  bool singular_;
+  bool specular_enabled_;
+  InterpolatedFresnel fresnel_;
+  float diffuse_probability_ = 0.0f;  // 1 - specular probability; 0 when there is no diffuse lobe
+};
+
+}  // namespace matrender
