@@ -8,14 +8,15 @@
 
 namespace matrender {
 
-// A parameter is a constant or a texture; a constant costs no lookup.
+// A parameter is a constant, or a constant factor times a texture (Blender's importer multiplies
+// glTF factors and textures the same way). A constant costs no lookup.
 struct ColorParam {
   glm::vec3 value{0.8f};
-  TexturePtr texture;  // when set, replaces value (RGB of the texture)
+  TexturePtr texture;  // when set, the result is value * texture RGB
 };
 struct ScalarParam {
   float value = 0.0f;
-  TexturePtr texture;  // when set, replaces value
+  TexturePtr texture;  // when set, the result is value * texture[channel]
   int channel = 0;     // which texture channel (0 = R, 1 = G, 2 = B, 3 = A)
 };
 

@@ -20,7 +20,8 @@ struct RenderSettings {
   int max_glossy_bounces = 4;
   bool transparent_background = false;  // camera rays that miss give 0 instead of the background
   uint32_t aovs = AovAll;
-  // Called from the calling thread with the finished fraction in [0, 1].
+  // Called with the finished fraction in [0, 1] after each tile, from a render thread; calls are
+  // serialised and the fraction never decreases.
   std::function<void(double)> progress;
   // Checked between tiles; when it becomes true the render stops and reports cancelled.
   const std::atomic<bool>* cancel = nullptr;

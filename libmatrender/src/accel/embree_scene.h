@@ -1,0 +1,41 @@
+#pragma once
+// The only place that talks to Embree: builds one BVH over all triangle meshes and answers
+// closest-hit and occlusion queries for single rays.
+#include <cstdint>
+#include <vector>
+
+#include <embree3/rtcore.h>
+#include <glm/glm.hpp>
+
+namespace matrender {
+
+struct RayHit {
+  float t = 0.0f;
+  uint32_t mesh = RTC_INVALID_GEOMETRY_ID;  // index of the mesh as added
+  uint32_t triangle = 0;
+  float u = 0.0f, v = 0.0f;  // barycentrics of vertices 1 and 2
+  bool hit() const { return mesh != RTC_INVALID_GEOMETRY_ID; }
+};
+
+class EmbreeScene {
+ public:
+  EmbreeScene();
+  ~EmbreeScene();
+  EmbreeScene(const EmbreeScene&) = delete;
+  EmbreeScene& operator=(const EmbreeScene&) = delete;
+
+  // Returns the mesh index (0, 1, ...). Arrays are copied into Embree's buffers.
+  uint32_t add_triangle_mesh(const std::vector<glm::vec3>& positions,
+                             const std::vector<glm::uvec3>& triangles);
+  void commit();
+
+  RayHit intersect(const glm::vec3& origin, const glm::vec3& dir, float t_max) const;
+  bool occluded(const glm::vec3& origin, const glm::vec3& dir, float t_max) const;
+
+ private:
+  RTCDevice device_ = nullptr;
+  RTCScene scene_ = nullptr;
+  uint32_t mesh_count_ = 0;
+};
+
+}  // namespace matrender

@@ -1,0 +1,52 @@
+#include "film/pixel_filter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace matrender {
+
+double blackman_harris_weight(double x) {
+  if (std::abs(x) > PixelFilterSampler::kRadius) return 0.0;
+  const double a = 2.0 * M_PI * (x / (2.0 * PixelFilterSampler::kRadius) + 0.5);
+  return 0.35875 - 0.48829 * std::cos(a) + 0.14128 * std::cos(2.0 * a) - 0.01168 * std::cos(3.0 * a);
+}
+
+PixelFilterSampler::PixelFilterSampler() {
+  // Tabulate the CDF finely with the trapezoid rule, then invert it at kTableSize + 1 evenly
+  // spaced probabilities by linear interpolation between CDF samples.
+  constexpr int kCdfSteps = 1 << 16;
+  const double dx = 2.0 * kRadius / kCdfSteps;
+  std::vector<double> cdf(kCdfSteps + 1, 0.0);
+  for (int i = 1; i <= kCdfSteps; ++i) {
+    const double x0 = -kRadius + (i - 1) * dx;
+    cdf[i] = cdf[i - 1] + 0.5 * dx * (blackman_harris_weight(x0) + blackman_harris_weight(x0 + dx));
+  }
+  const double total = cdf.back();
+  for (double& c : cdf) c /= total;
+
+  int step = 0;
+  for (int k = 0; k <= kTableSize; ++k) {
+    const double p = static_cast<double>(k) / kTableSize;
+    while (step < kCdfSteps - 1 && cdf[step + 1] < p) ++step;
+    const double span = cdf[step + 1] - cdf[step];
+    const double t = span > 0.0 ? std::clamp((p - cdf[step]) / span, 0.0, 1.0) : 0.0;
+    inverse_cdf_[k] = static_cast<float>(-kRadius + (step + t) * dx);
+  }
+}
+
+float PixelFilterSampler::inverse_cdf(float u) const {
+  const float x = std::clamp(u, 0.0f, 1.0f) * kTableSize;
+  const int i = std::min(static_cast<int>(x), kTableSize - 1);
+  const float t = x - static_cast<float>(i);
+  return inverse_cdf_[i] + t * (inverse_cdf_[i + 1] - inverse_cdf_[i]);
+}
+
+glm::vec2 PixelFilterSampler::sample(glm::vec2 u) const { return {inverse_cdf(u.x), inverse_cdf(u.y)}; }
+
+const PixelFilterSampler& blackman_harris_sampler() {
+  static const PixelFilterSampler sampler;
+  return sampler;
+}
+
+}  // namespace matrender

@@ -1,0 +1,31 @@
+#pragma once
+// Cycles' pixel filter: Blackman-Harris with filter_width 1.5 px, which Cycles doubles internally,
+// so the window spans [-1.5, 1.5] px. Offsets are importance-sampled separably through the
+// inverted CDF and every sample has weight 1 (Cycles' filter_table; the pixel is the plain mean).
+#include <array>
+
+#include <glm/glm.hpp>
+
+namespace matrender {
+
+// w(x) = 0.35875 - 0.48829 cos a + 0.14128 cos 2a - 0.01168 cos 3a, a = 2 pi (x / 3 + 0.5),
+// for x in [-1.5, 1.5] px (Blackman-Harris over the doubled width).
+double blackman_harris_weight(double x);
+
+class PixelFilterSampler {
+ public:
+  static constexpr double kRadius = 1.5;
+  PixelFilterSampler();
+  // Maps u in [0,1)^2 to an offset from the pixel centre, distributed as w(x) w(y).
+  glm::vec2 sample(glm::vec2 u) const;
+  // The 1-D inverse CDF (tests).
+  float inverse_cdf(float u) const;
+
+ private:
+  static constexpr int kTableSize = 1024;
+  std::array<float, kTableSize + 1> inverse_cdf_{};
+};
+
+const PixelFilterSampler& blackman_harris_sampler();
+
+}  // namespace matrender

@@ -1,0 +1,124 @@
+#include "integrator/path_tracer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "accel/ray_offset.h"
+#include "bsdf/principled.h"
+#include "bsdf/shading_frame.h"
+#include "sampling/warp.h"
+
+namespace matrender {
+namespace {
+
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+// Random-number pairs of one path vertex: (lamp choice, lobe choice), lamp point, BSDF
+// direction, (Russian roulette, unused).
+struct VertexDimensions {
+  uint32_t choices, light_point, bsdf_direction, roulette;
+  explicit VertexDimensions(int bounce)
+      : choices(1 + 4 * static_cast<uint32_t>(bounce)), light_point(choices + 1),
+        bsdf_direction(choices + 2), roulette(choices + 3) {}
+};
+
+float max_component(const glm::vec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
+
+}  // namespace
+
+glm::vec3 PathTracer::lamps_hit(const glm::vec3& origin, const glm::vec3& dir, float t_max,
+                                float bsdf_pdf, bool bsdf_delta) const {
+  glm::vec3 sum(0.0f);
+  for (const PreparedRectLight& lamp : lights_.rect_lights()) {
+    const auto t = lamp.intersect(origin, dir, t_max);
+    if (!t) continue;
+    const float weight =
+        bsdf_delta ? 1.0f : power_heuristic(bsdf_pdf, lights_.selection_pdf() * lamp.pdf(origin, dir, *t));
+    sum += weight * lamp.radiance();
+  }
+  return sum;
+}
+
+PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& camera_dir,
+                             const PixelSampler& sampler) const {
+  PathResult result;
+  glm::vec3 throughput(1.0f);
+  glm::vec3 origin = camera_origin;
+  glm::vec3 dir = camera_dir;
+  float bsdf_pdf = 0.0f;
+  bool bsdf_delta = false;
+  int diffuse_bounces = 0;
+  int glossy_bounces = 0;
+
+  for (int bounce = 0;; ++bounce) {
+    const RayHit hit = scene_.accel.intersect(origin, dir, kInfinity);
+    ++result.rays;
+    // Lamps are invisible to camera rays; later rays see them, weighted against NEE.
+    if (bounce > 0 && !lights_.rect_lights().empty())
+      result.radiance += throughput * lamps_hit(origin, dir, hit.hit() ? hit.t : kInfinity, bsdf_pdf, bsdf_delta);
+    if (!hit.hit()) {
+      if (bounce > 0 || !settings_.transparent_background) result.radiance += throughput * scene_.background;
+      break;
+    }
+
+    const glm::vec3 wo_world = -dir;
+    const SurfacePoint sp = shade_surface(scene_, hit, wo_world);
+    if (bounce == 0) {
+      result.hit = true;
+      result.first = sp;
+      result.first_distance = hit.t;
+    }
+    // Cycles terminates here, after the lamp and background hits of the arriving ray counted.
+    if (bounce > settings_.max_bounces || diffuse_bounces > settings_.max_diffuse_bounces ||
+        glossy_bounces > settings_.max_glossy_bounces)
+      break;
+
+    const VertexDimensions dims(bounce);
+    if (bounce > 0) {
+      // Russian roulette, continuation probability min(1, sqrt(max throughput)) (Cycles 3.4).
+      const float continue_probability = std::min(1.0f, std::sqrt(max_component(throughput)));
+      if (!(sampler.get_2d(dims.roulette).x < continue_probability)) break;
+      throughput /= continue_probability;
+    }
+
+    const ShadingFrame frame = ShadingFrame::from_normal(sp.shading_normal);
+    const glm::vec3 wo = frame.to_local(wo_world);
+    const PrincipledBsdf bsdf(sp.inputs, wo);
+    const glm::vec2 choices = sampler.get_2d(dims.choices);
+
+    // Next-event estimation: one lamp, one point on it.
+    if (!lights_.empty() && !bsdf.is_delta_only()) {
+      const auto light = lights_.sample(sp.position, choices.x, sampler.get_2d(dims.light_point));
+      if (light) {
+        float pdf_bsdf;
+        const glm::vec3 f = bsdf.eval(frame.to_local(light->wi), &pdf_bsdf);
+        if (max_component(f) > 0.0f) {
+          const glm::vec3 side = glm::dot(light->wi, sp.geometric_normal) >= 0.0f ? sp.geometric_normal
+                                                                                  : -sp.geometric_normal;
+          const glm::vec3 shadow_origin = offset_ray_origin(sp.position, side);
+          ++result.rays;
+          // Shorten the shadow ray by a relative margin so it cannot hit geometry touching the lamp.
+          if (!scene_.accel.occluded(shadow_origin, light->wi, light->distance * (1.0f - 1e-4f))) {
+            const float weight = light->delta ? 1.0f : power_heuristic(light->pdf, pdf_bsdf);
+            result.radiance += throughput * f * light->radiance * (weight / light->pdf);
+          }
+        }
+      }
+    }
+
+    BsdfSample s;
+    if (!bsdf.sample(choices.y, sampler.get_2d(dims.bsdf_direction), &s)) break;
+    throughput *= s.weight;
+    if (!(max_component(throughput) > 0.0f)) break;
+    bsdf_pdf = s.pdf;
+    bsdf_delta = s.delta;
+    (s.glossy ? glossy_bounces : diffuse_bounces)++;
+    dir = frame.to_world(s.wi);
+    origin = offset_ray_origin(sp.position, glm::dot(dir, sp.geometric_normal) >= 0.0f ? sp.geometric_normal
+                                                                                   : -sp.geometric_normal);
+  }
+  return result;
+}
+
+}  // namespace matrender

@@ -1,0 +1,49 @@
+#pragma once
+// Unidirectional path tracing with next-event estimation and multiple importance sampling
+// (Veach 1997, ch. 9), bounce limits and Russian roulette as Cycles 3.4 applies them.
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "lights/light_sampler.h"
+#include "sampling/owen_sobol.h"
+#include "scene/scene_data.h"
+#include "scene/surface_shading.h"
+
+namespace matrender {
+
+struct PathSettings {
+  int max_bounces = 12;
+  int max_diffuse_bounces = 4;
+  int max_glossy_bounces = 4;
+  bool transparent_background = false;
+};
+
+struct PathResult {
+  glm::vec3 radiance{0.0f};
+  bool hit = false;           // the camera ray hit a surface
+  SurfacePoint first;         // that surface (valid when hit)
+  float first_distance = 0.0f;
+  uint32_t rays = 0;          // closest-hit plus shadow rays traced
+};
+
+class PathTracer {
+ public:
+  PathTracer(const SceneData& scene, const LightSampler& lights, const PathSettings& settings)
+      : scene_(scene), lights_(lights), settings_(settings) {}
+
+  // Radiance along the camera ray; random numbers come from `sampler` pairs 1, 2, ... (pair 0 is
+  // the caller's pixel-filter offset).
+  PathResult trace(const glm::vec3& origin, const glm::vec3& dir, const PixelSampler& sampler) const;
+
+ private:
+  // MIS-weighted radiance of the area lamps in front of the segment [origin, origin + t_max dir].
+  glm::vec3 lamps_hit(const glm::vec3& origin, const glm::vec3& dir, float t_max, float bsdf_pdf,
+                      bool bsdf_delta) const;
+
+  const SceneData& scene_;
+  const LightSampler& lights_;
+  PathSettings settings_;
+};
+
+}  // namespace matrender

@@ -1,0 +1,178 @@
+#include "matrender/render.h"
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "film/camera_rays.h"
+#include "film/pixel_filter.h"
+#include "integrator/path_tracer.h"
+#include "lights/light_sampler.h"
+#include "sampling/owen_sobol.h"
+#include "scene/scene_data.h"
+
+namespace matrender {
+namespace {
+
+constexpr int kTileSize = 16;
+
+struct Tile {
+  int x0, y0, x1, y1;
+};
+
+std::vector<Tile> make_tiles(int width, int height) {
+  std::vector<Tile> tiles;
+  for (int y = 0; y < height; y += kTileSize)
+    for (int x = 0; x < width; x += kTileSize)
+      tiles.push_back({x, y, std::min(x + kTileSize, width), std::min(y + kTileSize, height)});
+  return tiles;
+}
+
+bool is_finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// Everything one pixel accumulates over its samples.
+struct PixelAccumulator {
+  glm::dvec3 color{0.0};
+  int hits = 0;
+  glm::dvec3 base_color{0.0};
+  double roughness = 0.0;
+  double metallic = 0.0;
+  glm::dvec3 normal{0.0};
+  float nearest_offset2 = std::numeric_limits<float>::infinity();
+  float depth = 0.0f;
+  int32_t label = 0;
+  int32_t part = -1;
+};
+
+void validate(const Camera& camera, const RenderSettings& settings) {
+  if (camera.width < 1 || camera.height < 1)
+    throw std::invalid_argument("render: image size must be at least 1 x 1, got " +
+                                std::to_string(camera.width) + " x " + std::to_string(camera.height));
+  if (!(camera.vertical_fov > 0.0 && camera.vertical_fov < M_PI))
+    throw std::invalid_argument("render: vertical field of view must be in (0, pi) radians");
+  if (settings.samples_per_pixel < 1) throw std::invalid_argument("render: samples per pixel must be >= 1");
+  if (settings.threads < 0) throw std::invalid_argument("render: threads must be >= 0");
+  if (settings.max_bounces < 0 || settings.max_diffuse_bounces < 0 || settings.max_glossy_bounces < 0)
+    throw std::invalid_argument("render: bounce limits must be >= 0");
+}
+
+}  // namespace
+
+RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& settings, FrameBuffers& frame) {
+  validate(camera, settings);
+  const auto start = std::chrono::steady_clock::now();
+  scene.commit();
+  const SceneData& data = scene.data();
+  const LightSampler lights(data.lights);
+  const PathTracer tracer(data, lights,
+                          {settings.max_bounces, settings.max_diffuse_bounces, settings.max_glossy_bounces,
+                           settings.transparent_background});
+  const CameraRays rays(camera);
+  const PixelFilterSampler& filter = blackman_harris_sampler();
+  const glm::mat3 world_to_camera = glm::transpose(glm::mat3(rays.right(), rays.up(), rays.back()));
+
+  frame.resize(camera.width, camera.height, settings.aovs);
+  const std::vector<Tile> tiles = make_tiles(camera.width, camera.height);
+  std::atomic<uint64_t> ray_count{0}, discarded{0}, samples{0};
+  std::atomic<size_t> tiles_done{0};
+  std::atomic<bool> cancelled{false};
+  std::mutex progress_mutex;
+  const uint32_t spp = static_cast<uint32_t>(settings.samples_per_pixel);
+
+  auto render_pixel = [&](int x, int y, uint64_t& tile_rays, uint64_t& tile_discarded) {
+    const uint32_t pixel_index = static_cast<uint32_t>(y) * static_cast<uint32_t>(camera.width) + static_cast<uint32_t>(x);
+    PixelAccumulator acc;
+    for (uint32_t s = 0; s < spp; ++s) {
+      const PixelSampler sampler(pixel_index, s, settings.seed);
+      const glm::vec2 offset = filter.sample(sampler.get_2d(0));
+      const glm::vec3 dir = rays.direction(static_cast<float>(x) + 0.5f + offset.x,
+                                           static_cast<float>(y) + 0.5f + offset.y);
+      const PathResult path = tracer.trace(rays.origin(), dir, sampler);
+      tile_rays += path.rays;
+      if (is_finite(path.radiance)) {
+        acc.color += glm::dvec3(path.radiance);
+      } else {
+        ++tile_discarded;
+      }
+      if (!path.hit) continue;
+      ++acc.hits;
+      const SurfacePoint& sp = path.first;
+      acc.base_color += glm::dvec3(glm::clamp(sp.inputs.base_color, 0.0f, 1.0f));
+      acc.roughness += glm::clamp(sp.inputs.roughness, 0.0f, 1.0f);
+      acc.metallic += glm::clamp(sp.inputs.metallic, 0.0f, 1.0f);
+      acc.normal += glm::dvec3(sp.shading_normal);
+      const float offset2 = glm::dot(offset, offset);
+      if (offset2 < acc.nearest_offset2) {
+        acc.nearest_offset2 = offset2;
+        acc.depth = path.first_distance * glm::dot(dir, rays.forward());
+        acc.label = data.materials[sp.material].label_id;
+        acc.part = sp.part;
+      }
+    }
+    const size_t i = pixel_index;
+    const glm::dvec3 color = acc.color / static_cast<double>(spp);
+    for (int c = 0; c < 3; ++c) frame.color[3 * i + c] = static_cast<float>(color[c]);
+    if (!frame.alpha.empty()) frame.alpha[i] = static_cast<float>(acc.hits) / static_cast<float>(spp);
+    if (acc.hits == 0) return;
+    const double inv_hits = 1.0 / acc.hits;
+    const double normal_len = glm::length(acc.normal);
+    const glm::vec3 normal = normal_len > 0.0 ? glm::vec3(acc.normal / normal_len) : glm::vec3(0.0f);
+    const glm::vec3 normal_camera = world_to_camera * normal;
+    for (int c = 0; c < 3; ++c) {
+      if (!frame.base_color.empty()) frame.base_color[3 * i + c] = static_cast<float>(acc.base_color[c] * inv_hits);
+      if (!frame.normal_world.empty()) frame.normal_world[3 * i + c] = normal[c];
+      if (!frame.normal_camera.empty()) frame.normal_camera[3 * i + c] = normal_camera[c];
+    }
+    if (!frame.roughness.empty()) frame.roughness[i] = static_cast<float>(acc.roughness * inv_hits);
+    if (!frame.metallic.empty()) frame.metallic[i] = static_cast<float>(acc.metallic * inv_hits);
+    if (!frame.depth.empty()) frame.depth[i] = acc.depth;
+    if (!frame.label.empty()) frame.label[i] = acc.label;
+    if (!frame.part_id.empty()) frame.part_id[i] = acc.part;
+  };
+
+  auto render_tile = [&](const Tile& tile) {
+    uint64_t tile_rays = 0, tile_discarded = 0;
+    for (int y = tile.y0; y < tile.y1; ++y)
+      for (int x = tile.x0; x < tile.x1; ++x) render_pixel(x, y, tile_rays, tile_discarded);
+    ray_count += tile_rays;
+    discarded += tile_discarded;
+    samples += static_cast<uint64_t>(tile.x1 - tile.x0) * static_cast<uint64_t>(tile.y1 - tile.y0) * spp;
+    ++tiles_done;
+    if (settings.progress) {
+      std::lock_guard<std::mutex> lock(progress_mutex);
+      settings.progress(static_cast<double>(tiles_done.load()) / static_cast<double>(tiles.size()));
+    }
+  };
+
+  tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles.size(), 1), [&](const tbb::blocked_range<size_t>& range) {
+      for (size_t t = range.begin(); t != range.end(); ++t) {
+        if (settings.cancel && settings.cancel->load()) {
+          cancelled = true;
+          return;
+        }
+        render_tile(tiles[t]);
+      }
+    });
+  });
+
+  RenderStats stats;
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  stats.camera_samples = samples;
+  stats.rays = ray_count;
+  stats.discarded_samples = discarded;
+  stats.cancelled = cancelled;
+  return stats;
+}
+
+}  // namespace matrender

@@ -1,0 +1,161 @@
+#include "matrender/image_io.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+#include <unistd.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include "texture/color_space.h"
+
+namespace matrender {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Writes through a temporary file in the destination folder, then renames it into place.
+void write_image_atomically(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc type,
+                            const void* pixels) {
+  const fs::path target(path);
+  const fs::path temporary =
+      target.parent_path() / (".tmp-" + std::to_string(::getpid()) + "-" + target.filename().string());
+  {
+    auto output = OIIO::ImageOutput::create(target.extension().string());
+    if (!output) throw std::runtime_error(path + ": no image writer for this extension: " + OIIO::geterror());
+    if (!output->open(temporary.string(), spec))
+      throw std::runtime_error(path + ": cannot open for writing: " + output->geterror());
+    if (!output->write_image(type, pixels)) {
+      const std::string error = output->geterror();
+      output->close();
+      fs::remove(temporary);
+      throw std::runtime_error(path + ": cannot write image: " + error);
+    }
+    output->close();
+  }
+  std::error_code ec;
+  fs::rename(temporary, target, ec);
+  if (ec) {
+    fs::remove(temporary);
+    throw std::runtime_error(path + ": cannot move the finished file into place: " + ec.message());
+  }
+}
+
+uint16_t quantize(double v, double max_value) {
+  if (!std::isfinite(v)) v = 0.0;
+  return static_cast<uint16_t>(std::clamp(std::lround(v * max_value), 0L, static_cast<long>(max_value)));
+}
+
+}  // namespace
+
+void write_exr(const std::string& path, int width, int height, const std::vector<std::string>& channels,
+               const float* data) {
+  OIIO::ImageSpec spec(width, height, static_cast<int>(channels.size()), OIIO::TypeDesc::FLOAT);
+  spec.channelnames = channels;
+  spec.alpha_channel = -1;
+  for (size_t c = 0; c < channels.size(); ++c)
+    if (channels[c] == "A") spec.alpha_channel = static_cast<int>(c);
+  spec.attribute("compression", "zip");
+  write_image_atomically(path, spec, OIIO::TypeDesc::FLOAT, data);
+}
+
+void write_display_png(const std::string& path, int width, int height, const float* rgb, const float* alpha,
+                       double exposure_stops) {
+  const int channels = alpha ? 4 : 3;
+  const double gain = std::exp2(exposure_stops);
+  std::vector<uint8_t> pixels(static_cast<size_t>(width) * height * channels);
+  for (size_t i = 0; i < static_cast<size_t>(width) * height; ++i) {
+    for (int c = 0; c < 3; ++c) {
+      const float linear = static_cast<float>(rgb[3 * i + c] * gain);
+      pixels[i * channels + c] = static_cast<uint8_t>(quantize(linear_to_srgb(std::clamp(linear, 0.0f, 1.0f)), 255.0));
+    }
+    if (alpha) pixels[i * channels + 3] = static_cast<uint8_t>(quantize(alpha[i], 255.0));
+  }
+  OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::UINT8);
+  write_image_atomically(path, spec, OIIO::TypeDesc::UINT8, pixels.data());
+}
+
+void write_data_png(const std::string& path, int width, int height, int channels, const float* data, double scale,
+                    double offset, bool sixteen_bit) {
+  const size_t n = static_cast<size_t>(width) * height * channels;
+  std::vector<uint16_t> pixels(n);
+  const double max_value = sixteen_bit ? 65535.0 : 255.0;
+  for (size_t i = 0; i < n; ++i) pixels[i] = quantize((data[i] * scale + offset) / max_value, max_value);
+  OIIO::ImageSpec spec(width, height, channels, sixteen_bit ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
+  if (sixteen_bit) {
+    write_image_atomically(path, spec, OIIO::TypeDesc::UINT16, pixels.data());
+  } else {
+    std::vector<uint8_t> narrow(pixels.begin(), pixels.end());
+    write_image_atomically(path, spec, OIIO::TypeDesc::UINT8, narrow.data());
+  }
+}
+
+std::vector<std::string> write_frame(const FrameBuffers& frame, const std::string& folder, const std::string& stem,
+                                     double exposure_stops) {
+  std::error_code ec;
+  fs::create_directories(folder, ec);
+  if (ec) throw std::runtime_error(folder + ": cannot create the output folder: " + ec.message());
+  const int w = frame.width, h = frame.height;
+  const size_t n = static_cast<size_t>(w) * h;
+  std::vector<std::string> written;
+  auto file = [&](const std::string& pass, const std::string& ext) {
+    return (fs::path(folder) / (stem + "_" + pass + "." + ext)).string();
+  };
+
+  // Colour: RGBA EXR (alpha = coverage, 1 where the alpha AOV was not asked for) and display PNG.
+  std::vector<float> rgba(n * 4);
+  for (size_t i = 0; i < n; ++i) {
+    for (int c = 0; c < 3; ++c) rgba[4 * i + c] = frame.color[3 * i + c];
+    rgba[4 * i + 3] = frame.alpha.empty() ? 1.0f : frame.alpha[i];
+  }
+  written.push_back(file("color", "exr"));
+  write_exr(written.back(), w, h, {"R", "G", "B", "A"}, rgba.data());
+  written.push_back(file("color", "png"));
+  write_display_png(written.back(), w, h, frame.color.data(), frame.alpha.empty() ? nullptr : frame.alpha.data(),
+                    exposure_stops);
+
+  auto write_float_pass = [&](const std::string& pass, const std::vector<float>& data, int channels,
+                              const std::vector<std::string>& names, double png_scale, double png_offset) {
+    if (data.empty()) return;
+    written.push_back(file(pass, "exr"));
+    write_exr(written.back(), w, h, names, data.data());
+    written.push_back(file(pass, "png"));
+    write_data_png(written.back(), w, h, channels, data.data(), png_scale, png_offset, false);
+  };
+  // Base colour is linear like the renderer's inputs; its PNG stores sRGB-encoded values for viewing.
+  if (!frame.base_color.empty()) {
+    written.push_back(file("base_color", "exr"));
+    write_exr(written.back(), w, h, {"R", "G", "B"}, frame.base_color.data());
+    written.push_back(file("base_color", "png"));
+    write_display_png(written.back(), w, h, frame.base_color.data(), nullptr, 0.0);
+  }
+  write_float_pass("roughness", frame.roughness, 1, {"Y"}, 255.0, 0.0);
+  write_float_pass("metallic", frame.metallic, 1, {"Y"}, 255.0, 0.0);
+  write_float_pass("normal_world", frame.normal_world, 3, {"X", "Y", "Z"}, 127.5, 127.5);
+  write_float_pass("normal_camera", frame.normal_camera, 3, {"X", "Y", "Z"}, 127.5, 127.5);
+  if (!frame.depth.empty()) {
+    written.push_back(file("depth", "exr"));
+    write_exr(written.back(), w, h, {"Z"}, frame.depth.data());
+    // 16-bit PNG in millimetres (0 = background), as depth cameras write.
+    written.push_back(file("depth", "png"));
+    write_data_png(written.back(), w, h, 1, frame.depth.data(), 1000.0, 0.0, true);
+  }
+  auto write_id_pass = [&](const std::string& pass, const std::vector<int32_t>& ids, double offset) {
+    if (ids.empty()) return;
+    std::vector<float> values(ids.begin(), ids.end());
+    written.push_back(file(pass, "exr"));
+    write_exr(written.back(), w, h, {"Y"}, values.data());
+    written.push_back(file(pass, "png"));
+    write_data_png(written.back(), w, h, 1, values.data(), 1.0, offset, true);
+  };
+  write_id_pass("label", frame.label, 0.0);
+  write_id_pass("part_id", frame.part_id, 1.0);  // PNG value = part id + 1, 0 = background
+  if (!frame.alpha.empty()) {
+    written.push_back(file("alpha", "png"));
+    write_data_png(written.back(), w, h, 1, frame.alpha.data(), 255.0, 0.0, false);
+  }
+  return written;
+}
+
+}  // namespace matrender

@@ -1,0 +1,15 @@
+#pragma once
+#include <glm/glm.hpp>
+
+namespace matrender {
+
+// One next-event sample toward a lamp, seen from a shading point.
+struct LightSample {
+  glm::vec3 wi{0.0f};        // unit direction from the shading point to the lamp
+  float distance = 0.0f;     // to the sampled point (shadow ray length)
+  glm::vec3 radiance{0.0f};  // area lamp: emitted radiance; delta lamp: intensity / distance^2
+  float pdf = 0.0f;          // solid-angle pdf (area lamp) or 1 (delta lamp), before selection
+  bool delta = false;
+};
+
+}  // namespace matrender

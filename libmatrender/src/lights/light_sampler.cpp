@@ -1,0 +1,33 @@
+#include "lights/light_sampler.h"
+
+#include <algorithm>
+#include <type_traits>
+#include <variant>
+
+namespace matrender {
+
+LightSampler::LightSampler(const std::vector<Light>& lights) {
+  for (const Light& light : lights) {
+    std::visit(
+        [this](const auto& l) {
+          using T = std::decay_t<decltype(l)>;
+          if constexpr (std::is_same_v<T, RectLight>) {
+            rects_.emplace_back(l);
+          } else {
+            deltas_.emplace_back(l);
+          }
+        },
+        light);
+  }
+}
+
+std::optional<LightSample> LightSampler::sample(const glm::vec3& p, float u_select, glm::vec2 u) const {
+  if (empty()) return std::nullopt;
+  const size_t index = std::min(static_cast<size_t>(u_select * static_cast<float>(count())), count() - 1);
+  std::optional<LightSample> s = index < rects_.size() ? rects_[index].sample(p, u)
+                                                       : deltas_[index - rects_.size()].sample(p);
+  if (s) s->pdf *= selection_pdf();
+  return s;
+}
+
+}  // namespace matrender

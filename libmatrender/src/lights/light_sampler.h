@@ -1,0 +1,34 @@
+#pragma once
+// How a lamp is chosen for next-event estimation: uniformly, one lamp per shading point, as
+// Cycles 3.4 does (it has no light tree). Only noise depends on this choice.
+#include <optional>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "lights/light_sample.h"
+#include "lights/rect_light.h"
+#include "lights/spot_light.h"
+#include "matrender/light.h"
+
+namespace matrender {
+
+class LightSampler {
+ public:
+  explicit LightSampler(const std::vector<Light>& lights);
+
+  bool empty() const { return count() == 0; }
+  size_t count() const { return rects_.size() + deltas_.size(); }
+  float selection_pdf() const { return empty() ? 0.0f : 1.0f / static_cast<float>(count()); }
+
+  // A sample of one uniformly chosen lamp; its pdf includes the selection probability.
+  std::optional<LightSample> sample(const glm::vec3& p, float u_select, glm::vec2 u) const;
+
+  const std::vector<PreparedRectLight>& rect_lights() const { return rects_; }
+
+ private:
+  std::vector<PreparedRectLight> rects_;
+  std::vector<PreparedDeltaLight> deltas_;
+};
+
+}  // namespace matrender

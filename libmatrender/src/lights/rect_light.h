@@ -1,0 +1,38 @@
+#pragma once
+// One-sided rectangular area lamp, Cycles 3.4 conventions: radiance L = P c / (4 a b) emitted
+// toward the lamp's local -Z (../shared/reference/cycles.md). Sampled by solid angle.
+#include <optional>
+
+#include <glm/glm.hpp>
+
+#include "lights/light_sample.h"
+#include "matrender/light.h"
+
+namespace matrender {
+
+class PreparedRectLight {
+ public:
+  explicit PreparedRectLight(const RectLight& light);
+
+  // Samples a point uniformly in the solid angle the lamp subtends from p (by area when that
+  // solid angle is too small to compute accurately). Returns nothing when p does not see the
+  // emitting side.
+  std::optional<LightSample> sample(const glm::vec3& p, glm::vec2 u) const;
+  // Solid-angle pdf of sample() producing direction wi from p, given that the ray hits the lamp
+  // at distance t.
+  float pdf(const glm::vec3& p, const glm::vec3& wi, float t) const;
+  // Distance along the ray to the emitting side of the lamp, if hit within t_max.
+  std::optional<float> intersect(const glm::vec3& origin, const glm::vec3& dir, float t_max) const;
+
+  glm::vec3 radiance() const { return radiance_; }
+
+ private:
+  bool sees_emitting_side(const glm::dvec3& p) const;
+
+  glm::dvec3 corner_, edge_x_, edge_y_, center_, emit_dir_;  // emit_dir_ = lamp -Z
+  glm::dvec3 axis_x_, axis_y_;
+  double half_x_, half_y_, area_;
+  glm::vec3 radiance_;
+};
+
+}  // namespace matrender

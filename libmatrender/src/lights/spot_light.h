@@ -1,0 +1,67 @@
+#pragma once
+// Radius-0 point and spot lamps, Cycles 3.4 conventions: intensity I = P c / (4 pi) W/sr; a spot
+// multiplies it by cos t * smoothstep((cos t - cos_half) / ((1 - cos_half) blend)) inside its cone
+// (intern/cycles/kernel/light/spot.h, spot_attenuation; ../shared/reference/cycles.md).
+#include <cmath>
+#include <optional>
+
+#include <glm/glm.hpp>
+
+#include "lights/light_sample.h"
+#include "matrender/light.h"
+#include "sampling/warp.h"
+
+namespace matrender {
+
+inline float smoothstep01(float x) {
+  x = glm::clamp(x, 0.0f, 1.0f);
+  return x * x * (3.0f - 2.0f * x);
+}
+
+// cos t = cosine between the lamp axis and the direction from the lamp to the lit point.
+inline float spot_attenuation(float cos_t, float cos_half_angle, float blend) {
+  if (cos_t <= cos_half_angle) return 0.0f;
+  const float smooth_width = (1.0f - cos_half_angle) * blend;
+  const float edge = smooth_width > 0.0f ? smoothstep01((cos_t - cos_half_angle) / smooth_width) : 1.0f;
+  return cos_t * edge;
+}
+
+class PreparedDeltaLight {
+ public:
+  explicit PreparedDeltaLight(const PointLight& light)
+      : position_(light.position), intensity_(light.power * light.color / (4.0 * M_PI)) {}
+  explicit PreparedDeltaLight(const SpotLight& light)
+      : position_(light.position),
+        intensity_(light.power * light.color / (4.0 * M_PI)),
+        axis_(glm::normalize(light.direction)),
+        cos_half_angle_(static_cast<float>(std::cos(0.5 * light.spot_angle))),
+        blend_(static_cast<float>(light.blend)),
+        is_spot_(true) {}
+
+  std::optional<LightSample> sample(const glm::vec3& p) const {
+    const glm::vec3 to_light = position_ - p;
+    const float dist2 = glm::dot(to_light, to_light);
+    if (!(dist2 > 0.0f)) return std::nullopt;
+    const float dist = std::sqrt(dist2);
+    LightSample s;
+    s.wi = to_light / dist;
+    s.distance = dist;
+    float factor = 1.0f / dist2;
+    if (is_spot_) factor *= spot_attenuation(glm::dot(-s.wi, axis_), cos_half_angle_, blend_);
+    if (!(factor > 0.0f)) return std::nullopt;
+    s.radiance = intensity_ * factor;
+    s.pdf = 1.0f;
+    s.delta = true;
+    return s;
+  }
+
+ private:
+  glm::vec3 position_;
+  glm::vec3 intensity_;
+  glm::vec3 axis_{0.0f, 0.0f, -1.0f};
+  float cos_half_angle_ = -1.0f;
+  float blend_ = 0.0f;
+  bool is_spot_ = false;
+};
+
+}  // namespace matrender

@@ -1,0 +1,87 @@
+#pragma once
+// Owen-scrambled Sobol points, padded per dimension pair: Burley 2020, "Practical Hash-based
+// Owen Scrambling", JCGT 9(4). Each pair of dimensions uses the first two Sobol dimensions
+// (a (0,2)-sequence), scrambled and index-shuffled by hashes of (pixel, pair, seed), so every
+// pixel's samples depend only on the pixel and the seed: images are identical whatever the
+// thread count.
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+namespace matrender {
+
+inline uint32_t reverse_bits(uint32_t x) {
+  x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
+  x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+  x = ((x >> 4) & 0x0F0F0F0Fu) | ((x & 0x0F0F0F0Fu) << 4);
+  x = ((x >> 8) & 0x00FF00FFu) | ((x & 0x00FF00FFu) << 8);
+  return (x >> 16) | (x << 16);
+}
+
+// 32-bit integer hash (Wellons' "lowbias32"): good avalanche, used only to derive seeds.
+inline uint32_t hash_u32(uint32_t x) {
+  x ^= x >> 16;
+  x *= 0x7feb352du;
+  x ^= x >> 15;
+  x *= 0x846ca68bu;
+  x ^= x >> 16;
+  return x;
+}
+
+inline uint32_t hash_combine(uint32_t a, uint32_t b) { return hash_u32(a ^ (hash_u32(b) + 0x9e3779b9u)); }
+
+// Laine-Karras permutation on bit-reversed values: each output bit flips depending only on
+// higher-order input bits, i.e. a nested uniform (Owen) scramble (Burley 2020, section 3).
+inline uint32_t laine_karras_permutation(uint32_t x, uint32_t seed) {
+  x += seed;
+  x ^= x * 0x6c50b47cu;
+  x ^= x * 0xb82f1e52u;
+  x ^= x * 0xc7afe638u;
+  x ^= x * 0x8d22f6e6u;
+  return x;
+}
+
+inline uint32_t nested_uniform_scramble(uint32_t x, uint32_t seed) {
+  return reverse_bits(laine_karras_permutation(reverse_bits(x), seed));
+}
+
+// First two Sobol dimensions as 32-bit fixed point: van der Corput, and the dimension whose
+// generator matrix is Pascal's triangle mod 2 (direction numbers v_k = v_{k-1} ^ (v_{k-1} >> 1)).
+inline uint32_t sobol_dimension0(uint32_t index) { return reverse_bits(index); }
+inline uint32_t sobol_dimension1(uint32_t index) {
+  uint32_t result = 0;
+  uint32_t direction = 0x80000000u;
+  for (; index != 0; index >>= 1, direction ^= direction >> 1)
+    if (index & 1u) result ^= direction;
+  return result;
+}
+
+inline float fixed_point_to_unit_float(uint32_t x) {
+  // Top 24 bits, so the float is exact and strictly below 1.
+  return static_cast<float>(x >> 8) * 0x1p-24f;
+}
+
+// 2-D point `sample_index` of the scrambled sequence with the given seed.
+inline glm::vec2 owen_sobol_2d(uint32_t sample_index, uint32_t seed) {
+  const uint32_t shuffled = nested_uniform_scramble(sample_index, hash_combine(seed, 0xa511e9b3u));
+  const uint32_t x = nested_uniform_scramble(sobol_dimension0(shuffled), hash_combine(seed, 0x63d83595u));
+  const uint32_t y = nested_uniform_scramble(sobol_dimension1(shuffled), hash_combine(seed, 0x1b873593u));
+  return {fixed_point_to_unit_float(x), fixed_point_to_unit_float(y)};
+}
+
+// The random numbers of one camera sample: pair k of the path is owen_sobol_2d(sample, seed_k).
+class PixelSampler {
+ public:
+  PixelSampler(uint32_t pixel_index, uint32_t sample_index, uint32_t global_seed)
+      : pixel_seed_(hash_combine(hash_u32(pixel_index), global_seed)), sample_index_(sample_index) {}
+
+  glm::vec2 get_2d(uint32_t pair) const {
+    return owen_sobol_2d(sample_index_, hash_combine(pixel_seed_, pair));
+  }
+
+ private:
+  uint32_t pixel_seed_;
+  uint32_t sample_index_;
+};
+
+}  // namespace matrender

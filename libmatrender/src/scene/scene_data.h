@@ -1,0 +1,37 @@
+#pragma once
+// What a committed scene holds: geometry in the layout shading needs, materials, lamps and the
+// Embree BVH over the geometry.
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "accel/embree_scene.h"
+#include "matrender/light.h"
+#include "matrender/material.h"
+
+namespace matrender {
+
+struct MeshData {
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;   // empty = flat shading
+  std::vector<glm::vec2> uvs;       // empty = no UVs (texture lookups at (0, 0))
+  std::vector<glm::vec4> tangents;  // empty = no normal mapping possible
+  std::vector<glm::uvec3> triangles;
+  std::vector<uint32_t> triangle_parts;  // empty = part 0
+  std::vector<uint32_t> part_materials;  // material id of each part
+};
+
+class SceneData {
+ public:
+  std::vector<Material> materials;
+  std::vector<MeshData> meshes;
+  std::vector<Light> lights;
+  glm::vec3 background{0.0f};
+  EmbreeScene accel;
+  bool committed = false;
+  double build_seconds = 0.0;
+  size_t triangle_count = 0;
+};
+
+}  // namespace matrender

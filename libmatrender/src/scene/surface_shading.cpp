@@ -1,0 +1,89 @@
+#include "scene/surface_shading.h"
+
+#include <cmath>
+
+#include "bsdf/shading_frame.h"
+
+namespace matrender {
+namespace {
+
+bool is_finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// Unit vector or `fallback` when v has no usable length.
+glm::vec3 normalize_or(const glm::vec3& v, const glm::vec3& fallback) {
+  const float len2 = glm::dot(v, v);
+  if (!(len2 > 1e-30f) || !std::isfinite(len2)) return fallback;
+  return v / std::sqrt(len2);
+}
+
+glm::vec3 eval_color(const ColorParam& p, glm::vec2 uv) {
+  return p.texture ? p.value * glm::vec3(p.texture->sample(uv)) : p.value;
+}
+
+float eval_scalar(const ScalarParam& p, glm::vec2 uv) {
+  return p.texture ? p.value * p.texture->sample(uv)[p.channel] : p.value;
+}
+
+// Cycles' Normal Map node in tangent space: n = normalize(x T + y sign (N x T) + z N) from
+// n_ts = 2 rgb - 1, then strength mixes between N and n.
+glm::vec3 apply_normal_map(const Material& material, glm::vec2 uv, const glm::vec3& normal,
+                           const glm::vec4& tangent) {
+  const glm::vec3 rgb(material.normal_map->sample(uv));
+  const glm::vec3 n_ts = 2.0f * rgb - glm::vec3(1.0f);
+  const glm::vec3 t = normalize_or(glm::vec3(tangent) - glm::dot(glm::vec3(tangent), normal) * normal,
+                                   glm::vec3(0.0f));
+  if (t == glm::vec3(0.0f)) return normal;
+  const glm::vec3 b = (tangent.w < 0.0f ? -1.0f : 1.0f) * glm::cross(normal, t);
+  const glm::vec3 mapped = normalize_or(n_ts.x * t + n_ts.y * b + n_ts.z * normal, normal);
+  return normalize_or(normal + (mapped - normal) * material.normal_strength, normal);
+}
+
+}  // namespace
+
+SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm::vec3& wo) {
+  const MeshData& mesh = scene.meshes[hit.mesh];
+  const glm::uvec3 tri = mesh.triangles[hit.triangle];
+  const float b1 = hit.u, b2 = hit.v, b0 = 1.0f - hit.u - hit.v;
+  const glm::vec3 p0 = mesh.positions[tri.x], p1 = mesh.positions[tri.y], p2 = mesh.positions[tri.z];
+
+  SurfacePoint sp;
+  // Interpolating the vertices is more precise than origin + t dir.
+  sp.position = b0 * p0 + b1 * p1 + b2 * p2;
+  const glm::vec3 ng_front = normalize_or(glm::cross(p1 - p0, p2 - p0), wo);
+  const bool backfacing = glm::dot(ng_front, wo) < 0.0f;
+  const float facing_sign = backfacing ? -1.0f : 1.0f;
+  sp.geometric_normal = facing_sign * ng_front;
+
+  // The front-side smooth normal; normal mapping happens on the front side, then everything
+  // is flipped toward the viewer (surfaces are two-sided).
+  glm::vec3 n_front = ng_front;
+  if (!mesh.normals.empty()) {
+    n_front = normalize_or(b0 * mesh.normals[tri.x] + b1 * mesh.normals[tri.y] + b2 * mesh.normals[tri.z],
+                           ng_front);
+  }
+  if (!mesh.uvs.empty()) sp.uv = b0 * mesh.uvs[tri.x] + b1 * mesh.uvs[tri.y] + b2 * mesh.uvs[tri.z];
+  if (!std::isfinite(sp.uv.x) || !std::isfinite(sp.uv.y)) sp.uv = glm::vec2(0.0f);
+
+  sp.part = mesh.triangle_parts.empty() ? 0 : static_cast<int32_t>(mesh.triangle_parts[hit.triangle]);
+  sp.material = mesh.part_materials[static_cast<size_t>(sp.part)];
+  const Material& material = scene.materials[sp.material];
+
+  if (material.normal_map && !mesh.tangents.empty()) {
+    const glm::vec4 tangent =
+        b0 * mesh.tangents[tri.x] + b1 * mesh.tangents[tri.y] + b2 * mesh.tangents[tri.z];
+    n_front = apply_normal_map(material, sp.uv, n_front, tangent);
+  }
+  glm::vec3 n = facing_sign * n_front;
+  if (!is_finite(n)) n = sp.geometric_normal;
+  sp.shading_normal = ensure_valid_reflection(sp.geometric_normal, wo, n);
+
+  sp.inputs.base_color = eval_color(material.base_color, sp.uv);
+  sp.inputs.metallic = eval_scalar(material.metallic, sp.uv);
+  sp.inputs.roughness = eval_scalar(material.roughness, sp.uv);
+  sp.inputs.specular = material.specular;
+  sp.inputs.specular_tint = material.specular_tint;
+  sp.inputs.diffuse_model = material.diffuse_model;
+  return sp;
+}
+
+}  // namespace matrender

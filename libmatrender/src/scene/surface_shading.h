@@ -1,0 +1,27 @@
+#pragma once
+// From a ray hit to everything shading needs: position, normals facing the viewer, UV, and the
+// material's inputs after texture lookups.
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "accel/embree_scene.h"
+#include "bsdf/principled.h"
+#include "scene/scene_data.h"
+
+namespace matrender {
+
+struct SurfacePoint {
+  glm::vec3 position{0.0f};
+  glm::vec3 geometric_normal{0.0f, 0.0f, 1.0f};  // flipped to face the incoming ray
+  glm::vec3 shading_normal{0.0f, 0.0f, 1.0f};    // smooth + normal map, valid for reflection
+  glm::vec2 uv{0.0f};
+  uint32_t material = 0;
+  int32_t part = 0;
+  PrincipledInputs inputs;
+};
+
+// wo = unit direction from the hit back toward the ray origin.
+SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm::vec3& wo);
+
+}  // namespace matrender

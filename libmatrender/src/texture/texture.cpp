@@ -1,0 +1,135 @@
+#include "matrender/texture.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <OpenImageIO/imageio.h>
+
+#include "texture/color_space.h"
+
+namespace matrender {
+namespace {
+
+// Expands 1..4 interleaved channels to RGBA (grey to RGB, alpha 1 when absent).
+glm::vec4 to_rgba(const float* p, int channels) {
+  switch (channels) {
+    case 1: return {p[0], p[0], p[0], 1.0f};
+    case 2: return {p[0], p[0], p[0], p[1]};
+    case 3: return {p[0], p[1], p[2], 1.0f};
+    default: return {p[0], p[1], p[2], p[3]};
+  }
+}
+
+int wrap_index(int i, int n, Wrap wrap) {
+  if (wrap == Wrap::Clamp) return i < 0 ? 0 : (i >= n ? n - 1 : i);
+  const int r = i % n;
+  return r < 0 ? r + n : r;
+}
+
+}  // namespace
+
+std::shared_ptr<const Texture> Texture::from_pixelsf(int width, int height, int channels,
+                                                     const float* pixels, ColorSpace space, Wrap wrap,
+                                                     std::string name) {
+  if (width <= 0 || height <= 0 || channels < 1 || channels > 4 || pixels == nullptr)
+    throw std::invalid_argument(name + ": texture needs a positive size and 1 to 4 channels");
+  auto texture = std::shared_ptr<Texture>(new Texture());
+  texture->width_ = width;
+  texture->height_ = height;
+  texture->space_ = space;
+  texture->wrap_ = wrap;
+  texture->name_ = std::move(name);
+  texture->texels_.resize(static_cast<size_t>(width) * height);
+  for (int y = 0; y < height; ++y) {
+    // Stored bottom row first so that v = 0 is row 0.
+    const float* row = pixels + static_cast<size_t>(height - 1 - y) * width * channels;
+    for (int x = 0; x < width; ++x) {
+      glm::vec4 t = to_rgba(row + static_cast<size_t>(x) * channels, channels);
+      if (!std::isfinite(t.x) || !std::isfinite(t.y) || !std::isfinite(t.z) || !std::isfinite(t.w))
+        throw std::runtime_error(texture->name_ + ": texel (" + std::to_string(x) + ", " +
+                                 std::to_string(height - 1 - y) + ") is not finite");
+      texture->texels_[static_cast<size_t>(y) * width + x] = t;
+    }
+  }
+  return texture;
+}
+
+std::shared_ptr<const Texture> Texture::from_pixels8(int width, int height, int channels,
+                                                     const uint8_t* pixels, ColorSpace space, Wrap wrap,
+                                                     std::string name) {
+  if (pixels == nullptr) throw std::invalid_argument(name + ": no pixel data");
+  std::vector<float> values(static_cast<size_t>(width) * height * channels);
+  for (size_t i = 0; i < values.size(); ++i) values[i] = pixels[i] / 255.0f;
+  // 8-bit sRGB images are filtered on the encoded values and decoded afterwards (Cycles).
+  auto texture = from_pixelsf(width, height, channels, values.data(), ColorSpace::NonColor, wrap,
+                              std::move(name));
+  auto mutable_texture = std::const_pointer_cast<Texture>(texture);
+  mutable_texture->space_ = space;
+  mutable_texture->convert_srgb_after_filtering_ = space == ColorSpace::SRGB;
+  return texture;
+}
+
+std::shared_ptr<const Texture> Texture::load(const std::string& path, ColorSpace space, Wrap wrap) {
+  auto input = OIIO::ImageInput::open(path);
+  if (!input) throw std::runtime_error(path + ": cannot read image: " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = input->spec();
+  const int channels = std::min(spec.nchannels, 4);
+  if (spec.width <= 0 || spec.height <= 0 || channels < 1)
+    throw std::runtime_error(path + ": image has no pixels");
+  std::vector<float> pixels(static_cast<size_t>(spec.width) * spec.height * channels);
+  if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
+    throw std::runtime_error(path + ": cannot decode image: " + input->geterror());
+  input->close();
+
+  const bool integer_format = spec.format.basetype == OIIO::TypeDesc::UINT8 ||
+                              spec.format.basetype == OIIO::TypeDesc::UINT16;
+  if (space == ColorSpace::SRGB && integer_format) {
+    // As for 8-bit images: interpolate encoded values, decode after filtering.
+    auto texture = from_pixelsf(spec.width, spec.height, channels, pixels.data(),
+                                ColorSpace::NonColor, wrap, path);
+    auto mutable_texture = std::const_pointer_cast<Texture>(texture);
+    mutable_texture->space_ = space;
+    mutable_texture->convert_srgb_after_filtering_ = true;
+    return texture;
+  }
+  if (space == ColorSpace::SRGB) {
+    // Float images tagged sRGB are decoded once at load time (Cycles converts float images
+    // through OCIO when loading).
+    for (size_t i = 0; i < pixels.size(); ++i)
+      if (channels < 4 || i % 4 != 3) pixels[i] = srgb_to_linear(pixels[i]);
+  }
+  return from_pixelsf(spec.width, spec.height, channels, pixels.data(), space, wrap, path);
+}
+
+glm::vec4 Texture::sample(glm::vec2 uv) const {
+  // Texel centres sit at (i + 0.5) / W.
+  const float x = uv.x * width_ - 0.5f;
+  const float y = uv.y * height_ - 0.5f;
+  if (!std::isfinite(x) || !std::isfinite(y)) return texels_[0];
+  const float fx = std::floor(x);
+  const float fy = std::floor(y);
+  const float tx = x - fx;
+  const float ty = y - fy;
+  // Reduce before narrowing to int so that huge or far-out UVs stay well defined.
+  const auto index = [&](float f, int offset, int n) {
+    const float reduced = wrap_ == Wrap::Repeat ? std::fmod(f, static_cast<float>(n))
+                                                : std::clamp(f, -1.0f, static_cast<float>(n));
+    return wrap_index(static_cast<int>(reduced) + offset, n, wrap_);
+  };
+  const int x0 = index(fx, 0, width_);
+  const int x1 = index(fx, 1, width_);
+  const int y0 = index(fy, 0, height_);
+  const int y1 = index(fy, 1, height_);
+  const auto texel = [&](int ix, int iy) { return texels_[static_cast<size_t>(iy) * width_ + ix]; };
+  glm::vec4 value = (1.0f - ty) * ((1.0f - tx) * texel(x0, y0) + tx * texel(x1, y0)) +
+                    ty * ((1.0f - tx) * texel(x0, y1) + tx * texel(x1, y1));
+  if (convert_srgb_after_filtering_) {
+    value.x = srgb_to_linear(value.x);
+    value.y = srgb_to_linear(value.y);
+    value.z = srgb_to_linear(value.z);
+  }
+  return value;
+}
+
+}  // namespace matrender
