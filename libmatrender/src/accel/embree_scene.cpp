@@ -71,6 +71,7 @@ void EmbreeScene::commit() {
 }
 
 RayHit EmbreeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, float t_max) const {
+  if (ray_log_) ray_log_->per_thread.local().push_back({origin, dir, t_max, false});
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit query;
@@ -89,6 +90,7 @@ RayHit EmbreeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, flo
 }
 
 bool EmbreeScene::occluded(const glm::vec3& origin, const glm::vec3& dir, float t_max) const {
+  if (ray_log_) ray_log_->per_thread.local().push_back({origin, dir, t_max, true});
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRay ray = make_ray(origin, dir, t_max);

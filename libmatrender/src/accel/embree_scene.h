@@ -6,6 +6,7 @@
 
 #include <embree3/rtcore.h>
 #include <glm/glm.hpp>
+#include <tbb/enumerable_thread_specific.h>
 
 namespace matrender {
 
@@ -15,6 +16,17 @@ struct RayHit {
   uint32_t triangle = 0;
   float u = 0.0f, v = 0.0f;  // barycentrics of vertices 1 and 2
   bool hit() const { return mesh != RTC_INVALID_GEOMETRY_ID; }
+};
+
+// Every query the renderer makes, per thread: lets bench/ replay exactly the path tracer's rays
+// through raw Embree. Unused (one null check per ray) unless a benchmark installs one.
+struct RayLog {
+  struct Entry {
+    glm::vec3 origin, dir;
+    float t_max;
+    bool shadow;
+  };
+  tbb::enumerable_thread_specific<std::vector<Entry>> per_thread;
 };
 
 class EmbreeScene {
@@ -32,7 +44,10 @@ class EmbreeScene {
   RayHit intersect(const glm::vec3& origin, const glm::vec3& dir, float t_max) const;
   bool occluded(const glm::vec3& origin, const glm::vec3& dir, float t_max) const;
 
+  void set_ray_log(RayLog* log) const { ray_log_ = log; }
+
  private:
+  mutable RayLog* ray_log_ = nullptr;
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;
   uint32_t mesh_count_ = 0;

@@ -1,0 +1,91 @@
+#include "bench_scenes.h"
+
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include "matgeom/bounding_sphere.h"
+#include "matgeom/camera_grid.h"
+#include "matgeom/light_rig.h"
+#include "matgeom/tangents.h"
+
+namespace bench {
+
+matgeom::TriangleMesh displaced_sphere(size_t triangles) {
+  const int rings = std::max(4, static_cast<int>(std::sqrt(triangles / 4.0)));
+  const int segments = 2 * rings;
+  matgeom::TriangleMesh m;
+  for (int i = 0; i <= rings; ++i) {
+    const double theta = M_PI * i / rings;
+    for (int j = 0; j <= segments; ++j) {
+      const double phi = 2.0 * M_PI * j / segments;
+      const double bump = 1.0 + 0.08 * std::sin(7.0 * theta) * std::sin(5.0 * phi) + 0.03 * std::sin(23.0 * theta + 11.0 * phi);
+      const double r = 0.3 * bump;
+      m.positions.emplace_back(r * std::sin(theta) * std::cos(phi), r * std::sin(theta) * std::sin(phi),
+                               0.35 + r * std::cos(theta));
+      m.uvs.emplace_back(static_cast<float>(j) / segments, 1.0f - static_cast<float>(i) / rings);
+    }
+  }
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      const uint32_t a = i * (segments + 1) + j, b = a + segments + 1;
+      m.triangles.push_back({a, b, a + 1});
+      m.triangles.push_back({a + 1, b, b + 1});
+    }
+  matgeom::compute_vertex_normals(m);
+  return m;
+}
+
+void add_paper_rig(matrender::Scene& scene, const matgeom::TriangleMesh& mesh) {
+  const matgeom::Sphere sphere = matgeom::minimal_enclosing_sphere(mesh.positions);
+  const matgeom::LightRig rig = matgeom::make_light_rig(sphere.center, sphere.radius);
+  for (const matgeom::RigLight& l : rig.lights) {
+    if (l.kind == matgeom::RigLightKind::Area) {
+      matrender::RectLight rect;
+      rect.light_to_world = l.light_to_world;
+      rect.size_x = l.size_x;
+      rect.size_y = l.size_y;
+      rect.power = l.power;
+      rect.color = l.color;
+      scene.add_light(rect);
+    } else {
+      matrender::SpotLight spot;
+      spot.position = l.position;
+      spot.direction = -glm::dvec3(l.light_to_world[2]);
+      spot.spot_angle = l.spot_angle;
+      spot.blend = l.spot_blend;
+      spot.power = l.power;
+      spot.color = l.color;
+      scene.add_light(spot);
+    }
+  }
+}
+
+matrender::Camera paper_camera(const matgeom::TriangleMesh& mesh, int width, int height) {
+  matgeom::CameraGridSpec spec;
+  spec.center = matgeom::surface_centroid(mesh);
+  const matgeom::GridCamera cell = matgeom::grid_camera(spec, 5, 16);
+  matrender::Camera camera;
+  camera.camera_to_world = cell.camera_to_world;
+  camera.width = width;
+  camera.height = height;
+  return camera;
+}
+
+double peak_rss_mib() {
+  std::ifstream status("/proc/self/status");
+  std::string key;
+  while (status >> key) {
+    if (key == "VmHWM:") {
+      double kib;
+      status >> kib;
+      return kib / 1024.0;
+    }
+    status.ignore(1 << 20, '\n');
+  }
+  return 0.0;
+}
+
+void reset_peak_rss() { std::ofstream("/proc/self/clear_refs") << "5"; }
+
+}  // namespace bench

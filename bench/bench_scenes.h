@@ -1,0 +1,24 @@
+#pragma once
+// Scenes the benchmarks render: procedural meshes of a chosen size under the paper's rig.
+#include <cstddef>
+
+#include "matgeom/mesh.h"
+#include "matrender/camera.h"
+#include "matrender/scene.h"
+
+namespace bench {
+
+// A bumpy closed sphere of radius about 0.3 m with close to `triangles` triangles.
+matgeom::TriangleMesh displaced_sphere(size_t triangles);
+
+// Adds the paper's light rig around the mesh (minimal enclosing sphere) to the scene.
+void add_paper_rig(matrender::Scene& scene, const matgeom::TriangleMesh& mesh);
+
+// Camera of the paper's grid, cell (5, 16) of 16 x 32, radius 1 m around the surface centroid.
+matrender::Camera paper_camera(const matgeom::TriangleMesh& mesh, int width, int height);
+
+// Peak resident memory since the last reset, in MiB (Linux /proc).
+double peak_rss_mib();
+void reset_peak_rss();
+
+}  // namespace bench

@@ -1,0 +1,213 @@
+// Prints the renderer's figures: path-tracer rays/s beside raw Embree traversal of exactly the
+// same rays (replayed from a log, same run, same threads), samples/s, BVH build time, peak
+// memory, and error against a converged reference versus render time.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <embree3/rtcore.h>
+#include <fmt/core.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "accel/embree_scene.h"
+#include "bench_scenes.h"
+#include "matgeom/builtin_objects.h"
+#include "matrender/asset.h"
+#include "matrender/render.h"
+#include "scene/scene_data.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+struct RawEmbree {
+  RTCDevice device;
+  RTCScene scene;
+  double build_seconds;
+};
+
+// The plain Embree-tutorial setup: one triangle geometry, build quality high.
+RawEmbree build_raw_embree(const matgeom::TriangleMesh& mesh) {
+  RawEmbree raw;
+  raw.device = rtcNewDevice(nullptr);
+  raw.scene = rtcNewScene(raw.device);
+  rtcSetSceneBuildQuality(raw.scene, RTC_BUILD_QUALITY_HIGH);
+  RTCGeometry geometry = rtcNewGeometry(raw.device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  auto* v = static_cast<glm::vec3*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                            sizeof(glm::vec3), mesh.positions.size()));
+  auto* t = static_cast<glm::uvec3*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                             sizeof(glm::uvec3), mesh.triangles.size()));
+  std::copy(mesh.positions.begin(), mesh.positions.end(), v);
+  std::copy(mesh.triangles.begin(), mesh.triangles.end(), t);
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometry(raw.scene, geometry);
+  rtcReleaseGeometry(geometry);
+  const auto start = Clock::now();
+  rtcCommitScene(raw.scene);
+  raw.build_seconds = seconds_since(start);
+  return raw;
+}
+
+// Traces every logged ray through raw Embree; returns seconds.
+double replay(const RawEmbree& raw, const std::vector<matrender::RayLog::Entry>& rays, int threads) {
+  tbb::task_arena arena(threads);
+  const auto start = Clock::now();
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
+      RTCIntersectContext context;
+      rtcInitIntersectContext(&context);
+      for (size_t i = r.begin(); i != r.end(); ++i) {
+        const auto& e = rays[i];
+        RTCRayHit q;
+        q.ray.org_x = e.origin.x, q.ray.org_y = e.origin.y, q.ray.org_z = e.origin.z;
+        q.ray.dir_x = e.dir.x, q.ray.dir_y = e.dir.y, q.ray.dir_z = e.dir.z;
+        q.ray.tnear = 0.0f;
+        q.ray.tfar = e.t_max;
+        q.ray.time = 0.0f;
+        q.ray.mask = 0xFFFFFFFFu;
+        q.ray.id = 0;
+        q.ray.flags = 0;
+        if (e.shadow) {
+          rtcOccluded1(raw.scene, &context, &q.ray);
+        } else {
+          q.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+          rtcIntersect1(raw.scene, &context, &q);
+        }
+      }
+    });
+  });
+  return seconds_since(start);
+}
+
+matrender::Material bench_material() {
+  matrender::Material m;
+  m.base_color.value = glm::vec3(0.7f, 0.5f, 0.3f);
+  m.roughness.value = 0.35f;
+  m.metallic.value = 0.0f;
+  return m;
+}
+
+void traversal_table(const std::vector<size_t>& sizes, int resolution, int spp) {
+  fmt::print("\n## Path tracer against raw Embree on the same rays ({}x{}, {} spp, paper rig)\n\n", resolution,
+             resolution, spp);
+  fmt::print("| triangles | threads | BVH build ms (ours / raw) | rays | path tracer Mrays/s | raw Embree Mrays/s | ratio | Msamples/s | peak MiB |\n");
+  fmt::print("|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  for (size_t target : sizes) {
+    bench::reset_peak_rss();
+    const matgeom::TriangleMesh mesh = bench::displaced_sphere(target);
+    matrender::Scene scene;
+    scene.add_mesh(mesh, {scene.add_material(bench_material())});
+    bench::add_paper_rig(scene, mesh);
+    scene.commit();
+    RawEmbree raw = build_raw_embree(mesh);
+    const matrender::Camera camera = bench::paper_camera(mesh, resolution, resolution);
+    for (int threads : {1, 2}) {
+      matrender::RenderSettings settings;
+      settings.samples_per_pixel = spp;
+      settings.threads = threads;
+      settings.aovs = 0;
+      matrender::FrameBuffers frame;
+      const matrender::RenderStats stats = matrender::render(scene, camera, settings, frame);
+      // Log the same render's rays (the log costs time, so it is a second, untimed pass).
+      matrender::RayLog log;
+      scene.data().accel.set_ray_log(&log);
+      matrender::render(scene, camera, settings, frame);
+      scene.data().accel.set_ray_log(nullptr);
+      std::vector<matrender::RayLog::Entry> rays;
+      for (auto& part : log.per_thread) rays.insert(rays.end(), part.begin(), part.end());
+      log.per_thread.clear();
+      const double raw_seconds = replay(raw, rays, threads);
+      const double ours = stats.rays / stats.seconds / 1e6;
+      const double theirs = rays.size() / raw_seconds / 1e6;
+      fmt::print("| {} | {} | {:.1f} / {:.1f} | {} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.0f} |\n",
+                 mesh.triangle_count(), threads, 1e3 * scene.bvh_build_seconds(), 1e3 * raw.build_seconds,
+                 stats.rays, ours, theirs, ours / theirs, stats.camera_samples / stats.seconds / 1e6,
+                 bench::peak_rss_mib());
+    }
+    rtcReleaseScene(raw.scene);
+    rtcReleaseDevice(raw.device);
+  }
+}
+
+struct VaseScene {
+  matrender::Scene scene;
+  matrender::Camera camera;
+};
+
+VaseScene textured_vase(int resolution) {
+  VaseScene v;
+  const matgeom::ObjectAsset vase = matgeom::make_builtin_object("vase", 0);
+  matrender::add_asset(v.scene, vase);
+  bench::add_paper_rig(v.scene, vase.mesh);
+  v.camera = bench::paper_camera(vase.mesh, resolution, resolution);
+  fmt::print("\n(textured vase: {} triangles, {} lamps)\n", vase.mesh.triangle_count(), v.scene.lights().size());
+  return v;
+}
+
+void samples_per_second(VaseScene& v, int spp) {
+  fmt::print("\n## Samples/s, textured vase, {}x{}, {} spp\n\n| threads | seconds | Msamples/s | Mrays/s |\n|---:|---:|---:|---:|\n",
+             v.camera.width, v.camera.height, spp);
+  for (int threads : {1, 2}) {
+    matrender::RenderSettings settings;
+    settings.samples_per_pixel = spp;
+    settings.threads = threads;
+    matrender::FrameBuffers frame;
+    const auto stats = matrender::render(v.scene, v.camera, settings, frame);
+    fmt::print("| {} | {:.2f} | {:.2f} | {:.2f} |\n", threads, stats.seconds, stats.camera_samples / stats.seconds / 1e6,
+               stats.rays / stats.seconds / 1e6);
+  }
+}
+
+void error_versus_time(VaseScene& v, int reference_spp, int max_spp) {
+  matrender::RenderSettings settings;
+  settings.threads = 2;
+  settings.aovs = 0;
+  settings.samples_per_pixel = reference_spp;
+  settings.seed = 1000;  // independent of the test renders
+  matrender::FrameBuffers reference;
+  const auto ref_stats = matrender::render(v.scene, v.camera, settings, reference);
+  fmt::print("\n## Error against a {} spp reference ({:.1f} s), textured vase {}x{}, 2 threads\n\n", reference_spp,
+             ref_stats.seconds, v.camera.width, v.camera.height);
+  fmt::print("| spp | seconds | RMSE | relative MSE |\n|---:|---:|---:|---:|\n");
+  for (int spp = 1; spp <= max_spp; spp *= 2) {
+    settings.samples_per_pixel = spp;
+    settings.seed = 1;
+    matrender::FrameBuffers frame;
+    const auto stats = matrender::render(v.scene, v.camera, settings, frame);
+    double se = 0.0, rel = 0.0;
+    for (size_t i = 0; i < frame.color.size(); ++i) {
+      const double d = frame.color[i] - reference.color[i];
+      se += d * d;
+      // relMSE as in Rousselle et al. 2011: (x - ref)^2 / (ref^2 + 0.01)
+      rel += d * d / (double(reference.color[i]) * reference.color[i] + 1e-2);
+    }
+    fmt::print("| {} | {:.3f} | {:.5f} | {:.6f} |\n", spp, stats.seconds, std::sqrt(se / frame.color.size()),
+               rel / frame.color.size());
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"render_bench: libmatrender speed beside raw Embree, and error versus time"};
+  std::vector<size_t> sizes{10000, 200000, 1000000};
+  int resolution = 256, spp = 4, vase_spp = 64, reference_spp = 2048, max_spp = 256;
+  app.add_option("--triangles", sizes, "Mesh sizes for the traversal table")->capture_default_str();
+  app.add_option("--resolution", resolution, "Image side in pixels")->capture_default_str();
+  app.add_option("--spp", spp, "Samples per pixel of the traversal table")->capture_default_str();
+  app.add_option("--vase-spp", vase_spp, "Samples per pixel of the samples/s table")->capture_default_str();
+  app.add_option("--reference-spp", reference_spp, "Samples per pixel of the reference image")->capture_default_str();
+  app.add_option("--max-spp", max_spp, "Largest spp of the error table")->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+
+  traversal_table(sizes, resolution, spp);
+  VaseScene vase = textured_vase(resolution);
+  samples_per_second(vase, vase_spp);
+  error_versus_time(vase, reference_spp, max_spp);
+  return 0;
+}

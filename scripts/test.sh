@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Sets up a fresh Debian 12 machine, builds everything and runs the whole test suite.
+# MATPREDICT_SANITIZE=1 builds with ASan + UBSan into ./build-sanitize instead.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+bash "$root/scripts/install_deps.sh"
+if [ "${MATPREDICT_SANITIZE:-0}" = 1 ]; then
+  build="$root/build-sanitize"
+  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMATPREDICT_SANITIZE=ON -DMATPREDICT_BUILD_BENCH=OFF
+else
+  build="$root/build"
+  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release
+fi
+cmake --build "$build" -j "$(nproc)"
+ctest --test-dir "$build" --output-on-failure -j "$(nproc)"

@@ -1,0 +1,131 @@
+// Each AOV equals the material and geometry at the first hit; labels and ids are never blended.
+#include <catch2/catch.hpp>
+
+#include <atomic>
+#include <cmath>
+#include <set>
+
+#include "matrender/camera.h"
+#include "matrender/render.h"
+#include "matrender/scene.h"
+#include "test_scenes.h"
+
+using namespace matrender;
+
+TEST_CASE("AOVs of a two-part plane equal the materials at the hit", "[render]") {
+  // The plane's left half (x < 0) is part 0, the right half part 1.
+  matgeom::TriangleMesh plane;
+  plane.positions = {{-1, -1, 0}, {0, -1, 0}, {1, -1, 0}, {-1, 1, 0}, {0, 1, 0}, {1, 1, 0}};
+  plane.triangles = {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}};
+  plane.triangle_parts = {0, 0, 1, 1};
+  Material left, right;
+  left.base_color.value = glm::vec3(0.2f, 0.4f, 0.6f);
+  left.roughness.value = 0.25f;
+  left.metallic.value = 0.0f;
+  left.label_id = 3;
+  right.base_color.value = glm::vec3(0.9f, 0.1f, 0.5f);
+  right.roughness.value = 0.75f;
+  right.metallic.value = 1.0f;
+  right.label_id = 5;
+  Scene scene;
+  scene.add_mesh(plane, {scene.add_material(left), scene.add_material(right)});
+  scene.add_light(PointLight{glm::dvec3(0, 0, 1), 10.0, glm::dvec3(1.0)});
+
+  // Straight down from 2 m; the 1.2 x 1.2 m footprint lies inside the 2 x 2 m plane.
+  const Camera camera = Camera::look_at({0, 0, 2}, {0, 0, 0}, {0, 1, 0}, 2.0 * std::atan(0.3), 40, 40);
+  RenderSettings settings;
+  settings.samples_per_pixel = 8;
+  FrameBuffers frame;
+  render(scene, camera, settings, frame);
+
+  std::set<int> labels, parts;
+  for (int y = 0; y < frame.height; ++y) {
+    for (int x = 0; x < frame.width; ++x) {
+      const size_t i = static_cast<size_t>(y) * frame.width + x;
+      labels.insert(frame.label[i]);
+      parts.insert(frame.part_id[i]);
+      CHECK(frame.alpha[i] == 1.0f);
+      CHECK(frame.normal_world[3 * i + 2] == Approx(1.0f));
+      CHECK(frame.normal_camera[3 * i + 2] == Approx(1.0f));  // facing the camera (+Z toward viewer)
+      CHECK(frame.depth[i] == Approx(2.0f).epsilon(1e-5));
+      // Pixels away from the seam see one material only.
+      if (x < frame.width / 2 - 2 || x >= frame.width / 2 + 2) {
+        const bool is_left = x < frame.width / 2;
+        const Material& m = is_left ? left : right;
+        CHECK(frame.part_id[i] == (is_left ? 0 : 1));
+        CHECK(frame.label[i] == m.label_id);
+        CHECK(frame.roughness[i] == Approx(m.roughness.value));
+        CHECK(frame.metallic[i] == Approx(m.metallic.value));
+        for (int c = 0; c < 3; ++c) CHECK(frame.base_color[3 * i + c] == Approx(m.base_color.value[c]));
+      }
+    }
+  }
+  CHECK(labels == std::set<int>{3, 5});  // never a blend of 3 and 5
+  CHECK(parts == std::set<int>{0, 1});
+}
+
+TEST_CASE("Coverage, background and camera-space normals at an object's edge", "[render]") {
+  Scene scene;
+  scene.add_mesh(test_scenes::horizontal_square(1.0), {scene.add_material(test_scenes::lambert(0.5f))});
+  scene.set_background(glm::vec3(0.25f));
+  // Looking at the square from the side at 45 degrees: half the image is background.
+  const Camera camera = Camera::look_at({0.0, -1.0, 1.0}, {0.0, 0.5, 0.0}, {0, 0, 1}, 0.5, 32, 32);
+  RenderSettings settings;
+  settings.samples_per_pixel = 16;
+  FrameBuffers frame;
+  render(scene, camera, settings, frame);
+  int background = 0, partial = 0;
+  for (size_t i = 0; i < frame.alpha.size(); ++i) {
+    if (frame.alpha[i] == 0.0f) {
+      ++background;
+      CHECK(frame.part_id[i] == -1);
+      CHECK(frame.depth[i] == 0.0f);
+      CHECK(frame.color[3 * i] == Approx(0.25f));
+    } else if (frame.alpha[i] < 1.0f) {
+      ++partial;
+    }
+    if (frame.alpha[i] > 0.0f) {
+      // World +Z seen from 45 degrees above: camera-space normal (0, sin 45, cos 45).
+      CHECK(frame.normal_camera[3 * i + 0] == Approx(0.0f).margin(1e-5));
+      CHECK(frame.normal_camera[3 * i + 1] == Approx(std::sqrt(0.5f)).epsilon(1e-4));
+      CHECK(frame.normal_camera[3 * i + 2] == Approx(std::sqrt(0.5f)).epsilon(1e-4));
+    }
+  }
+  CHECK(background > 0);
+  CHECK(partial > 0);  // the filter spreads the edge over more than one pixel row
+}
+
+TEST_CASE("Changing lamps re-renders without a BVH rebuild; progress and cancel work", "[render]") {
+  Scene scene;
+  scene.add_mesh(test_scenes::horizontal_square(2.0), {scene.add_material(test_scenes::lambert(0.5f))});
+  scene.add_light(PointLight{glm::dvec3(0, 0, 1), 10.0, glm::dvec3(1.0)});
+  const Camera camera = Camera::look_at({0, -1, 1}, {0, 0, 0}, {0, 0, 1}, 0.8, 32, 32);
+  RenderSettings settings;
+  settings.samples_per_pixel = 2;
+  double last_progress = 0.0;
+  bool monotonic = true;
+  settings.progress = [&](double f) {
+    monotonic &= f >= last_progress;
+    last_progress = f;
+  };
+  FrameBuffers first, second;
+  render(scene, camera, settings, first);
+  CHECK(last_progress == 1.0);
+  CHECK(monotonic);
+  const double build_seconds = scene.bvh_build_seconds();
+  REQUIRE(scene.committed());
+
+  scene.clear_lights();
+  scene.add_light(PointLight{glm::dvec3(0, 0, 1), 40.0, glm::dvec3(1.0)});
+  render(scene, camera, settings, second);
+  CHECK(scene.bvh_build_seconds() == build_seconds);
+  // Four times the power, four times the radiance (same seed, same paths).
+  for (size_t i = 0; i < first.color.size(); ++i) CHECK(second.color[i] == Approx(4.0f * first.color[i]).epsilon(1e-5));
+  CHECK_THROWS_AS(scene.add_mesh(test_scenes::horizontal_square(1.0), {0}), std::logic_error);
+
+  std::atomic<bool> cancel{true};
+  settings.cancel = &cancel;
+  settings.progress = nullptr;
+  FrameBuffers cancelled;
+  CHECK(render(scene, camera, settings, cancelled).cancelled);
+}

@@ -1,0 +1,59 @@
+// The image for a seed does not depend on the thread count; the seed changes the noise.
+#include <catch2/catch.hpp>
+
+#include <cstring>
+
+#include "matrender/camera.h"
+#include "matrender/render.h"
+#include "matrender/scene.h"
+#include "test_scenes.h"
+
+using namespace matrender;
+
+namespace {
+
+Scene glossy_box_scene() {
+  Scene scene;
+  Material floor = test_scenes::lambert(0.7f);
+  floor.diffuse_model = DiffuseModel::Principled;
+  floor.specular = 0.5f;
+  floor.roughness.value = 0.3f;
+  matgeom::TriangleMesh mesh = test_scenes::horizontal_square(4.0);
+  scene.add_mesh(mesh, {scene.add_material(floor)});
+  Material metal;
+  metal.base_color.value = glm::vec3(0.9f, 0.6f, 0.3f);
+  metal.metallic.value = 1.0f;
+  metal.roughness.value = 0.2f;
+  scene.add_mesh(test_scenes::horizontal_square(0.5, 0.4), {scene.add_material(metal)});
+  RectLight lamp;
+  lamp.light_to_world[3] = glm::dvec4(0.0, 0.0, 2.0, 1.0);
+  lamp.power = 200.0;
+  scene.add_light(lamp);
+  scene.add_light(PointLight{glm::dvec3(1.0, 1.0, 1.0), 50.0, glm::dvec3(1.0)});
+  scene.set_background(glm::vec3(0.05f));
+  return scene;
+}
+
+}  // namespace
+
+TEST_CASE("One and two threads give bit-identical images for the same seed", "[render]") {
+  Scene scene = glossy_box_scene();
+  const Camera camera = Camera::look_at({2.0, -2.0, 1.5}, {0, 0, 0.2}, {0, 0, 1}, 0.7, 48, 40);
+  RenderSettings settings;
+  settings.samples_per_pixel = 16;
+  settings.seed = 3;
+  FrameBuffers one, two, other_seed;
+  settings.threads = 1;
+  render(scene, camera, settings, one);
+  settings.threads = 2;
+  render(scene, camera, settings, two);
+  REQUIRE(one.color.size() == two.color.size());
+  CHECK(std::memcmp(one.color.data(), two.color.data(), one.color.size() * sizeof(float)) == 0);
+  CHECK(std::memcmp(one.normal_world.data(), two.normal_world.data(), one.normal_world.size() * sizeof(float)) == 0);
+  CHECK(one.label == two.label);
+  CHECK(one.depth == two.depth);
+
+  settings.seed = 4;
+  render(scene, camera, settings, other_seed);
+  CHECK(std::memcmp(one.color.data(), other_seed.color.data(), one.color.size() * sizeof(float)) != 0);
+}

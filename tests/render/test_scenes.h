@@ -1,0 +1,61 @@
+#pragma once
+// Small scenes the render tests share.
+#include <cmath>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "matgeom/mesh.h"
+#include "matrender/frame.h"
+#include "matrender/material.h"
+
+namespace test_scenes {
+
+// Square of side `size` in the plane z = height, centred on the origin, normal +Z.
+inline matgeom::TriangleMesh horizontal_square(double size, double height = 0.0) {
+  const float h = static_cast<float>(0.5 * size);
+  const float z = static_cast<float>(height);
+  matgeom::TriangleMesh m;
+  m.positions = {{-h, -h, z}, {h, -h, z}, {h, h, z}, {-h, h, z}};
+  m.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  m.triangles = {{0, 1, 2}, {0, 2, 3}};
+  return m;
+}
+
+inline matrender::Material lambert(float albedo) {
+  matrender::Material m;
+  m.diffuse_model = matrender::DiffuseModel::Lambert;
+  m.base_color.value = glm::vec3(albedo);
+  m.specular = 0.0f;
+  m.metallic.value = 0.0f;
+  return m;
+}
+
+struct PixelStatistics {
+  double mean = 0.0;
+  double standard_error = 0.0;  // of the mean, from the spread between pixels
+};
+
+// Mean and standard error over all pixels of one colour channel.
+inline PixelStatistics channel_statistics(const matrender::FrameBuffers& frame, int channel) {
+  const size_t n = static_cast<size_t>(frame.width) * frame.height;
+  double sum = 0.0, sum2 = 0.0;
+  for (size_t i = 0; i < n; ++i) {
+    const double v = frame.color[3 * i + channel];
+    sum += v;
+    sum2 += v * v;
+  }
+  PixelStatistics s;
+  s.mean = sum / n;
+  const double variance = std::max(0.0, (sum2 / n - s.mean * s.mean) * n / (n - 1.0));
+  s.standard_error = std::sqrt(variance / n);
+  return s;
+}
+
+inline bool all_finite(const std::vector<float>& values) {
+  for (float v : values)
+    if (!std::isfinite(v)) return false;
+  return true;
+}
+
+}  // namespace test_scenes
