@@ -123,11 +123,16 @@ struct Support {
 
   Ball ball() const {
     switch (size) {
-      case 1: return ball_through(points[0]);
-      case 2: return ball_through(points[0], points[1]);
-      case 3: return ball_through(points[0], points[1], points[2]);
-      case 4: return ball_through(points[0], points[1], points[2], points[3]);
-      default: return Ball{};
+      case 1:
+        return ball_through(points[0]);
+      case 2:
+        return ball_through(points[0], points[1]);
+      case 3:
+        return ball_through(points[0], points[1], points[2]);
+      case 4:
+        return ball_through(points[0], points[1], points[2], points[3]);
+      default:
+        return Ball{};
     }
   }
 };
@@ -153,8 +158,8 @@ Ball move_to_front_ball(std::vector<glm::dvec3>& points, size_t count, Support& 
 // Uniform integer in [0, bound) from 64 random bits, by rejection (std::uniform_int_distribution
 // is implementation-defined, so it would make the order differ between standard libraries).
 uint64_t uniform_below(std::mt19937& rng, uint64_t bound) {
-  const uint64_t limit = std::numeric_limits<uint64_t>::max() -
-                         std::numeric_limits<uint64_t>::max() % bound;
+  const uint64_t limit =
+      std::numeric_limits<uint64_t>::max() - std::numeric_limits<uint64_t>::max() % bound;
   for (;;) {
     const uint64_t bits = (static_cast<uint64_t>(rng()) << 32) | static_cast<uint64_t>(rng());
     if (bits < limit) return bits % bound;
@@ -194,13 +199,13 @@ Sphere minimal_enclosing_sphere(const std::vector<glm::dvec3>& points) {
   Support support;
   const Ball ball = move_to_front_ball(local, local.size(), support);
 
-  // The containment slack and the degenerate fallbacks may leave a point a hair outside; one
-  // last pass makes the sphere enclose every point exactly as computed.
-  double radius_squared = ball.radius_squared;
-  for (const glm::dvec3& p : local) {
-    radius_squared = std::max(radius_squared, distance_squared(ball.center, p));
-  }
-  return Sphere{origin + ball.center, std::sqrt(radius_squared)};
+  // The containment slack, the degenerate fallbacks and the rounding of the shift back to the
+  // caller's frame may each leave a point a hair outside; the radius is therefore taken as the
+  // largest distance from the returned centre, so every point is enclosed as computed.
+  Sphere sphere{origin + ball.center, 0.0};
+  for (const glm::dvec3& p : points)
+    sphere.radius = std::max(sphere.radius, glm::distance(p, sphere.center));
+  return sphere;
 }
 
 Sphere minimal_enclosing_sphere(const std::vector<glm::vec3>& points) {

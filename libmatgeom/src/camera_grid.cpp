@@ -28,7 +28,8 @@ void validate_spec(const CameraGridSpec& spec) {
     fail("the radius must be positive and finite (got " + std::to_string(spec.radius) + ")");
   }
   if (!is_finite(spec.center)) fail("the centre is not finite");
-  if (!(std::isfinite(spec.phi_min) && std::isfinite(spec.phi_max) && spec.phi_min <= spec.phi_max)) {
+  if (!(std::isfinite(spec.phi_min) && std::isfinite(spec.phi_max) &&
+        spec.phi_min <= spec.phi_max)) {
     fail("need finite phi_min <= phi_max (got " + std::to_string(spec.phi_min) + ", " +
          std::to_string(spec.phi_max) + ")");
   }
@@ -104,8 +105,8 @@ GridCamera grid_camera(const CameraGridSpec& spec, int i, int j) {
   validate_spec(spec);
   if (i < 0 || i >= spec.n_phi || j < 0 || j >= spec.n_theta) {
     std::ostringstream problem;
-    problem << "camera grid: cell (" << i << ", " << j << ") is outside the " << spec.n_phi
-            << " x " << spec.n_theta << " grid";
+    problem << "camera grid: cell (" << i << ", " << j << ") is outside the " << spec.n_phi << " x "
+            << spec.n_theta << " grid";
     throw std::out_of_range(problem.str());
   }
   return make_grid_camera(spec, i, j);

@@ -68,7 +68,7 @@ TEST_CASE("Coverage, background and camera-space normals at an object's edge", "
   Scene scene;
   scene.add_mesh(test_scenes::horizontal_square(1.0), {scene.add_material(test_scenes::lambert(0.5f))});
   scene.set_background(glm::vec3(0.25f));
-  // Looking at the square from the side at 45 degrees: half the image is background.
+  // Looking down at the square's far edge: the top of the image is background.
   const Camera camera = Camera::look_at({0.0, -1.0, 1.0}, {0.0, 0.5, 0.0}, {0, 0, 1}, 0.5, 32, 32);
   RenderSettings settings;
   settings.samples_per_pixel = 16;
@@ -85,10 +85,12 @@ TEST_CASE("Coverage, background and camera-space normals at an object's edge", "
       ++partial;
     }
     if (frame.alpha[i] > 0.0f) {
-      // World +Z seen from 45 degrees above: camera-space normal (0, sin 45, cos 45).
+      // World +Z seen along d = (0, 1.5, -1) / |.|: camera +Z = -d, so the camera-space normal
+      // is (0, sin e, cos e) with cos e = 1 / sqrt(3.25), the elevation's complement.
+      const float cos_e = 1.0f / std::sqrt(3.25f);
       CHECK(frame.normal_camera[3 * i + 0] == Approx(0.0f).margin(1e-5));
-      CHECK(frame.normal_camera[3 * i + 1] == Approx(std::sqrt(0.5f)).epsilon(1e-4));
-      CHECK(frame.normal_camera[3 * i + 2] == Approx(std::sqrt(0.5f)).epsilon(1e-4));
+      CHECK(frame.normal_camera[3 * i + 1] == Approx(std::sqrt(1.0f - cos_e * cos_e)).epsilon(1e-4));
+      CHECK(frame.normal_camera[3 * i + 2] == Approx(cos_e).epsilon(1e-4));
     }
   }
   CHECK(background > 0);

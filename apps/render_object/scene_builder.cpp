@@ -1,0 +1,242 @@
+#include "scene_builder.h"
+
+#include <algorithm>
+#include <exception>
+#include <map>
+#include <stdexcept>
+#include <tuple>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "matgeom/builtin_objects.h"
+#include "matgeom/camera_grid.h"
+#include "matgeom/gltf_reader.h"
+#include "matgeom/mesh.h"
+#include "matrender/asset.h"
+#include "matrender/texture.h"
+
+namespace render_object {
+namespace {
+
+// Any failure to read a user's mesh is a problem with that input, whatever the library throws.
+matgeom::ObjectAsset load_object(const ObjectDescription& object) {
+  if (const auto* file = std::get_if<MeshFile>(&object.source)) {
+    try {
+      return matgeom::read_gltf(file->path);
+    } catch (const std::exception& e) {
+      throw object.origin.error("/mesh", e.what());
+    }
+  }
+  const auto& builtin = std::get<BuiltinObject>(object.source);
+  try {
+    return matgeom::make_builtin_object(builtin.name, builtin.seed);
+  } catch (const std::exception& e) {
+    throw object.origin.error("/builtin", e.what());
+  }
+}
+
+// All objects as one surface, so that the rig is sized and the grid camera centred for
+// everything in the scene rather than for one object.
+matgeom::TriangleMesh merged_surface(const std::vector<matgeom::ObjectAsset>& assets) {
+  matgeom::TriangleMesh merged;
+  for (const matgeom::ObjectAsset& asset : assets) {
+    const auto offset = static_cast<uint32_t>(merged.positions.size());
+    merged.positions.insert(merged.positions.end(), asset.mesh.positions.begin(), asset.mesh.positions.end());
+    for (const glm::uvec3& triangle : asset.mesh.triangles) merged.triangles.push_back(triangle + offset);
+  }
+  return merged;
+}
+
+// The scene file's materials, added to the scene on first use so that unused ones load nothing;
+// a texture file shared by several materials is loaded once.
+class SceneMaterials {
+ public:
+  SceneMaterials(const std::map<std::string, MaterialDescription>& described, matrender::Scene& scene)
+      : described_(described), scene_(scene) {}
+
+  uint32_t id(const std::string& name) {
+    if (const auto it = ids_.find(name); it != ids_.end()) return it->second;
+    const MaterialDescription& description = described_.at(name);
+    matrender::Material material = description.constants;
+    material.base_color.texture = texture(description.base_color_texture);
+    material.roughness.texture = texture(description.roughness_texture);
+    material.metallic.texture = texture(description.metallic_texture);
+    material.normal_map = texture(description.normal_map);
+    return ids_[name] = scene_.add_material(std::move(material));
+  }
+
+ private:
+  matrender::TexturePtr texture(const std::optional<TextureFile>& file) {
+    if (!file) return nullptr;
+    matrender::TexturePtr& loaded = textures_[std::make_tuple(file->path, file->color_space, file->wrap)];
+    if (!loaded) {
+      try {
+        loaded = matrender::Texture::load(file->path, file->color_space, file->wrap);
+      } catch (const std::exception& e) {
+        throw file->origin.error("/texture", e.what());
+      }
+    }
+    return loaded;
+  }
+
+  const std::map<std::string, MaterialDescription>& described_;
+  matrender::Scene& scene_;
+  std::map<std::string, uint32_t> ids_;
+  std::map<std::tuple<std::string, matrender::ColorSpace, matrender::Wrap>, matrender::TexturePtr> textures_;
+};
+
+size_t part_count(const matgeom::ObjectAsset& asset) {
+  return std::max({static_cast<size_t>(asset.mesh.part_count()), asset.materials.size(), size_t{1}});
+}
+
+std::string quoted_part_names(const matgeom::TriangleMesh& mesh) {
+  std::string names;
+  for (const std::string& name : mesh.part_names) names += (names.empty() ? "\"" : ", \"") + name + "\"";
+  return names.empty() ? "its parts have no names" : "its parts: " + names;
+}
+
+// The scene material of each part the description assigns one to; parts left out keep the
+// object's own material.
+std::vector<std::optional<uint32_t>> assigned_materials(const ObjectDescription& object,
+                                                        const matgeom::ObjectAsset& asset, SceneMaterials& materials) {
+  std::vector<std::optional<uint32_t>> assigned(part_count(asset));
+  if (object.material) std::fill(assigned.begin(), assigned.end(), materials.id(*object.material));
+  const std::vector<std::string>& names = asset.mesh.part_names;
+  for (const auto& [part, material] : object.part_materials) {
+    bool found = false;
+    for (size_t k = 0; k < assigned.size() && k < names.size(); ++k) {
+      if (names[k] != part) continue;
+      assigned[k] = materials.id(material);
+      found = true;
+    }
+    if (!found)
+      throw object.origin.error(
+          "/materials", fmt::format("the object has no part named \"{}\" ({})", part, quoted_part_names(asset.mesh)));
+  }
+  return assigned;
+}
+
+matrender::Wrap render_wrap(matgeom::TextureWrap wrap) {
+  return wrap == matgeom::TextureWrap::Clamp ? matrender::Wrap::Clamp : matrender::Wrap::Repeat;
+}
+
+// matrender::add_asset with some parts' materials replaced. Decodes images the way add_asset
+// does (base colour as sRGB, metallic-roughness and normal maps as non-color, with the slot's
+// wrap mode), but only those that the remaining slots use.
+void add_asset_with_assigned_materials(matrender::Scene& scene, const matgeom::ObjectAsset& asset,
+                                       const std::vector<std::optional<uint32_t>>& assigned) {
+  std::vector<matrender::TexturePtr> as_srgb(asset.images.size()), as_data(asset.images.size());
+  auto decode = [&](int index, matrender::ColorSpace space, matgeom::TextureWrap wrap,
+                    std::vector<matrender::TexturePtr>& decoded) {
+    if (index < 0 || static_cast<size_t>(index) >= asset.images.size() || decoded[static_cast<size_t>(index)]) return;
+    const matgeom::ImagePixels& image = asset.images[static_cast<size_t>(index)];
+    decoded[static_cast<size_t>(index)] = matrender::Texture::from_pixels8(
+        image.width, image.height, image.channels, image.data.data(), space, render_wrap(wrap), image.name);
+  };
+  std::vector<uint32_t> ids(assigned.size());
+  for (size_t k = 0; k < assigned.size(); ++k) {
+    if (assigned[k]) {
+      ids[k] = *assigned[k];
+    } else if (k < asset.materials.size()) {
+      const matgeom::MaterialDesc& slot = asset.materials[k];
+      decode(slot.base_color_image, matrender::ColorSpace::SRGB, slot.wrap, as_srgb);
+      decode(slot.metallic_roughness_image, matrender::ColorSpace::NonColor, slot.wrap, as_data);
+      decode(slot.normal_image, matrender::ColorSpace::NonColor, slot.wrap, as_data);
+      ids[k] = scene.add_material(matrender::material_from_desc(slot, as_srgb, as_data));
+    } else {
+      ids[k] = scene.add_material(matrender::Material{});
+    }
+  }
+  scene.add_mesh(asset.mesh, ids);
+}
+
+void add_object(matrender::Scene& scene, const ObjectDescription& object, const matgeom::ObjectAsset& asset,
+                SceneMaterials& materials) {
+  const std::vector<std::optional<uint32_t>> assigned = assigned_materials(object, asset, materials);
+  // A mesh or slot the renderer rejects (non-finite vertex, bad image index) is a bad input file.
+  try {
+    if (std::none_of(assigned.begin(), assigned.end(), [](const auto& id) { return id.has_value(); }))
+      matrender::add_asset(scene, asset);
+    else
+      add_asset_with_assigned_materials(scene, asset, assigned);
+  } catch (const std::invalid_argument& e) {
+    throw object.origin.error("", e.what());
+  }
+}
+
+matrender::Light render_light(const matgeom::RigLight& light) {
+  if (light.kind == matgeom::RigLightKind::Area)
+    return matrender::RectLight{light.light_to_world, light.size_x, light.size_y, light.power, light.color};
+  matrender::SpotLight spot;
+  spot.position = light.position;
+  spot.direction = -glm::dvec3(light.light_to_world[2]);  // lamps emit down their local -Z
+  spot.spot_angle = light.spot_angle;
+  spot.blend = light.spot_blend;
+  spot.power = light.power;
+  spot.color = light.color;
+  return spot;
+}
+
+void add_lights(const LightsDescription& lights, BuiltScene& built) {
+  if (const auto* listed = std::get_if<std::vector<matrender::Light>>(&lights)) {
+    for (const matrender::Light& light : *listed) built.scene.add_light(light);
+    return;
+  }
+  matgeom::LightRigOptions options;
+  options.target_illuminance_lux = std::get<LightRigDescription>(lights).target_illuminance_lux;
+  built.rig = matgeom::make_light_rig(built.bounds.center, built.bounds.radius, options);
+  for (const matgeom::RigLight& light : built.rig->lights) built.scene.add_light(render_light(light));
+}
+
+glm::dmat4 camera_to_world(const CameraDescription& camera, const glm::dvec3& centroid) {
+  if (const auto* look = std::get_if<LookAtPlacement>(&camera.placement))
+    return matgeom::look_at_camera_to_world(look->position, look->target, look->up);
+  if (const auto* matrix = std::get_if<MatrixPlacement>(&camera.placement)) return matrix->camera_to_world;
+  const auto& grid = std::get<GridPlacement>(camera.placement);
+  matgeom::CameraGridSpec spec = grid.spec;
+  if (grid.center_on_centroid) spec.center = centroid;
+  try {
+    return matgeom::grid_camera(spec, grid.i, grid.j).camera_to_world;
+  } catch (const std::logic_error& e) {
+    throw InputError(std::string("camera grid: ") + e.what());
+  }
+}
+
+matrender::Camera make_camera(const CameraDescription& description, const glm::dvec3& centroid) {
+  matrender::Camera camera;
+  camera.camera_to_world = camera_to_world(description, centroid);
+  camera.vertical_fov = description.vertical_fov;
+  camera.width = description.width;
+  camera.height = description.height;
+  return camera;
+}
+
+std::string frame_stem(const CameraDescription& camera) {
+  const auto* grid = std::get_if<GridPlacement>(&camera.placement);
+  return grid ? fmt::format("view_{:03d}_{:03d}", grid->i, grid->j) : "view";
+}
+
+}  // namespace
+
+BuiltScene build_scene(const SceneDescription& description) {
+  std::vector<matgeom::ObjectAsset> assets;
+  for (const ObjectDescription& object : description.objects) {
+    assets.push_back(load_object(object));
+    matgeom::transform_mesh(assets.back().mesh, object.object_to_world);
+  }
+  const matgeom::TriangleMesh surface = merged_surface(assets);
+
+  BuiltScene built;
+  built.bounds = matgeom::minimal_enclosing_sphere(surface.positions);
+  SceneMaterials materials(description.materials, built.scene);
+  for (size_t k = 0; k < assets.size(); ++k) add_object(built.scene, description.objects[k], assets[k], materials);
+  add_lights(description.lights, built);
+  built.scene.set_background(description.background);
+  built.camera = make_camera(description.camera, matgeom::surface_centroid(surface));
+  built.frame_stem = frame_stem(description.camera);
+  built.scene.commit();
+  return built;
+}
+
+}  // namespace render_object

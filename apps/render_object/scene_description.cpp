@@ -1,0 +1,15 @@
+#include "scene_description.h"
+
+namespace render_object {
+
+std::string Origin::describe(const std::string& child) const {
+  if (!pointer) return source;
+  const std::string where = *pointer + child;
+  return where.empty() ? source : source + ": " + where;
+}
+
+InputError Origin::error(const std::string& child, const std::string& message) const {
+  return InputError(describe(child) + ": " + message);
+}
+
+}  // namespace render_object

@@ -1,0 +1,119 @@
+#pragma once
+// What render_object renders, as plain data: read from a scene file (scene_file.h) or made for
+// an object with the paper's rig and camera (default_scene.h), adjusted by command-line options,
+// then built into a matrender::Scene (scene_builder.h). Describing first lets every input be
+// checked before anything is loaded or rendered, so a bad input never writes a file.
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "matgeom/camera_grid.h"
+#include "matrender/camera.h"
+#include "matrender/light.h"
+#include "matrender/material.h"
+#include "matrender/render.h"
+#include "matrender/texture.h"
+
+namespace render_object {
+
+// A problem with what the user gave (a file or an option), as opposed to a failure while
+// rendering or writing: the two end with different exit codes.
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Where a described item came from, so that problems found only while building (a corrupt mesh,
+// an unknown part name) still point at the value to fix.
+struct Origin {
+  std::string source;                  // scene file path, or the command-line option
+  std::optional<std::string> pointer;  // JSON pointer (RFC 6901) into the scene file; none for an option
+
+  // "scene.json: /objects/1/mesh" for child "/mesh" of "/objects/1"; just "--mesh" for an option.
+  std::string describe(const std::string& child = "") const;
+  InputError error(const std::string& child, const std::string& message) const;
+};
+
+// A texture file to load; the path is already resolved against the scene file's folder.
+struct TextureFile {
+  std::string path;
+  matrender::ColorSpace color_space = matrender::ColorSpace::NonColor;
+  matrender::Wrap wrap = matrender::Wrap::Repeat;
+  Origin origin;
+};
+
+struct MaterialDescription {
+  // Every constant (factors, channels, strengths, label, model); the texture pointers stay empty
+  // until the files below are loaded.
+  matrender::Material constants;
+  std::optional<TextureFile> base_color_texture;
+  std::optional<TextureFile> roughness_texture;
+  std::optional<TextureFile> metallic_texture;
+  std::optional<TextureFile> normal_map;
+};
+
+struct MeshFile {
+  std::string path;  // .glb or .gltf
+};
+struct BuiltinObject {
+  std::string name;
+  uint32_t seed = 0;
+};
+
+struct ObjectDescription {
+  std::variant<MeshFile, BuiltinObject> source;
+  glm::dmat4 object_to_world{1.0};
+  // Scene materials by name: `material` for every part, or `part_materials` by part name. Parts
+  // not covered keep the object's own materials (glTF slots, built-in materials).
+  std::optional<std::string> material;
+  std::map<std::string, std::string> part_materials;
+  Origin origin;
+};
+
+// The paper's light rig around the minimal enclosing sphere of all objects.
+struct LightRigDescription {
+  std::optional<double> target_illuminance_lux;
+};
+using LightsDescription = std::variant<std::vector<matrender::Light>, LightRigDescription>;
+
+struct LookAtPlacement {
+  glm::dvec3 position{0.0};
+  glm::dvec3 target{0.0};
+  glm::dvec3 up{0.0, 0.0, 1.0};
+};
+struct GridPlacement {
+  matgeom::CameraGridSpec spec;
+  bool center_on_centroid = true;  // spec.center becomes the surface centroid of all objects
+  int i = 0;
+  int j = 0;
+};
+struct MatrixPlacement {
+  glm::dmat4 camera_to_world{1.0};
+};
+
+struct CameraDescription {
+  std::variant<LookAtPlacement, GridPlacement, MatrixPlacement> placement;
+  double vertical_fov = matrender::Camera{}.vertical_fov;
+  int width = matrender::Camera{}.width;
+  int height = matrender::Camera{}.height;
+};
+
+struct SceneDescription {
+  CameraDescription camera;
+  LightsDescription lights = LightRigDescription{};
+  glm::vec3 background{0.0f};
+  std::map<std::string, MaterialDescription> materials;
+  std::vector<ObjectDescription> objects;
+  // Samples, seed, bounces and background transparency; threads, AOVs, progress and
+  // cancellation belong to the run, not the scene, and are set by the app.
+  matrender::RenderSettings settings;
+  double exposure_stops = 0.0;
+};
+
+}  // namespace render_object

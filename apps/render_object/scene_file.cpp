@@ -1,0 +1,576 @@
+#include "scene_file.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <initializer_list>
+#include <limits>
+#include <optional>
+
+#include <fmt/format.h>
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+
+#include "matgeom/builtin_objects.h"
+#include "matgeom/camera_grid.h"
+
+namespace render_object {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+constexpr long long kMaxUint32 = std::numeric_limits<uint32_t>::max();
+constexpr long long kMaxInt = std::numeric_limits<int>::max();
+
+std::string quoted_list(const std::vector<std::string>& names) {
+  std::string list;
+  for (const std::string& name : names) list += (list.empty() ? "\"" : ", \"") + name + "\"";
+  return list;
+}
+
+// RFC 6901: "~" is written "~0" and "/" is written "~1" inside a pointer token.
+std::string pointer_token(const std::string& key) {
+  std::string token;
+  for (char c : key) {
+    if (c == '~') token += "~0";
+    else if (c == '/') token += "~1";
+    else token += c;
+  }
+  return token;
+}
+
+// A JSON value together with its file and JSON pointer, so that every check can name the value
+// it rejects.
+class Node {
+ public:
+  Node(const json& value, std::string pointer, const std::string& file)
+      : value_(value), pointer_(std::move(pointer)), file_(file) {}
+
+  Origin origin() const { return {file_, pointer_}; }
+  [[noreturn]] void fail(const std::string& message) const { throw origin().error("", message); }
+
+  // This must be an object whose keys are all in `allowed`: a misspelt key is an error rather
+  // than a silently ignored setting.
+  void expect_keys(std::initializer_list<const char*> allowed) const {
+    if (!value_.is_object()) fail("expected an object");
+    for (const auto& item : value_.items()) {
+      const bool known = std::any_of(allowed.begin(), allowed.end(),
+                                     [&](const char* key) { return item.key() == key; });
+      if (!known) {
+        std::vector<std::string> names(allowed.begin(), allowed.end());
+        member_node(item.key()).fail("unknown key (allowed here: " + quoted_list(names) + ")");
+      }
+    }
+  }
+
+  bool has(const char* key) const { return value_.is_object() && value_.contains(key); }
+  Node operator[](const char* key) const {
+    if (!value_.is_object()) fail("expected an object");
+    if (!has(key)) fail(fmt::format("missing key \"{}\"", key));
+    return member_node(key);
+  }
+  std::optional<Node> find(const char* key) const {
+    if (!has(key)) return std::nullopt;
+    return member_node(key);
+  }
+  Node operator[](size_t index) const {
+    return Node(value_.at(index), pointer_ + "/" + std::to_string(index), file_);
+  }
+  // Members of an object, in file order.
+  std::vector<std::pair<std::string, Node>> members() const {
+    if (!value_.is_object()) fail("expected an object");
+    std::vector<std::pair<std::string, Node>> result;
+    for (const auto& item : value_.items()) result.emplace_back(item.key(), member_node(item.key()));
+    return result;
+  }
+
+  bool is_array() const { return value_.is_array(); }
+  bool is_string() const { return value_.is_string(); }
+  bool is_number() const { return value_.is_number(); }
+  size_t array_size(const std::string& expectation) const {
+    if (!value_.is_array()) fail("expected " + expectation);
+    return value_.size();
+  }
+
+  double number() const {
+    if (!value_.is_number()) fail("expected a number");
+    return value_.get<double>();
+  }
+  double number_where(const std::function<bool(double)>& accept, const std::string& expectation) const {
+    if (!value_.is_number() || !accept(value_.get<double>())) fail("expected " + expectation);
+    return value_.get<double>();
+  }
+  double positive() const { return number_where([](double v) { return v > 0.0; }, "a positive number"); }
+  double non_negative() const { return number_where([](double v) { return v >= 0.0; }, "a number >= 0"); }
+  double unit_interval() const {
+    return number_where([](double v) { return v >= 0.0 && v <= 1.0; }, "a number in [0, 1]");
+  }
+  int integer_in(int lo, int hi) const {
+    return static_cast<int>(checked_integer(lo, hi, fmt::format("an integer in [{}, {}]", lo, hi)));
+  }
+  int integer_at_least(int lo) const {
+    return static_cast<int>(checked_integer(lo, kMaxInt, fmt::format("an integer >= {}", lo)));
+  }
+  uint32_t uint32() const {
+    return static_cast<uint32_t>(checked_integer(0, kMaxUint32, "an integer in [0, 4294967295]"));
+  }
+  std::string string() const {
+    if (!value_.is_string()) fail("expected a string");
+    return value_.get<std::string>();
+  }
+  bool boolean() const {
+    if (!value_.is_boolean()) fail("expected true or false");
+    return value_.get<bool>();
+  }
+  // Index of the string among `choices`.
+  size_t choice(const std::vector<std::string>& choices) const {
+    const auto it = value_.is_string() ? std::find(choices.begin(), choices.end(), value_.get<std::string>())
+                                       : choices.end();
+    if (it == choices.end()) fail("expected one of " + quoted_list(choices));
+    return static_cast<size_t>(it - choices.begin());
+  }
+
+ private:
+  // 3 and 3.0 are the same number to JSON writers, so both count as integers.
+  long long checked_integer(long long lo, long long hi, const std::string& expectation) const {
+    const bool integral = value_.is_number_integer() ||
+                          (value_.is_number_float() && std::trunc(value_.get<double>()) == value_.get<double>());
+    const double v = integral ? value_.get<double>() : 0.0;
+    if (!integral || v < static_cast<double>(lo) || v > static_cast<double>(hi)) fail("expected " + expectation);
+    return static_cast<long long>(v);
+  }
+
+  Node member_node(const std::string& key) const {
+    return Node(value_.at(key), pointer_ + "/" + pointer_token(key), file_);
+  }
+
+  const json& value_;
+  std::string pointer_;
+  const std::string& file_;
+};
+
+// ---- small value types ----------------------------------------------------------------------
+
+glm::dvec3 read_vec3(const Node& node) {
+  if (node.array_size("an array of 3 numbers") != 3) node.fail("expected an array of 3 numbers");
+  return {node[0].number(), node[1].number(), node[2].number()};
+}
+
+glm::dvec3 read_color(const Node& node) {
+  if (node.array_size("[r, g, b] with components >= 0") != 3) node.fail("expected [r, g, b] with components >= 0");
+  return {node[0].non_negative(), node[1].non_negative(), node[2].non_negative()};
+}
+
+glm::dvec3 read_unit_color(const Node& node) {
+  if (node.array_size("[r, g, b] with components in [0, 1]") != 3)
+    node.fail("expected [r, g, b] with components in [0, 1]");
+  return {node[0].unit_interval(), node[1].unit_interval(), node[2].unit_interval()};
+}
+
+glm::dvec3 read_direction(const Node& node) {
+  const glm::dvec3 v = read_vec3(node);
+  if (glm::length(v) == 0.0) node.fail("expected a non-zero vector");
+  return v;
+}
+
+// [min, max] with min < max, both accepted by `element`.
+std::pair<double, double> read_range(const Node& node, const std::function<double(const Node&)>& element) {
+  if (node.array_size("[min, max]") != 2) node.fail("expected [min, max]");
+  const double lo = element(node[0]), hi = element(node[1]);
+  if (!(lo < hi)) node.fail("expected [min, max] with min < max");
+  return {lo, hi};
+}
+
+// 4 rows of 4 numbers, row-major as written; glm stores columns.
+glm::dmat4 read_matrix(const Node& node) {
+  const std::string expectation = "a 4x4 matrix as 4 rows of 4 numbers";
+  if (node.array_size(expectation) != 4) node.fail("expected " + expectation);
+  glm::dmat4 m(1.0);
+  for (size_t r = 0; r < 4; ++r) {
+    const Node row = node[r];
+    if (row.array_size(expectation) != 4) row.fail("expected a row of 4 numbers");
+    for (size_t c = 0; c < 4; ++c) m[static_cast<int>(c)][static_cast<int>(r)] = row[c].number();
+  }
+  if (m[0][3] != 0.0 || m[1][3] != 0.0 || m[2][3] != 0.0 || m[3][3] != 1.0)
+    node.fail("expected an affine matrix (last row 0, 0, 0, 1)");
+  return m;
+}
+
+// A camera matrix must be a rotation and a translation: any scale or shear would silently change
+// the field of view or skew the image.
+glm::dmat4 read_rigid_matrix(const Node& node) {
+  const glm::dmat4 m = read_matrix(node);
+  const glm::dmat3 r(m);
+  const glm::dmat3 should_be_identity = glm::transpose(r) * r;
+  double worst = std::abs(glm::determinant(r) - 1.0);
+  for (int c = 0; c < 3; ++c)
+    for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(should_be_identity[c][k] - (c == k ? 1.0 : 0.0)));
+  if (worst > 1e-4) node.fail("expected a rotation and a translation (orthonormal, right-handed upper 3x3)");
+  return m;
+}
+
+std::string read_existing_file(const Node& node, const fs::path& folder) {
+  const std::string text = node.string();
+  if (text.empty()) node.fail("expected a file path");
+  const fs::path path = fs::path(text).is_absolute() ? fs::path(text) : (folder / text).lexically_normal();
+  std::error_code ec;
+  if (!fs::exists(path, ec)) node.fail("file not found: " + path.string());
+  if (fs::is_directory(path, ec)) node.fail("is a folder, expected a file: " + path.string());
+  return path.string();
+}
+
+std::string lowercase_extension(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+// ---- camera ---------------------------------------------------------------------------------
+
+GridPlacement read_grid(const Node& node) {
+  node.expect_keys({"cell", "n_phi", "n_theta", "radius", "phi_range_deg", "theta_range_deg", "center"});
+  GridPlacement grid;
+  matgeom::CameraGridSpec& spec = grid.spec;
+  if (auto n = node.find("n_phi")) spec.n_phi = n->integer_at_least(1);
+  if (auto n = node.find("n_theta")) spec.n_theta = n->integer_at_least(1);
+  if (auto r = node.find("radius")) spec.radius = r->positive();
+  if (auto range = node.find("phi_range_deg")) {
+    const auto [lo, hi] = read_range(*range, [](const Node& n) {
+      return n.number_where([](double v) { return v >= 0.0 && v <= 180.0; }, "an angle in [0, 180] degrees");
+    });
+    spec.phi_min = glm::radians(lo);
+    spec.phi_max = glm::radians(hi);
+  }
+  if (auto range = node.find("theta_range_deg")) {
+    const auto [lo, hi] = read_range(*range, [](const Node& n) { return n.number(); });
+    spec.theta_min = glm::radians(lo);
+    spec.theta_max = glm::radians(hi);
+  }
+  if (auto center = node.find("center")) {
+    if (center->is_string()) {
+      if (center->string() != "centroid") center->fail("expected \"centroid\" or [x, y, z]");
+    } else {
+      grid.center_on_centroid = false;
+      spec.center = read_vec3(*center);
+    }
+  }
+  const Node cell = node["cell"];
+  if (cell.array_size("[i, j]") != 2) cell.fail("expected [i, j]");
+  grid.i = cell[0].integer_in(0, spec.n_phi - 1);
+  grid.j = cell[1].integer_in(0, spec.n_theta - 1);
+  return grid;
+}
+
+LookAtPlacement read_look_at(const Node& node) {
+  LookAtPlacement look;
+  look.position = read_vec3(node["position"]);
+  look.target = read_vec3(node["look_at"]);
+  if (look.target == look.position) node["look_at"].fail("expected a point different from \"position\"");
+  if (auto up = node.find("up")) look.up = read_direction(*up);
+  return look;
+}
+
+CameraDescription read_camera(const Node& node) {
+  const int kinds = int{node.has("position")} + int{node.has("grid")} + int{node.has("matrix")};
+  if (kinds != 1) node.fail("expected exactly one of \"position\" (with \"look_at\"), \"grid\" or \"matrix\"");
+  CameraDescription camera;
+  if (node.has("position")) {
+    node.expect_keys({"position", "look_at", "up", "fov_deg", "width", "height"});
+    camera.placement = read_look_at(node);
+  } else if (node.has("grid")) {
+    node.expect_keys({"grid", "fov_deg", "width", "height"});
+    camera.placement = read_grid(node["grid"]);
+  } else {
+    node.expect_keys({"matrix", "fov_deg", "width", "height"});
+    camera.placement = MatrixPlacement{read_rigid_matrix(node["matrix"])};
+  }
+  if (auto fov = node.find("fov_deg"))
+    camera.vertical_fov = glm::radians(
+        fov->number_where([](double v) { return v > 0.0 && v < 180.0; }, "an angle in (0, 180) degrees"));
+  if (auto w = node.find("width")) camera.width = w->integer_in(1, 65536);
+  if (auto h = node.find("height")) camera.height = h->integer_in(1, 65536);
+  return camera;
+}
+
+// ---- lights ---------------------------------------------------------------------------------
+
+glm::dvec3 read_target(const Node& node, const glm::dvec3& position) {
+  const glm::dvec3 target = read_vec3(node["look_at"]);
+  if (target == position) node["look_at"].fail("expected a point different from \"position\"");
+  return target;
+}
+
+matrender::Light read_area_light(const Node& node) {
+  node.expect_keys({"type", "position", "look_at", "up", "size", "power", "color"});
+  matrender::RectLight light;
+  const glm::dvec3 position = read_vec3(node["position"]);
+  const glm::dvec3 target = read_target(node, position);
+  const glm::dvec3 up = node.has("up") ? read_direction(node["up"]) : glm::dvec3(0.0, 0.0, 1.0);
+  // A lamp emits down its -Z like a camera looks down its -Z, so the same frame aims both.
+  light.light_to_world = matgeom::look_at_camera_to_world(position, target, up);
+  const Node size = node["size"];
+  if (size.is_number()) {
+    light.size_x = light.size_y = size.positive();
+  } else {
+    if (size.array_size("a positive number or [size_x, size_y]") != 2)
+      size.fail("expected a positive number or [size_x, size_y]");
+    light.size_x = size[0].positive();
+    light.size_y = size[1].positive();
+  }
+  light.power = node["power"].non_negative();
+  if (auto color = node.find("color")) light.color = read_color(*color);
+  return light;
+}
+
+matrender::Light read_point_light(const Node& node) {
+  node.expect_keys({"type", "position", "power", "color"});
+  matrender::PointLight light;
+  light.position = read_vec3(node["position"]);
+  light.power = node["power"].non_negative();
+  if (auto color = node.find("color")) light.color = read_color(*color);
+  return light;
+}
+
+matrender::Light read_spot_light(const Node& node) {
+  node.expect_keys({"type", "position", "look_at", "spot_angle_deg", "blend", "power", "color"});
+  matrender::SpotLight light;
+  light.position = read_vec3(node["position"]);
+  light.direction = glm::normalize(read_target(node, light.position) - light.position);
+  if (auto angle = node.find("spot_angle_deg"))
+    light.spot_angle = glm::radians(
+        angle->number_where([](double v) { return v > 0.0 && v <= 180.0; }, "an angle in (0, 180] degrees"));
+  if (auto blend = node.find("blend")) light.blend = blend->unit_interval();
+  light.power = node["power"].non_negative();
+  if (auto color = node.find("color")) light.color = read_color(*color);
+  return light;
+}
+
+LightsDescription read_lights(const Node& node) {
+  if (!node.is_array()) {
+    node.expect_keys({"rig"});
+    const Node rig_node = node["rig"];
+    rig_node.expect_keys({"target_illuminance_lux"});
+    LightRigDescription rig;
+    if (auto lux = rig_node.find("target_illuminance_lux")) rig.target_illuminance_lux = lux->positive();
+    return rig;
+  }
+  std::vector<matrender::Light> lights;
+  for (size_t k = 0; k < node.array_size("an array of lights"); ++k) {
+    const Node light = node[k];
+    switch (light["type"].choice({"area", "point", "spot"})) {
+      case 0: lights.push_back(read_area_light(light)); break;
+      case 1: lights.push_back(read_point_light(light)); break;
+      default: lights.push_back(read_spot_light(light)); break;
+    }
+  }
+  return lights;
+}
+
+// ---- materials ------------------------------------------------------------------------------
+
+// {"texture": path, ...}: the keys every texture reference shares.
+TextureFile read_texture_file(const Node& node, const fs::path& folder, matrender::ColorSpace default_space) {
+  TextureFile file;
+  file.path = read_existing_file(node["texture"], folder);
+  file.origin = node.origin();
+  file.color_space = default_space;
+  if (auto space = node.find("color_space"))
+    file.color_space = space->choice({"sRGB", "non-color"}) == 0 ? matrender::ColorSpace::SRGB
+                                                                  : matrender::ColorSpace::NonColor;
+  if (auto wrap = node.find("wrap"))
+    file.wrap = wrap->choice({"repeat", "clamp"}) == 0 ? matrender::Wrap::Repeat : matrender::Wrap::Clamp;
+  return file;
+}
+
+// [r, g, b], or a texture times an optional factor (colour textures default to sRGB).
+void read_color_input(const Node& node, const fs::path& folder, matrender::ColorParam& param,
+                      std::optional<TextureFile>& texture) {
+  if (node.is_array()) {
+    param.value = glm::vec3(read_unit_color(node));
+    return;
+  }
+  node.expect_keys({"texture", "factor", "color_space", "wrap"});
+  texture = read_texture_file(node, folder, matrender::ColorSpace::SRGB);
+  param.value = node.has("factor") ? glm::vec3(read_unit_color(node["factor"])) : glm::vec3(1.0f);
+}
+
+// A number in [0, 1], or one channel of a texture times an optional factor (data textures
+// default to non-color).
+void read_scalar_input(const Node& node, const fs::path& folder, matrender::ScalarParam& param,
+                       std::optional<TextureFile>& texture) {
+  if (node.is_number()) {
+    param.value = static_cast<float>(node.unit_interval());
+    return;
+  }
+  node.expect_keys({"texture", "channel", "factor", "color_space", "wrap"});
+  texture = read_texture_file(node, folder, matrender::ColorSpace::NonColor);
+  param.value = node.has("factor") ? static_cast<float>(node["factor"].unit_interval()) : 1.0f;
+  param.channel = node.has("channel") ? static_cast<int>(node["channel"].choice({"R", "G", "B", "A"})) : 0;
+}
+
+MaterialDescription read_material(const Node& node, const std::string& name, const fs::path& folder) {
+  node.expect_keys({"base_color", "roughness", "metallic", "normal_map", "specular", "specular_tint", "label_id",
+                    "diffuse_model"});
+  MaterialDescription material;
+  matrender::Material& m = material.constants;
+  m.name = name;
+  if (auto n = node.find("base_color")) read_color_input(*n, folder, m.base_color, material.base_color_texture);
+  if (auto n = node.find("roughness")) read_scalar_input(*n, folder, m.roughness, material.roughness_texture);
+  if (auto n = node.find("metallic")) read_scalar_input(*n, folder, m.metallic, material.metallic_texture);
+  if (auto n = node.find("normal_map")) {
+    n->expect_keys({"texture", "strength", "wrap"});
+    material.normal_map = read_texture_file(*n, folder, matrender::ColorSpace::NonColor);
+    if (auto strength = n->find("strength")) m.normal_strength = static_cast<float>(strength->non_negative());
+  }
+  if (auto n = node.find("specular")) m.specular = static_cast<float>(n->non_negative());
+  if (auto n = node.find("specular_tint")) m.specular_tint = static_cast<float>(n->unit_interval());
+  if (auto n = node.find("label_id")) m.label_id = n->integer_at_least(0);
+  if (auto n = node.find("diffuse_model"))
+    m.diffuse_model = n->choice({"principled", "lambert"}) == 0 ? matrender::DiffuseModel::Principled
+                                                                : matrender::DiffuseModel::Lambert;
+  return material;
+}
+
+std::map<std::string, MaterialDescription> read_materials(const Node& node, const fs::path& folder) {
+  std::map<std::string, MaterialDescription> materials;
+  for (const auto& [name, material] : node.members()) materials[name] = read_material(material, name, folder);
+  return materials;
+}
+
+// ---- objects --------------------------------------------------------------------------------
+
+// Blender's XYZ Euler order: rotate about X first, then Y, then Z (R = Rz Ry Rx).
+glm::dmat4 euler_xyz_degrees(const glm::dvec3& degrees) {
+  const glm::dmat4 identity(1.0);
+  return glm::rotate(identity, glm::radians(degrees.z), glm::dvec3(0, 0, 1)) *
+         glm::rotate(identity, glm::radians(degrees.y), glm::dvec3(0, 1, 0)) *
+         glm::rotate(identity, glm::radians(degrees.x), glm::dvec3(1, 0, 0));
+}
+
+// {"matrix": ...} or Blender's translate * rotate * scale.
+glm::dmat4 read_transform(const Node& node) {
+  if (node.has("matrix")) {
+    node.expect_keys({"matrix"});
+    const glm::dmat4 m = read_matrix(node["matrix"]);
+    if (std::abs(glm::determinant(glm::dmat3(m))) < 1e-12) node["matrix"].fail("expected an invertible matrix");
+    return m;
+  }
+  node.expect_keys({"translate", "rotate_deg", "scale"});
+  glm::dvec3 scale(1.0);
+  if (auto s = node.find("scale")) {
+    if (s->is_number()) {
+      scale = glm::dvec3(s->positive());
+    } else {
+      if (s->array_size("a positive number or [x, y, z]") != 3) s->fail("expected a positive number or [x, y, z]");
+      scale = {(*s)[0].positive(), (*s)[1].positive(), (*s)[2].positive()};
+    }
+  }
+  const glm::dvec3 translate = node.has("translate") ? read_vec3(node["translate"]) : glm::dvec3(0.0);
+  const glm::dvec3 rotate = node.has("rotate_deg") ? read_vec3(node["rotate_deg"]) : glm::dvec3(0.0);
+  return glm::translate(glm::dmat4(1.0), translate) * euler_xyz_degrees(rotate) *
+         glm::scale(glm::dmat4(1.0), scale);
+}
+
+std::string read_material_name(const Node& node, const std::map<std::string, MaterialDescription>& materials) {
+  const std::string name = node.string();
+  if (materials.count(name) == 0) {
+    std::vector<std::string> defined;
+    for (const auto& entry : materials) defined.push_back(entry.first);
+    node.fail(fmt::format("unknown material \"{}\" ({})", name,
+                          defined.empty() ? "the file defines no \"materials\""
+                                          : "defined: " + quoted_list(defined)));
+  }
+  return name;
+}
+
+ObjectDescription read_object(const Node& node, const fs::path& folder,
+                              const std::map<std::string, MaterialDescription>& materials) {
+  if (node.has("mesh") == node.has("builtin")) node.fail("expected exactly one of \"mesh\" or \"builtin\"");
+  ObjectDescription object;
+  object.origin = node.origin();
+  if (node.has("mesh")) {
+    node.expect_keys({"mesh", "transform", "material", "materials"});
+    const std::string path = read_existing_file(node["mesh"], folder);
+    const std::string ext = lowercase_extension(path);
+    if (ext != ".glb" && ext != ".gltf") node["mesh"].fail("expected a .glb or .gltf file");
+    object.source = MeshFile{path};
+  } else {
+    node.expect_keys({"builtin", "seed", "transform", "material", "materials"});
+    BuiltinObject builtin;
+    const std::vector<std::string> names = matgeom::builtin_object_names();
+    builtin.name = names[node["builtin"].choice(names)];
+    if (auto seed = node.find("seed")) builtin.seed = seed->uint32();
+    object.source = builtin;
+  }
+  if (auto transform = node.find("transform")) object.object_to_world = read_transform(*transform);
+  if (node.has("material") && node.has("materials")) node.fail("give either \"material\" or \"materials\", not both");
+  if (auto name = node.find("material")) object.material = read_material_name(*name, materials);
+  if (auto parts = node.find("materials"))
+    for (const auto& [part, name] : parts->members()) object.part_materials[part] = read_material_name(name, materials);
+  return object;
+}
+
+std::vector<ObjectDescription> read_objects(const Node& node, const fs::path& folder,
+                                            const std::map<std::string, MaterialDescription>& materials) {
+  const size_t count = node.array_size("a non-empty array of objects");
+  if (count == 0) node.fail("expected a non-empty array of objects");
+  std::vector<ObjectDescription> objects;
+  for (size_t k = 0; k < count; ++k) objects.push_back(read_object(node[k], folder, materials));
+  return objects;
+}
+
+// ---- render settings ------------------------------------------------------------------------
+
+void read_render(const Node& node, SceneDescription& scene) {
+  node.expect_keys({"spp", "seed", "max_bounces", "max_diffuse_bounces", "max_glossy_bounces", "exposure",
+                    "transparent_background"});
+  matrender::RenderSettings& s = scene.settings;
+  if (auto n = node.find("spp")) s.samples_per_pixel = n->integer_at_least(1);
+  if (auto n = node.find("seed")) s.seed = n->uint32();
+  if (auto n = node.find("max_bounces")) s.max_bounces = n->integer_at_least(0);
+  if (auto n = node.find("max_diffuse_bounces")) s.max_diffuse_bounces = n->integer_at_least(0);
+  if (auto n = node.find("max_glossy_bounces")) s.max_glossy_bounces = n->integer_at_least(0);
+  if (auto n = node.find("exposure")) scene.exposure_stops = n->number();
+  if (auto n = node.find("transparent_background")) s.transparent_background = n->boolean();
+}
+
+json parse_json_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open: " + std::strerror(errno));
+  try {
+    return json::parse(in);
+  } catch (const json::parse_error& e) {
+    // Drop nlohmann's "[json.exception.parse_error.101] " prefix; the rest names line and column.
+    const std::string what = e.what();
+    const size_t end_of_tag = what.find("] ");
+    throw InputError(path + ": not valid JSON: " +
+                     (end_of_tag == std::string::npos ? what : what.substr(end_of_tag + 2)));
+  }
+}
+
+}  // namespace
+
+SceneDescription read_scene_file(const std::string& path) {
+  const json document = parse_json_file(path);
+  const Node root(document, "", path);
+  root.expect_keys({"description", "camera", "lights", "background", "materials", "objects", "render"});
+  const fs::path folder = fs::path(path).parent_path();
+
+  SceneDescription scene;
+  if (auto description = root.find("description")) description->string();  // free text; only its type matters
+  scene.camera = read_camera(root["camera"]);
+  scene.lights = read_lights(root["lights"]);
+  if (auto background = root.find("background")) scene.background = glm::vec3(read_color(*background));
+  if (auto materials = root.find("materials")) scene.materials = read_materials(*materials, folder);
+  scene.objects = read_objects(root["objects"], folder, scene.materials);
+  if (auto render = root.find("render")) read_render(*render, scene);
+  return scene;
+}
+
+}  // namespace render_object

@@ -1,0 +1,218 @@
+#include "matgeom/light_rig.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "matgeom/camera_grid.h"
+
+namespace matgeom {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Luminous efficacy that defines the lumen: 683 lm per watt of 555 nm light. Blender watts are
+// radiometric, so lux = 683 x (W/m^2 weighted by the lamp colour's luminance).
+constexpr double kLumensPerWatt = 683.0;
+
+// Paper: "Two additional accent lights are added on the vertical axis at +-35 degrees. If
+// r > 0.15 m these accents are area lights; otherwise they are 10 degree spot lights".
+constexpr double kAccentElevation = 35.0 * kPi / 180.0;
+constexpr double kAccentAreaMinRadius = 0.15;  // metres; at or below it the accents are spots
+constexpr double kAccentSpotAngle = 10.0 * kPi / 180.0;  // full cone, as Blender's spot_size
+constexpr double kAccentSpotBlend = 0.15;                // Blender's default spot_blend
+
+const glm::dvec3 kLampColor(0.8, 0.8, 0.8);  // paper: neutral grey-white Blender RGB
+
+// Rec.709 luminance of a linear RGB colour.
+double luminance(const glm::dvec3& rgb) { return 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b; }
+
+// Paper: N_theta = ceil(4 + 2 r / 0.25), 6 <= N_theta <= 12.
+int ring_light_count(double radius) {
+  const double unclamped = std::ceil(4.0 + 2.0 * radius / 0.25);
+  return static_cast<int>(std::clamp(unclamped, 6.0, 12.0));
+}
+
+// Paper: P_base = 50 + 150 min(1, r / 1 m) watts.
+double base_power(double radius) { return 50.0 + 150.0 * std::min(1.0, radius / 1.0); }
+
+// A lamp at `position` emitting down its -Z toward `center`, its +X horizontal (the long edge
+// of an area light, tangent to the circle of lamps around the vertical through `center`).
+RigLight lamp_aimed_at(const glm::dvec3& position, const glm::dvec3& center) {
+  RigLight light;
+  light.position = position;
+  // Blender lamps and cameras share the -Z-forward, +Y-up frame; world +Z up makes +X the
+  // horizontal tangent.
+  light.light_to_world = look_at_camera_to_world(position, center, glm::dvec3(0, 0, 1));
+  light.color = kLampColor;
+  return light;
+}
+
+// Irradiance (W/m^2 per unit radiance) at the origin, on a surface with unit normal `normal`,
+// from a uniform Lambertian polygon with vertices `polygon` (relative to the receiving point).
+// Lambert's formula: E = L/2 sum_i angle(v_i, v_{i+1}) n . unit(v_i x v_{i+1}); the polygon is
+// first clipped to the hemisphere above the surface, where the formula holds.
+double polygon_irradiance_per_radiance(const std::array<glm::dvec3, 4>& polygon,
+                                       const glm::dvec3& normal) {
+  // Sutherland-Hodgman against the plane n.v = 0: a quad keeps at most five vertices.
+  std::array<glm::dvec3, 5> clipped;
+  size_t count = 0;
+  for (size_t k = 0; k < polygon.size(); ++k) {
+    const glm::dvec3& current = polygon[k];
+    const glm::dvec3& next = polygon[(k + 1) % polygon.size()];
+    const double height_current = glm::dot(normal, current);
+    const double height_next = glm::dot(normal, next);
+    if (height_current >= 0.0) clipped[count++] = current;
+    if ((height_current >= 0.0) != (height_next >= 0.0)) {
+      const double t = height_current / (height_current - height_next);
+      clipped[count++] = current + t * (next - current);
+    }
+  }
+
+  double sum = 0.0;
+  for (size_t k = 0; k < count; ++k) {
+    const glm::dvec3& a = clipped[k];
+    const glm::dvec3& b = clipped[(k + 1) % count];
+    const glm::dvec3 a_cross_b = glm::cross(a, b);
+    const double sine_part = glm::length(a_cross_b);
+    if (!(sine_part > 0.0)) continue;  // coincident directions subtend no angle
+    const double angle = std::atan2(sine_part, glm::dot(a, b));
+    sum += angle * glm::dot(normal, a_cross_b) / sine_part;
+  }
+  // The sign follows the winding as seen from the point; the irradiance is its magnitude.
+  return 0.5 * std::abs(sum);
+}
+
+// Radiant irradiance (W/m^2 weighted by colour luminance) from an area lamp on a small surface
+// at `point` whose normal points at the lamp's centre. Cycles' area lamp: one-sided (down its
+// -Z), uniform radiance L = P c / (4 a b) (reference/cycles.md).
+double area_lamp_irradiance(const RigLight& light, const glm::dvec3& point) {
+  const glm::dvec3 axis_x(light.light_to_world[0]);
+  const glm::dvec3 axis_y(light.light_to_world[1]);
+  const glm::dvec3 backward(light.light_to_world[2]);
+  const glm::dvec3 center(light.light_to_world[3]);
+  const glm::dvec3 to_lamp = center - point;
+  // Only points on the emitting (-Z) side see the lamp's front.
+  if (!(glm::dot(to_lamp, backward) > 0.0)) return 0.0;
+
+  const glm::dvec3 half_x = 0.5 * light.size_x * axis_x;
+  const glm::dvec3 half_y = 0.5 * light.size_y * axis_y;
+  const std::array<glm::dvec3, 4> corners{to_lamp - half_x - half_y, to_lamp + half_x - half_y,
+                                          to_lamp + half_x + half_y, to_lamp - half_x + half_y};
+  const double radiance =
+      light.power * luminance(light.color) / (4.0 * light.size_x * light.size_y);
+  return radiance * polygon_irradiance_per_radiance(corners, glm::normalize(to_lamp));
+}
+
+// Radiant irradiance from a radius-0 Cycles spot lamp on a small surface at `point` facing it:
+// E = I a(w) / d^2 with on-axis intensity I = P c / (4 pi) (not concentrated into the cone) and
+// a(w) = cos t smoothstep((cos t - cos_half) / ((1 - cos_half) blend)) inside the cone
+// (reference/cycles.md; t is the angle from the spot's axis).
+double spot_lamp_irradiance(const RigLight& light, const glm::dvec3& point) {
+  const glm::dvec3 forward = -glm::dvec3(light.light_to_world[2]);
+  const glm::dvec3 to_point = point - glm::dvec3(light.light_to_world[3]);
+  const double distance_squared = glm::dot(to_point, to_point);
+  // A delta lamp gives no defined irradiance at its own position.
+  if (!(distance_squared > 0.0)) return 0.0;
+
+  const double cos_axis = glm::dot(forward, to_point) / std::sqrt(distance_squared);
+  const double cos_half = std::cos(0.5 * light.spot_angle);
+  if (!(cos_axis > cos_half)) return 0.0;
+  double falloff = cos_axis;
+  const double smooth_width = (1.0 - cos_half) * light.spot_blend;
+  const double into_cone = cos_axis - cos_half;
+  if (into_cone < smooth_width) {
+    const double s = into_cone / smooth_width;
+    falloff *= s * s * (3.0 - 2.0 * s);
+  }
+  const double intensity = light.power * luminance(light.color) / (4.0 * kPi);
+  return intensity * falloff / distance_squared;
+}
+
+}  // namespace
+
+// The paper asks for "E ~ 1.0 klx at c" without saying on which surface. We define the
+// illuminance at a point as the sum over lamps of the illuminance each lamp gives on a small
+// surface at the point facing that lamp (normal toward the lamp's centre): what a photometer
+// aimed at each lamp in turn would read, summed. Radiometric watts are converted with
+// 683 lm/W times the Rec.709 luminance of the lamp colour.
+double rig_illuminance_lux(const std::vector<RigLight>& lights, const glm::dvec3& point) {
+  double irradiance = 0.0;
+  for (const RigLight& light : lights) {
+    irradiance += light.kind == RigLightKind::Area ? area_lamp_irradiance(light, point)
+                                                   : spot_lamp_irradiance(light, point);
+  }
+  return kLumensPerWatt * irradiance;
+}
+
+LightRig make_light_rig(const glm::dvec3& center, double radius, const LightRigOptions& options) {
+  if (!(std::isfinite(radius) && radius > 0.0)) {
+    throw std::invalid_argument("make_light_rig: the radius must be positive and finite (got " +
+                                std::to_string(radius) + ")");
+  }
+  if (!(std::isfinite(center.x) && std::isfinite(center.y) && std::isfinite(center.z))) {
+    throw std::invalid_argument("make_light_rig: the centre is not finite");
+  }
+  if (options.target_illuminance_lux &&
+      !(std::isfinite(*options.target_illuminance_lux) && *options.target_illuminance_lux > 0.0)) {
+    throw std::invalid_argument(
+        "make_light_rig: the target illuminance must be positive and finite");
+  }
+
+  LightRig rig;
+  rig.ring_count = ring_light_count(radius);
+  const double p_base = base_power(radius);
+  // Paper: every lamp is 0.6 r x 0.3 r, the long edge tangent to the ring.
+  const double long_edge = 0.6 * radius;
+  const double short_edge = 0.3 * radius;
+
+  // Key-fill ring: N lamps on the horizontal circle of radius 2r through c (plane z = c.z) at
+  // theta_j = 2 pi j / N, each with P_j = P_base (1 + 0.3 cos theta_j).
+  for (int j = 0; j < rig.ring_count; ++j) {
+    const double theta = 2.0 * kPi * j / rig.ring_count;
+    const glm::dvec3 position =
+        center + 2.0 * radius * glm::dvec3(std::cos(theta), std::sin(theta), 0.0);
+    RigLight light = lamp_aimed_at(position, center);
+    light.kind = RigLightKind::Area;
+    light.size_x = long_edge;
+    light.size_y = short_edge;
+    light.power = p_base * (1.0 + 0.3 * std::cos(theta));
+    light.azimuth = theta;
+    rig.lights.push_back(light);
+  }
+
+  // Accents. "On the vertical axis at +-35 degrees" is read as: at distance 2r from c (the
+  // ring's distance), elevated +35 and -35 degrees from the horizontal, in the vertical plane
+  // of azimuth 0 (above and below the brightest ring lamp), aimed at c. Their power is P_base:
+  // the paper's cosine modulation runs over the ring's azimuths only.
+  for (const double elevation : {kAccentElevation, -kAccentElevation}) {
+    const glm::dvec3 position =
+        center + 2.0 * radius * glm::dvec3(std::cos(elevation), 0.0, std::sin(elevation));
+    RigLight light = lamp_aimed_at(position, center);
+    if (radius > kAccentAreaMinRadius) {
+      light.kind = RigLightKind::Area;
+      light.size_x = long_edge;
+      light.size_y = short_edge;
+    } else {
+      light.kind = RigLightKind::Spot;
+      light.spot_angle = kAccentSpotAngle;
+      light.spot_blend = kAccentSpotBlend;
+    }
+    light.power = p_base;
+    light.accent = true;
+    light.azimuth = 0.0;
+    rig.lights.push_back(light);
+  }
+
+  rig.illuminance_lux = rig_illuminance_lux(rig.lights, center);
+  if (options.target_illuminance_lux) {
+    rig.power_scale = *options.target_illuminance_lux / rig.illuminance_lux;
+    for (RigLight& light : rig.lights) light.power *= rig.power_scale;
+    rig.illuminance_lux = rig_illuminance_lux(rig.lights, center);
+  }
+  return rig;
+}
+
+}  // namespace matgeom

@@ -1,0 +1,87 @@
+#pragma once
+// Reference Principled BSDF v1 of Blender 3.4 Cycles (principled or Lambert diffuse plus a
+// single-scatter GGX specular lobe with the "interpolated" Fresnel), written plainly in double
+// precision from the published equations. It shares no code with libmatrender: it is the
+// independent implementation the fast float code is tested against (docs: cycles.md,
+// "Principled BSDF v1").
+//
+// Local frame: +Z is the shading normal; wo (towards the viewer) and wi (towards the light) are
+// unit vectors pointing away from the surface. Every *_brdf function returns the BRDF value f
+// itself, without the cos(theta_i) factor of the rendering equation.
+#include <glm/glm.hpp>
+
+namespace shaders_ref {
+
+struct PrincipledParams {
+  glm::dvec3 base_color{0.8};
+  double metallic = 0.0;
+  double roughness = 0.5;
+  double specular = 0.5;
+  double specular_tint = 0.0;
+  bool lambert_diffuse = false;  // Cycles' Diffuse BSDF (f = 1/pi) instead of the principled one
+};
+
+// --- GGX (Trowbridge-Reitz) microfacet model -----------------------------------------------
+
+// Cycles' Principled BSDF maps roughness to the GGX width alpha = roughness^2.
+double ggx_alpha(double roughness);
+
+// tan^2 of the angle between the unit vector w and +Z; infinite for w in the tangent plane.
+double tan2_theta(const glm::dvec3& w);
+
+// Normal distribution D(m) = 1 / (pi alpha^2 cos^4(theta_m) (1 + tan^2(theta_m) / alpha^2)^2),
+// zero for m below the tangent plane (Walter et al. 2007, eq. 33).
+double ggx_ndf(const glm::dvec3& m, double alpha);
+
+// Smith's auxiliary function Lambda(w) = (sqrt(1 + alpha^2 tan^2(theta)) - 1) / 2
+// (Heitz 2014, "Understanding the Masking-Shadowing Function", eq. 72).
+double ggx_lambda(const glm::dvec3& w, double alpha);
+
+// Smith masking G1(w) = 1 / (1 + Lambda(w)) for w above the surface, else 0 (Heitz 2014, eq. 43,
+// with the microfacet-side factor chi(w.m) > 0 left to the caller).
+double ggx_smith_g1(const glm::dvec3& w, double alpha);
+
+// --- Fresnel ---------------------------------------------------------------------------------
+
+// Unpolarised reflectance of a smooth dielectric interface with relative index eta (transmitted
+// over incident side) for the incidence cosine cos_i, as the mean of the squared s- and
+// p-polarised amplitude coefficients r_s = (cos_i - eta cos_t) / (cos_i + eta cos_t),
+// r_p = (eta cos_i - cos_t) / (eta cos_i + cos_t) (Born & Wolf, sec. 1.5.2). Total internal
+// reflection gives 1.
+double dielectric_fresnel(double cos_i, double eta);
+
+// The specular input's index of refraction: 0.08 specular = ((ior - 1) / (ior + 1))^2, solved as
+// ior = 2 / (1 - sqrt(0.08 specular)) - 1.
+double principled_specular_ior(double specular);
+
+// Luminance of a scene-linear Rec.709 colour: the Y row of the Rec.709 (D65) RGB -> XYZ matrix.
+double rec709_luminance(const glm::dvec3& rgb);
+
+// cspec0 = mix(0.08 specular mix(1, tint, specular_tint), base, metallic) with
+// tint = base / luminance(base) (white for a black base).
+glm::dvec3 specular_color_at_normal_incidence(const PrincipledParams& p);
+
+// Cycles' interpolated Fresnel: FH = (F(cos_i, ior) - F(1, ior)) / (1 - F(1, ior)),
+// F = cspec0 (1 - FH) + FH, with cos_i the cosine between the light direction and the microfacet
+// normal.
+glm::dvec3 interpolated_fresnel(const PrincipledParams& p, double cos_i);
+
+// --- Lobes -------------------------------------------------------------------------------------
+
+// Specular 0 and metallic 0 make no specular closure at all.
+bool has_specular_lobe(const PrincipledParams& p);
+
+// (1 - metallic) base times the principled diffuse
+// 1/pi [(1 - FV/2)(1 - FL/2) + RR (FL + FV + FL FV (RR - 1))], FL = (1 - cos_i)^5,
+// FV = (1 - cos_o)^5, RR = roughness (1 + wi.wo); or times 1/pi for the Lambert lobe.
+glm::dvec3 diffuse_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi);
+
+// F(wi.h) D(h) G1(wo) G1(wi) / (4 cos_o cos_i) with h = normalize(wo + wi) (Walter et al. 2007,
+// eq. 20); zero when there is no specular lobe or either direction is below the surface. Needs
+// roughness > 0: the reference has no singular (mirror) case.
+glm::dvec3 specular_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi);
+
+// diffuse_brdf + specular_brdf.
+glm::dvec3 principled_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi);
+
+}  // namespace shaders_ref

@@ -1,0 +1,111 @@
+#include "shaders_ref/principled_reference.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace shaders_ref {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Schlick's weight (1 - cos)^5 for a cosine in [0, 1].
+double fifth_power_of_complement(double cos_theta) {
+  const double m = 1.0 - std::clamp(cos_theta, 0.0, 1.0);
+  return m * m * m * m * m;
+}
+
+}  // namespace
+
+double ggx_alpha(double roughness) { return roughness * roughness; }
+
+double tan2_theta(const glm::dvec3& w) {
+  // sin^2 from the tangential components, so that directions near the normal keep their
+  // relative precision (1 - cos^2 would cancel).
+  const double sin2 = w.x * w.x + w.y * w.y;
+  const double cos2 = w.z * w.z;
+  if (cos2 == 0.0) return std::numeric_limits<double>::infinity();
+  return sin2 / cos2;
+}
+
+double ggx_ndf(const glm::dvec3& m, double alpha) {
+  if (m.z <= 0.0) return 0.0;
+  const double cos2 = m.z * m.z;
+  const double a2 = alpha * alpha;
+  const double slope_term = 1.0 + tan2_theta(m) / a2;
+  return 1.0 / (kPi * a2 * cos2 * cos2 * slope_term * slope_term);
+}
+
+double ggx_lambda(const glm::dvec3& w, double alpha) {
+  const double t2 = tan2_theta(w);
+  if (std::isinf(t2)) return std::numeric_limits<double>::infinity();
+  return 0.5 * (std::sqrt(1.0 + alpha * alpha * t2) - 1.0);
+}
+
+double ggx_smith_g1(const glm::dvec3& w, double alpha) {
+  if (w.z <= 0.0) return 0.0;
+  return 1.0 / (1.0 + ggx_lambda(w, alpha));
+}
+
+double dielectric_fresnel(double cos_i, double eta) {
+  const double ci = std::min(std::abs(cos_i), 1.0);
+  const double sin2_i = 1.0 - ci * ci;
+  const double sin2_t = sin2_i / (eta * eta);  // Snell: sin_t = sin_i / eta
+  if (sin2_t >= 1.0) return 1.0;
+  const double ct = std::sqrt(1.0 - sin2_t);
+  const double r_s = (ci - eta * ct) / (ci + eta * ct);
+  const double r_p = (eta * ci - ct) / (eta * ci + ct);
+  return 0.5 * (r_s * r_s + r_p * r_p);
+}
+
+double principled_specular_ior(double specular) {
+  return 2.0 / (1.0 - std::sqrt(0.08 * specular)) - 1.0;
+}
+
+double rec709_luminance(const glm::dvec3& rgb) {
+  return 0.2126729 * rgb.r + 0.7151522 * rgb.g + 0.0721750 * rgb.b;
+}
+
+glm::dvec3 specular_color_at_normal_incidence(const PrincipledParams& p) {
+  const double lum = rec709_luminance(p.base_color);
+  const glm::dvec3 tint = lum > 0.0 ? p.base_color / lum : glm::dvec3(1.0);
+  const glm::dvec3 dielectric =
+      0.08 * p.specular * ((1.0 - p.specular_tint) * glm::dvec3(1.0) + p.specular_tint * tint);
+  return (1.0 - p.metallic) * dielectric + p.metallic * p.base_color;
+}
+
+glm::dvec3 interpolated_fresnel(const PrincipledParams& p, double cos_i) {
+  const double ior = principled_specular_ior(p.specular);
+  const double f_normal = dielectric_fresnel(1.0, ior);
+  const double fh = (dielectric_fresnel(cos_i, ior) - f_normal) / (1.0 - f_normal);
+  return specular_color_at_normal_incidence(p) * (1.0 - fh) + glm::dvec3(fh);
+}
+
+bool has_specular_lobe(const PrincipledParams& p) { return p.specular > 0.0 || p.metallic > 0.0; }
+
+glm::dvec3 diffuse_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi) {
+  if (wo.z <= 0.0 || wi.z <= 0.0) return glm::dvec3(0.0);
+  const glm::dvec3 weight = (1.0 - p.metallic) * p.base_color;
+  if (p.lambert_diffuse) return weight / kPi;
+  const double fl = fifth_power_of_complement(wi.z);
+  const double fv = fifth_power_of_complement(wo.z);
+  const double rr = p.roughness * (1.0 + glm::dot(wi, wo));
+  const double lambert_part = (1.0 - 0.5 * fv) * (1.0 - 0.5 * fl);
+  const double retro_reflection = rr * (fl + fv + fl * fv * (rr - 1.0));
+  return weight * ((lambert_part + retro_reflection) / kPi);
+}
+
+glm::dvec3 specular_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi) {
+  if (!has_specular_lobe(p) || wo.z <= 0.0 || wi.z <= 0.0) return glm::dvec3(0.0);
+  const double alpha = ggx_alpha(p.roughness);
+  const glm::dvec3 h = glm::normalize(wo + wi);
+  const double shadowing = ggx_smith_g1(wo, alpha) * ggx_smith_g1(wi, alpha);
+  return interpolated_fresnel(p, glm::dot(wi, h)) *
+         (ggx_ndf(h, alpha) * shadowing / (4.0 * wo.z * wi.z));
+}
+
+glm::dvec3 principled_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi) {
+  return diffuse_brdf(p, wo, wi) + specular_brdf(p, wo, wi);
+}
+
+}  // namespace shaders_ref

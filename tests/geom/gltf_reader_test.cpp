@@ -1,0 +1,644 @@
+#include "matgeom/gltf_reader.h"
+
+#include <unistd.h>
+
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+
+// These tests write real glTF files byte by byte (JSON, binary buffers, PNG images, the GLB
+// container) and check what the reader makes of them against values computed here.
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+namespace {
+
+constexpr int kUnsignedByte = 5121;
+constexpr int kUnsignedShort = 5123;
+constexpr int kUnsignedInt = 5125;
+constexpr int kFloat = 5126;
+constexpr int kClampToEdge = 33071;
+constexpr int kModePoints = 0;
+constexpr int kModeTriangleStrip = 5;
+
+// A fresh directory per test case, removed afterwards.
+class TempDir {
+ public:
+  TempDir() {
+    static int counter = 0;
+    path_ = fs::temp_directory_path() /
+            ("matgeom_gltf_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ignored;
+    fs::remove_all(path_, ignored);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+
+  std::string file(const std::string& name) const { return (path_ / name).string(); }
+
+ private:
+  fs::path path_;
+};
+
+void write_bytes(const std::string& path, const std::vector<uint8_t>& bytes) {
+  std::ofstream out(path, std::ios::binary);
+  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  REQUIRE(out.good());
+}
+
+void write_text(const std::string& path, const std::string& text) {
+  write_bytes(path, std::vector<uint8_t>(text.begin(), text.end()));
+}
+
+std::string base64(const std::vector<uint8_t>& bytes) {
+  static const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (size_t i = 0; i < bytes.size(); i += 3) {
+    const uint32_t b0 = bytes[i];
+    const uint32_t b1 = i + 1 < bytes.size() ? bytes[i + 1] : 0;
+    const uint32_t b2 = i + 2 < bytes.size() ? bytes[i + 2] : 0;
+    const uint32_t triple = (b0 << 16) | (b1 << 8) | b2;
+    out += alphabet[(triple >> 18) & 63];
+    out += alphabet[(triple >> 12) & 63];
+    out += i + 1 < bytes.size() ? alphabet[(triple >> 6) & 63] : '=';
+    out += i + 2 < bytes.size() ? alphabet[triple & 63] : '=';
+  }
+  return out;
+}
+
+// ---- PNG writer: zlib "stored" blocks, so no compressor is needed.
+
+uint32_t crc32(const uint8_t* data, size_t size, uint32_t crc = 0) {
+  crc = ~crc;
+  for (size_t i = 0; i < size; ++i) {
+    crc ^= data[i];
+    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+  }
+  return ~crc;
+}
+
+void put_be32(std::vector<uint8_t>& out, uint32_t value) {
+  for (int shift = 24; shift >= 0; shift -= 8) out.push_back(static_cast<uint8_t>(value >> shift));
+}
+
+void put_png_chunk(std::vector<uint8_t>& png, const char* type, const std::vector<uint8_t>& data) {
+  put_be32(png, static_cast<uint32_t>(data.size()));
+  std::vector<uint8_t> typed(type, type + 4);
+  typed.insert(typed.end(), data.begin(), data.end());
+  png.insert(png.end(), typed.begin(), typed.end());
+  put_be32(png, crc32(typed.data(), typed.size()));
+}
+
+// RGB image, `bits` = 8 or 16, samples row by row from the top (16-bit samples as given).
+std::vector<uint8_t> encode_png(int width, int height, int bits, const std::vector<uint16_t>& samples) {
+  std::vector<uint8_t> raw;
+  const size_t row_samples = static_cast<size_t>(width) * 3;
+  for (int y = 0; y < height; ++y) {
+    raw.push_back(0);  // filter: none
+    for (size_t s = 0; s < row_samples; ++s) {
+      const uint16_t value = samples[static_cast<size_t>(y) * row_samples + s];
+      if (bits == 16) raw.push_back(static_cast<uint8_t>(value >> 8));
+      raw.push_back(static_cast<uint8_t>(value & 0xff));
+    }
+  }
+  std::vector<uint8_t> zlib = {0x78, 0x01, 0x01};  // header, then one final stored block
+  zlib.push_back(static_cast<uint8_t>(raw.size() & 0xff));
+  zlib.push_back(static_cast<uint8_t>(raw.size() >> 8));
+  zlib.push_back(static_cast<uint8_t>(~raw.size() & 0xff));
+  zlib.push_back(static_cast<uint8_t>((~raw.size() >> 8) & 0xff));
+  zlib.insert(zlib.end(), raw.begin(), raw.end());
+  uint32_t a = 1, b = 0;
+  for (uint8_t byte : raw) {
+    a = (a + byte) % 65521;
+    b = (b + a) % 65521;
+  }
+  put_be32(zlib, (b << 16) | a);
+
+  std::vector<uint8_t> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  std::vector<uint8_t> header;
+  put_be32(header, static_cast<uint32_t>(width));
+  put_be32(header, static_cast<uint32_t>(height));
+  header.insert(header.end(), {static_cast<uint8_t>(bits), 2, 0, 0, 0});  // RGB, no interlace
+  put_png_chunk(png, "IHDR", header);
+  put_png_chunk(png, "IDAT", zlib);
+  put_png_chunk(png, "IEND", {});
+  return png;
+}
+
+// ---- glTF writer
+
+enum class Container { EmbeddedDataUri, ExternalFiles, Glb };
+
+class GltfWriter {
+ public:
+  GltfWriter(const TempDir& dir, std::string stem, Container container)
+      : dir_(dir), stem_(std::move(stem)), container_(container) {
+    doc_["asset"]["version"] = "2.0";
+  }
+
+  json& doc() { return doc_; }
+
+  int add_view(const void* data, size_t size, size_t stride = 0) {
+    while (bin_.size() % 4 != 0) bin_.push_back(0);
+    json view = {{"buffer", 0}, {"byteOffset", bin_.size()}, {"byteLength", size}};
+    if (stride != 0) view["byteStride"] = stride;
+    const uint8_t* bytes = static_cast<const uint8_t*>(data);
+    bin_.insert(bin_.end(), bytes, bytes + size);
+    return append(doc_["bufferViews"], view);
+  }
+
+  int add_accessor(int view, int component_type, size_t count, const char* type,
+                   size_t byte_offset = 0, bool normalized = false) {
+    json accessor = {{"bufferView", view}, {"componentType", component_type}, {"count", count}, {"type", type}};
+    if (byte_offset != 0) accessor["byteOffset"] = byte_offset;
+    if (normalized) accessor["normalized"] = true;
+    return append(doc_["accessors"], accessor);
+  }
+
+  template <typename T>
+  int add_data(const std::vector<T>& values, int component_type, const char* type, int components) {
+    const int view = add_view(values.data(), values.size() * sizeof(T));
+    return add_accessor(view, component_type, values.size() / static_cast<size_t>(components), type);
+  }
+
+  int add_vec3(const std::vector<float>& values) { return add_data(values, kFloat, "VEC3", 3); }
+  int add_vec2(const std::vector<float>& values) { return add_data(values, kFloat, "VEC2", 2); }
+
+  int add_image(const std::vector<uint8_t>& png, const std::string& name) {
+    json image;
+    switch (container_) {
+      case Container::EmbeddedDataUri:
+        image["uri"] = "data:image/png;base64," + base64(png);
+        break;
+      case Container::ExternalFiles:
+        write_bytes(dir_.file(name), png);
+        image["uri"] = name;
+        break;
+      case Container::Glb:
+        image["bufferView"] = add_view(png.data(), png.size());
+        image["mimeType"] = "image/png";
+        break;
+    }
+    return append(doc_["images"], image);
+  }
+
+  // Writes the file and returns its path.
+  std::string write() {
+    while (bin_.size() % 4 != 0) bin_.push_back(0);
+    if (!bin_.empty()) doc_["buffers"] = json::array({{{"byteLength", bin_.size()}}});
+    if (container_ == Container::Glb) return write_glb();
+    if (!bin_.empty()) {
+      if (container_ == Container::EmbeddedDataUri) {
+        doc_["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64(bin_);
+      } else {
+        write_bytes(dir_.file(stem_ + ".bin"), bin_);
+        doc_["buffers"][0]["uri"] = stem_ + ".bin";
+      }
+    }
+    const std::string path = dir_.file(stem_ + ".gltf");
+    write_text(path, doc_.dump(1));
+    return path;
+  }
+
+ private:
+  static int append(json& array, const json& item) {
+    if (array.is_null()) array = json::array();
+    array.push_back(item);
+    return static_cast<int>(array.size()) - 1;
+  }
+
+  static void put_le32(std::vector<uint8_t>& out, uint32_t value) {
+    for (int shift = 0; shift < 32; shift += 8) out.push_back(static_cast<uint8_t>(value >> shift));
+  }
+
+  std::string write_glb() {
+    std::string text = doc_.dump();
+    while (text.size() % 4 != 0) text += ' ';
+    std::vector<uint8_t> glb = {'g', 'l', 'T', 'F'};
+    put_le32(glb, 2);
+    put_le32(glb, static_cast<uint32_t>(12 + 8 + text.size() + (bin_.empty() ? 0 : 8 + bin_.size())));
+    put_le32(glb, static_cast<uint32_t>(text.size()));
+    put_le32(glb, 0x4E4F534Au);  // "JSON"
+    glb.insert(glb.end(), text.begin(), text.end());
+    if (!bin_.empty()) {
+      put_le32(glb, static_cast<uint32_t>(bin_.size()));
+      put_le32(glb, 0x004E4942u);  // "BIN\0"
+      glb.insert(glb.end(), bin_.begin(), bin_.end());
+    }
+    const std::string path = dir_.file(stem_ + ".glb");
+    write_bytes(path, glb);
+    return path;
+  }
+
+  const TempDir& dir_;
+  std::string stem_;
+  Container container_;
+  json doc_;
+  std::vector<uint8_t> bin_;
+};
+
+// glTF (+Y up) to Blender (+Z up), written out independently of the reader.
+glm::dvec3 to_blender(const glm::dvec3& p) { return {p.x, -p.z, p.y}; }
+
+glm::dvec3 transform_point(const glm::dmat4& m, const glm::dvec3& p) {
+  return glm::dvec3(m * glm::dvec4(p, 1.0));
+}
+
+void check_near(const glm::vec3& actual, const glm::dvec3& expected, double margin = 1e-5) {
+  INFO("actual (" << actual.x << ", " << actual.y << ", " << actual.z << "), expected (" << expected.x
+                  << ", " << expected.y << ", " << expected.z << ")");
+  CHECK(glm::length(glm::dvec3(actual) - expected) < margin);
+}
+
+glm::dvec3 face_normal(const matgeom::TriangleMesh& mesh, const glm::uvec3& t) {
+  const glm::dvec3 a(mesh.positions[t[0]]), b(mesh.positions[t[1]]), c(mesh.positions[t[2]]);
+  return glm::normalize(glm::cross(b - a, c - a));
+}
+
+// The message of the runtime_error read_gltf throws, or "" if it throws none.
+std::string read_error(const std::string& path) {
+  try {
+    matgeom::read_gltf(path);
+  } catch (const std::runtime_error& error) {
+    return error.what();
+  }
+  return "";
+}
+
+// ---- The two-material quad scene
+
+// Quad corners in glTF space, a unit square in the xy plane facing +z, and their glTF UVs
+// (v down: the image's top-left corner is uv (0, 0)).
+const std::vector<float> kQuadPositions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+const std::vector<float> kQuadNormals = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
+const std::vector<float> kQuadUvs = {0.0f, 1.0f, 1.0f, 1.0f, 1.0f, 0.25f, 0.0f, 0.0f};
+
+// Parent node: TRS with a rotation of 30 degrees about a tilted axis; child node: a matrix.
+const glm::dvec3 kParentTranslation(1.0, 2.0, 3.0);
+const glm::dvec3 kParentAxis = glm::normalize(glm::dvec3(1.0, 2.0, 2.0));
+const double kParentAngle = glm::radians(30.0);
+const glm::dvec3 kParentScale(2.0, 0.5, 1.5);
+const glm::dvec3 kChildTranslation(0.5, 0.0, -1.0);
+const glm::dvec3 kChildScale(1.0, 3.0, 1.0);
+
+glm::dmat4 expected_world_transform() {
+  glm::dmat4 parent = glm::translate(glm::dmat4(1.0), kParentTranslation);
+  parent = glm::rotate(parent, kParentAngle, kParentAxis);
+  parent = glm::scale(parent, kParentScale);
+  const glm::dmat4 child = glm::scale(glm::translate(glm::dmat4(1.0), kChildTranslation), kChildScale);
+  return parent * child;
+}
+
+// 8-bit 2x2 base colour image (rows top to bottom) and a 16-bit 2x1 image.
+const std::vector<uint16_t> kBaseColorPixels = {255, 0, 0, 0, 255, 0, 0, 0, 255, 10, 20, 30};
+const std::vector<uint16_t> kSixteenBitPixels = {0, 65535, 32896, 1000, 257, 65280};
+
+std::string write_two_material_quad(const TempDir& dir, Container container) {
+  GltfWriter writer(dir, "quad", container);
+  const int positions = writer.add_vec3(kQuadPositions);
+  const int normals = writer.add_vec3(kQuadNormals);
+  const int uvs = writer.add_vec2(kQuadUvs);
+  const int indices_u8 = writer.add_data(std::vector<uint8_t>{0, 1, 2}, kUnsignedByte, "SCALAR", 1);
+  const int indices_u16 = writer.add_data(std::vector<uint16_t>{0, 2, 3}, kUnsignedShort, "SCALAR", 1);
+  const json attributes = {{"POSITION", positions}, {"NORMAL", normals}, {"TEXCOORD_0", uvs}};
+
+  json& doc = writer.doc();
+  doc["meshes"] = json::array({{{"primitives", json::array({
+      {{"attributes", attributes}, {"indices", indices_u8}, {"material", 1}},
+      {{"attributes", attributes}, {"indices", indices_u16}, {"material", 0}}})}}});
+
+  const double half = 0.5 * kParentAngle;
+  const glm::dvec3 q = std::sin(half) * kParentAxis;
+  const json child_matrix = {kChildScale.x, 0, 0, 0, 0, kChildScale.y, 0, 0, 0, 0, kChildScale.z, 0,
+                             kChildTranslation.x, kChildTranslation.y, kChildTranslation.z, 1};
+  doc["nodes"] = json::array({
+      {{"name", "parent"},
+       {"translation", {kParentTranslation.x, kParentTranslation.y, kParentTranslation.z}},
+       {"rotation", {q.x, q.y, q.z, std::cos(half)}},
+       {"scale", {kParentScale.x, kParentScale.y, kParentScale.z}},
+       {"children", {1}}},
+      {{"name", "child"}, {"mesh", 0}, {"matrix", child_matrix}}});
+  doc["scenes"] = json::array({{{"nodes", {0}}}});
+  doc["scene"] = 0;
+
+  const int base_image = writer.add_image(encode_png(2, 2, 8, kBaseColorPixels), "base.png");
+  const int wide_image = writer.add_image(encode_png(2, 1, 16, kSixteenBitPixels), "wide.png");
+  doc["samplers"] = json::array({{{"wrapS", kClampToEdge}, {"wrapT", kClampToEdge}}, json::object()});
+  doc["textures"] = json::array({{{"source", base_image}, {"sampler", 0}},
+                                 {{"source", wide_image}, {"sampler", 1}}});
+  doc["materials"] = json::array({
+      {{"name", "red_metal"},
+       {"pbrMetallicRoughness",
+        {{"baseColorFactor", {0.8, 0.1, 0.1, 1.0}}, {"metallicFactor", 0.9}, {"roughnessFactor", 0.3},
+         {"baseColorTexture", {{"index", 0}}}}},
+       {"normalTexture", {{"index", 1}, {"scale", 0.7}}}},
+      {{"name", "blue"},
+       {"pbrMetallicRoughness",
+        {{"baseColorFactor", {0.1, 0.2, 0.9, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.6},
+         {"metallicRoughnessTexture", {{"index", 1}}}}}}});
+  return writer.write();
+}
+
+}  // namespace
+
+TEST_CASE("glTF two-material quad: transforms, axes, uvs, parts, materials, images", "[geom]") {
+  const Container container =
+      GENERATE(Container::EmbeddedDataUri, Container::ExternalFiles, Container::Glb);
+  TempDir dir;
+  const std::string path = write_two_material_quad(dir, container);
+  INFO("file " << path);
+  const matgeom::ObjectAsset asset = matgeom::read_gltf(path);
+  const matgeom::TriangleMesh& mesh = asset.mesh;
+
+  // Parts follow the glTF material order: part 0 = material 0 (second primitive).
+  REQUIRE(mesh.triangle_count() == 2);
+  REQUIRE(mesh.part_names == std::vector<std::string>{"red_metal", "blue"});
+  REQUIRE(mesh.triangle_parts.size() == 2);
+  REQUIRE(mesh.normals.size() == mesh.vertex_count());
+  REQUIRE(mesh.uvs.size() == mesh.vertex_count());
+  REQUIRE(mesh.tangents.size() == mesh.vertex_count());
+
+  const glm::dmat4 world = expected_world_transform();
+  const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(glm::dmat3(world)));
+  for (size_t t = 0; t < 2; ++t) {
+    const glm::uvec3 triangle = mesh.triangles[t];
+    const uint32_t part = mesh.triangle_parts[t];
+    const std::array<int, 3> corners = part == 1 ? std::array<int, 3>{0, 1, 2} : std::array<int, 3>{0, 2, 3};
+    for (int k = 0; k < 3; ++k) {
+      const int c = corners[static_cast<size_t>(k)];
+      const glm::dvec3 p(kQuadPositions[3 * c], kQuadPositions[3 * c + 1], kQuadPositions[3 * c + 2]);
+      check_near(mesh.positions[triangle[k]], to_blender(transform_point(world, p)));
+      const glm::dvec3 n = glm::normalize(normal_matrix * glm::dvec3(0, 0, 1));
+      check_near(mesh.normals[triangle[k]], to_blender(n));
+      const glm::vec2 uv = mesh.uvs[triangle[k]];
+      CHECK(uv.x == Approx(kQuadUvs[2 * c]));
+      CHECK(uv.y == Approx(1.0 - kQuadUvs[2 * c + 1]));
+      const glm::vec4 tangent = mesh.tangents[triangle[k]];
+      CHECK(std::abs(glm::dot(glm::vec3(tangent), mesh.normals[triangle[k]])) < 1e-5);
+      CHECK(tangent.w == 1.0f);
+    }
+    // The winding still agrees with the normals (positive determinant: no flip).
+    CHECK(glm::dot(face_normal(mesh, triangle), glm::dvec3(mesh.normals[triangle[0]])) > 0.999);
+  }
+
+  REQUIRE(asset.materials.size() == 2);
+  const matgeom::MaterialDesc& red = asset.materials[0];
+  CHECK(red.name == "red_metal");
+  CHECK(red.base_color.r == Approx(0.8));
+  CHECK(red.base_color.g == Approx(0.1));
+  CHECK(red.base_color.b == Approx(0.1));
+  CHECK(red.metallic == Approx(0.9));
+  CHECK(red.roughness == Approx(0.3));
+  CHECK(red.metallic_roughness_image == -1);
+  CHECK(red.normal_strength == Approx(0.7));
+  CHECK(red.wrap == matgeom::TextureWrap::Clamp);
+  const matgeom::MaterialDesc& blue = asset.materials[1];
+  CHECK(blue.name == "blue");
+  CHECK(blue.base_color.b == Approx(0.9));
+  CHECK(blue.metallic == 0.0);
+  CHECK(blue.roughness == Approx(0.6));
+  CHECK(blue.base_color_image == -1);
+  CHECK(blue.normal_image == -1);
+  CHECK(blue.wrap == matgeom::TextureWrap::Repeat);
+  // One image used by two materials is stored once.
+  CHECK(blue.metallic_roughness_image == red.normal_image);
+
+  REQUIRE(asset.images.size() == 2);
+  REQUIRE(red.base_color_image >= 0);
+  const matgeom::ImagePixels& base = asset.images[static_cast<size_t>(red.base_color_image)];
+  CHECK(base.width == 2);
+  CHECK(base.height == 2);
+  CHECK(base.channels == 3);
+  CHECK(base.data == std::vector<uint8_t>(kBaseColorPixels.begin(), kBaseColorPixels.end()));
+  const matgeom::ImagePixels& wide = asset.images[static_cast<size_t>(red.normal_image)];
+  CHECK(wide.width == 2);
+  CHECK(wide.height == 1);
+  CHECK(wide.data == std::vector<uint8_t>{0, 255, 128, 4, 1, 254});
+  if (container == Container::ExternalFiles) {
+    CHECK(base.name == "base.png");
+  } else {
+    CHECK(base.name.rfind("quad.gl", 0) == 0);
+    CHECK(base.name.find("#image0") != std::string::npos);
+  }
+}
+
+TEST_CASE("glTF interleaved, normalized and non-indexed data under a mirroring node", "[geom]") {
+  TempDir dir;
+  GltfWriter writer(dir, "mirrored", Container::ExternalFiles);
+  // Two triangles without indices; each vertex is 3 floats of position then two normalized
+  // 16-bit texture coordinates, 16 bytes apart.
+  struct Vertex {
+    float position[3];
+    uint16_t uv[2];
+  };
+  const std::vector<Vertex> vertices = {{{0, 0, 0}, {0, 65535}},     {{2, 0, 0}, {65535, 65535}},
+                                        {{2, 1, 0}, {65535, 32768}}, {{0, 0, 0}, {0, 65535}},
+                                        {{2, 1, 0}, {65535, 32768}}, {{0, 1, 0}, {0, 0}}};
+  static_assert(sizeof(Vertex) == 16, "interleaved layout");
+  const int view = writer.add_view(vertices.data(), vertices.size() * sizeof(Vertex), sizeof(Vertex));
+  const int positions = writer.add_accessor(view, kFloat, vertices.size(), "VEC3");
+  const int uvs = writer.add_accessor(view, kUnsignedShort, vertices.size(), "VEC2", 12, true);
+  json& doc = writer.doc();
+  doc["meshes"] = json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", positions},
+                                                                             {"TEXCOORD_0", uvs}}}}})}}});
+  doc["nodes"] = json::array({{{"mesh", 0}, {"scale", {-1.0, 1.0, 1.0}}}});
+  doc["scenes"] = json::array({{{"nodes", {0}}}});
+  doc["scene"] = 0;
+  const std::string path = writer.write();
+
+  const matgeom::ObjectAsset asset = matgeom::read_gltf(path);
+  const matgeom::TriangleMesh& mesh = asset.mesh;
+  REQUIRE(mesh.triangle_count() == 2);
+  REQUIRE(mesh.vertex_count() == 6);
+  // No material: one default part.
+  CHECK(mesh.part_names == std::vector<std::string>{"default"});
+  REQUIRE(asset.materials.size() == 1);
+  CHECK(asset.materials[0].metallic == 0.0);
+
+  for (size_t v = 0; v < 6; ++v) {
+    const Vertex& in = vertices[v];
+    const glm::dvec3 mirrored(-in.position[0], in.position[1], in.position[2]);
+    check_near(mesh.positions[v], to_blender(mirrored));
+    CHECK(mesh.uvs[v].x == Approx(in.uv[0] / 65535.0));
+    CHECK(mesh.uvs[v].y == Approx(1.0 - in.uv[1] / 65535.0));
+    // The mirrored quad still faces glTF +z, which is Blender -y: normals are computed from the
+    // re-wound triangles.
+    check_near(mesh.normals[v], glm::dvec3(0.0, -1.0, 0.0));
+    // u grows along glTF +x, mirrored to -x; the uv layout is not mirrored relative to the
+    // re-wound triangles' front side, so w stays +1... check against the frame directly.
+    const glm::vec4 t = mesh.tangents[v];
+    check_near(glm::vec3(t), glm::dvec3(-1.0, 0.0, 0.0));
+    const glm::vec3 bitangent = t.w * glm::cross(mesh.normals[v], glm::vec3(t));
+    // +v (flipped from glTF) points along glTF +y, which is Blender +z.
+    CHECK(bitangent.z > 0.99f);
+  }
+  for (const glm::uvec3& triangle : mesh.triangles) {
+    CHECK(glm::dot(face_normal(mesh, triangle), glm::dvec3(0.0, -1.0, 0.0)) > 0.999);
+  }
+}
+
+TEST_CASE("glTF tangents from the file follow the axes and a mirror", "[geom]") {
+  const bool mirrored = GENERATE(false, true);
+  TempDir dir;
+  GltfWriter writer(dir, "tangents", Container::EmbeddedDataUri);
+  const int positions = writer.add_vec3({0, 0, 0, 1, 0, 0, 0, 1, 0});
+  const int normals = writer.add_vec3({0, 0, 1, 0, 0, 1, 0, 0, 1});
+  const int uvs = writer.add_vec2({0, 1, 1, 1, 0, 0});
+  const int tangents = writer.add_data(std::vector<float>{1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1}, kFloat, "VEC4", 4);
+  json& doc = writer.doc();
+  doc["meshes"] = json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", positions},
+                                                                             {"NORMAL", normals},
+                                                                             {"TEXCOORD_0", uvs},
+                                                                             {"TANGENT", tangents}}}}})}}});
+  json node = {{"mesh", 0}};
+  if (mirrored) node["scale"] = {-1.0, 1.0, 1.0};
+  doc["nodes"] = json::array({node});  // no scene: every root node is read
+  const matgeom::TriangleMesh mesh = matgeom::read_gltf(writer.write()).mesh;
+
+  REQUIRE(mesh.tangents.size() == 3);
+  for (size_t v = 0; v < 3; ++v) {
+    check_near(mesh.normals[v], glm::dvec3(0.0, -1.0, 0.0));
+    check_near(glm::vec3(mesh.tangents[v]), glm::dvec3(mirrored ? -1.0 : 1.0, 0.0, 0.0));
+    CHECK(mesh.tangents[v].w == (mirrored ? -1.0f : 1.0f));
+  }
+  // Winding is flipped by the mirror so that it keeps agreeing with the normals.
+  CHECK(glm::dot(face_normal(mesh, mesh.triangles[0]), glm::dvec3(0.0, -1.0, 0.0)) > 0.999);
+}
+
+TEST_CASE("glTF triangle strips become consistently wound triangles", "[geom]") {
+  TempDir dir;
+  GltfWriter writer(dir, "strip", Container::Glb);
+  const int positions = writer.add_vec3({0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0, 2, 0});
+  const int indices = writer.add_data(std::vector<uint32_t>{0, 1, 2, 3, 4}, kUnsignedInt, "SCALAR", 1);
+  json& doc = writer.doc();
+  doc["meshes"] = json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", positions}}},
+                                                             {"indices", indices},
+                                                             {"mode", kModeTriangleStrip}}})}}});
+  doc["nodes"] = json::array({{{"mesh", 0}}});
+  doc["scenes"] = json::array({{{"nodes", {0}}}});
+  const matgeom::TriangleMesh mesh = matgeom::read_gltf(writer.write()).mesh;
+  REQUIRE(mesh.triangle_count() == 3);
+  CHECK(mesh.uvs.empty());
+  CHECK(mesh.tangents.empty());
+  for (const glm::uvec3& triangle : mesh.triangles) {
+    check_near(glm::vec3(face_normal(mesh, triangle)), glm::dvec3(0.0, -1.0, 0.0));
+  }
+}
+
+// ---- Broken files: every one gives a runtime_error that names the file.
+
+namespace {
+
+// A one-triangle file with the given index list and positions.
+std::string write_triangle(const TempDir& dir, const std::string& stem, const std::vector<float>& positions,
+                           const std::vector<uint16_t>& indices, int mode = 4) {
+  GltfWriter writer(dir, stem, Container::EmbeddedDataUri);
+  const int position_accessor = writer.add_vec3(positions);
+  const int index_accessor = writer.add_data(indices, kUnsignedShort, "SCALAR", 1);
+  writer.doc()["meshes"] = json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", position_accessor}}},
+                                                                      {"indices", index_accessor},
+                                                                      {"mode", mode}}})}}});
+  writer.doc()["nodes"] = json::array({{{"mesh", 0}}});
+  return writer.write();
+}
+
+const std::vector<float> kTriangle = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+
+}  // namespace
+
+TEST_CASE("glTF reader errors name the file and the problem", "[geom]") {
+  TempDir dir;
+  using Catch::Matchers::Contains;
+
+  SECTION("missing file") {
+    const std::string path = dir.file("missing.gltf");
+    CHECK_THAT(read_error(path), Contains(path) && Contains("no such file"));
+  }
+  SECTION("garbage bytes") {
+    std::vector<uint8_t> garbage(300);
+    for (size_t i = 0; i < garbage.size(); ++i) garbage[i] = static_cast<uint8_t>(i * 37 + 11);
+    for (const char* name : {"garbage.gltf", "garbage.glb"}) {
+      const std::string path = dir.file(name);
+      write_bytes(path, garbage);
+      CHECK_THAT(read_error(path), Contains(path));
+    }
+  }
+  SECTION("truncated GLB") {
+    GltfWriter writer(dir, "whole", Container::Glb);
+    const int positions = writer.add_vec3(kTriangle);
+    writer.doc()["meshes"] = json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", positions}}}}})}}});
+    writer.doc()["nodes"] = json::array({{{"mesh", 0}}});
+    const std::string whole = writer.write();
+    REQUIRE(matgeom::read_gltf(whole).mesh.triangle_count() == 1);
+
+    std::ifstream in(whole, std::ios::binary);
+    std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    bytes.resize(bytes.size() - 20);
+    const std::string path = dir.file("truncated.glb");
+    write_bytes(path, bytes);
+    CHECK_THAT(read_error(path), Contains(path));
+  }
+  SECTION("index out of range") {
+    const std::string path = write_triangle(dir, "bad_index", kTriangle, {0, 1, 7});
+    CHECK_THAT(read_error(path), Contains(path) && Contains("out of range"));
+  }
+  SECTION("index count not a multiple of three") {
+    const std::string path = write_triangle(dir, "bad_count", kTriangle, {0, 1, 2, 1});
+    CHECK_THAT(read_error(path), Contains(path) && Contains("multiple of 3"));
+  }
+  SECTION("NaN vertex") {
+    std::vector<float> positions = kTriangle;
+    positions[4] = std::numeric_limits<float>::quiet_NaN();
+    const std::string path = write_triangle(dir, "nan", positions, {0, 1, 2});
+    CHECK_THAT(read_error(path), Contains(path) && Contains("non-finite vertex 1"));
+  }
+  SECTION("zero triangles") {
+    const std::string degenerate = write_triangle(dir, "degenerate", kTriangle, {0, 0, 1});
+    CHECK_THAT(read_error(degenerate), Contains(degenerate) && Contains("no triangles"));
+
+    GltfWriter writer(dir, "empty", Container::EmbeddedDataUri);
+    writer.doc()["nodes"] = json::array({{{"name", "no mesh"}}});
+    const std::string empty = writer.write();
+    CHECK_THAT(read_error(empty), Contains(empty) && Contains("no triangles"));
+  }
+  SECTION("unsupported primitive mode") {
+    const std::string path = write_triangle(dir, "points", kTriangle, {0, 1, 2}, kModePoints);
+    CHECK_THAT(read_error(path), Contains(path) && Contains("unsupported primitive mode"));
+  }
+  SECTION("accessor past the end of its buffer view") {
+    GltfWriter writer(dir, "short_view", Container::EmbeddedDataUri);
+    const int view = writer.add_view(kTriangle.data(), kTriangle.size() * sizeof(float));
+    const int positions = writer.add_accessor(view, kFloat, 4, "VEC3");
+    writer.doc()["meshes"] = json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", positions}}}}})}}});
+    writer.doc()["nodes"] = json::array({{{"mesh", 0}}});
+    const std::string path = writer.write();
+    CHECK_THAT(read_error(path), Contains(path) && Contains("run past the end"));
+  }
+  SECTION("missing external image") {
+    GltfWriter writer(dir, "lost_image", Container::ExternalFiles);
+    const int positions = writer.add_vec3(kTriangle);
+    writer.doc()["meshes"] = json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", positions}}},
+                                                                        {"material", 0}}})}}});
+    writer.doc()["nodes"] = json::array({{{"mesh", 0}}});
+    writer.doc()["images"] = json::array({{{"uri", "nowhere.png"}}});
+    writer.doc()["textures"] = json::array({{{"source", 0}}});
+    writer.doc()["materials"] = json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}});
+    const std::string path = writer.write();
+    CHECK_THAT(read_error(path), Contains(path));
+  }
+}
