@@ -448,7 +448,7 @@ TEST_CASE("glTF interleaved, normalized and non-indexed data under a mirroring n
   };
   const std::vector<Vertex> vertices = {{{0, 0, 0}, {0, 65535}},     {{2, 0, 0}, {65535, 65535}},
                                         {{2, 1, 0}, {65535, 32768}}, {{0, 0, 0}, {0, 65535}},
-                                        {{2, 1, 0}, {65535, 32768}}, {{0, 1, 0}, {0, 0}}};
+                                        {{2, 1, 0}, {65535, 32768}}, {{0, 1, 0}, {0, 32768}}};
   static_assert(sizeof(Vertex) == 16, "interleaved layout");
   const int view = writer.add_view(vertices.data(), vertices.size() * sizeof(Vertex), sizeof(Vertex));
   const int positions = writer.add_accessor(view, kFloat, vertices.size(), "VEC3");
@@ -479,13 +479,13 @@ TEST_CASE("glTF interleaved, normalized and non-indexed data under a mirroring n
     // The mirrored quad still faces glTF +z, which is Blender -y: normals are computed from the
     // re-wound triangles.
     check_near(mesh.normals[v], glm::dvec3(0.0, -1.0, 0.0));
-    // u grows along glTF +x, mirrored to -x; the uv layout is not mirrored relative to the
-    // re-wound triangles' front side, so w stays +1... check against the frame directly.
+    // Computed tangents: u grows along glTF +x, mirrored to Blender -x; +v (after the flip)
+    // along glTF +y, Blender +z. Seen from the front (-y) that layout is mirrored: w = -1.
     const glm::vec4 t = mesh.tangents[v];
-    check_near(glm::vec3(t), glm::dvec3(-1.0, 0.0, 0.0));
+    check_near(glm::vec3(t), glm::dvec3(-1.0, 0.0, 0.0), 1e-4);
+    CHECK(t.w == -1.0f);
     const glm::vec3 bitangent = t.w * glm::cross(mesh.normals[v], glm::vec3(t));
-    // +v (flipped from glTF) points along glTF +y, which is Blender +z.
-    CHECK(bitangent.z > 0.99f);
+    CHECK(bitangent.z > 0.9999f);
   }
   for (const glm::uvec3& triangle : mesh.triangles) {
     CHECK(glm::dot(face_normal(mesh, triangle), glm::dvec3(0.0, -1.0, 0.0)) > 0.999);

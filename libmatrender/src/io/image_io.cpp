@@ -22,7 +22,7 @@ void write_image_atomically(const std::string& path, const OIIO::ImageSpec& spec
   const fs::path temporary =
       target.parent_path() / (".tmp-" + std::to_string(::getpid()) + "-" + target.filename().string());
   {
-    auto output = OIIO::ImageOutput::create(target.extension().string());
+    auto output = OIIO::ImageOutput::create(target.string());
     if (!output) throw std::runtime_error(path + ": no image writer for this extension: " + OIIO::geterror());
     if (!output->open(temporary.string(), spec))
       throw std::runtime_error(path + ": cannot open for writing: " + output->geterror());

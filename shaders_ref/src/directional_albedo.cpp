@@ -1,0 +1,247 @@
+#include "shaders_ref/directional_albedo.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace shaders_ref {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// --- One-dimensional globally adaptive Gauss-Kronrod quadrature ------------------------------
+
+// The 15-point Kronrod rule on [-1, 1] (nodes +-x_k) and the 7-point Gauss rule it extends, whose
+// nodes are x_1, x_3, x_5 and x_7 = 0 (Kronrod 1965; Piessens et al. 1983, QUADPACK).
+constexpr std::array<double, 8> kKronrodNodes = {
+    0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
+    0.864864423359769072789712788640926, 0.741531185599394439863864773280788,
+    0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
+    0.207784955007898467600689403773245, 0.0};
+constexpr std::array<double, 8> kKronrodWeights = {
+    0.022935322010529224963732008058970, 0.063092092629978553290700663189204,
+    0.104790010322250183839876322541518, 0.140653259715525918745189590510238,
+    0.169004726639267902826583426598550, 0.190350578064785409913256402421014,
+    0.204432940075298892414161999234649, 0.209482141084727828012999174891714};
+constexpr std::array<double, 4> kGaussWeights = {
+    0.129484966168869693270611432679082, 0.279705391489276667901467771423780,
+    0.381830050505118944950369775488975, 0.417959183673469387755102040816327};
+
+double magnitude(double v) { return std::abs(v); }
+double magnitude(const glm::dvec3& v) {
+  return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+}
+
+template <class Value>
+struct Panel {
+  double a, b;
+  Value integral;
+  double error;  // |Kronrod - Gauss| on the panel
+};
+
+template <class Value, class Integrand>
+Panel<Value> gauss_kronrod_panel(const Integrand& f, double a, double b) {
+  const double half = 0.5 * (b - a);
+  const double mid = 0.5 * (a + b);
+  const Value centre = f(mid);
+  Value kronrod = centre * kKronrodWeights[7];
+  Value gauss = centre * kGaussWeights[3];
+  for (std::size_t k = 0; k < 7; ++k) {
+    const double dx = half * kKronrodNodes[k];
+    const Value pair = f(mid - dx) + f(mid + dx);
+    kronrod += pair * kKronrodWeights[k];
+    if (k % 2 == 1) gauss += pair * kGaussWeights[k / 2];
+  }
+  return {a, b, kronrod * half, magnitude(kronrod - gauss) * std::abs(half)};
+}
+
+struct Tolerance {
+  double absolute;
+  double relative;
+  std::size_t max_panels;  // budget that bounds the work when the tolerance cannot be met
+};
+
+// Integral of f over [breakpoints.front(), breakpoints.back()], starting from one panel per
+// breakpoint interval and bisecting the panel with the largest error estimate until the summed
+// estimate is below max(absolute, relative * |integral|) (the QUADPACK QAG strategy).
+template <class Value, class Integrand>
+Value integrate_adaptive(const Integrand& f, const std::vector<double>& breakpoints,
+                         const Tolerance& tolerance) {
+  std::vector<Panel<Value>> panels;
+  for (std::size_t i = 0; i + 1 < breakpoints.size(); ++i) {
+    if (breakpoints[i + 1] > breakpoints[i])
+      panels.push_back(gauss_kronrod_panel<Value>(f, breakpoints[i], breakpoints[i + 1]));
+  }
+  while (true) {
+    Value total(0.0);
+    double error = 0.0;
+    for (const Panel<Value>& panel : panels) {
+      total += panel.integral;
+      error += panel.error;
+    }
+    const double goal = std::max(tolerance.absolute, tolerance.relative * magnitude(total));
+    if (error <= goal || panels.size() >= tolerance.max_panels) return total;
+    const auto worst = std::max_element(
+        panels.begin(), panels.end(),
+        [](const Panel<Value>& l, const Panel<Value>& r) { return l.error < r.error; });
+    const double a = worst->a;
+    const double b = worst->b;
+    const double mid = 0.5 * (a + b);
+    *worst = gauss_kronrod_panel<Value>(f, a, mid);
+    panels.push_back(gauss_kronrod_panel<Value>(f, mid, b));
+  }
+}
+
+// Tolerance for an inner integral whose result is integrated again over an outer interval of
+// the given length: its errors add up over that length.
+Tolerance inner_tolerance(const Tolerance& outer, double outer_length) {
+  return {0.1 * outer.absolute / outer_length, 0.1 * outer.relative, outer.max_panels};
+}
+
+// Accuracy of the albedo integrals: far below the 1e-5 relative the tests rely on.
+constexpr Tolerance kAlbedoTolerance{1e-10, 1e-9, 400};
+// Accuracy of the general-purpose integrals, whose integrands may be float code with
+// discontinuities: about 1e-6 absolute for a pdf.
+constexpr Tolerance kSphereTolerance{3e-7, 3e-7, 300};
+
+const std::vector<double> kAzimuthBreakpoints = {-kPi, -0.5 * kPi, 0.0, 0.5 * kPi, kPi};
+
+// --- Coordinates -------------------------------------------------------------------------------
+
+glm::dvec3 spherical_direction(double sin_theta, double cos_theta, double phi) {
+  return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
+}
+
+// Orthonormal basis (t, b, n) around the unit vector n (Gram-Schmidt against the coordinate axis
+// least aligned with n).
+struct Basis {
+  glm::dvec3 t, b, n;
+  glm::dvec3 to_world(const glm::dvec3& v) const { return v.x * t + v.y * b + v.z * n; }
+};
+Basis basis_around(const glm::dvec3& n) {
+  const glm::dvec3 helper = std::abs(n.x) < 0.5 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+  const glm::dvec3 t = glm::normalize(helper - glm::dot(helper, n) * n);
+  return {t, glm::cross(n, t), n};
+}
+
+// The stretched polar angle s of a GGX lobe of width alpha: tan(theta_m) = alpha tan(s), so the
+// slope distribution D(m) cos(theta_m) dm = sin(2 s) ds dphi / (2 pi) (Walter et al. 2007,
+// eq. 35-36, whose sampling formula this is). Written with sin and cos of s so that s -> pi/2
+// stays finite.
+struct StretchedAngle {
+  double sin_theta, cos_theta;  // of the microfacet normal
+  double dtheta_ds;             // alpha / (cos^2 s + alpha^2 sin^2 s)
+};
+StretchedAngle stretched_angle(double s, double alpha) {
+  const double sin_s = std::sin(s);
+  const double cos_s = std::cos(s);
+  const double norm2 = cos_s * cos_s + alpha * alpha * sin_s * sin_s;
+  const double norm = std::sqrt(norm2);
+  return {alpha * sin_s / norm, cos_s / norm, alpha / norm2};
+}
+
+// Largest stretched angle whose half vector m (at azimuth phi relative to wo) still reflects wo
+// above the surface. With tau = tan(theta_m), wi.z = 2 (wo.m) cos(theta_m) - cos_o > 0 reads
+// cos_o tau^2 - 2 sin_o cos(phi) tau - cos_o < 0; tau_max is the positive root, written with the
+// form that does not cancel (the roots' product is -1).
+double stretched_horizon_limit(double sin_o, double cos_o, double phi, double alpha) {
+  const double b = sin_o * std::cos(phi);
+  const double root = std::sqrt(b * b + cos_o * cos_o);
+  const double tau_max = b >= 0.0 ? (b + root) / cos_o : cos_o / (root - b);
+  return std::atan(tau_max / alpha);
+}
+
+// --- Lobe albedos ------------------------------------------------------------------------------
+
+glm::dvec3 diffuse_albedo(const PrincipledParams& p, const glm::dvec3& wo) {
+  const double phi_o = std::atan2(wo.y, wo.x);
+  const Tolerance inner = inner_tolerance(kAlbedoTolerance, 2.0 * kPi);
+  const std::vector<double> polar_range = {0.0, 0.5 * kPi};
+  // a = int dphi int f(wo, wi) cos(theta) sin(theta) dtheta
+  const auto over_polar_angle = [&](double phi) {
+    const auto integrand = [&](double theta) {
+      const double sin_t = std::sin(theta);
+      const double cos_t = std::cos(theta);
+      const glm::dvec3 wi = spherical_direction(sin_t, cos_t, phi_o + phi);
+      return diffuse_brdf(p, wo, wi) * (cos_t * sin_t);
+    };
+    return integrate_adaptive<glm::dvec3>(integrand, polar_range, inner);
+  };
+  return integrate_adaptive<glm::dvec3>(over_polar_angle, kAzimuthBreakpoints, kAlbedoTolerance);
+}
+
+glm::dvec3 specular_albedo(const PrincipledParams& p, const glm::dvec3& wo) {
+  if (!has_specular_lobe(p)) return glm::dvec3(0.0);
+  const double alpha = ggx_alpha(p.roughness);
+  const double phi_o = std::atan2(wo.y, wo.x);
+  const double cos_o = wo.z;
+  const double sin_o = std::sqrt(std::max(0.0, 1.0 - cos_o * cos_o));
+  const Tolerance inner = inner_tolerance(kAlbedoTolerance, 2.0 * kPi);
+  // a = int dphi int f(wo, wi) cos(theta_i) |dwi/dm| sin(theta_m) dtheta_m/ds ds,
+  // with |dwi/dm| = 4 (wo.m) (Walter et al. 2007, eq. 14).
+  const auto over_stretched_angle = [&](double phi) {
+    const auto integrand = [&](double s) {
+      const StretchedAngle m_angle = stretched_angle(s, alpha);
+      const glm::dvec3 m = spherical_direction(m_angle.sin_theta, m_angle.cos_theta, phi_o + phi);
+      const double wo_dot_m = glm::dot(wo, m);
+      const glm::dvec3 wi = 2.0 * wo_dot_m * m - wo;
+      if (wi.z <= 0.0 || wo_dot_m <= 0.0) return glm::dvec3(0.0);
+      const double jacobian = 4.0 * wo_dot_m * m_angle.sin_theta * m_angle.dtheta_ds;
+      return specular_brdf(p, wo, wi) * (wi.z * jacobian);
+    };
+    const double s_max = stretched_horizon_limit(sin_o, cos_o, phi, alpha);
+    return integrate_adaptive<glm::dvec3>(integrand, {0.0, s_max}, inner);
+  };
+  return integrate_adaptive<glm::dvec3>(over_stretched_angle, kAzimuthBreakpoints,
+                                        kAlbedoTolerance);
+}
+
+}  // namespace
+
+LobeAlbedos lobe_albedos(const PrincipledParams& p, const glm::dvec3& wo) {
+  if (wo.z <= 0.0) return {};
+  return {diffuse_albedo(p, wo), specular_albedo(p, wo)};
+}
+
+glm::dvec3 directional_albedo(const PrincipledParams& p, const glm::dvec3& wo) {
+  const LobeAlbedos albedos = lobe_albedos(p, wo);
+  return albedos.diffuse + albedos.specular;
+}
+
+double integrate_over_sphere(const DirectionFunction& f, const glm::dvec3& peak_axis,
+                             double peak_width) {
+  const Basis basis = basis_around(peak_axis);
+  // Polar breakpoints 0, w, 2w, 4w, ... < pi: the first panels resolve the peak.
+  std::vector<double> polar_breakpoints = {0.0};
+  for (double theta = peak_width; theta < kPi; theta *= 2.0) polar_breakpoints.push_back(theta);
+  polar_breakpoints.push_back(kPi);
+
+  const Tolerance inner = inner_tolerance(kSphereTolerance, kPi);
+  const auto over_azimuth = [&](double theta) {
+    const double sin_t = std::sin(theta);
+    const double cos_t = std::cos(theta);
+    const auto integrand = [&](double phi) {
+      return f(basis.to_world(spherical_direction(sin_t, cos_t, phi))) * sin_t;
+    };
+    return integrate_adaptive<double>(integrand, kAzimuthBreakpoints, inner);
+  };
+  return integrate_adaptive<double>(over_azimuth, polar_breakpoints, kSphereTolerance);
+}
+
+double integrate_over_microfacet_normals(const DirectionFunction& g, double alpha) {
+  const Tolerance inner = inner_tolerance(kAlbedoTolerance, 2.0 * kPi);
+  const std::vector<double> stretched_range = {0.0, 0.5 * kPi};
+  const auto over_stretched_angle = [&](double phi) {
+    const auto integrand = [&](double s) {
+      const StretchedAngle m_angle = stretched_angle(s, alpha);
+      const glm::dvec3 m = spherical_direction(m_angle.sin_theta, m_angle.cos_theta, phi);
+      return g(m) * m_angle.sin_theta * m_angle.dtheta_ds;
+    };
+    return integrate_adaptive<double>(integrand, stretched_range, inner);
+  };
+  return integrate_adaptive<double>(over_stretched_angle, kAzimuthBreakpoints, kAlbedoTolerance);
+}
+
+}  // namespace shaders_ref
