@@ -132,7 +132,7 @@ struct Support {
       case 4:
         return ball_through(points[0], points[1], points[2], points[3]);
       default:
-        return Ball{};
+        return Ball{};  // no support yet: the empty ball, which every point violates
     }
   }
 };

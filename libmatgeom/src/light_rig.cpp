@@ -50,8 +50,9 @@ RigLight lamp_aimed_at(const glm::dvec3& position, const glm::dvec3& center) {
   return light;
 }
 
-// Irradiance (W/m^2 per unit radiance) at the origin, on a surface with unit normal `normal`,
-// from a uniform Lambertian polygon with vertices `polygon` (relative to the receiving point).
+// Irradiance per unit radiance (the projected solid angle) at the origin, on a surface with
+// unit normal `normal`, from a uniform Lambertian polygon with vertices `polygon` (relative to
+// the receiving point).
 // Lambert's formula: E = L/2 sum_i angle(v_i, v_{i+1}) n . unit(v_i x v_{i+1}); the polygon is
 // first clipped to the hemisphere above the surface, where the formula holds.
 double polygon_irradiance_per_radiance(const std::array<glm::dvec3, 4>& polygon,
