@@ -11,7 +11,8 @@ namespace bench {
 // A bumpy closed sphere of radius about 0.3 m with close to `triangles` triangles.
 matgeom::TriangleMesh displaced_sphere(size_t triangles);
 
-// Adds the paper's light rig around the mesh (minimal enclosing sphere) to the scene.
+// Adds the paper's light rig around the mesh (minimal enclosing sphere), normalised to 1 klx at
+// its centre, to the scene.
 void add_paper_rig(matrender::Scene& scene, const matgeom::TriangleMesh& mesh);
 
 // Camera of the paper's grid, cell (5, 16) of 16 x 32, radius 1 m around the surface centroid.

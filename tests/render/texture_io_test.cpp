@@ -1,0 +1,135 @@
+// Image textures read through OpenImageIO from real files, sampled as Cycles' "Linear"
+// interpolation; frames written to EXR/PNG read back with the values rendered.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/imageio.h>
+#include <unistd.h>
+
+#include "matrender/image_io.h"
+#include "matrender/texture.h"
+
+using namespace matrender;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path temp_dir() {
+  const fs::path dir = fs::temp_directory_path() / ("matrender_texture_test_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir;
+}
+
+template <typename T>
+void write_image(const fs::path& path, int w, int h, int channels, OIIO::TypeDesc type, const std::vector<T>& pixels) {
+  auto out = OIIO::ImageOutput::create(path.string());
+  REQUIRE(out);
+  REQUIRE(out->open(path.string(), OIIO::ImageSpec(w, h, channels, type)));
+  REQUIRE(out->write_image(type, pixels.data()));
+  out->close();
+}
+
+// sRGB decoding written out from IEC 61966-2-1 for the expectations.
+double srgb_decode(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
+
+}  // namespace
+
+TEST_CASE("8-bit PNG textures are filtered on encoded values, then decoded", "[render]") {
+  const fs::path dir = temp_dir();
+  // 2 x 2 RGB, rows top to bottom: top row (0, 255), bottom row (64, 128) in every channel.
+  const std::vector<uint8_t> pixels = {0, 0, 0, 255, 255, 255, 64, 64, 64, 128, 128, 128};
+  write_image(dir / "t.png", 2, 2, 3, OIIO::TypeDesc::UINT8, pixels);
+  const auto srgb = Texture::load((dir / "t.png").string(), ColorSpace::SRGB);
+  const auto data = Texture::load((dir / "t.png").string(), ColorSpace::NonColor);
+  // Texel centres at (i + 0.5) / 2; v = 0 is the bottom row.
+  CHECK(data->sample({0.25f, 0.25f}).x == Approx(64 / 255.0));
+  CHECK(data->sample({0.75f, 0.75f}).x == Approx(1.0));
+  CHECK(srgb->sample({0.25f, 0.25f}).x == Approx(srgb_decode(64 / 255.0)).epsilon(1e-5));
+  // Half-way between the bottom texels: mix of encoded values, then decoded.
+  const double encoded_mid = 0.5 * (64 + 128) / 255.0;
+  CHECK(srgb->sample({0.5f, 0.25f}).y == Approx(srgb_decode(encoded_mid)).epsilon(1e-5));
+  // Bilinear in the centre of all four.
+  CHECK(data->sample({0.5f, 0.5f}).z == Approx((0 + 255 + 64 + 128) / (4 * 255.0)).epsilon(1e-6));
+  // Repeat wraps u = 1.25 to 0.25; alpha defaults to 1 for RGB images.
+  CHECK(data->sample({1.25f, 0.25f}).x == Approx(64 / 255.0));
+  CHECK(data->sample({0.25f, 0.25f}).w == 1.0f);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("Clamp holds the edge texel; repeat blends across the seam", "[render]") {
+  const std::vector<float> ramp = {0.0f, 1.0f};  // 2 x 1, grey
+  const auto clamped = Texture::from_pixelsf(2, 1, 1, ramp.data(), ColorSpace::NonColor, Wrap::Clamp);
+  const auto repeated = Texture::from_pixelsf(2, 1, 1, ramp.data(), ColorSpace::NonColor, Wrap::Repeat);
+  CHECK(clamped->sample({0.0f, 0.5f}).x == Approx(0.0f));
+  CHECK(clamped->sample({-3.0f, 0.5f}).x == Approx(0.0f));
+  CHECK(clamped->sample({5.0f, 0.5f}).x == Approx(1.0f));
+  CHECK(repeated->sample({0.0f, 0.5f}).x == Approx(0.5f));  // halfway between texel 1 and texel 0
+  CHECK(std::isfinite(repeated->sample({1e30f, -1e30f}).x));
+}
+
+TEST_CASE("EXR, TIFF and JPEG textures load; float sRGB images decode at load", "[render]") {
+  const fs::path dir = temp_dir();
+  const std::vector<float> linear = {0.25f, 0.5f, 2.0f, 1.0f};  // 1 x 1 RGBA, HDR value
+  write_image(dir / "t.exr", 1, 1, 4, OIIO::TypeDesc::FLOAT, linear);
+  const auto exr = Texture::load((dir / "t.exr").string(), ColorSpace::NonColor);
+  CHECK(exr->sample({0.3f, 0.7f}) == glm::vec4(0.25f, 0.5f, 2.0f, 1.0f));
+  const auto exr_srgb = Texture::load((dir / "t.exr").string(), ColorSpace::SRGB);
+  CHECK(exr_srgb->sample({0.5f, 0.5f}).x == Approx(srgb_decode(0.25)).epsilon(1e-5));
+
+  const std::vector<uint16_t> sixteen = {0, 65535, 32768, 1000};
+  write_image(dir / "t.tif", 2, 2, 1, OIIO::TypeDesc::UINT16, sixteen);
+  const auto tif = Texture::load((dir / "t.tif").string(), ColorSpace::NonColor);
+  CHECK(tif->sample({0.75f, 0.75f}).x == Approx(1.0f));
+  CHECK(tif->sample({0.25f, 0.25f}).y == Approx(32768 / 65535.0f));
+
+  const std::vector<uint8_t> grey(8 * 8 * 3, 200);
+  write_image(dir / "t.jpg", 8, 8, 3, OIIO::TypeDesc::UINT8, grey);
+  const auto jpg = Texture::load((dir / "t.jpg").string(), ColorSpace::NonColor);
+  CHECK(jpg->sample({0.5f, 0.5f}).x == Approx(200 / 255.0f).margin(2 / 255.0f));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("A missing or corrupt texture is an error naming the file", "[render]") {
+  const fs::path dir = temp_dir();
+  CHECK_THROWS_WITH(Texture::load((dir / "missing.png").string(), ColorSpace::SRGB),
+                    Catch::Contains("missing.png"));
+  std::FILE* f = std::fopen((dir / "broken.png").c_str(), "wb");
+  const char junk[] = "\x89PNG\r\n\x1a\n this is not a png";
+  std::fwrite(junk, 1, sizeof junk, f);
+  std::fclose(f);
+  CHECK_THROWS_WITH(Texture::load((dir / "broken.png").string(), ColorSpace::SRGB), Catch::Contains("broken.png"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("write_frame writes EXR values exactly and leaves no temporary files", "[render]") {
+  const fs::path dir = temp_dir();
+  FrameBuffers frame;
+  frame.resize(3, 2, AovAll);
+  for (size_t i = 0; i < frame.color.size(); ++i) frame.color[i] = 0.1f * static_cast<float>(i);
+  for (size_t i = 0; i < frame.depth.size(); ++i) frame.depth[i] = 1.5f + static_cast<float>(i);
+  frame.label[4] = 7;
+  const auto written = write_frame(frame, (dir / "out").string(), "v");
+  CHECK(written.size() == 19);
+  for (const auto& path : written) CHECK(fs::exists(path));
+  for (const auto& entry : fs::directory_iterator(dir / "out"))
+    CHECK(entry.path().filename().string().rfind(".tmp", 0) != 0);
+
+  auto in = OIIO::ImageInput::open((dir / "out" / "v_color.exr").string());
+  REQUIRE(in);
+  std::vector<float> rgba(3 * 2 * 4);
+  REQUIRE(in->read_image(0, 0, 0, 4, OIIO::TypeDesc::FLOAT, rgba.data()));
+  CHECK(rgba[4 * 5 + 2] == frame.color[3 * 5 + 2]);
+  auto depth = OIIO::ImageInput::open((dir / "out" / "v_depth.exr").string());
+  std::vector<float> z(6);
+  REQUIRE(depth->read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, z.data()));
+  CHECK(z[3] == 4.5f);
+  auto label = OIIO::ImageInput::open((dir / "out" / "v_label.png").string());
+  std::vector<uint16_t> ids(6);
+  REQUIRE(label->read_image(0, 0, 0, 1, OIIO::TypeDesc::UINT16, ids.data()));
+  CHECK(ids[4] == 7);
+  fs::remove_all(dir);
+}
