@@ -14,17 +14,21 @@ constexpr double kMinSphericalSolidAngle = 1e-5;
 }  // namespace
 
 PreparedRectLight::PreparedRectLight(const RectLight& light) {
-  axis_x_ = glm::normalize(glm::dvec3(light.light_to_world[0]));
-  axis_y_ = glm::normalize(glm::dvec3(light.light_to_world[1]));
-  emit_dir_ = -glm::normalize(glm::cross(axis_x_, axis_y_));
+  const glm::dvec3 axis_x = glm::normalize(glm::dvec3(light.light_to_world[0]));
+  const glm::dvec3 axis_y = glm::normalize(glm::dvec3(light.light_to_world[1]));
+  emit_dir_ = -glm::normalize(glm::cross(axis_x, axis_y));
   center_ = glm::dvec3(light.light_to_world[3]);
-  half_x_ = 0.5 * light.size_x;
-  half_y_ = 0.5 * light.size_y;
-  edge_x_ = axis_x_ * light.size_x;
-  edge_y_ = axis_y_ * light.size_y;
+  edge_x_ = axis_x * light.size_x;
+  edge_y_ = axis_y * light.size_y;
   corner_ = center_ - 0.5 * edge_x_ - 0.5 * edge_y_;
   area_ = light.size_x * light.size_y;
   radiance_ = glm::vec3(light.power * light.color / (4.0 * area_));
+  center_f_ = glm::vec3(center_);
+  emit_dir_f_ = glm::vec3(emit_dir_);
+  axis_x_f_ = glm::vec3(axis_x);
+  axis_y_f_ = glm::vec3(axis_y);
+  half_x_f_ = static_cast<float>(0.5 * light.size_x);
+  half_y_f_ = static_cast<float>(0.5 * light.size_y);
 }
 
 bool PreparedRectLight::sees_emitting_side(const glm::dvec3& p) const {
@@ -72,16 +76,14 @@ float PreparedRectLight::pdf(const glm::vec3& p_float, const glm::vec3& wi, floa
 
 std::optional<float> PreparedRectLight::intersect(const glm::vec3& origin, const glm::vec3& dir,
                                                   float t_max) const {
-  const glm::dvec3 o(origin);
-  const glm::dvec3 d(dir);
-  const double facing = glm::dot(d, emit_dir_);
-  if (!(facing < 0.0)) return std::nullopt;  // only the emitting side is visible
-  const double t = glm::dot(center_ - o, emit_dir_) / facing;
-  if (!(t > 0.0) || t >= t_max) return std::nullopt;
-  const glm::dvec3 local = o + t * d - center_;
-  if (std::abs(glm::dot(local, axis_x_)) > half_x_ || std::abs(glm::dot(local, axis_y_)) > half_y_)
+  const float facing = glm::dot(dir, emit_dir_f_);
+  if (!(facing < 0.0f)) return std::nullopt;  // only the emitting side is visible
+  const float t = glm::dot(center_f_ - origin, emit_dir_f_) / facing;
+  if (!(t > 0.0f) || t >= t_max) return std::nullopt;
+  const glm::vec3 local = origin + t * dir - center_f_;
+  if (std::abs(glm::dot(local, axis_x_f_)) > half_x_f_ || std::abs(glm::dot(local, axis_y_f_)) > half_y_f_)
     return std::nullopt;
-  return static_cast<float>(t);
+  return t;
 }
 
 }  // namespace matrender

@@ -30,9 +30,11 @@ class PreparedRectLight {
   bool sees_emitting_side(const glm::dvec3& p) const;
 
   glm::dvec3 corner_, edge_x_, edge_y_, center_, emit_dir_;  // emit_dir_ = lamp -Z
-  glm::dvec3 axis_x_, axis_y_;
-  double half_x_, half_y_, area_;
+  double area_;
   glm::vec3 radiance_;
+  // Single-precision copies for the ray test every BSDF-sampled ray makes against every lamp.
+  glm::vec3 center_f_, emit_dir_f_, axis_x_f_, axis_y_f_;
+  float half_x_f_, half_y_f_;
 };
 
 }  // namespace matrender

@@ -78,8 +78,15 @@ SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm:
   sp.shading_normal = ensure_valid_reflection(sp.geometric_normal, wo, n);
 
   sp.inputs.base_color = eval_color(material.base_color, sp.uv);
-  sp.inputs.metallic = eval_scalar(material.metallic, sp.uv);
-  sp.inputs.roughness = eval_scalar(material.roughness, sp.uv);
+  if (material.metallic.texture && material.metallic.texture == material.roughness.texture) {
+    // One lookup for a packed metallic-roughness (ORM) image.
+    const glm::vec4 packed = material.metallic.texture->sample(sp.uv);
+    sp.inputs.metallic = material.metallic.value * packed[material.metallic.channel];
+    sp.inputs.roughness = material.roughness.value * packed[material.roughness.channel];
+  } else {
+    sp.inputs.metallic = eval_scalar(material.metallic, sp.uv);
+    sp.inputs.roughness = eval_scalar(material.roughness, sp.uv);
+  }
   sp.inputs.specular = material.specular;
   sp.inputs.specular_tint = material.specular_tint;
   sp.inputs.diffuse_model = material.diffuse_model;
