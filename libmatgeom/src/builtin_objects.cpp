@@ -50,9 +50,9 @@ struct VaseShape {
   double neck_height = 0.23;
   double neck_radius = 0.04;
   double rim_radius = 0.05;
-  double wall = 0.006;      // horizontal wall thickness; the lip is a half circle of this width
-  double floor = 0.01;      // thickness of the bottom
-  double fillet = 0.008;    // radius of the rounded foot and of the inside corner
+  double wall = 0.006;    // horizontal wall thickness; the lip is a half circle of this width
+  double floor = 0.01;    // thickness of the bottom
+  double fillet = 0.008;  // radius of the rounded foot and of the inside corner
   double rim_height() const { return height - 0.5 * wall; }
 };
 
@@ -69,12 +69,14 @@ VaseShape random_vase_shape(UniformSource& random) {
 }
 
 double outer_radius(const VaseShape& shape, double z) {
-  const double heights[4] = {shape.fillet, shape.belly_height, shape.neck_height, shape.rim_height()};
+  const double heights[4] = {shape.fillet, shape.belly_height, shape.neck_height,
+                             shape.rim_height()};
   const double radii[4] = {shape.foot_radius, shape.belly_radius, shape.neck_radius,
                            shape.rim_radius};
   for (int k = 0; k < 3; ++k) {
     if (z <= heights[k + 1] || k == 2) {
-      return lerp(radii[k], radii[k + 1], smoothstep((z - heights[k]) / (heights[k + 1] - heights[k])));
+      return lerp(radii[k], radii[k + 1],
+                  smoothstep((z - heights[k]) / (heights[k + 1] - heights[k])));
     }
   }
   return radii[3];
@@ -144,8 +146,8 @@ Profile vase_profile(const VaseShape& shape) {
   append_arc(profile, {fillet_centre, inner_corner}, shape.fillet, 0.0, -0.5 * kPi,
              kInnerFilletSamples);
   for (int k = 1; k <= kInnerFloorSamples; ++k) {
-    profile.push_back({fillet_centre * (1.0 - static_cast<double>(k) / (kInnerFloorSamples + 1)),
-                       shape.floor});
+    profile.push_back(
+        {fillet_centre * (1.0 - static_cast<double>(k) / (kInnerFloorSamples + 1)), shape.floor});
   }
   profile.push_back({0.0, shape.floor});
   return result;
@@ -210,7 +212,8 @@ TriangleMesh revolve_profile(const std::vector<ProfilePoint>& profile, double te
       const double s = std::sin(phi);
       mesh.positions.emplace_back(profile[i].r * c, profile[i].r * s, profile[i].z);
       mesh.normals.emplace_back(normals[i].r * c, normals[i].r * s, normals[i].z);
-      const double u = on_axis(i) ? (j + 0.5) / kAroundSegments : static_cast<double>(j) / kAroundSegments;
+      const double u =
+          on_axis(i) ? (j + 0.5) / kAroundSegments : static_cast<double>(j) / kAroundSegments;
       mesh.uvs.emplace_back(static_cast<float>(u), v);
     }
   }
@@ -257,7 +260,8 @@ double hash_to_unit(uint32_t x) { return static_cast<double>(hash32(x) >> 8) * (
 double lattice_value(int ix, int iy, int period, uint32_t salt) {
   const int wx = ((ix % period) + period) % period;
   const int wy = ((iy % period) + period) % period;
-  return hash_to_unit(hash32(salt ^ static_cast<uint32_t>(wx)) + static_cast<uint32_t>(wy) * 0x9e3779b9u);
+  return hash_to_unit(hash32(salt ^ static_cast<uint32_t>(wx)) +
+                      static_cast<uint32_t>(wy) * 0x9e3779b9u);
 }
 
 // Value noise in [0, 1) on a lattice of `period` cells across the unit square, periodic in both
@@ -269,9 +273,10 @@ double periodic_value_noise(double x, double y, int period, uint32_t salt) {
   const int iy = static_cast<int>(std::floor(py));
   const double fx = smoothstep(px - ix);
   const double fy = smoothstep(py - iy);
-  const double bottom = lerp(lattice_value(ix, iy, period, salt), lattice_value(ix + 1, iy, period, salt), fx);
-  const double top =
-      lerp(lattice_value(ix, iy + 1, period, salt), lattice_value(ix + 1, iy + 1, period, salt), fx);
+  const double bottom =
+      lerp(lattice_value(ix, iy, period, salt), lattice_value(ix + 1, iy, period, salt), fx);
+  const double top = lerp(lattice_value(ix, iy + 1, period, salt),
+                          lattice_value(ix + 1, iy + 1, period, salt), fx);
   return lerp(bottom, top, fy);
 }
 
@@ -291,7 +296,7 @@ double fractal_noise(double x, double y, int base_period, uint32_t salt) {
 struct GlazePalette {
   glm::dvec3 light;  // sRGB-encoded, [0, 1]
   glm::dvec3 dark;
-  glm::dvec3 band;   // the glaze band's colour
+  glm::dvec3 band;  // the glaze band's colour
 };
 
 GlazePalette random_palette(UniformSource& random) {
@@ -343,8 +348,8 @@ ImagePixels glaze_base_color(const GlazePalette& palette, uint32_t salt) {
     const double mottling = fractal_noise(u, v, 8, salt + 1u);
     glm::dvec3 colour = glm::mix(palette.light, palette.dark, 0.55 * pooling + 0.45 * mottling);
     // Sparse iron speckles: a few texels darkened by a hash threshold.
-    const uint32_t texel = static_cast<uint32_t>(u * kTextureSize) * 7919u +
-                           static_cast<uint32_t>(v * kTextureSize);
+    const uint32_t texel =
+        static_cast<uint32_t>(u * kTextureSize) * 7919u + static_cast<uint32_t>(v * kTextureSize);
     if (hash_to_unit(texel ^ salt) > 0.996) colour *= 0.45;
     return colour;
   });
@@ -421,8 +426,8 @@ ObjectAsset make_vase(uint32_t seed) {
   body.name = "body";
   body.base_color = glm::dvec3(1.0);  // factor x texture, as a glTF material would have it
   body.base_color_image = 0;
-  body.metallic = 0.0;                // factor x texture.B, both 0
-  body.roughness = 1.0;               // factor x texture.G in [0.2, 0.5]
+  body.metallic = 0.0;   // factor x texture.B, both 0
+  body.roughness = 1.0;  // factor x texture.G in [0.2, 0.5]
   body.metallic_roughness_image = 1;
   body.normal_image = 2;
   body.normal_strength = 1.0;

@@ -136,7 +136,8 @@ bool attribute_format_allowed(const std::string& semantic, int component_type, b
     return true;
   }
   if (!quantized) return false;
-  if (semantic == "POSITION" || semantic == "TEXCOORD_0") return is_integer_component(component_type);
+  if (semantic == "POSITION" || semantic == "TEXCOORD_0")
+    return is_integer_component(component_type);
   // NORMAL and TANGENT: unit vectors, so only signed normalized integers make sense.
   return normalized && (component_type == TINYGLTF_COMPONENT_TYPE_BYTE ||
                         component_type == TINYGLTF_COMPONENT_TYPE_SHORT);
@@ -202,8 +203,8 @@ AccessorValues read_accessor(const GltfFile& file, int index, int expected_type,
   const std::string name = concat(what, " (accessor ", index, ")");
   if (accessor.type != expected_type) fail(file.path, name + ": wrong element type");
   if (accessor.sparse.isSparse) fail(file.path, name + ": sparse accessors are not supported");
-  const int component_size = tinygltf::GetComponentSizeInBytes(
-      static_cast<uint32_t>(accessor.componentType));
+  const int component_size =
+      tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(accessor.componentType));
   if (component_size <= 0 || accessor.componentType == TINYGLTF_COMPONENT_TYPE_DOUBLE ||
       accessor.componentType == TINYGLTF_COMPONENT_TYPE_INT) {
     fail(file.path, concat(name, ": invalid component type ", accessor.componentType));
@@ -216,7 +217,8 @@ AccessorValues read_accessor(const GltfFile& file, int index, int expected_type,
   result.count = accessor.count;
   result.components = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(accessor.type));
   if (accessor.count == 0) return result;
-  if (accessor.bufferView < 0 || static_cast<size_t>(accessor.bufferView) >= model.bufferViews.size()) {
+  if (accessor.bufferView < 0 ||
+      static_cast<size_t>(accessor.bufferView) >= model.bufferViews.size()) {
     fail(file.path, concat(name, ": buffer view ", accessor.bufferView, " does not exist"));
   }
   const tinygltf::BufferView& view = model.bufferViews[static_cast<size_t>(accessor.bufferView)];
@@ -224,13 +226,15 @@ AccessorValues read_accessor(const GltfFile& file, int index, int expected_type,
     fail(file.path, concat(name, ": buffer ", view.buffer, " does not exist"));
   }
   const tinygltf::Buffer& buffer = model.buffers[static_cast<size_t>(view.buffer)];
-  if (view.byteOffset > buffer.data.size() || view.byteLength > buffer.data.size() - view.byteOffset) {
-    fail(file.path, concat(name, ": buffer view ", accessor.bufferView, " (bytes ", view.byteOffset,
-                           " + ", view.byteLength, ") runs past its buffer of ", buffer.data.size(),
-                           " bytes"));
+  if (view.byteOffset > buffer.data.size() ||
+      view.byteLength > buffer.data.size() - view.byteOffset) {
+    fail(file.path,
+         concat(name, ": buffer view ", accessor.bufferView, " (bytes ", view.byteOffset, " + ",
+                view.byteLength, ") runs past its buffer of ", buffer.data.size(), " bytes"));
   }
 
-  const size_t element_size = static_cast<size_t>(component_size) * static_cast<size_t>(result.components);
+  const size_t element_size =
+      static_cast<size_t>(component_size) * static_cast<size_t>(result.components);
   const int stride_or_error = accessor.ByteStride(view);
   if (stride_or_error <= 0 || static_cast<size_t>(stride_or_error) < element_size) {
     fail(file.path, concat(name, ": invalid byteStride ", view.byteStride));
@@ -251,7 +255,8 @@ AccessorValues read_accessor(const GltfFile& file, int index, int expected_type,
   result.values.resize(accessor.count * static_cast<size_t>(result.components));
   for (size_t element = 0; element < accessor.count; ++element) {
     for (int c = 0; c < result.components; ++c) {
-      const unsigned char* bytes = base + element * stride + static_cast<size_t>(c) * static_cast<size_t>(component_size);
+      const unsigned char* bytes =
+          base + element * stride + static_cast<size_t>(c) * static_cast<size_t>(component_size);
       result.values[element * static_cast<size_t>(result.components) + static_cast<size_t>(c)] =
           decode_component(bytes, accessor.componentType, accessor.normalized);
     }
@@ -269,7 +274,8 @@ AccessorValues read_attribute(const GltfFile& file, int index, const std::string
   const std::string name = what + " " + semantic;
   AccessorValues values = read_accessor(file, index, expected_type, name);
   const tinygltf::Accessor& accessor = file.model.accessors[static_cast<size_t>(index)];
-  if (!attribute_format_allowed(semantic, accessor.componentType, accessor.normalized, file.quantized)) {
+  if (!attribute_format_allowed(semantic, accessor.componentType, accessor.normalized,
+                                file.quantized)) {
     fail(file.path, concat(name, ": component type ", accessor.componentType,
                            accessor.normalized ? " (normalized)" : "", " is not allowed"));
   }
@@ -278,7 +284,8 @@ AccessorValues read_attribute(const GltfFile& file, int index, const std::string
   }
   for (size_t i = 0; i < values.values.size(); ++i) {
     if (std::isfinite(values.values[i])) continue;
-    fail(file.path, concat(name, ": non-finite vertex ", i / static_cast<size_t>(values.components)));
+    fail(file.path,
+         concat(name, ": non-finite vertex ", i / static_cast<size_t>(values.components)));
   }
   return values;
 }
@@ -317,7 +324,8 @@ glm::dmat4 node_local_transform(const GltfFile& file, size_t node_index) {
     transform = transform * glm::mat4_cast(q / length);
   }
   if (!node.scale.empty()) {
-    transform = transform * glm::dmat4(glm::dvec4(node.scale[0], 0, 0, 0), glm::dvec4(0, node.scale[1], 0, 0),
+    transform = transform * glm::dmat4(glm::dvec4(node.scale[0], 0, 0, 0),
+                                       glm::dvec4(0, node.scale[1], 0, 0),
                                        glm::dvec4(0, 0, node.scale[2], 0), glm::dvec4(0, 0, 0, 1));
   }
   return transform;
@@ -340,7 +348,8 @@ std::vector<int> scene_roots(const GltfFile& file) {
   std::vector<bool> is_child(model.nodes.size(), false);
   for (const tinygltf::Node& node : model.nodes) {
     for (int child : node.children) {
-      if (child >= 0 && static_cast<size_t>(child) < model.nodes.size()) is_child[static_cast<size_t>(child)] = true;
+      if (child >= 0 && static_cast<size_t>(child) < model.nodes.size())
+        is_child[static_cast<size_t>(child)] = true;
     }
   }
   std::vector<int> roots;
@@ -358,7 +367,8 @@ void collect_instances(const GltfFile& file, int node_index, const glm::dmat4& p
   }
   const size_t n = static_cast<size_t>(node_index);
   // glTF node graphs are forests; a second visit means a cycle or a shared child.
-  if (visited[n]) fail(file.path, concat("node ", n, " is reached twice (the hierarchy must be a tree)"));
+  if (visited[n])
+    fail(file.path, concat("node ", n, " is reached twice (the hierarchy must be a tree)"));
   visited[n] = true;
 
   const glm::dmat4 world = parent * node_local_transform(file, n);
@@ -375,7 +385,8 @@ void collect_instances(const GltfFile& file, int node_index, const glm::dmat4& p
 std::vector<MeshInstance> collect_mesh_instances(const GltfFile& file) {
   std::vector<bool> visited(file.model.nodes.size(), false);
   std::vector<MeshInstance> instances;
-  for (int root : scene_roots(file)) collect_instances(file, root, glm::dmat4(1.0), visited, instances);
+  for (int root : scene_roots(file))
+    collect_instances(file, root, glm::dmat4(1.0), visited, instances);
   return instances;
 }
 
@@ -441,8 +452,9 @@ std::vector<glm::uvec3> assemble_triangles(const GltfFile& file, int mode,
       for (size_t i = 0; i + 2 < n; ++i) add(indices[i + 1], indices[i + 2], indices[0]);
       break;
     default:
-      fail(file.path, concat(what, ": unsupported primitive mode ", mode,
-                             " (only triangles, triangle strips and triangle fans have a surface)"));
+      fail(file.path,
+           concat(what, ": unsupported primitive mode ", mode,
+                  " (only triangles, triangle strips and triangle fans have a surface)"));
   }
   return triangles;
 }
@@ -465,7 +477,8 @@ PrimitivePiece read_primitive(const GltfFile& file, const tinygltf::Primitive& p
                               const std::string& what) {
   PrimitivePiece piece;
   piece.material = primitive.material;
-  if (primitive.material >= 0 && static_cast<size_t>(primitive.material) >= file.model.materials.size()) {
+  if (primitive.material >= 0 &&
+      static_cast<size_t>(primitive.material) >= file.model.materials.size()) {
     fail(file.path, concat(what, ": material ", primitive.material, " does not exist"));
   }
   TriangleMesh& mesh = piece.mesh;
@@ -530,8 +543,8 @@ PrimitivePiece read_primitive(const GltfFile& file, const tinygltf::Primitive& p
 // Normals the file did not give (or gave as zero vectors) are computed area-weighted from the
 // transformed triangles, so that non-uniform scales weight the faces as they appear in the scene.
 void complete_normals(PrimitivePiece& piece) {
-  const bool any_missing =
-      std::find(piece.normal_missing.begin(), piece.normal_missing.end(), true) != piece.normal_missing.end();
+  const bool any_missing = std::find(piece.normal_missing.begin(), piece.normal_missing.end(),
+                                     true) != piece.normal_missing.end();
   if (!any_missing) return;
   TriangleMesh computed;
   computed.positions = piece.mesh.positions;
@@ -554,14 +567,15 @@ void complete_tangents(PrimitivePiece& piece) {
     const glm::dvec3 t(mesh.tangents[v]);
     const glm::dvec3 in_plane = t - n * glm::dot(n, t);
     const double length = glm::length(in_plane);
-    // A tangent within ~1 degree of the normal carries no usable direction.
+    // A tangent within about half a degree of the normal has no usable direction left.
     usable = length > 1e-2;
     if (usable) mesh.tangents[v] = glm::vec4(glm::vec3(in_plane / length), mesh.tangents[v].w);
   }
   if (!usable) compute_tangents(mesh);
 }
 
-void check_finite_positions(const GltfFile& file, const TriangleMesh& mesh, const std::string& what) {
+void check_finite_positions(const GltfFile& file, const TriangleMesh& mesh,
+                            const std::string& what) {
   for (size_t v = 0; v < mesh.vertex_count(); ++v) {
     const glm::vec3& p = mesh.positions[v];
     if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) continue;
@@ -622,13 +636,15 @@ ImagePixels convert_image(const GltfFile& file, size_t index) {
                            image.bits, " bits)"));
   }
   const size_t expected = static_cast<size_t>(image.width) * static_cast<size_t>(image.height) *
-                          static_cast<size_t>(image.component) * static_cast<size_t>(image.bits / 8);
+                          static_cast<size_t>(image.component) *
+                          static_cast<size_t>(image.bits / 8);
   if (image.image.size() != expected) fail(file.path, name + ": pixel data has the wrong size");
 
   ImagePixels pixels;
   const bool embedded = image.uri.empty() || image.uri.rfind("data:", 0) == 0;
-  pixels.name = embedded ? concat(std::filesystem::path(file.path).filename().string(), "#image", index)
-                         : image.uri;
+  pixels.name = embedded
+                    ? concat(std::filesystem::path(file.path).filename().string(), "#image", index)
+                    : image.uri;
   pixels.width = image.width;
   pixels.height = image.height;
   pixels.channels = image.component;
@@ -689,8 +705,8 @@ TextureRef resolve_texture(const GltfFile& file, ImageTable& images, int texture
   }
   const tinygltf::Texture& texture = file.model.textures[static_cast<size_t>(texture_index)];
   if (texture.source < 0 || static_cast<size_t>(texture.source) >= file.model.images.size()) {
-    fail(file.path, concat(what, ": texture ", texture_index,
-                           " has no image in a core format (PNG or JPEG)"));
+    fail(file.path,
+         concat(what, ": texture ", texture_index, " has no image in a core format (PNG or JPEG)"));
   }
   ref.image = images.asset_index(static_cast<size_t>(texture.source));
   ref.wrap = sampler_wrap(file, texture.sampler, what);
@@ -698,7 +714,8 @@ TextureRef resolve_texture(const GltfFile& file, ImageTable& images, int texture
 }
 
 double unit_interval_factor(const GltfFile& file, double value, const std::string& what) {
-  if (!(value >= 0.0 && value <= 1.0)) fail(file.path, concat(what, " ", value, " is outside [0, 1]"));
+  if (!(value >= 0.0 && value <= 1.0))
+    fail(file.path, concat(what, " ", value, " is outside [0, 1]"));
   return value;
 }
 
@@ -719,16 +736,19 @@ MaterialDesc convert_material(const GltfFile& file, ImageTable& images, size_t i
   }
   desc.metallic = unit_interval_factor(file, pbr.metallicFactor, what + " metallicFactor");
   desc.roughness = unit_interval_factor(file, pbr.roughnessFactor, what + " roughnessFactor");
-  if (!std::isfinite(material.normalTexture.scale)) fail(file.path, what + ": non-finite normal scale");
+  if (!std::isfinite(material.normalTexture.scale))
+    fail(file.path, what + ": non-finite normal scale");
   desc.normal_strength = material.normalTexture.scale;
 
-  const TextureRef base = resolve_texture(file, images, pbr.baseColorTexture.index,
-                                          pbr.baseColorTexture.texCoord, what + " baseColorTexture");
+  const TextureRef base =
+      resolve_texture(file, images, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
+                      what + " baseColorTexture");
   const TextureRef metallic_roughness =
       resolve_texture(file, images, pbr.metallicRoughnessTexture.index,
                       pbr.metallicRoughnessTexture.texCoord, what + " metallicRoughnessTexture");
-  const TextureRef normal = resolve_texture(file, images, material.normalTexture.index,
-                                            material.normalTexture.texCoord, what + " normalTexture");
+  const TextureRef normal =
+      resolve_texture(file, images, material.normalTexture.index, material.normalTexture.texCoord,
+                      what + " normalTexture");
   desc.base_color_image = base.image;
   desc.metallic_roughness_image = metallic_roughness.image;
   desc.normal_image = normal.image;
@@ -772,8 +792,9 @@ std::map<int, uint32_t> assign_parts(const std::vector<PrimitivePiece>& pieces) 
 // get (0, 0) and the arbitrary tangent frame compute_tangents gives degenerate UVs.
 TriangleMesh merge_pieces(const GltfFile& file, std::vector<PrimitivePiece>& pieces,
                           const std::map<int, uint32_t>& part_of_material) {
-  const bool any_uvs = std::any_of(pieces.begin(), pieces.end(),
-                                   [](const PrimitivePiece& piece) { return !piece.mesh.uvs.empty(); });
+  const bool any_uvs = std::any_of(pieces.begin(), pieces.end(), [](const PrimitivePiece& piece) {
+    return !piece.mesh.uvs.empty();
+  });
   TriangleMesh merged;
   for (PrimitivePiece& piece : pieces) {
     TriangleMesh& mesh = piece.mesh;
@@ -813,8 +834,9 @@ ObjectAsset read_gltf(const std::string& path) {
   asset.materials.resize(part_of_material.size());
   asset.mesh.part_names.resize(part_of_material.size());
   for (const auto& [material, part] : part_of_material) {
-    asset.materials[part] = material >= 0 ? convert_material(file, images, static_cast<size_t>(material))
-                                          : default_material();
+    asset.materials[part] = material >= 0
+                                ? convert_material(file, images, static_cast<size_t>(material))
+                                : default_material();
     asset.mesh.part_names[part] = asset.materials[part].name;
   }
   asset.images = images.take_images();

@@ -85,9 +85,9 @@ void compute_vertex_normals(TriangleMesh& mesh) {
   for (const glm::uvec3& triangle : mesh.triangles) {
     // The unnormalised cross product weights each face by its area, so zero-area faces add
     // nothing and slivers barely count.
-    const glm::dvec3 weighted_normal =
-        area_vector(glm::dvec3(mesh.positions[triangle[0]]), glm::dvec3(mesh.positions[triangle[1]]),
-                    glm::dvec3(mesh.positions[triangle[2]]));
+    const glm::dvec3 weighted_normal = area_vector(glm::dvec3(mesh.positions[triangle[0]]),
+                                                   glm::dvec3(mesh.positions[triangle[1]]),
+                                                   glm::dvec3(mesh.positions[triangle[2]]));
     for (int corner = 0; corner < 3; ++corner) sums[triangle[corner]] += weighted_normal;
   }
   mesh.normals.resize(mesh.vertex_count());

@@ -21,7 +21,8 @@ std::vector<uint32_t> weld_by_position(const TriangleMesh& mesh) {
   std::vector<uint32_t> welded(mesh.vertex_count());
   for (size_t v = 0; v < mesh.vertex_count(); ++v) {
     const glm::vec3& p = mesh.positions[v];
-    welded[v] = ids.emplace(std::make_tuple(p.x, p.y, p.z), static_cast<uint32_t>(ids.size())).first->second;
+    welded[v] = ids.emplace(std::make_tuple(p.x, p.y, p.z), static_cast<uint32_t>(ids.size()))
+                    .first->second;
   }
   return welded;
 }
@@ -33,7 +34,8 @@ glm::dvec3 corner(const TriangleMesh& mesh, const glm::uvec3& t, int k) {
 double signed_volume(const TriangleMesh& mesh) {
   double volume = 0.0;
   for (const glm::uvec3& t : mesh.triangles) {
-    volume += glm::dot(corner(mesh, t, 0), glm::cross(corner(mesh, t, 1), corner(mesh, t, 2))) / 6.0;
+    volume +=
+        glm::dot(corner(mesh, t, 0), glm::cross(corner(mesh, t, 1), corner(mesh, t, 2))) / 6.0;
   }
   return volume;
 }
@@ -94,7 +96,8 @@ TEST_CASE("the vase is a closed, outward-facing, textured surface", "[geom]") {
     CHECK(bounds.lower.z == 0.0);
     CHECK(bounds.upper.z > 0.26);
     CHECK(bounds.upper.z < 0.34);
-    const double radius = std::max({-bounds.lower.x, bounds.upper.x, -bounds.lower.y, bounds.upper.y});
+    const double radius =
+        std::max({-bounds.lower.x, bounds.upper.x, -bounds.lower.y, bounds.upper.y});
     CHECK(radius > 0.06);
     CHECK(radius < 0.1);
   }
@@ -111,7 +114,8 @@ TEST_CASE("the vase is a closed, outward-facing, textured surface", "[geom]") {
   SECTION("parts, materials and images") {
     REQUIRE(mesh.part_names == std::vector<std::string>{"body", "glaze_band"});
     REQUIRE(mesh.triangle_parts.size() == mesh.triangle_count());
-    const auto band_triangles = std::count(mesh.triangle_parts.begin(), mesh.triangle_parts.end(), 1u);
+    const auto band_triangles =
+        std::count(mesh.triangle_parts.begin(), mesh.triangle_parts.end(), 1u);
     CHECK(band_triangles > 0);
     CHECK(band_triangles < static_cast<long>(mesh.triangle_count() / 4));
     REQUIRE(asset.materials.size() == 2);
@@ -132,7 +136,8 @@ TEST_CASE("the vase is a closed, outward-facing, textured surface", "[geom]") {
       CHECK(metallic_roughness.data[i + 1] <= 128);  // roughness 0.5
       CHECK(metallic_roughness.data[i + 2] == 0);    // metallic
     }
-    const matgeom::ImagePixels& normal_map = asset.images.at(static_cast<size_t>(body.normal_image));
+    const matgeom::ImagePixels& normal_map =
+        asset.images.at(static_cast<size_t>(body.normal_image));
     double mean_x = 0.0, mean_y = 0.0;
     for (size_t i = 0; i < normal_map.data.size(); i += 3) {
       mean_x += normal_map.data[i];

@@ -57,7 +57,8 @@ class TempDir {
 
 void write_bytes(const std::string& path, const std::vector<uint8_t>& bytes) {
   std::ofstream out(path, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  out.write(reinterpret_cast<const char*>(bytes.data()),
+            static_cast<std::streamsize>(bytes.size()));
   REQUIRE(out.good());
 }
 
@@ -105,7 +106,8 @@ void put_png_chunk(std::vector<uint8_t>& png, const char* type, const std::vecto
 }
 
 // RGB image, `bits` = 8 or 16, samples row by row from the top (16-bit samples as given).
-std::vector<uint8_t> encode_png(int width, int height, int bits, const std::vector<uint16_t>& samples) {
+std::vector<uint8_t> encode_png(int width, int height, int bits,
+                                const std::vector<uint16_t>& samples) {
   std::vector<uint8_t> raw;
   const size_t row_samples = static_cast<size_t>(width) * 3;
   for (int y = 0; y < height; ++y) {
@@ -164,7 +166,8 @@ class GltfWriter {
 
   int add_accessor(int view, int component_type, size_t count, const char* type,
                    size_t byte_offset = 0, bool normalized = false) {
-    json accessor = {{"bufferView", view}, {"componentType", component_type}, {"count", count}, {"type", type}};
+    json accessor = {
+        {"bufferView", view}, {"componentType", component_type}, {"count", count}, {"type", type}};
     if (byte_offset != 0) accessor["byteOffset"] = byte_offset;
     if (normalized) accessor["normalized"] = true;
     return append(doc_["accessors"], accessor);
@@ -173,7 +176,8 @@ class GltfWriter {
   template <typename T>
   int add_data(const std::vector<T>& values, int component_type, const char* type, int components) {
     const int view = add_view(values.data(), values.size() * sizeof(T));
-    return add_accessor(view, component_type, values.size() / static_cast<size_t>(components), type);
+    return add_accessor(view, component_type, values.size() / static_cast<size_t>(components),
+                        type);
   }
 
   int add_vec3(const std::vector<float>& values) { return add_data(values, kFloat, "VEC3", 3); }
@@ -231,7 +235,8 @@ class GltfWriter {
     while (text.size() % 4 != 0) text += ' ';
     std::vector<uint8_t> glb = {'g', 'l', 'T', 'F'};
     put_le32(glb, 2);
-    put_le32(glb, static_cast<uint32_t>(12 + 8 + text.size() + (bin_.empty() ? 0 : 8 + bin_.size())));
+    put_le32(glb,
+             static_cast<uint32_t>(12 + 8 + text.size() + (bin_.empty() ? 0 : 8 + bin_.size())));
     put_le32(glb, static_cast<uint32_t>(text.size()));
     put_le32(glb, 0x4E4F534Au);  // "JSON"
     glb.insert(glb.end(), text.begin(), text.end());
@@ -260,8 +265,8 @@ glm::dvec3 transform_point(const glm::dmat4& m, const glm::dvec3& p) {
 }
 
 void check_near(const glm::vec3& actual, const glm::dvec3& expected, double margin = 1e-5) {
-  INFO("actual (" << actual.x << ", " << actual.y << ", " << actual.z << "), expected (" << expected.x
-                  << ", " << expected.y << ", " << expected.z << ")");
+  INFO("actual (" << actual.x << ", " << actual.y << ", " << actual.z << "), expected ("
+                  << expected.x << ", " << expected.y << ", " << expected.z << ")");
   CHECK(glm::length(glm::dvec3(actual) - expected) < margin);
 }
 
@@ -300,7 +305,8 @@ glm::dmat4 expected_world_transform() {
   glm::dmat4 parent = glm::translate(glm::dmat4(1.0), kParentTranslation);
   parent = glm::rotate(parent, kParentAngle, kParentAxis);
   parent = glm::scale(parent, kParentScale);
-  const glm::dmat4 child = glm::scale(glm::translate(glm::dmat4(1.0), kChildTranslation), kChildScale);
+  const glm::dmat4 child =
+      glm::scale(glm::translate(glm::dmat4(1.0), kChildTranslation), kChildScale);
   return parent * child;
 }
 
@@ -314,43 +320,52 @@ std::string write_two_material_quad(const TempDir& dir, Container container) {
   const int normals = writer.add_vec3(kQuadNormals);
   const int uvs = writer.add_vec2(kQuadUvs);
   const int indices_u8 = writer.add_data(std::vector<uint8_t>{0, 1, 2}, kUnsignedByte, "SCALAR", 1);
-  const int indices_u16 = writer.add_data(std::vector<uint16_t>{0, 2, 3}, kUnsignedShort, "SCALAR", 1);
+  const int indices_u16 =
+      writer.add_data(std::vector<uint16_t>{0, 2, 3}, kUnsignedShort, "SCALAR", 1);
   const json attributes = {{"POSITION", positions}, {"NORMAL", normals}, {"TEXCOORD_0", uvs}};
 
   json& doc = writer.doc();
-  doc["meshes"] = json::array({{{"primitives", json::array({
-      {{"attributes", attributes}, {"indices", indices_u8}, {"material", 1}},
-      {{"attributes", attributes}, {"indices", indices_u16}, {"material", 0}}})}}});
+  doc["meshes"] = json::array(
+      {{{"primitives",
+         json::array({{{"attributes", attributes}, {"indices", indices_u8}, {"material", 1}},
+                      {{"attributes", attributes}, {"indices", indices_u16}, {"material", 0}}})}}});
 
   const double half = 0.5 * kParentAngle;
   const glm::dvec3 q = std::sin(half) * kParentAxis;
-  const json child_matrix = {kChildScale.x, 0, 0, 0, 0, kChildScale.y, 0, 0, 0, 0, kChildScale.z, 0,
-                             kChildTranslation.x, kChildTranslation.y, kChildTranslation.z, 1};
-  doc["nodes"] = json::array({
-      {{"name", "parent"},
-       {"translation", {kParentTranslation.x, kParentTranslation.y, kParentTranslation.z}},
-       {"rotation", {q.x, q.y, q.z, std::cos(half)}},
-       {"scale", {kParentScale.x, kParentScale.y, kParentScale.z}},
-       {"children", {1}}},
-      {{"name", "child"}, {"mesh", 0}, {"matrix", child_matrix}}});
+  // Column-major, as glTF stores matrices: the translation is the last column.
+  const json child_matrix = {kChildScale.x,       0.0,                 0.0,                 0.0,  //
+                             0.0,                 kChildScale.y,       0.0,                 0.0,  //
+                             0.0,                 0.0,                 kChildScale.z,       0.0,  //
+                             kChildTranslation.x, kChildTranslation.y, kChildTranslation.z, 1.0};
+  doc["nodes"] = json::array(
+      {{{"name", "parent"},
+        {"translation", {kParentTranslation.x, kParentTranslation.y, kParentTranslation.z}},
+        {"rotation", {q.x, q.y, q.z, std::cos(half)}},
+        {"scale", {kParentScale.x, kParentScale.y, kParentScale.z}},
+        {"children", {1}}},
+       {{"name", "child"}, {"mesh", 0}, {"matrix", child_matrix}}});
   doc["scenes"] = json::array({{{"nodes", {0}}}});
   doc["scene"] = 0;
 
   const int base_image = writer.add_image(encode_png(2, 2, 8, kBaseColorPixels), "base.png");
   const int wide_image = writer.add_image(encode_png(2, 1, 16, kSixteenBitPixels), "wide.png");
-  doc["samplers"] = json::array({{{"wrapS", kClampToEdge}, {"wrapT", kClampToEdge}}, json::object()});
-  doc["textures"] = json::array({{{"source", base_image}, {"sampler", 0}},
-                                 {{"source", wide_image}, {"sampler", 1}}});
-  doc["materials"] = json::array({
-      {{"name", "red_metal"},
-       {"pbrMetallicRoughness",
-        {{"baseColorFactor", {0.8, 0.1, 0.1, 1.0}}, {"metallicFactor", 0.9}, {"roughnessFactor", 0.3},
-         {"baseColorTexture", {{"index", 0}}}}},
-       {"normalTexture", {{"index", 1}, {"scale", 0.7}}}},
-      {{"name", "blue"},
-       {"pbrMetallicRoughness",
-        {{"baseColorFactor", {0.1, 0.2, 0.9, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.6},
-         {"metallicRoughnessTexture", {{"index", 1}}}}}}});
+  doc["samplers"] =
+      json::array({{{"wrapS", kClampToEdge}, {"wrapT", kClampToEdge}}, json::object()});
+  doc["textures"] = json::array(
+      {{{"source", base_image}, {"sampler", 0}}, {{"source", wide_image}, {"sampler", 1}}});
+  doc["materials"] = json::array({{{"name", "red_metal"},
+                                   {"pbrMetallicRoughness",
+                                    {{"baseColorFactor", {0.8, 0.1, 0.1, 1.0}},
+                                     {"metallicFactor", 0.9},
+                                     {"roughnessFactor", 0.3},
+                                     {"baseColorTexture", {{"index", 0}}}}},
+                                   {"normalTexture", {{"index", 1}, {"scale", 0.7}}}},
+                                  {{"name", "blue"},
+                                   {"pbrMetallicRoughness",
+                                    {{"baseColorFactor", {0.1, 0.2, 0.9, 1.0}},
+                                     {"metallicFactor", 0.0},
+                                     {"roughnessFactor", 0.6},
+                                     {"metallicRoughnessTexture", {{"index", 1}}}}}}});
   return writer.write();
 }
 
@@ -378,10 +393,12 @@ TEST_CASE("glTF two-material quad: transforms, axes, uvs, parts, materials, imag
   for (size_t t = 0; t < 2; ++t) {
     const glm::uvec3 triangle = mesh.triangles[t];
     const uint32_t part = mesh.triangle_parts[t];
-    const std::array<int, 3> corners = part == 1 ? std::array<int, 3>{0, 1, 2} : std::array<int, 3>{0, 2, 3};
+    const std::array<int, 3> corners =
+        part == 1 ? std::array<int, 3>{0, 1, 2} : std::array<int, 3>{0, 2, 3};
     for (int k = 0; k < 3; ++k) {
       const int c = corners[static_cast<size_t>(k)];
-      const glm::dvec3 p(kQuadPositions[3 * c], kQuadPositions[3 * c + 1], kQuadPositions[3 * c + 2]);
+      const glm::dvec3 p(kQuadPositions[3 * c], kQuadPositions[3 * c + 1],
+                         kQuadPositions[3 * c + 2]);
       check_near(mesh.positions[triangle[k]], to_blender(transform_point(world, p)));
       const glm::dvec3 n = glm::normalize(normal_matrix * glm::dvec3(0, 0, 1));
       check_near(mesh.normals[triangle[k]], to_blender(n));
@@ -450,12 +467,14 @@ TEST_CASE("glTF interleaved, normalized and non-indexed data under a mirroring n
                                         {{2, 1, 0}, {65535, 32768}}, {{0, 0, 0}, {0, 65535}},
                                         {{2, 1, 0}, {65535, 32768}}, {{0, 1, 0}, {0, 32768}}};
   static_assert(sizeof(Vertex) == 16, "interleaved layout");
-  const int view = writer.add_view(vertices.data(), vertices.size() * sizeof(Vertex), sizeof(Vertex));
+  const int view =
+      writer.add_view(vertices.data(), vertices.size() * sizeof(Vertex), sizeof(Vertex));
   const int positions = writer.add_accessor(view, kFloat, vertices.size(), "VEC3");
   const int uvs = writer.add_accessor(view, kUnsignedShort, vertices.size(), "VEC2", 12, true);
   json& doc = writer.doc();
-  doc["meshes"] = json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", positions},
-                                                                             {"TEXCOORD_0", uvs}}}}})}}});
+  doc["meshes"] = json::array(
+      {{{"primitives",
+         json::array({{{"attributes", {{"POSITION", positions}, {"TEXCOORD_0", uvs}}}}})}}});
   doc["nodes"] = json::array({{{"mesh", 0}, {"scale", {-1.0, 1.0, 1.0}}}});
   doc["scenes"] = json::array({{{"nodes", {0}}}});
   doc["scene"] = 0;
@@ -499,12 +518,14 @@ TEST_CASE("glTF tangents from the file follow the axes and a mirror", "[geom]") 
   const int positions = writer.add_vec3({0, 0, 0, 1, 0, 0, 0, 1, 0});
   const int normals = writer.add_vec3({0, 0, 1, 0, 0, 1, 0, 0, 1});
   const int uvs = writer.add_vec2({0, 1, 1, 1, 0, 0});
-  const int tangents = writer.add_data(std::vector<float>{1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1}, kFloat, "VEC4", 4);
+  const int tangents =
+      writer.add_data(std::vector<float>{1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1}, kFloat, "VEC4", 4);
   json& doc = writer.doc();
-  doc["meshes"] = json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", positions},
-                                                                             {"NORMAL", normals},
-                                                                             {"TEXCOORD_0", uvs},
-                                                                             {"TANGENT", tangents}}}}})}}});
+  doc["meshes"] = json::array({{{"primitives", json::array({{{"attributes",
+                                                              {{"POSITION", positions},
+                                                               {"NORMAL", normals},
+                                                               {"TEXCOORD_0", uvs},
+                                                               {"TANGENT", tangents}}}}})}}});
   json node = {{"mesh", 0}};
   if (mirrored) node["scale"] = {-1.0, 1.0, 1.0};
   doc["nodes"] = json::array({node});  // no scene: every root node is read
@@ -524,11 +545,13 @@ TEST_CASE("glTF triangle strips become consistently wound triangles", "[geom]") 
   TempDir dir;
   GltfWriter writer(dir, "strip", Container::Glb);
   const int positions = writer.add_vec3({0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0, 2, 0});
-  const int indices = writer.add_data(std::vector<uint32_t>{0, 1, 2, 3, 4}, kUnsignedInt, "SCALAR", 1);
+  const int indices =
+      writer.add_data(std::vector<uint32_t>{0, 1, 2, 3, 4}, kUnsignedInt, "SCALAR", 1);
   json& doc = writer.doc();
-  doc["meshes"] = json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", positions}}},
-                                                             {"indices", indices},
-                                                             {"mode", kModeTriangleStrip}}})}}});
+  doc["meshes"] =
+      json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", positions}}},
+                                                 {"indices", indices},
+                                                 {"mode", kModeTriangleStrip}}})}}});
   doc["nodes"] = json::array({{{"mesh", 0}}});
   doc["scenes"] = json::array({{{"nodes", {0}}}});
   const matgeom::TriangleMesh mesh = matgeom::read_gltf(writer.write()).mesh;
@@ -545,14 +568,16 @@ TEST_CASE("glTF triangle strips become consistently wound triangles", "[geom]") 
 namespace {
 
 // A one-triangle file with the given index list and positions.
-std::string write_triangle(const TempDir& dir, const std::string& stem, const std::vector<float>& positions,
+std::string write_triangle(const TempDir& dir, const std::string& stem,
+                           const std::vector<float>& positions,
                            const std::vector<uint16_t>& indices, int mode = 4) {
   GltfWriter writer(dir, stem, Container::EmbeddedDataUri);
   const int position_accessor = writer.add_vec3(positions);
   const int index_accessor = writer.add_data(indices, kUnsignedShort, "SCALAR", 1);
-  writer.doc()["meshes"] = json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", position_accessor}}},
-                                                                      {"indices", index_accessor},
-                                                                      {"mode", mode}}})}}});
+  writer.doc()["meshes"] =
+      json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", position_accessor}}},
+                                                 {"indices", index_accessor},
+                                                 {"mode", mode}}})}}});
   writer.doc()["nodes"] = json::array({{{"mesh", 0}}});
   return writer.write();
 }
@@ -581,13 +606,15 @@ TEST_CASE("glTF reader errors name the file and the problem", "[geom]") {
   SECTION("truncated GLB") {
     GltfWriter writer(dir, "whole", Container::Glb);
     const int positions = writer.add_vec3(kTriangle);
-    writer.doc()["meshes"] = json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", positions}}}}})}}});
+    writer.doc()["meshes"] =
+        json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", positions}}}}})}}});
     writer.doc()["nodes"] = json::array({{{"mesh", 0}}});
     const std::string whole = writer.write();
     REQUIRE(matgeom::read_gltf(whole).mesh.triangle_count() == 1);
 
     std::ifstream in(whole, std::ios::binary);
-    std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)),
+                               std::istreambuf_iterator<char>());
     bytes.resize(bytes.size() - 20);
     const std::string path = dir.file("truncated.glb");
     write_bytes(path, bytes);
@@ -624,7 +651,8 @@ TEST_CASE("glTF reader errors name the file and the problem", "[geom]") {
     GltfWriter writer(dir, "short_view", Container::EmbeddedDataUri);
     const int view = writer.add_view(kTriangle.data(), kTriangle.size() * sizeof(float));
     const int positions = writer.add_accessor(view, kFloat, 4, "VEC3");
-    writer.doc()["meshes"] = json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", positions}}}}})}}});
+    writer.doc()["meshes"] =
+        json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", positions}}}}})}}});
     writer.doc()["nodes"] = json::array({{{"mesh", 0}}});
     const std::string path = writer.write();
     CHECK_THAT(read_error(path), Contains(path) && Contains("run past the end"));
@@ -632,12 +660,14 @@ TEST_CASE("glTF reader errors name the file and the problem", "[geom]") {
   SECTION("missing external image") {
     GltfWriter writer(dir, "lost_image", Container::ExternalFiles);
     const int positions = writer.add_vec3(kTriangle);
-    writer.doc()["meshes"] = json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", positions}}},
-                                                                        {"material", 0}}})}}});
+    writer.doc()["meshes"] = json::array(
+        {{{"primitives",
+           json::array({{{"attributes", {{"POSITION", positions}}}, {"material", 0}}})}}});
     writer.doc()["nodes"] = json::array({{{"mesh", 0}}});
     writer.doc()["images"] = json::array({{{"uri", "nowhere.png"}}});
     writer.doc()["textures"] = json::array({{{"source", 0}}});
-    writer.doc()["materials"] = json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}});
+    writer.doc()["materials"] =
+        json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}});
     const std::string path = writer.write();
     CHECK_THAT(read_error(path), Contains(path));
   }

@@ -33,7 +33,8 @@ TriangleMesh grid_plane(int n, UvOf uv_of) {
 
 // A bumpy, curved patch with a sheared, non-uniformly scaled UV layout.
 TriangleMesh curved_patch() {
-  TriangleMesh mesh = grid_plane(8, [](glm::vec2 xy) { return glm::vec2(2.0f * xy.x + 0.3f * xy.y, xy.y); });
+  TriangleMesh mesh =
+      grid_plane(8, [](glm::vec2 xy) { return glm::vec2(2.0f * xy.x + 0.3f * xy.y, xy.y); });
   for (glm::vec3& p : mesh.positions) {
     p.z = 0.3f * std::sin(3.0f * p.x) * std::cos(2.0f * p.y) + 0.5f * p.x * p.x;
   }
@@ -83,7 +84,8 @@ TEST_CASE("the bitangent sign follows a mirrored uv layout", "[geom]") {
     matgeom::compute_tangents(mesh);
     for (const glm::vec4& t : mesh.tangents) CHECK(t == glm::vec4(1.0f, 0.0f, 0.0f, -1.0f));
     // w N x T must point along +v, which is -y here.
-    const glm::vec3 bitangent = mesh.tangents[0].w * glm::cross(mesh.normals[0], glm::vec3(mesh.tangents[0]));
+    const glm::vec3 bitangent =
+        mesh.tangents[0].w * glm::cross(mesh.normals[0], glm::vec3(mesh.tangents[0]));
     CHECK(bitangent.y == Approx(-1.0));
   }
   SECTION("u mirrored") {
