@@ -1,6 +1,6 @@
 #include "interrupt.h"
 
-#include <csignal>
+#include <signal.h>
 
 namespace render_object {
 namespace {

@@ -70,7 +70,7 @@ class Node {
   }
 
   bool has(const char* key) const { return value_.is_object() && value_.contains(key); }
-  Node operator[](const char* key) const {
+  Node required(const char* key) const {
     if (!value_.is_object()) fail("expected an object");
     if (!has(key)) fail(fmt::format("missing key \"{}\"", key));
     return member_node(key);
@@ -79,7 +79,7 @@ class Node {
     if (!has(key)) return std::nullopt;
     return member_node(key);
   }
-  Node operator[](size_t index) const {
+  Node item(size_t index) const {
     return Node(value_.at(index), pointer_ + "/" + std::to_string(index), file_);
   }
   // Members of an object, in file order.
@@ -91,11 +91,15 @@ class Node {
   }
 
   bool is_array() const { return value_.is_array(); }
+  bool is_object() const { return value_.is_object(); }
   bool is_string() const { return value_.is_string(); }
   bool is_number() const { return value_.is_number(); }
   size_t array_size(const std::string& expectation) const {
     if (!value_.is_array()) fail("expected " + expectation);
     return value_.size();
+  }
+  void expect_array(size_t count, const std::string& expectation) const {
+    if (array_size(expectation) != count) fail("expected " + expectation);
   }
 
   double number() const {
@@ -158,19 +162,18 @@ class Node {
 // ---- small value types ----------------------------------------------------------------------
 
 glm::dvec3 read_vec3(const Node& node) {
-  if (node.array_size("an array of 3 numbers") != 3) node.fail("expected an array of 3 numbers");
-  return {node[0].number(), node[1].number(), node[2].number()};
+  node.expect_array(3, "an array of 3 numbers");
+  return {node.item(0).number(), node.item(1).number(), node.item(2).number()};
 }
 
 glm::dvec3 read_color(const Node& node) {
-  if (node.array_size("[r, g, b] with components >= 0") != 3) node.fail("expected [r, g, b] with components >= 0");
-  return {node[0].non_negative(), node[1].non_negative(), node[2].non_negative()};
+  node.expect_array(3, "[r, g, b] with components >= 0");
+  return {node.item(0).non_negative(), node.item(1).non_negative(), node.item(2).non_negative()};
 }
 
 glm::dvec3 read_unit_color(const Node& node) {
-  if (node.array_size("[r, g, b] with components in [0, 1]") != 3)
-    node.fail("expected [r, g, b] with components in [0, 1]");
-  return {node[0].unit_interval(), node[1].unit_interval(), node[2].unit_interval()};
+  node.expect_array(3, "[r, g, b] with components in [0, 1]");
+  return {node.item(0).unit_interval(), node.item(1).unit_interval(), node.item(2).unit_interval()};
 }
 
 glm::dvec3 read_direction(const Node& node) {
@@ -181,21 +184,20 @@ glm::dvec3 read_direction(const Node& node) {
 
 // [min, max] with min < max, both accepted by `element`.
 std::pair<double, double> read_range(const Node& node, const std::function<double(const Node&)>& element) {
-  if (node.array_size("[min, max]") != 2) node.fail("expected [min, max]");
-  const double lo = element(node[0]), hi = element(node[1]);
+  node.expect_array(2, "[min, max]");
+  const double lo = element(node.item(0)), hi = element(node.item(1));
   if (!(lo < hi)) node.fail("expected [min, max] with min < max");
   return {lo, hi};
 }
 
 // 4 rows of 4 numbers, row-major as written; glm stores columns.
 glm::dmat4 read_matrix(const Node& node) {
-  const std::string expectation = "a 4x4 matrix as 4 rows of 4 numbers";
-  if (node.array_size(expectation) != 4) node.fail("expected " + expectation);
+  node.expect_array(4, "a 4x4 matrix as 4 rows of 4 numbers");
   glm::dmat4 m(1.0);
   for (size_t r = 0; r < 4; ++r) {
-    const Node row = node[r];
-    if (row.array_size(expectation) != 4) row.fail("expected a row of 4 numbers");
-    for (size_t c = 0; c < 4; ++c) m[static_cast<int>(c)][static_cast<int>(r)] = row[c].number();
+    const Node row = node.item(r);
+    row.expect_array(4, "a row of 4 numbers");
+    for (size_t c = 0; c < 4; ++c) m[static_cast<int>(c)][static_cast<int>(r)] = row.item(c).number();
   }
   if (m[0][3] != 0.0 || m[1][3] != 0.0 || m[2][3] != 0.0 || m[3][3] != 1.0)
     node.fail("expected an affine matrix (last row 0, 0, 0, 1)");
@@ -260,23 +262,24 @@ GridPlacement read_grid(const Node& node) {
       spec.center = read_vec3(*center);
     }
   }
-  const Node cell = node["cell"];
-  if (cell.array_size("[i, j]") != 2) cell.fail("expected [i, j]");
-  grid.i = cell[0].integer_in(0, spec.n_phi - 1);
-  grid.j = cell[1].integer_in(0, spec.n_theta - 1);
+  const Node cell = node.required("cell");
+  cell.expect_array(2, "[i, j]");
+  grid.i = cell.item(0).integer_in(0, spec.n_phi - 1);
+  grid.j = cell.item(1).integer_in(0, spec.n_theta - 1);
   return grid;
 }
 
 LookAtPlacement read_look_at(const Node& node) {
   LookAtPlacement look;
-  look.position = read_vec3(node["position"]);
-  look.target = read_vec3(node["look_at"]);
-  if (look.target == look.position) node["look_at"].fail("expected a point different from \"position\"");
+  look.position = read_vec3(node.required("position"));
+  look.target = read_vec3(node.required("look_at"));
+  if (look.target == look.position) node.required("look_at").fail("expected a point different from \"position\"");
   if (auto up = node.find("up")) look.up = read_direction(*up);
   return look;
 }
 
 CameraDescription read_camera(const Node& node) {
+  if (!node.is_object()) node.fail("expected an object");
   const int kinds = int{node.has("position")} + int{node.has("grid")} + int{node.has("matrix")};
   if (kinds != 1) node.fail("expected exactly one of \"position\" (with \"look_at\"), \"grid\" or \"matrix\"");
   CameraDescription camera;
@@ -285,10 +288,10 @@ CameraDescription read_camera(const Node& node) {
     camera.placement = read_look_at(node);
   } else if (node.has("grid")) {
     node.expect_keys({"grid", "fov_deg", "width", "height"});
-    camera.placement = read_grid(node["grid"]);
+    camera.placement = read_grid(node.required("grid"));
   } else {
     node.expect_keys({"matrix", "fov_deg", "width", "height"});
-    camera.placement = MatrixPlacement{read_rigid_matrix(node["matrix"])};
+    camera.placement = MatrixPlacement{read_rigid_matrix(node.required("matrix"))};
   }
   if (auto fov = node.find("fov_deg"))
     camera.vertical_fov = glm::radians(
@@ -301,29 +304,28 @@ CameraDescription read_camera(const Node& node) {
 // ---- lights ---------------------------------------------------------------------------------
 
 glm::dvec3 read_target(const Node& node, const glm::dvec3& position) {
-  const glm::dvec3 target = read_vec3(node["look_at"]);
-  if (target == position) node["look_at"].fail("expected a point different from \"position\"");
+  const glm::dvec3 target = read_vec3(node.required("look_at"));
+  if (target == position) node.required("look_at").fail("expected a point different from \"position\"");
   return target;
 }
 
 matrender::Light read_area_light(const Node& node) {
   node.expect_keys({"type", "position", "look_at", "up", "size", "power", "color"});
   matrender::RectLight light;
-  const glm::dvec3 position = read_vec3(node["position"]);
+  const glm::dvec3 position = read_vec3(node.required("position"));
   const glm::dvec3 target = read_target(node, position);
-  const glm::dvec3 up = node.has("up") ? read_direction(node["up"]) : glm::dvec3(0.0, 0.0, 1.0);
+  const glm::dvec3 up = node.has("up") ? read_direction(node.required("up")) : glm::dvec3(0.0, 0.0, 1.0);
   // A lamp emits down its -Z like a camera looks down its -Z, so the same frame aims both.
   light.light_to_world = matgeom::look_at_camera_to_world(position, target, up);
-  const Node size = node["size"];
+  const Node size = node.required("size");
   if (size.is_number()) {
     light.size_x = light.size_y = size.positive();
   } else {
-    if (size.array_size("a positive number or [size_x, size_y]") != 2)
-      size.fail("expected a positive number or [size_x, size_y]");
-    light.size_x = size[0].positive();
-    light.size_y = size[1].positive();
+    size.expect_array(2, "a positive number or [size_x, size_y]");
+    light.size_x = size.item(0).positive();
+    light.size_y = size.item(1).positive();
   }
-  light.power = node["power"].non_negative();
+  light.power = node.required("power").non_negative();
   if (auto color = node.find("color")) light.color = read_color(*color);
   return light;
 }
@@ -331,8 +333,8 @@ matrender::Light read_area_light(const Node& node) {
 matrender::Light read_point_light(const Node& node) {
   node.expect_keys({"type", "position", "power", "color"});
   matrender::PointLight light;
-  light.position = read_vec3(node["position"]);
-  light.power = node["power"].non_negative();
+  light.position = read_vec3(node.required("position"));
+  light.power = node.required("power").non_negative();
   if (auto color = node.find("color")) light.color = read_color(*color);
   return light;
 }
@@ -340,21 +342,22 @@ matrender::Light read_point_light(const Node& node) {
 matrender::Light read_spot_light(const Node& node) {
   node.expect_keys({"type", "position", "look_at", "spot_angle_deg", "blend", "power", "color"});
   matrender::SpotLight light;
-  light.position = read_vec3(node["position"]);
+  light.position = read_vec3(node.required("position"));
   light.direction = glm::normalize(read_target(node, light.position) - light.position);
   if (auto angle = node.find("spot_angle_deg"))
     light.spot_angle = glm::radians(
         angle->number_where([](double v) { return v > 0.0 && v <= 180.0; }, "an angle in (0, 180] degrees"));
   if (auto blend = node.find("blend")) light.blend = blend->unit_interval();
-  light.power = node["power"].non_negative();
+  light.power = node.required("power").non_negative();
   if (auto color = node.find("color")) light.color = read_color(*color);
   return light;
 }
 
 LightsDescription read_lights(const Node& node) {
   if (!node.is_array()) {
+    if (!node.is_object()) node.fail("expected an array of lights or {\"rig\": {...}}");
     node.expect_keys({"rig"});
-    const Node rig_node = node["rig"];
+    const Node rig_node = node.required("rig");
     rig_node.expect_keys({"target_illuminance_lux"});
     LightRigDescription rig;
     if (auto lux = rig_node.find("target_illuminance_lux")) rig.target_illuminance_lux = lux->positive();
@@ -362,8 +365,8 @@ LightsDescription read_lights(const Node& node) {
   }
   std::vector<matrender::Light> lights;
   for (size_t k = 0; k < node.array_size("an array of lights"); ++k) {
-    const Node light = node[k];
-    switch (light["type"].choice({"area", "point", "spot"})) {
+    const Node light = node.item(k);
+    switch (light.required("type").choice({"area", "point", "spot"})) {
       case 0: lights.push_back(read_area_light(light)); break;
       case 1: lights.push_back(read_point_light(light)); break;
       default: lights.push_back(read_spot_light(light)); break;
@@ -377,7 +380,7 @@ LightsDescription read_lights(const Node& node) {
 // {"texture": path, ...}: the keys every texture reference shares.
 TextureFile read_texture_file(const Node& node, const fs::path& folder, matrender::ColorSpace default_space) {
   TextureFile file;
-  file.path = read_existing_file(node["texture"], folder);
+  file.path = read_existing_file(node.required("texture"), folder);
   file.origin = node.origin();
   file.color_space = default_space;
   if (auto space = node.find("color_space"))
@@ -395,9 +398,10 @@ void read_color_input(const Node& node, const fs::path& folder, matrender::Color
     param.value = glm::vec3(read_unit_color(node));
     return;
   }
+  if (!node.is_object()) node.fail("expected [r, g, b] or {\"texture\": ...}");
   node.expect_keys({"texture", "factor", "color_space", "wrap"});
   texture = read_texture_file(node, folder, matrender::ColorSpace::SRGB);
-  param.value = node.has("factor") ? glm::vec3(read_unit_color(node["factor"])) : glm::vec3(1.0f);
+  param.value = node.has("factor") ? glm::vec3(read_unit_color(node.required("factor"))) : glm::vec3(1.0f);
 }
 
 // A number in [0, 1], or one channel of a texture times an optional factor (data textures
@@ -408,10 +412,11 @@ void read_scalar_input(const Node& node, const fs::path& folder, matrender::Scal
     param.value = static_cast<float>(node.unit_interval());
     return;
   }
+  if (!node.is_object()) node.fail("expected a number in [0, 1] or {\"texture\": ...}");
   node.expect_keys({"texture", "channel", "factor", "color_space", "wrap"});
   texture = read_texture_file(node, folder, matrender::ColorSpace::NonColor);
-  param.value = node.has("factor") ? static_cast<float>(node["factor"].unit_interval()) : 1.0f;
-  param.channel = node.has("channel") ? static_cast<int>(node["channel"].choice({"R", "G", "B", "A"})) : 0;
+  param.value = node.has("factor") ? static_cast<float>(node.required("factor").unit_interval()) : 1.0f;
+  param.channel = node.has("channel") ? static_cast<int>(node.required("channel").choice({"R", "G", "B", "A"})) : 0;
 }
 
 MaterialDescription read_material(const Node& node, const std::string& name, const fs::path& folder) {
@@ -457,8 +462,9 @@ glm::dmat4 euler_xyz_degrees(const glm::dvec3& degrees) {
 glm::dmat4 read_transform(const Node& node) {
   if (node.has("matrix")) {
     node.expect_keys({"matrix"});
-    const glm::dmat4 m = read_matrix(node["matrix"]);
-    if (std::abs(glm::determinant(glm::dmat3(m))) < 1e-12) node["matrix"].fail("expected an invertible matrix");
+    const glm::dmat4 m = read_matrix(node.required("matrix"));
+    if (std::abs(glm::determinant(glm::dmat3(m))) < 1e-12)
+      node.required("matrix").fail("expected an invertible matrix");
     return m;
   }
   node.expect_keys({"translate", "rotate_deg", "scale"});
@@ -467,12 +473,12 @@ glm::dmat4 read_transform(const Node& node) {
     if (s->is_number()) {
       scale = glm::dvec3(s->positive());
     } else {
-      if (s->array_size("a positive number or [x, y, z]") != 3) s->fail("expected a positive number or [x, y, z]");
-      scale = {(*s)[0].positive(), (*s)[1].positive(), (*s)[2].positive()};
+      s->expect_array(3, "a positive number or [x, y, z]");
+      scale = {s->item(0).positive(), s->item(1).positive(), s->item(2).positive()};
     }
   }
-  const glm::dvec3 translate = node.has("translate") ? read_vec3(node["translate"]) : glm::dvec3(0.0);
-  const glm::dvec3 rotate = node.has("rotate_deg") ? read_vec3(node["rotate_deg"]) : glm::dvec3(0.0);
+  const glm::dvec3 translate = node.has("translate") ? read_vec3(node.required("translate")) : glm::dvec3(0.0);
+  const glm::dvec3 rotate = node.has("rotate_deg") ? read_vec3(node.required("rotate_deg")) : glm::dvec3(0.0);
   return glm::translate(glm::dmat4(1.0), translate) * euler_xyz_degrees(rotate) *
          glm::scale(glm::dmat4(1.0), scale);
 }
@@ -491,20 +497,21 @@ std::string read_material_name(const Node& node, const std::map<std::string, Mat
 
 ObjectDescription read_object(const Node& node, const fs::path& folder,
                               const std::map<std::string, MaterialDescription>& materials) {
+  if (!node.is_object()) node.fail("expected an object");
   if (node.has("mesh") == node.has("builtin")) node.fail("expected exactly one of \"mesh\" or \"builtin\"");
   ObjectDescription object;
   object.origin = node.origin();
   if (node.has("mesh")) {
     node.expect_keys({"mesh", "transform", "material", "materials"});
-    const std::string path = read_existing_file(node["mesh"], folder);
+    const std::string path = read_existing_file(node.required("mesh"), folder);
     const std::string ext = lowercase_extension(path);
-    if (ext != ".glb" && ext != ".gltf") node["mesh"].fail("expected a .glb or .gltf file");
+    if (ext != ".glb" && ext != ".gltf") node.required("mesh").fail("expected a .glb or .gltf file");
     object.source = MeshFile{path};
   } else {
     node.expect_keys({"builtin", "seed", "transform", "material", "materials"});
     BuiltinObject builtin;
     const std::vector<std::string> names = matgeom::builtin_object_names();
-    builtin.name = names[node["builtin"].choice(names)];
+    builtin.name = names[node.required("builtin").choice(names)];
     if (auto seed = node.find("seed")) builtin.seed = seed->uint32();
     object.source = builtin;
   }
@@ -521,7 +528,7 @@ std::vector<ObjectDescription> read_objects(const Node& node, const fs::path& fo
   const size_t count = node.array_size("a non-empty array of objects");
   if (count == 0) node.fail("expected a non-empty array of objects");
   std::vector<ObjectDescription> objects;
-  for (size_t k = 0; k < count; ++k) objects.push_back(read_object(node[k], folder, materials));
+  for (size_t k = 0; k < count; ++k) objects.push_back(read_object(node.item(k), folder, materials));
   return objects;
 }
 
@@ -564,11 +571,11 @@ SceneDescription read_scene_file(const std::string& path) {
 
   SceneDescription scene;
   if (auto description = root.find("description")) description->string();  // free text; only its type matters
-  scene.camera = read_camera(root["camera"]);
-  scene.lights = read_lights(root["lights"]);
+  scene.camera = read_camera(root.required("camera"));
+  scene.lights = read_lights(root.required("lights"));
   if (auto background = root.find("background")) scene.background = glm::vec3(read_color(*background));
   if (auto materials = root.find("materials")) scene.materials = read_materials(*materials, folder);
-  scene.objects = read_objects(root["objects"], folder, scene.materials);
+  scene.objects = read_objects(root.required("objects"), folder, scene.materials);
   if (auto render = root.find("render")) read_render(*render, scene);
   return scene;
 }

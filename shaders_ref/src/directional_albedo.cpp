@@ -95,16 +95,18 @@ Value integrate_adaptive(const Integrand& f, const std::vector<double>& breakpoi
 }
 
 // Tolerance for an inner integral whose result is integrated again over an outer interval of
-// the given length: its errors add up over that length.
+// the given length: its errors add up over that length (and |Kronrod - Gauss| overestimates the
+// error of the Kronrod result by orders of magnitude for smooth integrands).
 Tolerance inner_tolerance(const Tolerance& outer, double outer_length) {
-  return {0.1 * outer.absolute / outer_length, 0.1 * outer.relative, outer.max_panels};
+  return {0.5 * outer.absolute / outer_length, 0.5 * outer.relative, outer.max_panels};
 }
 
 // Accuracy of the albedo integrals: far below the 1e-5 relative the tests rely on.
 constexpr Tolerance kAlbedoTolerance{1e-10, 1e-9, 400};
 // Accuracy of the general-purpose integrals, whose integrands may be float code with
-// discontinuities: about 1e-6 absolute for a pdf.
-constexpr Tolerance kSphereTolerance{3e-7, 3e-7, 300};
+// discontinuities: about 1e-6 absolute for a pdf, well above the float rounding noise (1e-7
+// relative) that no refinement can remove.
+constexpr Tolerance kSphereTolerance{1e-6, 1e-6, 100};
 
 const std::vector<double> kAzimuthBreakpoints = {-kPi, -0.5 * kPi, 0.0, 0.5 * kPi, kPi};
 
@@ -128,8 +130,8 @@ Basis basis_around(const glm::dvec3& n) {
 
 // The stretched polar angle s of a GGX lobe of width alpha: tan(theta_m) = alpha tan(s), so the
 // slope distribution D(m) cos(theta_m) dm = sin(2 s) ds dphi / (2 pi) (Walter et al. 2007,
-// eq. 35-36, whose sampling formula this is). Written with sin and cos of s so that s -> pi/2
-// stays finite.
+// eq. 35-36: its sampling formula with xi_1 = sin^2 s). Written with sin s and cos s, finite up
+// to s = pi/2.
 struct StretchedAngle {
   double sin_theta, cos_theta;  // of the microfacet normal
   double dtheta_ds;             // alpha / (cos^2 s + alpha^2 sin^2 s)
@@ -140,6 +142,17 @@ StretchedAngle stretched_angle(double s, double alpha) {
   const double norm2 = cos_s * cos_s + alpha * alpha * sin_s * sin_s;
   const double norm = std::sqrt(norm2);
   return {alpha * sin_s / norm, cos_s / norm, alpha / norm2};
+}
+
+// Breakpoints 0, atan(1), atan(2), atan(4), ... < s_end, s_end in the stretched angle, i.e. where
+// tan(theta_m) = alpha, 2 alpha, 4 alpha, ...: geometric in the microfacet slope, so that features
+// of an integrand at a fixed slope (the horizon, wo.m = 0) are resolved for any alpha, although
+// the stretched angle crowds them into a sliver below pi/2 when alpha is small.
+std::vector<double> stretched_breakpoints(double s_end) {
+  std::vector<double> breakpoints = {0.0};
+  for (double t = 1.0; std::atan(t) < s_end; t *= 2.0) breakpoints.push_back(std::atan(t));
+  breakpoints.push_back(s_end);
+  return breakpoints;
 }
 
 // Largest stretched angle whose half vector m (at azimuth phi relative to wo) still reflects wo
@@ -172,30 +185,37 @@ glm::dvec3 diffuse_albedo(const PrincipledParams& p, const glm::dvec3& wo) {
   return integrate_adaptive<glm::dvec3>(over_polar_angle, kAzimuthBreakpoints, kAlbedoTolerance);
 }
 
-glm::dvec3 specular_albedo(const PrincipledParams& p, const glm::dvec3& wo) {
-  if (!has_specular_lobe(p)) return glm::dvec3(0.0);
-  const double alpha = ggx_alpha(p.roughness);
+// Integral of g(wi) over the upper hemisphere in half-vector coordinates (phi relative to wo's
+// azimuth, stretched angle s of m up to the horizon limit), wi = 2 (wo.m) m - wo:
+// int g(wi) dwi = int dphi int g(wi) |dwi/dm| sin(theta_m) dtheta_m/ds ds with
+// |dwi/dm| = 4 (wo.m) (Walter et al. 2007, eq. 14).
+template <class Value>
+Value integrate_over_reflections(const std::function<Value(const glm::dvec3&)>& g,
+                                 const glm::dvec3& wo, double alpha) {
   const double phi_o = std::atan2(wo.y, wo.x);
   const double cos_o = wo.z;
   const double sin_o = std::sqrt(std::max(0.0, 1.0 - cos_o * cos_o));
   const Tolerance inner = inner_tolerance(kAlbedoTolerance, 2.0 * kPi);
-  // a = int dphi int f(wo, wi) cos(theta_i) |dwi/dm| sin(theta_m) dtheta_m/ds ds,
-  // with |dwi/dm| = 4 (wo.m) (Walter et al. 2007, eq. 14).
   const auto over_stretched_angle = [&](double phi) {
     const auto integrand = [&](double s) {
       const StretchedAngle m_angle = stretched_angle(s, alpha);
       const glm::dvec3 m = spherical_direction(m_angle.sin_theta, m_angle.cos_theta, phi_o + phi);
       const double wo_dot_m = glm::dot(wo, m);
       const glm::dvec3 wi = 2.0 * wo_dot_m * m - wo;
-      if (wi.z <= 0.0 || wo_dot_m <= 0.0) return glm::dvec3(0.0);
-      const double jacobian = 4.0 * wo_dot_m * m_angle.sin_theta * m_angle.dtheta_ds;
-      return specular_brdf(p, wo, wi) * (wi.z * jacobian);
+      if (wi.z <= 0.0 || wo_dot_m <= 0.0) return Value(0.0);
+      return g(wi) * (4.0 * wo_dot_m * m_angle.sin_theta * m_angle.dtheta_ds);
     };
     const double s_max = stretched_horizon_limit(sin_o, cos_o, phi, alpha);
-    return integrate_adaptive<glm::dvec3>(integrand, {0.0, s_max}, inner);
+    return integrate_adaptive<Value>(integrand, stretched_breakpoints(s_max), inner);
   };
-  return integrate_adaptive<glm::dvec3>(over_stretched_angle, kAzimuthBreakpoints,
-                                        kAlbedoTolerance);
+  return integrate_adaptive<Value>(over_stretched_angle, kAzimuthBreakpoints, kAlbedoTolerance);
+}
+
+glm::dvec3 specular_albedo(const PrincipledParams& p, const glm::dvec3& wo) {
+  if (!has_specular_lobe(p)) return glm::dvec3(0.0);
+  return integrate_over_reflections<glm::dvec3>(
+      [&](const glm::dvec3& wi) { return specular_brdf(p, wo, wi) * wi.z; }, wo,
+      ggx_alpha(p.roughness));
 }
 
 }  // namespace
@@ -215,7 +235,8 @@ double integrate_over_sphere(const DirectionFunction& f, const glm::dvec3& peak_
   const Basis basis = basis_around(peak_axis);
   // Polar breakpoints 0, w, 2w, 4w, ... < pi: the first panels resolve the peak.
   std::vector<double> polar_breakpoints = {0.0};
-  for (double theta = peak_width; theta < kPi; theta *= 2.0) polar_breakpoints.push_back(theta);
+  for (double theta = peak_width; theta > 0.0 && theta < kPi; theta *= 2.0)
+    polar_breakpoints.push_back(theta);
   polar_breakpoints.push_back(kPi);
 
   const Tolerance inner = inner_tolerance(kSphereTolerance, kPi);
@@ -230,16 +251,25 @@ double integrate_over_sphere(const DirectionFunction& f, const glm::dvec3& peak_
   return integrate_adaptive<double>(over_azimuth, polar_breakpoints, kSphereTolerance);
 }
 
+double integrate_over_reflected_directions(const DirectionFunction& g, const glm::dvec3& wo,
+                                           double alpha) {
+  if (wo.z <= 0.0) return 0.0;
+  return integrate_over_reflections<double>(g, wo, alpha);
+}
+
 double integrate_over_microfacet_normals(const DirectionFunction& g, double alpha) {
   const Tolerance inner = inner_tolerance(kAlbedoTolerance, 2.0 * kPi);
-  const std::vector<double> stretched_range = {0.0, 0.5 * kPi};
+  // The slope doubles from panel to panel up to 1e4 (theta_m = 89.994 degrees); one panel takes
+  // the rest of the hemisphere.
+  std::vector<double> breakpoints = stretched_breakpoints(std::atan(1e4 / alpha));
+  breakpoints.push_back(0.5 * kPi);
   const auto over_stretched_angle = [&](double phi) {
     const auto integrand = [&](double s) {
       const StretchedAngle m_angle = stretched_angle(s, alpha);
       const glm::dvec3 m = spherical_direction(m_angle.sin_theta, m_angle.cos_theta, phi);
       return g(m) * m_angle.sin_theta * m_angle.dtheta_ds;
     };
-    return integrate_adaptive<double>(integrand, stretched_range, inner);
+    return integrate_adaptive<double>(integrand, breakpoints, inner);
   };
   return integrate_adaptive<double>(over_stretched_angle, kAzimuthBreakpoints, kAlbedoTolerance);
 }

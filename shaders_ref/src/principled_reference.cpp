@@ -63,7 +63,7 @@ double principled_specular_ior(double specular) {
 }
 
 double rec709_luminance(const glm::dvec3& rgb) {
-  return 0.2126729 * rgb.r + 0.7151522 * rgb.g + 0.0721750 * rgb.b;
+  return 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b;
 }
 
 glm::dvec3 specular_color_at_normal_incidence(const PrincipledParams& p) {

@@ -15,20 +15,21 @@ namespace matrender {
 // "singular" case alpha_x * alpha_y <= 1e-7).
 constexpr float kGgxSingularAlpha2 = 1e-7f;
 
-// D(m) = alpha^2 / (pi (cos^2 (alpha^2 - 1) + 1)^2)   (Walter et al. 2007, eq. 33)
-inline float ggx_d(float cos_m, float alpha) {
-  if (cos_m <= 0.0f) return 0.0f;
+// D(m) = alpha^2 / (pi (cos^2 (alpha^2 - 1) + 1)^2)   (Walter et al. 2007, eq. 33), evaluated as
+// alpha^2 / (pi (sin^2 + alpha^2 cos^2)^2) with sin^2 = m.x^2 + m.y^2: the textbook form cancels
+// 1 - cos^2 in float and is useless once alpha^2 nears float epsilon (roughness 0.02).
+inline float ggx_d(const glm::vec3& m, float alpha) {
+  if (m.z <= 0.0f) return 0.0f;
   const float a2 = alpha * alpha;
-  const float c2 = cos_m * cos_m;
-  const float denom = c2 * (a2 - 1.0f) + 1.0f;
+  const float denom = m.x * m.x + m.y * m.y + a2 * m.z * m.z;
   return a2 / (kPi * denom * denom);
 }
 
-// Smith G1 = 2 / (1 + sqrt(1 + alpha^2 tan^2 theta))   (Walter et al. 2007, eq. 34)
-inline float ggx_g1(float cos_theta, float alpha) {
-  if (cos_theta <= 0.0f) return 0.0f;
-  const float c2 = cos_theta * cos_theta;
-  const float a2_tan2 = alpha * alpha * (1.0f - c2) / c2;
+// Smith G1 = 2 / (1 + sqrt(1 + alpha^2 tan^2 theta))   (Walter et al. 2007, eq. 34), with
+// tan^2 = (w.x^2 + w.y^2) / w.z^2 for the same reason.
+inline float ggx_g1(const glm::vec3& w, float alpha) {
+  if (w.z <= 0.0f) return 0.0f;
+  const float a2_tan2 = alpha * alpha * (w.x * w.x + w.y * w.y) / (w.z * w.z);
   return 2.0f / (1.0f + std::sqrt(1.0f + a2_tan2));
 }
 
@@ -58,7 +59,7 @@ inline glm::vec3 reflect_about(const glm::vec3& wo, const glm::vec3& m) {
 inline float ggx_reflection_pdf(const glm::vec3& wo, const glm::vec3& wi, float alpha) {
   if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
   const glm::vec3 m = glm::normalize(wo + wi);
-  return ggx_g1(wo.z, alpha) * ggx_d(m.z, alpha) / (4.0f * wo.z);
+  return ggx_g1(wo, alpha) * ggx_d(m, alpha) / (4.0f * wo.z);
 }
 
 }  // namespace matrender

@@ -54,8 +54,8 @@ glm::vec3 PrincipledBsdf::eval_diffuse(const glm::vec3& wi) const {
 glm::vec3 PrincipledBsdf::eval_specular(const glm::vec3& wi) const {
   if (!specular_enabled_ || singular_ || wo_.z <= 0.0f || wi.z <= 0.0f) return glm::vec3(0.0f);
   const glm::vec3 m = glm::normalize(wo_ + wi);
-  const float d = ggx_d(m.z, alpha_);
-  const float g = ggx_g1(wo_.z, alpha_) * ggx_g1(wi.z, alpha_);
+  const float d = ggx_d(m, alpha_);
+  const float g = ggx_g1(wo_, alpha_) * ggx_g1(wi, alpha_);
   // f cos = F D G / (4 cos_o cos_i) * cos_i
   return fresnel_(glm::dot(wi, m)) * (d * g / (4.0f * wo_.z));
 }

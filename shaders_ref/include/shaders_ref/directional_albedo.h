@@ -38,6 +38,12 @@ glm::dvec3 directional_albedo(const PrincipledParams& p, const glm::dvec3& wo);
 double integrate_over_sphere(const DirectionFunction& f, const glm::dvec3& peak_axis,
                              double peak_width);
 
+// Integral of g(wi) over the upper hemisphere (wi.z > 0) for functions concentrated around the
+// mirror direction of wo like a GGX reflection lobe of width alpha > 0 (e.g. its pdf): the
+// half-vector parametrisation of lobe_albedos, exact at the horizon.
+double integrate_over_reflected_directions(const DirectionFunction& g, const glm::dvec3& wo,
+                                           double alpha);
+
 // Integral of g(m) over the upper hemisphere of microfacet normals (m.z > 0), in the stretched
 // polar angle of GGX width alpha > 0 (see lobe_albedos), for functions concentrated like D(m).
 double integrate_over_microfacet_normals(const DirectionFunction& g, double alpha);

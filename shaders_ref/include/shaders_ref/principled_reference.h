@@ -54,7 +54,8 @@ double dielectric_fresnel(double cos_i, double eta);
 // ior = 2 / (1 - sqrt(0.08 specular)) - 1.
 double principled_specular_ior(double specular);
 
-// Luminance of a scene-linear Rec.709 colour: the Y row of the Rec.709 (D65) RGB -> XYZ matrix.
+// Luminance of a scene-linear Rec.709 colour with the luma coefficients of ITU-R BT.709
+// (item 3.2): Y = 0.2126 R + 0.7152 G + 0.0722 B.
 double rec709_luminance(const glm::dvec3& rgb);
 
 // cspec0 = mix(0.08 specular mix(1, tint, specular_tint), base, metallic) with

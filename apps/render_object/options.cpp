@@ -1,0 +1,319 @@
+#include "options.h"
+
+#include <algorithm>
+#include <charconv>
+#include <variant>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "default_scene.h"
+#include "matrender/camera.h"
+#include "matrender/render.h"
+#include "scene_file.h"
+
+namespace render_object {
+namespace {
+
+// Thrown from an option callback, CLI11 reports it like its own errors ("--spp: expected ...").
+void require(bool ok, const std::string& option, const std::string& expectation) {
+  if (!ok) throw CLI::ValidationError(option, "expected " + expectation);
+}
+
+const std::vector<std::pair<std::string, uint32_t>>& aov_names() {
+  static const std::vector<std::pair<std::string, uint32_t>> names = {
+      {"base_color", matrender::AovBaseColor},   {"roughness", matrender::AovRoughness},
+      {"metallic", matrender::AovMetallic},      {"normal_world", matrender::AovNormalWorld},
+      {"normal_camera", matrender::AovNormalCamera}, {"depth", matrender::AovDepth},
+      {"label", matrender::AovLabel},            {"part_id", matrender::AovPartId},
+      {"alpha", matrender::AovAlpha}};
+  return names;
+}
+
+uint32_t parse_aov_list(const std::string& text) {
+  if (text == "all") return matrender::AovAll;
+  if (text == "none") return 0;
+  uint32_t mask = 0;
+  for (const std::string& name : CLI::detail::split(text, ',')) {
+    const auto& names = aov_names();
+    const auto it = std::find_if(names.begin(), names.end(), [&](const auto& entry) { return entry.first == name; });
+    if (it == names.end()) {
+      std::string known = "all, none";
+      for (const auto& entry : names) known += ", " + entry.first;
+      throw CLI::ValidationError("--aovs", "unknown AOV \"" + name + "\" (expected a comma-separated list of: " +
+                                               known + ")");
+    }
+    mask |= it->second;
+  }
+  return mask;
+}
+
+int parse_positive_int(const std::string& text) {
+  int value = 0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, value);
+  return error == std::errc() && stop == end && value >= 1 ? value : 0;
+}
+
+void set_resolution(const std::string& text, Options& options) {
+  const size_t x = text.find_first_of("xX");
+  const int width = x == std::string::npos ? 0 : parse_positive_int(text.substr(0, x));
+  const int height = x == std::string::npos ? 0 : parse_positive_int(text.substr(x + 1));
+  require(width > 0 && height > 0, "--resolution", "WIDTHxHEIGHT with positive integers, e.g. 512x512");
+  options.width = width;
+  options.height = height;
+}
+
+glm::dvec3 parse_point(const std::string& option, const std::string& text) {
+  const std::vector<std::string> parts = CLI::detail::split(text, ',');
+  glm::dvec3 point(0.0);
+  bool ok = parts.size() == 3;
+  for (int k = 0; ok && k < 3; ++k) ok = CLI::detail::lexical_cast(parts[static_cast<size_t>(k)], point[k]);
+  require(ok, option, "X,Y,Z (three numbers, metres)");
+  return point;
+}
+
+// CLI::ExistingFile without its ":FILE" tag in --help, where the type name already says it.
+CLI::Validator existing_file() {
+  CLI::Validator validator = CLI::ExistingFile;
+  validator.description("");
+  return validator;
+}
+
+void add_scene_options(CLI::App& app, Options& o) {
+  const std::string group = "Scene";
+  auto* scene = app.add_option_function<std::string>(
+                       "--scene", [&o](const std::string& path) { o.scene_file = path; },
+                       "JSON scene file (docs/scene_format.md): camera, lights, background, objects, materials")
+                    ->check(existing_file())
+                    ->type_name("FILE.json")
+                    ->group(group);
+  auto* mesh = app.add_option_function<std::string>(
+                      "--mesh", [&o](const std::string& path) { o.mesh_file = path; },
+                      "render this .glb/.gltf under the paper's light rig and grid camera")
+                   ->check(existing_file())
+                   ->type_name("FILE.glb|gltf")
+                   ->group(group);
+  auto* object = app.add_option_function<std::string>(
+                        "--object", [&o](const std::string& name) { o.object = name; },
+                        "render a built-in object (NAME or NAME:SEED) under the paper's rig and grid camera")
+                     ->type_name("NAME[:SEED]")
+                     ->group(group);
+  scene->excludes(mesh)->excludes(object);
+  mesh->excludes(object);
+  app.add_flag("--list-objects", o.list_objects, "print the built-in object names and exit")->group(group);
+}
+
+void add_camera_options(CLI::App& app, Options& o) {
+  const std::string group = "Camera (override the scene's)";
+  const matrender::Camera camera;
+  const GridPlacement grid = paper_grid_placement();
+  auto* resolution = app.add_option_function<std::string>(
+                            "--resolution", [&o](const std::string& text) { set_resolution(text, o); },
+                            "image size in pixels")
+                         ->type_name("WxH")
+                         ->default_str(fmt::format("{}x{}", camera.width, camera.height))
+                         ->group(group);
+  auto* width = app.add_option_function<int>(
+                       "--width",
+                       [&o](const int& w) {
+                         require(w >= 1, "--width", "an integer >= 1");
+                         o.width = w;
+                       },
+                       "image width in pixels")
+                    ->default_str(std::to_string(camera.width))
+                    ->group(group);
+  auto* height = app.add_option_function<int>(
+                        "--height",
+                        [&o](const int& h) {
+                          require(h >= 1, "--height", "an integer >= 1");
+                          o.height = h;
+                        },
+                        "image height in pixels")
+                     ->default_str(std::to_string(camera.height))
+                     ->group(group);
+  resolution->excludes(width)->excludes(height);
+  app.add_option_function<double>(
+         "--fov-deg",
+         [&o](const double& fov) {
+           require(fov > 0.0 && fov < 180.0, "--fov-deg", "an angle in (0, 180) degrees");
+           o.fov_deg = fov;
+         },
+         "vertical field of view in degrees (the default is Blender's 50 mm lens)")
+      ->default_str(fmt::format("{:.4f}", glm::degrees(camera.vertical_fov)))
+      ->group(group);
+  auto* cell = app.add_option_function<std::array<int, 2>>(
+                      "--cell",
+                      [&o](const std::array<int, 2>& c) {
+                        require(c[0] >= 0 && c[1] >= 0, "--cell", "two integers >= 0");
+                        o.cell = c;
+                      },
+                      "grid camera cell I,J (I: polar row from the zenith, J: azimuth column)")
+                   ->delimiter(',')
+                   ->type_name("I,J")
+                   ->default_str(fmt::format("{},{}", grid.i, grid.j))
+                   ->group(group);
+  auto* grid_size = app.add_option_function<std::array<int, 2>>(
+                           "--grid",
+                           [&o](const std::array<int, 2>& g) {
+                             require(g[0] >= 1 && g[1] >= 1, "--grid", "two integers >= 1");
+                             o.grid = g;
+                           },
+                           "camera grid size NPHI,NTHETA over polar [0, 90] and azimuth [-90, 90] degrees")
+                        ->delimiter(',')
+                        ->type_name("NPHI,NTHETA")
+                        ->default_str(fmt::format("{},{}", grid.spec.n_phi, grid.spec.n_theta))
+                        ->group(group);
+  auto* radius = app.add_option_function<double>(
+                        "--radius",
+                        [&o](const double& r) {
+                          require(r > 0.0, "--radius", "a positive number");
+                          o.radius = r;
+                        },
+                        "grid camera distance from the object's surface centroid, metres")
+                     ->default_str(fmt::format("{}", grid.spec.radius))
+                     ->group(group);
+  auto* position = app.add_option_function<std::string>(
+                          "--camera-position",
+                          [&o](const std::string& p) { o.camera_position = parse_point("--camera-position", p); },
+                          "explicit camera position (metres, +Z up); needs --look-at")
+                       ->type_name("X,Y,Z")
+                       ->group(group);
+  auto* look_at = app.add_option_function<std::string>(
+                         "--look-at", [&o](const std::string& p) { o.look_at = parse_point("--look-at", p); },
+                         "point the explicit camera looks at")
+                      ->type_name("X,Y,Z")
+                      ->group(group);
+  position->needs(look_at)->excludes(cell)->excludes(grid_size)->excludes(radius);
+  look_at->needs(position);
+}
+
+void add_render_options(CLI::App& app, Options& o) {
+  const std::string group = "Render (override the scene file's render block)";
+  const matrender::RenderSettings settings;
+  app.add_option_function<int>(
+         "--spp",
+         [&o](const int& spp) {
+           require(spp >= 1, "--spp", "an integer >= 1");
+           o.spp = spp;
+         },
+         "samples per pixel")
+      ->default_str(std::to_string(settings.samples_per_pixel))
+      ->group(group);
+  app.add_option_function<uint32_t>(
+         "--seed", [&o](const uint32_t& seed) { o.seed = seed; }, "sampler seed; the image depends only on it")
+      ->default_str(std::to_string(settings.seed))
+      ->group(group);
+  app.add_option_function<double>(
+         "--exposure", [&o](const double& stops) { o.exposure = stops; }, "display PNG exposure in stops")
+      ->default_str("0")
+      ->group(group);
+  app.add_option_function<double>(
+         "--illuminance",
+         [&o](const double& lux) {
+           require(lux > 0.0, "--illuminance", "a positive number of lux");
+           o.illuminance_lux = lux;
+         },
+         "rescale the paper's light rig so the illuminance at its centre is this (lux)")
+      ->type_name("LUX")
+      ->group(group);
+  app.add_flag("--transparent", o.transparent, "background pixels get alpha 0 and colour 0")->group(group);
+}
+
+void add_run_options(CLI::App& app, Options& o) {
+  const std::string group = "Run";
+  app.add_option_function<int>(
+         "--threads",
+         [&o](const int& threads) {
+           require(threads >= 0, "--threads", "an integer >= 0");
+           o.threads = threads;
+         },
+         "render threads, 0 = all hardware threads (the image does not depend on it)")
+      ->default_str("0")
+      ->group(group);
+  app.add_option_function<std::string>(
+         "--aovs", [&o](const std::string& list) { o.aovs = parse_aov_list(list); },
+         "passes written besides colour: all, none, or a comma-separated list of base_color, roughness, "
+         "metallic, normal_world, normal_camera, depth, label, part_id, alpha")
+      ->type_name("LIST")
+      ->default_str("all")
+      ->group(group);
+  app.add_option("--output", o.output_folder, "folder the images are written to (created if needed)")
+      ->capture_default_str()
+      ->type_name("DIR")
+      ->group(group);
+}
+
+SceneDescription chosen_scene(const Options& options) {
+  if (options.scene_file) return read_scene_file(*options.scene_file);
+  if (options.mesh_file) return object_scene(mesh_file_object(*options.mesh_file));
+  if (options.object) return object_scene(builtin_object(*options.object));
+  return default_scene();
+}
+
+void apply_camera_options(const Options& o, CameraDescription& camera) {
+  if (o.camera_position) {
+    if (*o.camera_position == *o.look_at)
+      throw InputError("--look-at: expected a point different from --camera-position");
+    camera.placement = LookAtPlacement{*o.camera_position, *o.look_at, glm::dvec3(0.0, 0.0, 1.0)};
+  }
+  // Any grid option makes the camera a grid camera: the scene's own grid if it has one, else the
+  // paper's grid around the centroid.
+  if (o.cell || o.grid || o.radius) {
+    if (!std::holds_alternative<GridPlacement>(camera.placement)) camera.placement = paper_grid_placement();
+    auto& grid = std::get<GridPlacement>(camera.placement);
+    if (o.grid) {
+      grid.spec.n_phi = (*o.grid)[0];
+      grid.spec.n_theta = (*o.grid)[1];
+    }
+    if (o.radius) grid.spec.radius = *o.radius;
+    if (o.cell) {
+      grid.i = (*o.cell)[0];
+      grid.j = (*o.cell)[1];
+    }
+    if (grid.i >= grid.spec.n_phi || grid.j >= grid.spec.n_theta)
+      throw InputError(fmt::format("{}: camera cell {},{} is outside the {} x {} grid", o.cell ? "--cell" : "--grid",
+                                   grid.i, grid.j, grid.spec.n_phi, grid.spec.n_theta));
+  }
+  if (o.fov_deg) camera.vertical_fov = glm::radians(*o.fov_deg);
+  if (o.width) camera.width = *o.width;
+  if (o.height) camera.height = *o.height;
+}
+
+void apply_render_options(const Options& o, SceneDescription& scene) {
+  matrender::RenderSettings& s = scene.settings;
+  if (o.spp) s.samples_per_pixel = *o.spp;
+  if (o.seed) s.seed = *o.seed;
+  if (o.transparent) s.transparent_background = true;
+  if (o.exposure) scene.exposure_stops = *o.exposure;
+  s.threads = o.threads;
+  s.aovs = o.aovs;
+}
+
+void apply_illuminance(const Options& o, LightsDescription& lights) {
+  if (!o.illuminance_lux) return;
+  auto* rig = std::get_if<LightRigDescription>(&lights);
+  if (!rig)
+    throw InputError("--illuminance: rescales only the paper's light rig, and the scene file lists its own lights");
+  rig->target_illuminance_lux = o.illuminance_lux;
+}
+
+}  // namespace
+
+void add_options(CLI::App& app, Options& options) {
+  add_scene_options(app, options);
+  add_camera_options(app, options);
+  add_render_options(app, options);
+  add_run_options(app, options);
+}
+
+SceneDescription describe_scene(const Options& options) {
+  SceneDescription scene = chosen_scene(options);
+  apply_camera_options(options, scene.camera);
+  apply_render_options(options, scene);
+  apply_illuminance(options, scene.lights);
+  return scene;
+}
+
+}  // namespace render_object

@@ -1,0 +1,53 @@
+#pragma once
+// render_object's command line: the options, and the scene they ask for.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "matrender/frame.h"
+#include "scene_description.h"
+
+namespace CLI {
+class App;
+}
+
+namespace render_object {
+
+struct Options {
+  // What to render: at most one of these; none renders the built-in default scene.
+  std::optional<std::string> scene_file;
+  std::optional<std::string> mesh_file;
+  std::optional<std::string> object;  // NAME[:SEED]
+  bool list_objects = false;
+
+  // Each set value overrides the scene's (the scene file's camera and render block).
+  std::optional<int> spp;
+  std::optional<uint32_t> seed;
+  std::optional<int> width;
+  std::optional<int> height;
+  std::optional<std::array<int, 2>> cell;
+  std::optional<std::array<int, 2>> grid;  // n_phi, n_theta
+  std::optional<double> radius;
+  std::optional<glm::dvec3> camera_position;
+  std::optional<glm::dvec3> look_at;
+  std::optional<double> fov_deg;
+  std::optional<double> exposure;
+  std::optional<double> illuminance_lux;
+  bool transparent = false;
+
+  // The run itself.
+  int threads = 0;  // 0 = all hardware threads
+  uint32_t aovs = matrender::AovAll;
+  std::string output_folder = "./render_out";
+};
+
+void add_options(CLI::App& app, Options& options);
+
+// The scene file, --mesh, --object or the built-in default, with the overrides applied.
+// Throws InputError.
+SceneDescription describe_scene(const Options& options);
+
+}  // namespace render_object

@@ -1,0 +1,341 @@
+// The fast float Principled BSDF (libmatrender/src/bsdf) against the independent double-precision
+// reference of shaders_ref, and the reference's quadrature against closed forms.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <random>
+
+#include "bsdf/principled.h"
+#include "shaders_ref/directional_albedo.h"
+#include "shaders_ref/principled_reference.h"
+
+using matrender::BsdfSample;
+using matrender::DiffuseModel;
+using matrender::PrincipledBsdf;
+using matrender::PrincipledInputs;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Uniform floats in [0, 1) from the top 24 bits of a 64-bit Mersenne Twister.
+class UniformFloats {
+ public:
+  explicit UniformFloats(std::uint64_t seed) : engine_(seed) {}
+  float next() { return static_cast<float>(engine_() >> 40) * 0x1p-24f; }
+
+ private:
+  std::mt19937_64 engine_;
+};
+
+glm::dvec3 direction_with_cosine(double cos_theta) {
+  return {std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta)), 0.0, cos_theta};
+}
+
+glm::vec3 random_upper_direction(UniformFloats& rng) {
+  const float cos_theta = 1.0f - rng.next();
+  const float sin_theta = std::sqrt(std::max(0.0f, 1.0f - cos_theta * cos_theta));
+  const float phi = 2.0f * static_cast<float>(kPi) * rng.next();
+  return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
+}
+
+// A direction in the specular peak of wo: the mirror image of wo about a normal whose slope is
+// within three GGX widths, tan(theta_m) < 3 alpha; a random direction if that falls below the
+// horizon.
+glm::vec3 direction_near_peak(const glm::vec3& wo, float alpha, UniformFloats& rng) {
+  const float tan_m = 3.0f * alpha * rng.next();
+  const float phi = 2.0f * static_cast<float>(kPi) * rng.next();
+  const glm::vec3 m = glm::normalize(glm::vec3(tan_m * std::cos(phi), tan_m * std::sin(phi), 1.0f));
+  const glm::vec3 wi = glm::normalize(2.0f * glm::dot(wo, m) * m - wo);
+  return wi.z > 0.0f ? wi : random_upper_direction(rng);
+}
+
+// Material inputs over their whole range, with the edge values 0 and 1 of metallic and
+// specular often enough to matter (metallic 1, dielectric, no specular lobe).
+PrincipledInputs random_material(UniformFloats& rng, float min_roughness, float max_roughness) {
+  const auto with_edges = [&rng](float p_zero, float p_one) {
+    const float pick = rng.next();
+    const float value = rng.next();
+    return pick < p_zero ? 0.0f : pick < p_zero + p_one ? 1.0f : value;
+  };
+  PrincipledInputs in;
+  in.base_color = {rng.next(), rng.next(), rng.next()};
+  if (rng.next() < 0.05f) in.base_color = glm::vec3(0.0f);
+  in.metallic = with_edges(0.25f, 0.25f);
+  in.roughness = min_roughness + (max_roughness - min_roughness) * rng.next();
+  in.specular = with_edges(0.1f, 0.1f);
+  in.specular_tint = with_edges(0.3f, 0.2f);
+  in.diffuse_model = rng.next() < 0.5f ? DiffuseModel::Principled : DiffuseModel::Lambert;
+  return in;
+}
+
+shaders_ref::PrincipledParams reference_params(const PrincipledInputs& in) {
+  shaders_ref::PrincipledParams p;
+  p.base_color = glm::dvec3(in.base_color);
+  p.metallic = in.metallic;
+  p.roughness = in.roughness;
+  p.specular = in.specular;
+  p.specular_tint = in.specular_tint;
+  p.lambert_diffuse = in.diffuse_model == DiffuseModel::Lambert;
+  return p;
+}
+
+double average(const glm::dvec3& c) { return (c.x + c.y + c.z) / 3.0; }
+
+// Float directions are unit vectors only to a few ulps, so a float evaluation sees directions off
+// by ~2^-22 rad: the relative change this makes to the GGX lobe is its condition number times
+// that. ln D(theta_m) changes at 4 tan / (alpha^2 + tan^2) per radian of the half vector (from
+// Walter et al. 2007, eq. 33; up to 2 / alpha at the edge of the peak), and the half vector
+// h = normalize(wo + wi) turns 1 / |wo + wi| = 1 / (2 cos_h) times as much as wi; ln G1(w)
+// changes at Lambda'(theta) / (1 + Lambda) per radian (Heitz 2014, eq. 72; ~1 / cos(theta) at
+// grazing).
+double ggx_direction_condition(const glm::dvec3& wo, const glm::dvec3& wi, double alpha) {
+  const glm::dvec3 h = glm::normalize(wo + wi);
+  const double cos_h = glm::dot(wo, h);
+  const double tan_m = std::sqrt(shaders_ref::tan2_theta(h));
+  const double ndf_slope = 4.0 * tan_m / (alpha * alpha + tan_m * tan_m);
+  const auto g1_slope = [alpha](const glm::dvec3& w) {
+    const double tan2 = shaders_ref::tan2_theta(w);
+    const double root = std::sqrt(1.0 + alpha * alpha * tan2);
+    const double lambda_slope = alpha * alpha * std::sqrt(tan2) * (1.0 + tan2) / (2.0 * root);
+    return lambda_slope / (1.0 + shaders_ref::ggx_lambda(w, alpha));
+  };
+  constexpr double kDirectionError = 0x1p-22;
+  return kDirectionError * (ndf_slope / (2.0 * cos_h) + g1_slope(wo) + g1_slope(wi));
+}
+
+}  // namespace
+
+TEST_CASE("Reference quadrature reproduces closed forms", "[render]") {
+  const std::array<double, 5> roughness_values = {0.02, 0.1, 0.3, 0.6, 1.0};
+  const std::array<double, 5> cos_values = {1.0, 0.7, 0.3, 0.05, 0.02};
+
+  SECTION("Lambert albedo is 1 for base colour 1") {
+    shaders_ref::PrincipledParams lambert;
+    lambert.base_color = glm::dvec3(1.0);
+    lambert.specular = 0.0;
+    lambert.lambert_diffuse = true;
+    for (double cos_o : cos_values) {
+      const shaders_ref::LobeAlbedos a =
+          shaders_ref::lobe_albedos(lambert, direction_with_cosine(cos_o));
+      CHECK(a.diffuse.x == Approx(1.0).epsilon(1e-9));
+      CHECK(a.specular.x == 0.0);
+    }
+  }
+  SECTION("GGX normalisation: integral of D(m) (n.m) dm = 1") {
+    for (double roughness : roughness_values) {
+      const double alpha = shaders_ref::ggx_alpha(roughness);
+      const double integral = shaders_ref::integrate_over_microfacet_normals(
+          [&](const glm::dvec3& m) { return shaders_ref::ggx_ndf(m, alpha) * m.z; }, alpha);
+      CAPTURE(roughness);
+      CHECK(integral == Approx(1.0).epsilon(1e-9));
+    }
+  }
+  SECTION(
+      "Visible normals: integral of G1(wo) max(0, wo.m) D(m) / cos_o dm = 1 (Heitz 2018, eq. 1)") {
+    for (double roughness : roughness_values) {
+      for (double cos_o : cos_values) {
+        const double alpha = shaders_ref::ggx_alpha(roughness);
+        const glm::dvec3 wo = direction_with_cosine(cos_o);
+        const double integral = shaders_ref::integrate_over_microfacet_normals(
+            [&](const glm::dvec3& m) {
+              return shaders_ref::ggx_smith_g1(wo, alpha) * std::max(0.0, glm::dot(wo, m)) *
+                     shaders_ref::ggx_ndf(m, alpha) / wo.z;
+            },
+            alpha);
+        CAPTURE(roughness, cos_o);
+        CHECK(integral == Approx(1.0).epsilon(1e-7));
+      }
+    }
+  }
+  SECTION("GGX albedo at alpha 1 with F = 1 is 2 (1 - ln 2) / (1 + cos_o)") {
+    // alpha = 1: D = 1/pi, G1(w) = 2 cos / (1 + cos), so with F = 1 (metallic 1, base 1)
+    // a = G1(wo) / (4 pi cos_o) int G1(wi) dwi
+    //   = 1 / (2 pi (1 + cos_o)) 2 pi int_0^1 2c / (1 + c) dc = 2 (1 - ln 2) / (1 + cos_o).
+    shaders_ref::PrincipledParams mirror_white;
+    mirror_white.base_color = glm::dvec3(1.0);
+    mirror_white.metallic = 1.0;
+    mirror_white.roughness = 1.0;
+    for (double cos_o : cos_values) {
+      CAPTURE(cos_o);
+      const shaders_ref::LobeAlbedos a =
+          shaders_ref::lobe_albedos(mirror_white, direction_with_cosine(cos_o));
+      CHECK(a.specular.x == Approx(2.0 * (1.0 - std::log(2.0)) / (1.0 + cos_o)).epsilon(1e-8));
+      CHECK(a.diffuse.x == 0.0);
+    }
+  }
+  SECTION("Specular albedo: half-vector and spherical quadratures agree") {
+    // lobe_albedos integrates over half vectors with the horizon in closed form;
+    // integrate_over_sphere knows nothing of the lobe but where its peak is. Their agreement at
+    // low roughness and grazing incidence checks the half-vector parametrisation where no closed
+    // form exists (integrate_over_sphere is good to ~1e-6 absolute).
+    shaders_ref::PrincipledParams metal;
+    metal.base_color = glm::dvec3(0.9);
+    metal.metallic = 1.0;
+    for (double roughness : {0.02, 0.1, 0.5}) {
+      for (double cos_o : {0.7, 0.02}) {
+        metal.roughness = roughness;
+        const double alpha = shaders_ref::ggx_alpha(roughness);
+        const glm::dvec3 wo = direction_with_cosine(cos_o);
+        const double spherical = shaders_ref::integrate_over_sphere(
+            [&](const glm::dvec3& wi) {
+              return shaders_ref::specular_brdf(metal, wo, wi).x * wi.z;
+            },
+            {-wo.x, -wo.y, wo.z}, 2.0 * alpha * cos_o);
+        CAPTURE(roughness, cos_o);
+        CHECK(shaders_ref::lobe_albedos(metal, wo).specular.x == Approx(spherical).epsilon(1e-5));
+      }
+    }
+  }
+  SECTION("Single-scatter GGX with F = 1 loses energy but never gains it") {
+    shaders_ref::PrincipledParams mirror_white;
+    mirror_white.base_color = glm::dvec3(1.0);
+    mirror_white.metallic = 1.0;
+    for (double roughness : roughness_values) {
+      for (double cos_o : cos_values) {
+        mirror_white.roughness = roughness;
+        CAPTURE(roughness, cos_o);
+        const double a =
+            shaders_ref::directional_albedo(mirror_white, direction_with_cosine(cos_o)).x;
+        CHECK(a <= 1.0);
+        CHECK(a > 0.25);
+      }
+    }
+  }
+  SECTION("Dielectric Fresnel from the s- and p-amplitudes") {
+    CHECK(shaders_ref::principled_specular_ior(0.5) == Approx(1.5).epsilon(1e-15));
+    CHECK(shaders_ref::dielectric_fresnel(1.0, 1.5) == Approx(0.04).epsilon(1e-14));
+    CHECK(shaders_ref::dielectric_fresnel(0.0, 1.5) == Approx(1.0).epsilon(1e-14));
+    // At Brewster's angle (tan theta = eta) r_p = 0 and r_s = (1 - eta^2) / (1 + eta^2).
+    const double eta = 1.5;
+    const double cos_brewster = 1.0 / std::sqrt(1.0 + eta * eta);
+    const double r_s = (1.0 - eta * eta) / (1.0 + eta * eta);
+    CHECK(shaders_ref::dielectric_fresnel(cos_brewster, eta) ==
+          Approx(0.5 * r_s * r_s).epsilon(1e-12));
+    // Interpolated Fresnel: cspec0 at normal incidence, 1 at grazing.
+    shaders_ref::PrincipledParams p;
+    p.base_color = {0.9, 0.5, 0.1};
+    p.metallic = 0.3;
+    p.specular_tint = 0.4;
+    const glm::dvec3 cspec0 = shaders_ref::specular_color_at_normal_incidence(p);
+    for (int k = 0; k < 3; ++k) {
+      CHECK(shaders_ref::interpolated_fresnel(p, 1.0)[k] == Approx(cspec0[k]).epsilon(1e-14));
+      CHECK(shaders_ref::interpolated_fresnel(p, 0.0)[k] == Approx(1.0).epsilon(1e-14));
+    }
+  }
+}
+
+TEST_CASE("Fast BSDF eval agrees with the double-precision reference", "[render]") {
+  // Tolerances from float precision: a float evaluation of these formulas carries a few 1e-7
+  // relative, so 1e-5 relative leaves a wide margin. Three terms cover inputs where float loses
+  // more: (1) the interpolated Fresnel's F(cos) - F0 cancels near normal incidence to ~1e-7
+  // absolute, 1e-6 times the BRDF without Fresnel (F = 1: metallic 1, base 1); (2) the Fresnel
+  // argument wi.h of a half vector h = normalize(wo + wi) has a relative error ~ eps / |wo + wi|,
+  // which matters where wo and wi are nearly opposite (cos_h small): 1e-6 / cos_h relative;
+  // (3) the lobe's sensitivity to the rounding of the directions themselves
+  // (ggx_direction_condition), large in the peak of a smooth surface: 1.5e-4 relative at
+  // roughness 0.02. Half of the inputs put wi in the specular peak, where D is steepest.
+  UniformFloats rng(0x5eed1000);
+  constexpr int kInputs = 10000;
+  int diffuse_failures = 0;
+  int specular_failures = 0;
+  int total_failures = 0;
+  for (int n = 0; n < kInputs; ++n) {
+    const PrincipledInputs in = random_material(rng, 0.02f, 1.0f);
+    const glm::vec3 wo = random_upper_direction(rng);
+    const glm::vec3 wi = n % 2 ? direction_near_peak(wo, in.roughness * in.roughness, rng)
+                               : random_upper_direction(rng);
+    const PrincipledBsdf bsdf(in, wo);
+    float pdf = 0.0f;
+    const glm::vec3 diffuse = bsdf.eval_diffuse(wi) / wi.z;
+    const glm::vec3 specular = bsdf.eval_specular(wi) / wi.z;
+    const glm::vec3 total = bsdf.eval(wi, &pdf) / wi.z;
+
+    const shaders_ref::PrincipledParams p = reference_params(in);
+    const glm::dvec3 wo_d = glm::normalize(glm::dvec3(wo));
+    const glm::dvec3 wi_d = glm::normalize(glm::dvec3(wi));
+    const glm::dvec3 diffuse_ref = shaders_ref::diffuse_brdf(p, wo_d, wi_d);
+    const glm::dvec3 specular_ref = shaders_ref::specular_brdf(p, wo_d, wi_d);
+    const glm::dvec3 total_ref = shaders_ref::principled_brdf(p, wo_d, wi_d);
+    shaders_ref::PrincipledParams fresnel_one = p;
+    fresnel_one.base_color = glm::dvec3(1.0);
+    fresnel_one.metallic = 1.0;
+    const double specular_without_fresnel = shaders_ref::specular_brdf(fresnel_one, wo_d, wi_d).x;
+    const double cos_h = glm::length(wo_d + wi_d) / 2.0;
+    const double conditioning =
+        ggx_direction_condition(wo_d, wi_d, shaders_ref::ggx_alpha(p.roughness));
+
+    for (int k = 0; k < 3; ++k) {
+      const double specular_tolerance =
+          (1e-5 + 1e-6 / cos_h + conditioning) * specular_ref[k] + 1e-6 * specular_without_fresnel;
+      const double diffuse_tolerance = 1e-5 * diffuse_ref[k] + 1e-12;
+      const bool diffuse_ok = std::abs(diffuse[k] - diffuse_ref[k]) <= diffuse_tolerance;
+      const bool specular_ok = std::abs(specular[k] - specular_ref[k]) <= specular_tolerance;
+      const bool total_ok =
+          std::abs(total[k] - total_ref[k]) <= diffuse_tolerance + specular_tolerance;
+      diffuse_failures += !diffuse_ok;
+      specular_failures += !specular_ok;
+      total_failures += !total_ok;
+      if (!(diffuse_ok && specular_ok && total_ok)) {
+        INFO("input " << n << " channel " << k << ": base (" << in.base_color.x << ", "
+                      << in.base_color.y << ", " << in.base_color.z << "), metallic " << in.metallic
+                      << ", roughness " << in.roughness << ", specular " << in.specular << ", tint "
+                      << in.specular_tint << ", "
+                      << (in.diffuse_model == DiffuseModel::Lambert ? "Lambert" : "principled")
+                      << "; cos_o " << wo.z << ", cos_i " << wi.z << ", cos_h " << cos_h);
+        INFO("diffuse " << diffuse[k] << " vs " << diffuse_ref[k] << "; specular " << specular[k]
+                        << " vs " << specular_ref[k] << " (rel. "
+                        << (specular[k] - specular_ref[k]) / specular_ref[k] << "); total "
+                        << total[k] << " vs " << total_ref[k]);
+        // Report the first few disagreements in full; the counts below summarise the rest.
+        if (diffuse_failures + specular_failures + total_failures <= 10) FAIL_CHECK("mismatch");
+      }
+    }
+  }
+  CHECK(diffuse_failures == 0);
+  CHECK(specular_failures == 0);
+  CHECK(total_failures == 0);
+}
+
+TEST_CASE("Singular mirror lobe: sample weight is F(cos_o) over its selection probability",
+          "[render]") {
+  // Below roughness (1e-7)^(1/4) = 0.01778 (alpha^2 <= 1e-7) the GGX lobe is a mirror
+  // (Cycles' "singular" case): the sampled direction is the mirror image of wo, and the weight is
+  // the Fresnel reflectance F(wo.n) divided by the probability of having picked the lobe,
+  // avg(F(cos_o)) / (avg((1 - metallic) base) + avg(F(cos_o))).
+  UniformFloats rng(0x5eed1100);
+  int checked = 0;
+  for (int n = 0; n < 5000; ++n) {
+    PrincipledInputs in = random_material(rng, 0.0f, 0.0177f);
+    if (n % 4 == 0) in.metallic = 1.0f;  // no diffuse lobe: the weight is F itself
+    const glm::vec3 wo = random_upper_direction(rng);
+    const PrincipledBsdf bsdf(in, wo);
+    if (!bsdf.has_specular()) continue;
+
+    const shaders_ref::PrincipledParams p = reference_params(in);
+    const glm::dvec3 fresnel = shaders_ref::interpolated_fresnel(p, static_cast<double>(wo.z));
+    const double diffuse_weight = average((1.0 - p.metallic) * p.base_color);
+    const double specular_probability = average(fresnel) / (diffuse_weight + average(fresnel));
+    if (specular_probability < 1e-6) continue;  // the lobe is (almost) never picked
+
+    BsdfSample s;
+    REQUIRE(bsdf.sample(1.0f - 0x1p-24f, {rng.next(), rng.next()}, &s));
+    INFO("metallic " << in.metallic << ", specular " << in.specular << ", roughness "
+                     << in.roughness << ", cos_o " << wo.z);
+    CHECK(s.delta);
+    CHECK(s.glossy);
+    CHECK(s.pdf == 0.0f);
+    CHECK(s.wi.x == -wo.x);
+    CHECK(s.wi.y == -wo.y);
+    CHECK(s.wi.z == wo.z);
+    for (int k = 0; k < 3; ++k)
+      CHECK(s.weight[k] * specular_probability == Approx(fresnel[k]).epsilon(1e-5).margin(1e-7));
+    // A delta lobe has no density to evaluate.
+    CHECK(bsdf.eval_specular(s.wi) == glm::vec3(0.0f));
+    ++checked;
+  }
+  CHECK(checked > 3000);
+}
