@@ -8,6 +8,9 @@
 
 namespace render_object {
 
+// The illuminance at the object the paper's rig aims for (section "Lighting rig").
+constexpr double kPaperTargetIlluminanceLux = 1000.0;
+
 // The paper's 16 x 32 grid on a 1 m shell around the surface centroid, at cell (5, 16): about
 // 31 degrees from the zenith and 3 degrees from +X, a three-quarter view from above.
 GridPlacement paper_grid_placement();

@@ -215,8 +215,14 @@ void add_render_options(CLI::App& app, Options& o) {
            require(lux > 0.0, "--illuminance", "a positive number of lux");
            o.illuminance_lux = lux;
          },
-         "rescale the paper's light rig so the illuminance at its centre is this (lux)")
+         "rescale the paper's light rig so the illuminance at its centre is this (lux); objects "
+         "rendered without a scene file default to the paper's stated 1000 lx")
       ->type_name("LUX")
+      ->group(group);
+  app.add_flag("--paper-powers", o.paper_powers,
+               "keep the powers of the paper's formula P = P_base (1 + 0.3 cos theta) as they are "
+               "(about 1e5-1e6 lx at the object)")
+      ->excludes("--illuminance")
       ->group(group);
   app.add_flag("--transparent", o.transparent, "background pixels get alpha 0 and colour 0")->group(group);
 }
@@ -292,6 +298,10 @@ void apply_render_options(const Options& o, SceneDescription& scene) {
 }
 
 void apply_illuminance(const Options& o, LightsDescription& lights) {
+  if (o.paper_powers) {
+    if (auto* rig = std::get_if<LightRigDescription>(&lights)) rig->target_illuminance_lux.reset();
+    return;
+  }
   if (!o.illuminance_lux) return;
   auto* rig = std::get_if<LightRigDescription>(&lights);
   if (!rig)

@@ -36,6 +36,7 @@ struct Options {
   std::optional<double> fov_deg;
   std::optional<double> exposure;
   std::optional<double> illuminance_lux;
+  bool paper_powers = false;
   bool transparent = false;
 
   // The run itself.

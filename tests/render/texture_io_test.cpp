@@ -109,6 +109,8 @@ TEST_CASE("write_frame writes EXR values exactly and leaves no temporary files",
   const fs::path dir = temp_dir();
   FrameBuffers frame;
   frame.resize(3, 2, AovAll);
+  frame.transparent_background = true;
+  for (size_t i = 0; i < frame.alpha.size(); ++i) frame.alpha[i] = 0.25f * static_cast<float>(i % 4);
   for (size_t i = 0; i < frame.color.size(); ++i) frame.color[i] = 0.1f * static_cast<float>(i);
   for (size_t i = 0; i < frame.depth.size(); ++i) frame.depth[i] = 1.5f + static_cast<float>(i);
   frame.label[4] = 7;
@@ -123,6 +125,7 @@ TEST_CASE("write_frame writes EXR values exactly and leaves no temporary files",
   std::vector<float> rgba(3 * 2 * 4);
   REQUIRE(in->read_image(0, 0, 0, 4, OIIO::TypeDesc::FLOAT, rgba.data()));
   CHECK(rgba[4 * 5 + 2] == frame.color[3 * 5 + 2]);
+  CHECK(rgba[4 * 3 + 3] == frame.alpha[3]);  // transparent render: A = coverage
   auto depth = OIIO::ImageInput::open((dir / "out" / "v_depth.exr").string());
   std::vector<float> z(6);
   REQUIRE(depth->read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, z.data()));

@@ -30,6 +30,7 @@ struct FrameBuffers {
   int width = 0;
   int height = 0;
   uint32_t aovs = 0;                 // which AOV arrays below are filled
+  bool transparent_background = false;  // colour is premultiplied by coverage, 0 where nothing hit
   std::vector<float> color;          // RGB, scene-linear
   std::vector<float> alpha;          // coverage
   std::vector<float> base_color;     // RGB, linear

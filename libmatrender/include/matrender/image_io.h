@@ -23,8 +23,9 @@ void write_data_png(const std::string& path, int width, int height, int channels
                     double scale, double offset, bool sixteen_bit);
 
 // Writes every filled buffer of `frame` into `folder` as <stem>_<pass>.<ext> and returns the
-// paths written: color.exr (RGBA), color.png (display), and per AOV an EXR (exact values) plus a
-// PNG for viewing. Creates `folder` if needed.
+// paths written: color.exr (RGBA; A = coverage for transparent renders, else 1), color.png
+// (display; RGBA only for transparent renders), and per AOV an EXR (exact values) plus a PNG for
+// viewing. Creates `folder` if needed.
 std::vector<std::string> write_frame(const FrameBuffers& frame, const std::string& folder,
                                      const std::string& stem, double exposure_stops = 0.0);
 

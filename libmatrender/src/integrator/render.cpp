@@ -81,6 +81,7 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
   const glm::mat3 world_to_camera = glm::transpose(glm::mat3(rays.right(), rays.up(), rays.back()));
 
   frame.resize(camera.width, camera.height, settings.aovs);
+  frame.transparent_background = settings.transparent_background;
   const std::vector<Tile> tiles = make_tiles(camera.width, camera.height);
   std::atomic<uint64_t> ray_count{0}, discarded{0}, samples{0};
   std::atomic<size_t> tiles_done{0};

@@ -103,16 +103,18 @@ std::vector<std::string> write_frame(const FrameBuffers& frame, const std::strin
     return (fs::path(folder) / (stem + "_" + pass + "." + ext)).string();
   };
 
-  // Colour: RGBA EXR (alpha = coverage, 1 where the alpha AOV was not asked for) and display PNG.
+  // Colour: RGBA EXR and display PNG. As with Cycles' film, alpha is the coverage only for a
+  // transparent background; over an opaque background every pixel is opaque (A = 1).
+  const bool with_alpha = frame.transparent_background && !frame.alpha.empty();
   std::vector<float> rgba(n * 4);
   for (size_t i = 0; i < n; ++i) {
     for (int c = 0; c < 3; ++c) rgba[4 * i + c] = frame.color[3 * i + c];
-    rgba[4 * i + 3] = frame.alpha.empty() ? 1.0f : frame.alpha[i];
+    rgba[4 * i + 3] = with_alpha ? frame.alpha[i] : 1.0f;
   }
   written.push_back(file("color", "exr"));
   write_exr(written.back(), w, h, {"R", "G", "B", "A"}, rgba.data());
   written.push_back(file("color", "png"));
-  write_display_png(written.back(), w, h, frame.color.data(), frame.alpha.empty() ? nullptr : frame.alpha.data(),
+  write_display_png(written.back(), w, h, frame.color.data(), with_alpha ? frame.alpha.data() : nullptr,
                     exposure_stops);
 
   auto write_float_pass = [&](const std::string& pass, const std::vector<float>& data, int channels,
