@@ -92,8 +92,9 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
   auto render_pixel = [&](int x, int y, uint64_t& tile_rays, uint64_t& tile_discarded) {
     const uint32_t pixel_index = static_cast<uint32_t>(y) * static_cast<uint32_t>(camera.width) + static_cast<uint32_t>(x);
     PixelAccumulator acc;
+    const PixelSeeds seeds(pixel_index, settings.seed);
     for (uint32_t s = 0; s < spp; ++s) {
-      const PixelSampler sampler(pixel_index, s, settings.seed);
+      const PixelSampler sampler(seeds, s);
       const glm::vec2 offset = filter.sample(sampler.get_2d(0));
       const glm::vec3 dir = rays.direction(static_cast<float>(x) + 0.5f + offset.x,
                                            static_cast<float>(y) + 0.5f + offset.y);

@@ -4,6 +4,7 @@
 // (a (0,2)-sequence), scrambled and index-shuffled by hashes of (pixel, pair, seed), so every
 // pixel's samples depend only on the pixel and the seed: images are identical whatever the
 // thread count.
+#include <array>
 #include <cstdint>
 
 #include <glm/glm.hpp>
@@ -61,26 +62,56 @@ inline float fixed_point_to_unit_float(uint32_t x) {
   return static_cast<float>(x >> 8) * 0x1p-24f;
 }
 
-// 2-D point `sample_index` of the scrambled sequence with the given seed.
-inline glm::vec2 owen_sobol_2d(uint32_t sample_index, uint32_t seed) {
-  const uint32_t shuffled = nested_uniform_scramble(sample_index, hash_combine(seed, 0xa511e9b3u));
-  const uint32_t x = nested_uniform_scramble(sobol_dimension0(shuffled), hash_combine(seed, 0x63d83595u));
-  const uint32_t y = nested_uniform_scramble(sobol_dimension1(shuffled), hash_combine(seed, 0x1b873593u));
+// The three seeds one dimension pair uses: index shuffle, x scramble, y scramble.
+struct PairSeeds {
+  uint32_t shuffle = 0, x = 0, y = 0;
+  PairSeeds() = default;
+  explicit PairSeeds(uint32_t seed)
+      : shuffle(hash_combine(seed, 0xa511e9b3u)),
+        x(hash_combine(seed, 0x63d83595u)),
+        y(hash_combine(seed, 0x1b873593u)) {}
+};
+
+// 2-D point `sample_index` of the scrambled sequence with the given seeds.
+inline glm::vec2 owen_sobol_2d(uint32_t sample_index, const PairSeeds& seeds) {
+  const uint32_t shuffled = nested_uniform_scramble(sample_index, seeds.shuffle);
+  const uint32_t x = nested_uniform_scramble(sobol_dimension0(shuffled), seeds.x);
+  const uint32_t y = nested_uniform_scramble(sobol_dimension1(shuffled), seeds.y);
   return {fixed_point_to_unit_float(x), fixed_point_to_unit_float(y)};
 }
 
-// The random numbers of one camera sample: pair k of the path is owen_sobol_2d(sample, seed_k).
-class PixelSampler {
+// Seeds of every dimension pair of one pixel. They do not depend on the sample index, so all
+// samples of the pixel share them; the first kCachedPairs are derived on first use and kept.
+class PixelSeeds {
  public:
-  PixelSampler(uint32_t pixel_index, uint32_t sample_index, uint32_t global_seed)
-      : pixel_seed_(hash_combine(hash_u32(pixel_index), global_seed)), sample_index_(sample_index) {}
+  PixelSeeds(uint32_t pixel_index, uint32_t global_seed)
+      : pixel_seed_(hash_combine(hash_u32(pixel_index), global_seed)) {}
 
-  glm::vec2 get_2d(uint32_t pair) const {
-    return owen_sobol_2d(sample_index_, hash_combine(pixel_seed_, pair));
+  PairSeeds pair(uint32_t k) const {
+    if (k >= kCachedPairs) return PairSeeds(hash_combine(pixel_seed_, k));
+    if (!(filled_ >> k & 1u)) {
+      cache_[k] = PairSeeds(hash_combine(pixel_seed_, k));
+      filled_ |= uint64_t{1} << k;
+    }
+    return cache_[k];
   }
 
  private:
+  static constexpr uint32_t kCachedPairs = 64;
   uint32_t pixel_seed_;
+  mutable uint64_t filled_ = 0;
+  mutable std::array<PairSeeds, kCachedPairs> cache_;
+};
+
+// The random numbers of one camera sample: pair k of the path is owen_sobol_2d(sample, seeds_k).
+class PixelSampler {
+ public:
+  PixelSampler(const PixelSeeds& seeds, uint32_t sample_index) : seeds_(seeds), sample_index_(sample_index) {}
+
+  glm::vec2 get_2d(uint32_t pair) const { return owen_sobol_2d(sample_index_, seeds_.pair(pair)); }
+
+ private:
+  const PixelSeeds& seeds_;
   uint32_t sample_index_;
 };
 

@@ -1,0 +1,67 @@
+// The per-pixel sampler: each dimension pair is a scrambled (0,2)-sequence, so every power-of-two
+// prefix is stratified in every elementary interval; pairs and pixels are decorrelated.
+#include <catch2/catch.hpp>
+
+#include <set>
+#include <vector>
+
+#include "film/pixel_filter.h"
+#include "sampling/owen_sobol.h"
+
+using namespace matrender;
+
+TEST_CASE("Each pair's first 2^m points form a (0,m,2)-net", "[render]") {
+  for (uint32_t pixel : {0u, 17u, 123456u}) {
+    const PixelSeeds seeds(pixel, 42);
+    for (uint32_t pair : {0u, 1u, 5u, 70u}) {  // 70: beyond the cached pairs
+      const int m = 8;
+      const uint32_t n = 1u << m;
+      std::vector<glm::vec2> points;
+      for (uint32_t i = 0; i < n; ++i) points.push_back(PixelSampler(seeds, i).get_2d(pair));
+      // Every elementary interval of shape 2^-a x 2^-(m-a) holds exactly one point.
+      for (int a = 0; a <= m; ++a) {
+        std::set<std::pair<uint32_t, uint32_t>> cells;
+        for (const glm::vec2& p : points) {
+          REQUIRE(p.x >= 0.0f);
+          REQUIRE(p.x < 1.0f);
+          REQUIRE(p.y >= 0.0f);
+          REQUIRE(p.y < 1.0f);
+          cells.insert({static_cast<uint32_t>(p.x * float(1u << a)), static_cast<uint32_t>(p.y * float(1u << (m - a)))});
+        }
+        INFO("pixel " << pixel << " pair " << pair << " interval 2^-" << a << " x 2^-" << (m - a));
+        CHECK(cells.size() == n);
+      }
+    }
+  }
+}
+
+TEST_CASE("Different pixels, pairs and seeds give different points", "[render]") {
+  const PixelSeeds a(3, 0), b(4, 0), c(3, 1);
+  CHECK(PixelSampler(a, 0).get_2d(1) != PixelSampler(b, 0).get_2d(1));
+  CHECK(PixelSampler(a, 0).get_2d(1) != PixelSampler(a, 0).get_2d(2));
+  CHECK(PixelSampler(a, 0).get_2d(1) != PixelSampler(c, 0).get_2d(1));
+  // Same inputs, same point: the image cannot depend on evaluation order.
+  const PixelSeeds a_again(3, 0);
+  CHECK(PixelSampler(a, 9).get_2d(7) == PixelSampler(a_again, 9).get_2d(7));
+}
+
+TEST_CASE("The pixel filter's inverse CDF follows Blackman-Harris", "[render]") {
+  const PixelFilterSampler& filter = blackman_harris_sampler();
+  CHECK(filter.inverse_cdf(0.0f) == Approx(-1.5f));
+  CHECK(filter.inverse_cdf(0.5f) == Approx(0.0f).margin(1e-6));
+  CHECK(filter.inverse_cdf(1.0f) == Approx(1.5f));
+  // The fraction of mass within |x| < 0.5 px, by Simpson integration of the window itself.
+  double inside = 0.0, total = 0.0;
+  const int steps = 3000;
+  for (int i = 0; i <= steps; ++i) {
+    const double x = -1.5 + 3.0 * i / steps;
+    const double w = blackman_harris_weight(x) * ((i == 0 || i == steps) ? 1 : (i % 2 ? 4 : 2));
+    total += w;
+    if (std::abs(x) < 0.5) inside += w;
+  }
+  int hits = 0;
+  const int n = 100000;
+  for (int i = 0; i < n; ++i)
+    if (std::abs(filter.inverse_cdf((i + 0.5f) / n)) < 0.5f) ++hits;
+  CHECK(double(hits) / n == Approx(inside / total).margin(2e-3));
+}
