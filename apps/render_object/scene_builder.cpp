@@ -117,49 +117,12 @@ std::vector<std::optional<uint32_t>> assigned_materials(const ObjectDescription&
   return assigned;
 }
 
-matrender::Wrap render_wrap(matgeom::TextureWrap wrap) {
-  return wrap == matgeom::TextureWrap::Clamp ? matrender::Wrap::Clamp : matrender::Wrap::Repeat;
-}
-
-// matrender::add_asset with some parts' materials replaced. Decodes images the way add_asset
-// does (base colour as sRGB, metallic-roughness and normal maps as non-color, with the slot's
-// wrap mode), but only those that the remaining slots use.
-void add_asset_with_assigned_materials(matrender::Scene& scene, const matgeom::ObjectAsset& asset,
-                                       const std::vector<std::optional<uint32_t>>& assigned) {
-  std::vector<matrender::TexturePtr> as_srgb(asset.images.size()), as_data(asset.images.size());
-  auto decode = [&](int index, matrender::ColorSpace space, matgeom::TextureWrap wrap,
-                    std::vector<matrender::TexturePtr>& decoded) {
-    if (index < 0 || static_cast<size_t>(index) >= asset.images.size() || decoded[static_cast<size_t>(index)]) return;
-    const matgeom::ImagePixels& image = asset.images[static_cast<size_t>(index)];
-    decoded[static_cast<size_t>(index)] = matrender::Texture::from_pixels8(
-        image.width, image.height, image.channels, image.data.data(), space, render_wrap(wrap), image.name);
-  };
-  std::vector<uint32_t> ids(assigned.size());
-  for (size_t k = 0; k < assigned.size(); ++k) {
-    if (assigned[k]) {
-      ids[k] = *assigned[k];
-    } else if (k < asset.materials.size()) {
-      const matgeom::MaterialDesc& slot = asset.materials[k];
-      decode(slot.base_color_image, matrender::ColorSpace::SRGB, slot.wrap, as_srgb);
-      decode(slot.metallic_roughness_image, matrender::ColorSpace::NonColor, slot.wrap, as_data);
-      decode(slot.normal_image, matrender::ColorSpace::NonColor, slot.wrap, as_data);
-      ids[k] = scene.add_material(matrender::material_from_desc(slot, as_srgb, as_data));
-    } else {
-      ids[k] = scene.add_material(matrender::Material{});
-    }
-  }
-  scene.add_mesh(asset.mesh, ids);
-}
-
 void add_object(matrender::Scene& scene, const ObjectDescription& object, const matgeom::ObjectAsset& asset,
                 SceneMaterials& materials) {
   const std::vector<std::optional<uint32_t>> assigned = assigned_materials(object, asset, materials);
   // A mesh or slot the renderer rejects (non-finite vertex, bad image index) is a bad input file.
   try {
-    if (std::none_of(assigned.begin(), assigned.end(), [](const auto& id) { return id.has_value(); }))
-      matrender::add_asset(scene, asset);
-    else
-      add_asset_with_assigned_materials(scene, asset, assigned);
+    matrender::add_asset(scene, asset, assigned);
   } catch (const std::invalid_argument& e) {
     throw object.origin.error("", e.what());
   }

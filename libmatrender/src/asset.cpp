@@ -1,5 +1,6 @@
 #include "matrender/asset.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -42,34 +43,30 @@ Material material_from_desc(const matgeom::MaterialDesc& desc, const std::vector
   return m;
 }
 
-std::vector<uint32_t> add_asset(Scene& scene, const matgeom::ObjectAsset& asset) {
-  // Each image is decoded once per colour space it is used in.
+std::vector<uint32_t> add_asset(Scene& scene, const matgeom::ObjectAsset& asset,
+                                const std::vector<std::optional<uint32_t>>& material_overrides) {
   std::vector<TexturePtr> as_srgb(asset.images.size()), as_data(asset.images.size());
-  auto wrap_of = [&](size_t image) {
-    for (const matgeom::MaterialDesc& d : asset.materials)
-      if (d.base_color_image == static_cast<int>(image) || d.metallic_roughness_image == static_cast<int>(image) ||
-          d.normal_image == static_cast<int>(image))
-        return to_wrap(d.wrap);
-    return Wrap::Repeat;
+  auto decode = [&](int index, ColorSpace space, matgeom::TextureWrap wrap, std::vector<TexturePtr>& decoded) {
+    if (index < 0 || static_cast<size_t>(index) >= asset.images.size() || decoded[static_cast<size_t>(index)]) return;
+    const matgeom::ImagePixels& image = asset.images[static_cast<size_t>(index)];
+    decoded[static_cast<size_t>(index)] = Texture::from_pixels8(image.width, image.height, image.channels,
+                                                                image.data.data(), space, to_wrap(wrap), image.name);
   };
-  for (size_t i = 0; i < asset.images.size(); ++i) {
-    const matgeom::ImagePixels& img = asset.images[i];
-    bool srgb_use = false, data_use = false;
-    for (const matgeom::MaterialDesc& d : asset.materials) {
-      srgb_use |= d.base_color_image == static_cast<int>(i);
-      data_use |= d.metallic_roughness_image == static_cast<int>(i) || d.normal_image == static_cast<int>(i);
+  const size_t parts = std::max<size_t>(asset.mesh.part_count(), asset.materials.size());
+  std::vector<uint32_t> ids(parts);
+  for (size_t k = 0; k < parts; ++k) {
+    if (k < material_overrides.size() && material_overrides[k]) {
+      ids[k] = *material_overrides[k];
+    } else if (k < asset.materials.size()) {
+      const matgeom::MaterialDesc& slot = asset.materials[k];
+      decode(slot.base_color_image, ColorSpace::SRGB, slot.wrap, as_srgb);
+      decode(slot.metallic_roughness_image, ColorSpace::NonColor, slot.wrap, as_data);
+      decode(slot.normal_image, ColorSpace::NonColor, slot.wrap, as_data);
+      ids[k] = scene.add_material(material_from_desc(slot, as_srgb, as_data));
+    } else {
+      ids[k] = scene.add_material(Material{});
     }
-    if (srgb_use)
-      as_srgb[i] = Texture::from_pixels8(img.width, img.height, img.channels, img.data.data(), ColorSpace::SRGB,
-                                         wrap_of(i), img.name);
-    if (data_use)
-      as_data[i] = Texture::from_pixels8(img.width, img.height, img.channels, img.data.data(), ColorSpace::NonColor,
-                                         wrap_of(i), img.name);
   }
-  std::vector<uint32_t> ids;
-  for (const matgeom::MaterialDesc& desc : asset.materials)
-    ids.push_back(scene.add_material(material_from_desc(desc, as_srgb, as_data)));
-  if (ids.empty()) ids.push_back(scene.add_material(Material{}));
   scene.add_mesh(asset.mesh, ids);
   return ids;
 }

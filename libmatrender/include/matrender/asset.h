@@ -1,6 +1,7 @@
 #pragma once
 // Bringing a matgeom::ObjectAsset (glTF or built-in object) into a scene.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "matgeom/object_asset.h"
@@ -14,7 +15,11 @@ Material material_from_desc(const matgeom::MaterialDesc& desc,
                             const std::vector<TexturePtr>& images_as_srgb,
                             const std::vector<TexturePtr>& images_as_data);
 
-// Adds the asset's materials and mesh; returns the material ids it added, one per part.
-std::vector<uint32_t> add_asset(Scene& scene, const matgeom::ObjectAsset& asset);
+// Adds the asset's mesh and a material per part; returns the material id of each part. Part k
+// uses material_overrides[k] when that is set (an id already in the scene), else the asset's own
+// slot k, else the default Material. Images are decoded once per colour space they are used in,
+// and only for the slots that are used.
+std::vector<uint32_t> add_asset(Scene& scene, const matgeom::ObjectAsset& asset,
+                                const std::vector<std::optional<uint32_t>>& material_overrides = {});
 
 }  // namespace matrender
