@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <random>
 
+#include "uniform_floats.h"
 #include "bsdf/principled.h"
 #include "shaders_ref/directional_albedo.h"
 #include "shaders_ref/principled_reference.h"
@@ -20,16 +21,6 @@ using matrender::PrincipledInputs;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-// Uniform floats in [0, 1) from the top 24 bits of a 64-bit Mersenne Twister.
-class UniformFloats {
- public:
-  explicit UniformFloats(std::uint64_t seed) : engine_(seed) {}
-  float next() { return static_cast<float>(engine_() >> 40) * 0x1p-24f; }
-
- private:
-  std::mt19937_64 engine_;
-};
 
 glm::dvec3 direction_with_cosine(double cos_theta) {
   return {std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta)), 0.0, cos_theta};

@@ -13,6 +13,7 @@
 #include <random>
 #include <vector>
 
+#include "uniform_floats.h"
 #include "bsdf/microfacet_ggx.h"
 #include "bsdf/principled.h"
 #include "bsdf/principled_diffuse.h"
@@ -27,21 +28,6 @@ using matrender::PrincipledInputs;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-// Uniform floats in [0, 1) from the top 24 bits of a 64-bit Mersenne Twister: every value is a
-// multiple of 2^-24, exactly representable, and 1 never occurs.
-class UniformFloats {
- public:
-  explicit UniformFloats(std::uint64_t seed) : engine_(seed) {}
-  float next() { return static_cast<float>(engine_() >> 40) * 0x1p-24f; }
-  glm::vec2 next2() {
-    const float u = next();
-    return {u, next()};
-  }
-
- private:
-  std::mt19937_64 engine_;
-};
 
 glm::vec3 direction_with_cosine(float cos_theta) {
   return {std::sqrt(std::max(0.0f, 1.0f - cos_theta * cos_theta)), 0.0f, cos_theta};

@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "uniform_floats.h"
 #include "bsdf/shading_frame.h"
 
 using matrender::ensure_valid_reflection;
@@ -16,16 +17,6 @@ using matrender::ShadingFrame;
 namespace {
 
 constexpr float kPi = 3.14159265358979323846f;
-
-// Uniform floats in [0, 1) from the top 24 bits of a 64-bit Mersenne Twister.
-class UniformFloats {
- public:
-  explicit UniformFloats(std::uint64_t seed) : engine_(seed) {}
-  float next() { return static_cast<float>(engine_() >> 40) * 0x1p-24f; }
-
- private:
-  std::mt19937_64 engine_;
-};
 
 glm::vec3 random_unit_vector(UniformFloats& rng) {
   const float z = 1.0f - 2.0f * rng.next();
