@@ -26,13 +26,6 @@ glm::dvec3 direction_with_cosine(double cos_theta) {
   return {std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta)), 0.0, cos_theta};
 }
 
-glm::vec3 random_upper_direction(UniformFloats& rng) {
-  const float cos_theta = 1.0f - rng.next();
-  const float sin_theta = std::sqrt(std::max(0.0f, 1.0f - cos_theta * cos_theta));
-  const float phi = 2.0f * static_cast<float>(kPi) * rng.next();
-  return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
-}
-
 // A direction in the specular peak of wo: the mirror image of wo about a normal whose slope is
 // within three GGX widths, tan(theta_m) < 3 alpha; a random direction if that falls below the
 // horizon.

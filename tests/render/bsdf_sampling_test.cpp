@@ -33,14 +33,6 @@ glm::vec3 direction_with_cosine(float cos_theta) {
   return {std::sqrt(std::max(0.0f, 1.0f - cos_theta * cos_theta)), 0.0f, cos_theta};
 }
 
-// Uniformly distributed over the upper hemisphere (cos_theta uniform in (0, 1]).
-glm::vec3 random_upper_direction(UniformFloats& rng) {
-  const float cos_theta = 1.0f - rng.next();
-  const float sin_theta = std::sqrt(std::max(0.0f, 1.0f - cos_theta * cos_theta));
-  const float phi = 2.0f * static_cast<float>(kPi) * rng.next();
-  return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
-}
-
 PrincipledInputs material(glm::vec3 base, float metallic, float roughness, float specular,
                           float specular_tint, DiffuseModel model = DiffuseModel::Principled) {
   PrincipledInputs in;

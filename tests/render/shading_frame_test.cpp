@@ -18,13 +18,6 @@ namespace {
 
 constexpr float kPi = 3.14159265358979323846f;
 
-glm::vec3 random_unit_vector(UniformFloats& rng) {
-  const float z = 1.0f - 2.0f * rng.next();
-  const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
-  const float phi = 2.0f * kPi * rng.next();
-  return {r * std::cos(phi), r * std::sin(phi), z};
-}
-
 bool is_finite(const glm::vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }

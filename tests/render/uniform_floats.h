@@ -1,6 +1,8 @@
 #pragma once
 // Deterministic uniform random floats for the statistical tests.
+#include <cmath>
 #include <cstdint>
+#include <algorithm>
 #include <random>
 
 #include <glm/glm.hpp>
@@ -20,3 +22,19 @@ class UniformFloats {
  private:
   std::mt19937_64 engine_;
 };
+
+// Uniformly distributed over the upper hemisphere (cos theta uniform in (0, 1]).
+inline glm::vec3 random_upper_direction(UniformFloats& rng) {
+  const float cos_theta = 1.0f - rng.next();
+  const float sin_theta = std::sqrt(std::max(0.0f, 1.0f - cos_theta * cos_theta));
+  const float phi = 6.28318530717958647692f * rng.next();
+  return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
+}
+
+// Uniformly distributed over the whole sphere.
+inline glm::vec3 random_unit_vector(UniformFloats& rng) {
+  const float z = 1.0f - 2.0f * rng.next();
+  const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+  const float phi = 6.28318530717958647692f * rng.next();
+  return {r * std::cos(phi), r * std::sin(phi), z};
+}
