@@ -2,11 +2,12 @@
 # Installs exactly the Debian 12 packages matpredict builds and tests with.
 set -euo pipefail
 
+# What the CMake build finds (cmake/MatpredictDependencies.cmake), and the toolchain.
 packages=(
-  build-essential cmake ninja-build pkg-config git
-  libembree-dev libtbb-dev libglm-dev libeigen3-dev
-  libopenimageio-dev openimageio-tools libopenexr-dev
-  libtinygltf-dev nlohmann-json3-dev libcli11-dev libfmt-dev libyaml-cpp-dev
+  build-essential cmake ninja-build pkg-config
+  libembree-dev libtbb-dev libglm-dev
+  libopenimageio-dev
+  libtinygltf-dev nlohmann-json3-dev libcli11-dev libfmt-dev
   catch2
 )
 
