@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <random>
 
+#include "reference_params.h"
 #include "uniform_floats.h"
 #include "bsdf/principled.h"
 #include "shaders_ref/directional_albedo.h"
@@ -54,17 +55,6 @@ PrincipledInputs random_material(UniformFloats& rng, float min_roughness, float 
   in.specular_tint = with_edges(0.3f, 0.2f);
   in.diffuse_model = rng.next() < 0.5f ? DiffuseModel::Principled : DiffuseModel::Lambert;
   return in;
-}
-
-shaders_ref::PrincipledParams reference_params(const PrincipledInputs& in) {
-  shaders_ref::PrincipledParams p;
-  p.base_color = glm::dvec3(in.base_color);
-  p.metallic = in.metallic;
-  p.roughness = in.roughness;
-  p.specular = in.specular;
-  p.specular_tint = in.specular_tint;
-  p.lambert_diffuse = in.diffuse_model == DiffuseModel::Lambert;
-  return p;
 }
 
 double average(const glm::dvec3& c) { return (c.x + c.y + c.z) / 3.0; }

@@ -13,6 +13,7 @@
 #include <random>
 #include <vector>
 
+#include "reference_params.h"
 #include "uniform_floats.h"
 #include "bsdf/microfacet_ggx.h"
 #include "bsdf/principled.h"
@@ -54,17 +55,6 @@ PrincipledInputs random_material(UniformFloats& rng) {
   in.specular_tint = rng.next();
   in.diffuse_model = rng.next() < 0.5f ? DiffuseModel::Principled : DiffuseModel::Lambert;
   return in;
-}
-
-shaders_ref::PrincipledParams reference_params(const PrincipledInputs& in) {
-  shaders_ref::PrincipledParams p;
-  p.base_color = glm::dvec3(in.base_color);
-  p.metallic = in.metallic;
-  p.roughness = in.roughness;
-  p.specular = in.specular;
-  p.specular_tint = in.specular_tint;
-  p.lambert_diffuse = in.diffuse_model == DiffuseModel::Lambert;
-  return p;
 }
 
 bool is_finite(const glm::vec3& v) {
