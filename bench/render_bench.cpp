@@ -1,6 +1,7 @@
 // Prints the renderer's figures: path-tracer rays/s beside raw Embree traversal of exactly the
 // same rays (replayed from a log, same run, same threads), samples/s, BVH build time, peak
 // memory, and error against a converged reference versus render time.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -112,8 +113,8 @@ void traversal_table(const std::vector<size_t>& sizes, int resolution, int spp) 
       settings.threads = threads;
       settings.aovs = 0;
       matrender::FrameBuffers frame;
-      const matrender::RenderStats stats = matrender::render(scene, camera, settings, frame);
-      // Log the same render's rays (the log costs time, so it is a second, untimed pass).
+      // Log the render's rays in an untimed pass (the log costs time); it also warms caches
+      // and the thread pool for the timed passes. Each side keeps the faster of two runs.
       matrender::RayLog log;
       scene.data().accel.set_ray_log(&log);
       matrender::render(scene, camera, settings, frame);
@@ -121,7 +122,10 @@ void traversal_table(const std::vector<size_t>& sizes, int resolution, int spp) 
       std::vector<matrender::RayLog::Entry> rays;
       for (auto& part : log.per_thread) rays.insert(rays.end(), part.begin(), part.end());
       log.per_thread.clear();
-      const double raw_seconds = replay(raw, rays, threads);
+      matrender::RenderStats stats = matrender::render(scene, camera, settings, frame);
+      const matrender::RenderStats second = matrender::render(scene, camera, settings, frame);
+      if (second.seconds < stats.seconds) stats = second;
+      const double raw_seconds = std::min(replay(raw, rays, threads), replay(raw, rays, threads));
       const double ours = stats.rays / stats.seconds / 1e6;
       const double theirs = rays.size() / raw_seconds / 1e6;
       fmt::print("| {} | {} | {:.1f} / {:.1f} | {} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.0f} |\n",

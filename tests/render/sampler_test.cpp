@@ -65,3 +65,23 @@ TEST_CASE("The pixel filter's inverse CDF follows Blackman-Harris", "[render]") 
     if (std::abs(filter.inverse_cdf((i + 0.5f) / n)) < 0.5f) ++hits;
   CHECK(double(hits) / n == Approx(inside / total).margin(2e-3));
 }
+
+TEST_CASE("Sobol dimension 1 equals the direction-number recurrence", "[render]") {
+  // The textbook construction: XOR of direction numbers v_k for the set bits k of the index,
+  // v_0 = 2^31, v_k = v_{k-1} ^ (v_{k-1} >> 1) (Pascal's triangle mod 2).
+  const auto by_direction_numbers = [](uint32_t index) {
+    uint32_t result = 0, direction = 0x80000000u;
+    for (; index != 0; index >>= 1, direction ^= direction >> 1)
+      if (index & 1u) result ^= direction;
+    return result;
+  };
+  uint32_t index = 0;
+  for (int i = 0; i < 100000; ++i, index = hash_u32(index + 1)) {
+    INFO("index " << index);
+    REQUIRE(sobol_dimension1(index) == by_direction_numbers(index));
+    REQUIRE(reverse_bits(reverse_bits(index)) == index);
+  }
+  for (uint32_t small = 0; small < 4096; ++small) REQUIRE(sobol_dimension1(small) == by_direction_numbers(small));
+  CHECK(reverse_bits(1u) == 0x80000000u);
+  CHECK(reverse_bits(0x00000F01u) == 0x80F00000u);
+}

@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 
 #include "lights/light_sample.h"
+#include "lights/spherical_rectangle.h"
 #include "matrender/light.h"
 
 namespace matrender {
@@ -27,14 +28,12 @@ class PreparedRectLight {
   glm::vec3 radiance() const { return radiance_; }
 
  private:
-  bool sees_emitting_side(const glm::dvec3& p) const;
+  bool sees_emitting_side(const glm::vec3& p) const;
 
-  glm::dvec3 corner_, edge_x_, edge_y_, center_, emit_dir_;  // emit_dir_ = lamp -Z
-  double area_;
-  glm::vec3 radiance_;
-  // Single-precision copies for the ray test every BSDF-sampled ray makes against every lamp.
-  glm::vec3 center_f_, emit_dir_f_, axis_x_f_, axis_y_f_;
-  float half_x_f_, half_y_f_;
+  Rectangle3 rect_;  // rect_.z = lamp +Z, the side that does not emit
+  glm::vec3 center_{0.0f};
+  float half_x_ = 0.0f, half_y_ = 0.0f, area_ = 0.0f;
+  glm::vec3 radiance_{0.0f};
 };
 
 }  // namespace matrender

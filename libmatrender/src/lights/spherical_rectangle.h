@@ -1,26 +1,32 @@
 #pragma once
 // Uniform sampling of the solid angle a rectangle subtends: Urena, Fajardo, King 2013,
-// "An Area-Preserving Parametrization for Spherical Rectangles", EGSR. Set up in double
-// precision because the solid angle is a difference of angles near 2 pi.
+// "An Area-Preserving Parametrization for Spherical Rectangles", EGSR. Single precision, like
+// Cycles (kernel/light/area.h); the solid angle is summed from arcsines (below) so that it keeps
+// its relative precision for small rectangles instead of being a difference near 2 pi.
 #include <glm/glm.hpp>
 
 namespace matrender {
 
+// A rectangle in space: corner, orthonormal edge directions x and y with lengths, z = x cross y.
+struct Rectangle3 {
+  glm::vec3 corner{0.0f}, x{1.0f, 0.0f, 0.0f}, y{0.0f, 1.0f, 0.0f}, z{0.0f, 0.0f, 1.0f};
+  float length_x = 1.0f, length_y = 1.0f;
+};
+
 class SphericalRectangle {
  public:
-  // Rectangle with corner `corner` and edge vectors ex, ey (orthogonal), seen from `origin`.
-  SphericalRectangle(const glm::dvec3& origin, const glm::dvec3& corner, const glm::dvec3& ex,
-                     const glm::dvec3& ey);
+  // The rectangle as seen from `origin` (which must not lie in its plane).
+  SphericalRectangle(const glm::vec3& origin, const Rectangle3& rect);
 
-  double solid_angle() const { return solid_angle_; }
+  float solid_angle() const { return solid_angle_; }
   // Point on the rectangle whose direction from the origin is uniform in the solid angle
   // (section 4, eqs. 7-11 of the paper).
-  glm::dvec3 sample(glm::dvec2 u) const;
+  glm::vec3 sample(glm::vec2 u) const;
 
  private:
-  glm::dvec3 origin_, x_, y_, z_;
-  double x0_, y0_, x1_, y1_, z0_;
-  double b0_, b1_, k_, solid_angle_;
+  glm::vec3 origin_, x_, y_, z_;
+  float x0_, y0_, x1_, y1_, z0_;
+  float b0_, b1_, k_, solid_angle_;
 };
 
 }  // namespace matrender

@@ -12,11 +12,10 @@
 namespace matrender {
 
 inline uint32_t reverse_bits(uint32_t x) {
+  x = __builtin_bswap32(x);  // bytes, then bits within each byte
   x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
   x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
-  x = ((x >> 4) & 0x0F0F0F0Fu) | ((x & 0x0F0F0F0Fu) << 4);
-  x = ((x >> 8) & 0x00FF00FFu) | ((x & 0x00FF00FFu) << 8);
-  return (x >> 16) | (x << 16);
+  return ((x >> 4) & 0x0F0F0F0Fu) | ((x & 0x0F0F0F0Fu) << 4);
 }
 
 // 32-bit integer hash (Wellons' "lowbias32"): good avalanche, used only to derive seeds.
@@ -49,13 +48,20 @@ inline uint32_t nested_uniform_scramble(uint32_t x, uint32_t seed) {
 // First two Sobol dimensions as 32-bit fixed point: van der Corput, and the dimension whose
 // generator matrix is Pascal's triangle mod 2 (direction numbers v_k = v_{k-1} ^ (v_{k-1} >> 1)).
 inline uint32_t sobol_dimension0(uint32_t index) { return reverse_bits(index); }
-inline uint32_t sobol_dimension1(uint32_t index) {
-  uint32_t result = 0;
-  uint32_t direction = 0x80000000u;
-  for (; index != 0; index >>= 1, direction ^= direction >> 1)
-    if (index & 1u) result ^= direction;
-  return result;
+
+// Dimension 1 before its final bit reversal: by Lucas' theorem C(k, j) is odd exactly when the
+// bits of j are a subset of those of k, so bit j of the product with Pascal's matrix is the XOR
+// of index bits k over all supersets k of j: a superset-sum transform over the five bits of a
+// bit position, one shift-and-mask step per bit.
+inline uint32_t sobol_dimension1_reversed(uint32_t index) {
+  index ^= (index >> 1) & 0x55555555u;
+  index ^= (index >> 2) & 0x33333333u;
+  index ^= (index >> 4) & 0x0F0F0F0Fu;
+  index ^= (index >> 8) & 0x00FF00FFu;
+  index ^= (index >> 16) & 0x0000FFFFu;
+  return index;
 }
+inline uint32_t sobol_dimension1(uint32_t index) { return reverse_bits(sobol_dimension1_reversed(index)); }
 
 inline float fixed_point_to_unit_float(uint32_t x) {
   // Top 24 bits, so the float is exact and strictly below 1.
@@ -72,11 +78,13 @@ struct PairSeeds {
         y(hash_combine(seed, 0x1b873593u)) {}
 };
 
-// 2-D point `sample_index` of the scrambled sequence with the given seeds.
+// 2-D point `sample_index` of the scrambled sequence with the given seeds. Both coordinates are
+// nested_uniform_scramble(reverse_bits(r), seed) = reverse_bits(laine_karras_permutation(r, seed))
+// for r = index and r = sobol_dimension1_reversed(index): the inner reversals cancel.
 inline glm::vec2 owen_sobol_2d(uint32_t sample_index, const PairSeeds& seeds) {
   const uint32_t shuffled = nested_uniform_scramble(sample_index, seeds.shuffle);
-  const uint32_t x = nested_uniform_scramble(sobol_dimension0(shuffled), seeds.x);
-  const uint32_t y = nested_uniform_scramble(sobol_dimension1(shuffled), seeds.y);
+  const uint32_t x = reverse_bits(laine_karras_permutation(shuffled, seeds.x));
+  const uint32_t y = reverse_bits(laine_karras_permutation(sobol_dimension1_reversed(shuffled), seeds.y));
   return {fixed_point_to_unit_float(x), fixed_point_to_unit_float(y)};
 }
 
