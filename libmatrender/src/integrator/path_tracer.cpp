@@ -30,13 +30,12 @@ float max_component(const glm::vec3& v) { return std::max(v.x, std::max(v.y, v.z
 glm::vec3 PathTracer::lamps_hit(const glm::vec3& origin, const glm::vec3& dir, float t_max,
                                 float bsdf_pdf, bool bsdf_delta) const {
   glm::vec3 sum(0.0f);
-  for (const PreparedRectLight& lamp : lights_.rect_lights()) {
-    const auto t = lamp.intersect(origin, dir, t_max);
-    if (!t) continue;
+  lights_.rect_light_hits().for_each_hit(origin, dir, t_max, [&](size_t index, float t) {
+    const PreparedRectLight& lamp = lights_.rect_lights()[index];
     const float weight =
-        bsdf_delta ? 1.0f : power_heuristic(bsdf_pdf, lights_.selection_pdf() * lamp.pdf(origin, dir, *t));
+        bsdf_delta ? 1.0f : power_heuristic(bsdf_pdf, lights_.selection_pdf() * lamp.pdf(origin, dir, t));
     sum += weight * lamp.radiance();
-  }
+  });
   return sum;
 }
 
@@ -55,7 +54,7 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     const RayHit hit = scene_.accel.intersect(origin, dir, kInfinity);
     ++result.rays;
     // Lamps are invisible to camera rays; later rays see them, weighted against NEE.
-    if (bounce > 0 && !lights_.rect_lights().empty())
+    if (bounce > 0 && !lights_.rect_light_hits().empty())
       result.radiance += throughput * lamps_hit(origin, dir, hit.hit() ? hit.t : kInfinity, bsdf_pdf, bsdf_delta);
     if (!hit.hit()) {
       if (bounce > 0 || !settings_.transparent_background) result.radiance += throughput * scene_.background;

@@ -6,16 +6,24 @@
 
 namespace matrender {
 
-LightSampler::LightSampler(const std::vector<Light>& lights) {
+namespace {
+
+std::vector<PreparedRectLight> prepare_rect_lights(const std::vector<Light>& lights) {
+  std::vector<PreparedRectLight> rects;
+  for (const Light& light : lights)
+    if (const auto* rect = std::get_if<RectLight>(&light)) rects.emplace_back(*rect);
+  return rects;
+}
+
+}  // namespace
+
+LightSampler::LightSampler(const std::vector<Light>& lights)
+    : rects_(prepare_rect_lights(lights)), rect_hits_(rects_) {
   for (const Light& light : lights) {
     std::visit(
         [this](const auto& l) {
           using T = std::decay_t<decltype(l)>;
-          if constexpr (std::is_same_v<T, RectLight>) {
-            rects_.emplace_back(l);
-          } else {
-            deltas_.emplace_back(l);
-          }
+          if constexpr (!std::is_same_v<T, RectLight>) deltas_.emplace_back(l);
         },
         light);
   }

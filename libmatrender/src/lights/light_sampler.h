@@ -8,6 +8,7 @@
 
 #include "lights/light_sample.h"
 #include "lights/rect_light.h"
+#include "lights/rect_light_hits.h"
 #include "lights/spot_light.h"
 #include "matrender/light.h"
 
@@ -25,10 +26,12 @@ class LightSampler {
   std::optional<LightSample> sample(const glm::vec3& p, float u_select, glm::vec2 u) const;
 
   const std::vector<PreparedRectLight>& rect_lights() const { return rects_; }
+  const RectLightHits& rect_light_hits() const { return rect_hits_; }
 
  private:
   std::vector<PreparedRectLight> rects_;
   std::vector<PreparedDeltaLight> deltas_;
+  RectLightHits rect_hits_;
 };
 
 }  // namespace matrender

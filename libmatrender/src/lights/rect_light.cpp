@@ -22,8 +22,6 @@ PreparedRectLight::PreparedRectLight(const RectLight& light) {
   rect_.length_y = static_cast<float>(light.size_y);
   rect_.corner = glm::vec3(center - 0.5 * light.size_x * axis_x - 0.5 * light.size_y * axis_y);
   center_ = glm::vec3(center);
-  half_x_ = static_cast<float>(0.5 * light.size_x);
-  half_y_ = static_cast<float>(0.5 * light.size_y);
   area_ = static_cast<float>(light.size_x * light.size_y);
   radiance_ = glm::vec3(light.power * light.color / (4.0 * light.size_x * light.size_y));
 }
@@ -67,18 +65,6 @@ float PreparedRectLight::pdf(const glm::vec3& p, const glm::vec3& wi, float t) c
   const float cos_light = glm::dot(wi, rect_.z);
   if (!(cos_light > 0.0f)) return 0.0f;
   return t * t / (cos_light * area_);
-}
-
-std::optional<float> PreparedRectLight::intersect(const glm::vec3& origin, const glm::vec3& dir,
-                                                  float t_max) const {
-  const float facing = glm::dot(dir, rect_.z);
-  if (!(facing > 0.0f)) return std::nullopt;  // only the emitting side (-Z) is visible
-  const float t = glm::dot(center_ - origin, rect_.z) / facing;
-  if (!(t > 0.0f) || t >= t_max) return std::nullopt;
-  const glm::vec3 local = origin + t * dir - center_;
-  if (std::abs(glm::dot(local, rect_.x)) > half_x_ || std::abs(glm::dot(local, rect_.y)) > half_y_)
-    return std::nullopt;
-  return t;
 }
 
 }  // namespace matrender

@@ -22,17 +22,17 @@ class PreparedRectLight {
   // Solid-angle pdf of sample() producing direction wi from p, given that the ray hits the lamp
   // at distance t.
   float pdf(const glm::vec3& p, const glm::vec3& wi, float t) const;
-  // Distance along the ray to the emitting side of the lamp, if hit within t_max.
-  std::optional<float> intersect(const glm::vec3& origin, const glm::vec3& dir, float t_max) const;
-
   glm::vec3 radiance() const { return radiance_; }
+  // The lamp's rectangle; its z is the lamp's +Z, the side that does not emit.
+  const Rectangle3& rectangle() const { return rect_; }
+  glm::vec3 center() const { return center_; }
 
  private:
   bool sees_emitting_side(const glm::vec3& p) const;
 
-  Rectangle3 rect_;  // rect_.z = lamp +Z, the side that does not emit
+  Rectangle3 rect_;
   glm::vec3 center_{0.0f};
-  float half_x_ = 0.0f, half_y_ = 0.0f, area_ = 0.0f;
+  float area_ = 0.0f;
   glm::vec3 radiance_{0.0f};
 };
 

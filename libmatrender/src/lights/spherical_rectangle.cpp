@@ -25,18 +25,26 @@ SphericalRectangle::SphericalRectangle(const glm::vec3& origin, const Rectangle3
   // s_i = atan(x y / (|z0| r)) for the corner (x, y) the two edges share (r its distance), the
   // solid angle g0 + g1 + g2 + g3 - 2 pi = s0 + s1 + s2 + s3 has no 2 pi to cancel and every
   // term is well conditioned, unlike acos or asin of n_i . n_i+1 near +-1 at grazing views.
+  // Each s_i is the argument of the complex number (|z0| r, +-x y); a pair of them (a sum in
+  // [-pi, pi]) is the argument of their product, so two atan2 give the four angles' sums.
   const float z0_sq = z0_ * z0_;
   const float h = -z0_;
-  const auto corner_term = [&](float x, float y) { return std::atan2(x * y, h * std::sqrt(x * x + y * y + z0_sq)); };
-  const float s0 = -corner_term(x1_, y0_);
-  const float s1 = corner_term(x1_, y1_);
-  const float s2 = -corner_term(x0_, y1_);
-  const float s3 = corner_term(x0_, y0_);
+  struct Complex {
+    float re, im;
+  };
+  const auto corner = [&](float x, float y, float sign) {
+    return Complex{h * std::sqrt(x * x + y * y + z0_sq), sign * x * y};
+  };
+  const auto argument_of_product = [](Complex a, Complex b) {
+    return std::atan2(a.re * b.im + a.im * b.re, a.re * b.re - a.im * b.im);
+  };
+  const float s0_plus_s1 = argument_of_product(corner(x1_, y0_, -1.0f), corner(x1_, y1_, 1.0f));
+  const float s2_plus_s3 = argument_of_product(corner(x0_, y1_, -1.0f), corner(x0_, y0_, 1.0f));
   // z components of n0 and n2, the constants b0, b1 of the sampling equations.
   b0_ = -y0_ / std::sqrt(z0_sq + y0_ * y0_);
   b1_ = y1_ / std::sqrt(z0_sq + y1_ * y1_);
-  k_ = kPi - s2 - s3;  // 2 pi - g2 - g3
-  solid_angle_ = std::max(0.0f, s0 + s1 + s2 + s3);
+  k_ = kPi - s2_plus_s3;  // 2 pi - g2 - g3
+  solid_angle_ = std::max(0.0f, s0_plus_s1 + s2_plus_s3);
 }
 
 glm::vec3 SphericalRectangle::sample(glm::vec2 u) const {
