@@ -200,7 +200,7 @@ void error_versus_time(VaseScene& v, int reference_spp, int max_spp) {
 int main(int argc, char** argv) {
   CLI::App app{"render_bench: libmatrender speed beside raw Embree, and error versus time"};
   std::vector<size_t> sizes{10000, 200000, 1000000};
-  int resolution = 256, spp = 4, vase_spp = 64, reference_spp = 2048, max_spp = 256;
+  int resolution = 256, spp = 16, vase_spp = 64, reference_spp = 2048, max_spp = 256;
   app.add_option("--triangles", sizes, "Mesh sizes for the traversal table")->capture_default_str();
   app.add_option("--resolution", resolution, "Image side in pixels")->capture_default_str();
   app.add_option("--spp", spp, "Samples per pixel of the traversal table")->capture_default_str();

@@ -89,6 +89,47 @@ RayHit EmbreeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, flo
   return hit;
 }
 
+void EmbreeScene::intersect_coherent(const glm::vec3& origin, const glm::vec3* dirs, int count,
+                                     RayHit* hits) const {
+  if (count < 1 || count > kPacketSize) throw std::logic_error("Embree: packet of " + std::to_string(count) + " rays");
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  RTCRayHit8 packet;
+  int valid[kPacketSize];
+  for (int i = 0; i < kPacketSize; ++i) {
+    valid[i] = i < count ? -1 : 0;
+    const glm::vec3 dir = dirs[i < count ? i : 0];
+    if (ray_log_ && i < count)
+      ray_log_->per_thread.local().push_back({origin, dir, std::numeric_limits<float>::infinity(), false});
+    packet.ray.org_x[i] = origin.x;
+    packet.ray.org_y[i] = origin.y;
+    packet.ray.org_z[i] = origin.z;
+    packet.ray.dir_x[i] = dir.x;
+    packet.ray.dir_y[i] = dir.y;
+    packet.ray.dir_z[i] = dir.z;
+    packet.ray.tnear[i] = 0.0f;
+    packet.ray.tfar[i] = std::numeric_limits<float>::infinity();
+    packet.ray.time[i] = 0.0f;
+    packet.ray.mask[i] = 0xFFFFFFFFu;
+    packet.ray.id[i] = 0;
+    packet.ray.flags[i] = 0;
+    packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+    packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+  }
+  rtcIntersect8(valid, scene_, &context, &packet);
+  for (int i = 0; i < count; ++i) {
+    RayHit& hit = hits[i];
+    hit = RayHit();
+    if (packet.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID) continue;
+    hit.t = packet.ray.tfar[i];
+    hit.mesh = packet.hit.geomID[i];
+    hit.triangle = packet.hit.primID[i];
+    hit.u = packet.hit.u[i];
+    hit.v = packet.hit.v[i];
+  }
+}
+
 bool EmbreeScene::occluded(const glm::vec3& origin, const glm::vec3& dir, float t_max) const {
   if (ray_log_) ray_log_->per_thread.local().push_back({origin, dir, t_max, true});
   RTCIntersectContext context;

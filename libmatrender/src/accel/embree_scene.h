@@ -42,6 +42,10 @@ class EmbreeScene {
   void commit();
 
   RayHit intersect(const glm::vec3& origin, const glm::vec3& dir, float t_max) const;
+  // Closest hits of up to kPacketSize rays from one origin that travel almost together (one
+  // pixel's camera rays), traced as one Embree packet: little more work than a single ray.
+  static constexpr int kPacketSize = 8;
+  void intersect_coherent(const glm::vec3& origin, const glm::vec3* dirs, int count, RayHit* hits) const;
   bool occluded(const glm::vec3& origin, const glm::vec3& dir, float t_max) const;
 
   void set_ray_log(RayLog* log) const { ray_log_ = log; }

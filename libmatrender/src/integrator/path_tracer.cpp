@@ -40,7 +40,7 @@ glm::vec3 PathTracer::lamps_hit(const glm::vec3& origin, const glm::vec3& dir, f
 }
 
 PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& camera_dir,
-                             const PixelSampler& sampler) const {
+                             const RayHit& camera_hit, const PixelSampler& sampler) const {
   PathResult result;
   glm::vec3 throughput(1.0f);
   glm::vec3 origin = camera_origin;
@@ -51,7 +51,7 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
   int glossy_bounces = 0;
 
   for (int bounce = 0;; ++bounce) {
-    const RayHit hit = scene_.accel.intersect(origin, dir, kInfinity);
+    const RayHit hit = bounce == 0 ? camera_hit : scene_.accel.intersect(origin, dir, kInfinity);
     ++result.rays;
     // Lamps are invisible to camera rays; later rays see them, weighted against NEE.
     if (bounce > 0 && !lights_.rect_light_hits().empty())

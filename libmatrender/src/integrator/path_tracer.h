@@ -32,9 +32,11 @@ class PathTracer {
   PathTracer(const SceneData& scene, const LightSampler& lights, const PathSettings& settings)
       : scene_(scene), lights_(lights), settings_(settings) {}
 
-  // Radiance along the camera ray; random numbers come from `sampler` pairs 1, 2, ... (pair 0 is
-  // the caller's pixel-filter offset).
-  PathResult trace(const glm::vec3& origin, const glm::vec3& dir, const PixelSampler& sampler) const;
+  // Radiance along the camera ray, whose closest hit the caller traced (camera rays go to
+  // Embree in packets); random numbers come from `sampler` pairs 1, 2, ... (pair 0 is the
+  // caller's pixel-filter offset).
+  PathResult trace(const glm::vec3& origin, const glm::vec3& dir, const RayHit& camera_hit,
+                   const PixelSampler& sampler) const;
 
  private:
   // MIS-weighted radiance of the area lamps in front of the segment [origin, origin + t_max dir].

@@ -93,12 +93,26 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
     const uint32_t pixel_index = static_cast<uint32_t>(y) * static_cast<uint32_t>(camera.width) + static_cast<uint32_t>(x);
     PixelAccumulator acc;
     const PixelSeeds seeds(pixel_index, settings.seed);
+    constexpr int kPacket = EmbreeScene::kPacketSize;
+    glm::vec2 offsets[kPacket];
+    glm::vec3 dirs[kPacket];
+    RayHit camera_hits[kPacket];
     for (uint32_t s = 0; s < spp; ++s) {
+      const int lane = static_cast<int>(s % kPacket);
+      if (lane == 0) {
+        // The next packet of this pixel's camera rays.
+        const int count = static_cast<int>(std::min<uint32_t>(kPacket, spp - s));
+        for (int i = 0; i < count; ++i) {
+          offsets[i] = filter.sample(PixelSampler(seeds, s + static_cast<uint32_t>(i)).get_2d(0));
+          dirs[i] = rays.direction(static_cast<float>(x) + 0.5f + offsets[i].x,
+                                   static_cast<float>(y) + 0.5f + offsets[i].y);
+        }
+        data.accel.intersect_coherent(rays.origin(), dirs, count, camera_hits);
+      }
       const PixelSampler sampler(seeds, s);
-      const glm::vec2 offset = filter.sample(sampler.get_2d(0));
-      const glm::vec3 dir = rays.direction(static_cast<float>(x) + 0.5f + offset.x,
-                                           static_cast<float>(y) + 0.5f + offset.y);
-      const PathResult path = tracer.trace(rays.origin(), dir, sampler);
+      const glm::vec2 offset = offsets[lane];
+      const glm::vec3 dir = dirs[lane];
+      const PathResult path = tracer.trace(rays.origin(), dir, camera_hits[lane], sampler);
       tile_rays += path.rays;
       if (is_finite(path.radiance)) {
         acc.color += glm::dvec3(path.radiance);
