@@ -5,9 +5,9 @@ set -euo pipefail
 # What the CMake build finds (cmake/MatpredictDependencies.cmake), and the toolchain.
 packages=(
   build-essential cmake ninja-build pkg-config
-  libembree-dev libtbb-dev libglm-dev
+  libembree-dev libtbb-dev libglm-dev libeigen3-dev
   libopenimageio-dev
-  libtinygltf-dev nlohmann-json3-dev libcli11-dev libfmt-dev
+  libtinygltf-dev libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libfmt-dev
   catch2
 )
 

@@ -91,9 +91,9 @@ void add_scene_options(CLI::App& app, Options& o) {
                     ->group(group);
   auto* mesh = app.add_option_function<std::string>(
                       "--mesh", [&o](const std::string& path) { o.mesh_file = path; },
-                      "render this .glb/.gltf under the paper's light rig and grid camera")
+                      "render this .glb/.gltf/.ply/.obj object under the paper's light rig and grid camera")
                    ->check(existing_file())
-                   ->type_name("FILE.glb|gltf")
+                   ->type_name("FILE.glb|gltf|ply|obj")
                    ->group(group);
   auto* object = app.add_option_function<std::string>(
                         "--object", [&o](const std::string& name) { o.object = name; },

@@ -11,8 +11,8 @@
 
 #include "matgeom/builtin_objects.h"
 #include "matgeom/camera_grid.h"
-#include "matgeom/gltf_reader.h"
 #include "matgeom/mesh.h"
+#include "matgeom/mesh_io.h"
 #include "matrender/asset.h"
 #include "matrender/texture.h"
 
@@ -23,7 +23,7 @@ namespace {
 matgeom::ObjectAsset load_object(const ObjectDescription& object) {
   if (const auto* file = std::get_if<MeshFile>(&object.source)) {
     try {
-      return matgeom::read_gltf(file->path);
+      return matgeom::read_object(file->path);
     } catch (const std::exception& e) {
       throw object.origin.error("/mesh", e.what());
     }

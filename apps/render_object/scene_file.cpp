@@ -18,6 +18,7 @@
 
 #include "matgeom/builtin_objects.h"
 #include "matgeom/camera_grid.h"
+#include "matgeom/mesh_io.h"
 
 namespace render_object {
 namespace {
@@ -504,8 +505,9 @@ ObjectDescription read_object(const Node& node, const fs::path& folder,
   if (node.has("mesh")) {
     node.expect_keys({"mesh", "transform", "material", "materials"});
     const std::string path = read_existing_file(node.required("mesh"), folder);
-    const std::string ext = lowercase_extension(path);
-    if (ext != ".glb" && ext != ".gltf") node.required("mesh").fail("expected a .glb or .gltf file");
+    const std::vector<std::string>& extensions = matgeom::object_file_extensions();
+    if (std::find(extensions.begin(), extensions.end(), lowercase_extension(path)) == extensions.end())
+      node.required("mesh").fail("expected a .glb, .gltf, .ply or .obj file");
     object.source = MeshFile{path};
   } else {
     node.expect_keys({"builtin", "seed", "transform", "material", "materials"});

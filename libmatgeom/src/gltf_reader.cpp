@@ -761,17 +761,6 @@ MaterialDesc convert_material(const GltfFile& file, ImageTable& images, size_t i
   return desc;
 }
 
-// Primitives without a material: Blender renders them with its default surface; the closest
-// MaterialDesc is the Principled BSDF's own defaults (grey 0.8, dielectric, roughness 0.5).
-MaterialDesc default_material() {
-  MaterialDesc desc;
-  desc.name = "default";
-  desc.base_color = glm::dvec3(0.8);
-  desc.metallic = 0.0;
-  desc.roughness = 0.5;
-  return desc;
-}
-
 // ---------------------------------------------------------------------------------------------
 // Assembly
 
@@ -836,7 +825,7 @@ ObjectAsset read_gltf(const std::string& path) {
   for (const auto& [material, part] : part_of_material) {
     asset.materials[part] = material >= 0
                                 ? convert_material(file, images, static_cast<size_t>(material))
-                                : default_material();
+                                : default_material();  // Blender renders them with its default surface
     asset.mesh.part_names[part] = asset.materials[part].name;
   }
   asset.images = images.take_images();

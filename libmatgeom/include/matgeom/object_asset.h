@@ -41,6 +41,10 @@ struct MaterialDesc {
   int label_id = 0;  // material family id written to the label AOV
 };
 
+// The surface Blender gives geometry without a material: the Principled BSDF's defaults (grey
+// 0.8, dielectric, roughness 0.5, specular 0.5).
+MaterialDesc default_material(const std::string& name = "default");
+
 struct ObjectAsset {
   TriangleMesh mesh;                     // part k uses materials[k]
   std::vector<MaterialDesc> materials;

@@ -1,0 +1,26 @@
+#pragma once
+// Wavefront OBJ meshes with their MTL materials: read through tinyobjloader, written by hand.
+#include <string>
+
+#include "matgeom/object_asset.h"
+
+namespace matgeom {
+
+struct ObjReadOptions {
+  // Parts from "usemtl" material slots (Blender's default) or from "g"/"o" groups.
+  enum class PartsFrom { Material, Group };
+  PartsFrom parts_from = PartsFrom::Material;
+};
+
+// Reads positions, normals and UVs (split into one vertex per distinct v/vt/vn triple),
+// triangulates polygons, and maps MTL materials to MaterialDesc (Kd, map_Kd, Pr/map_Pr, Pm/map_Pm,
+// norm/map_Bump; the conventions are in the .cpp). Faces without a material share a part named
+// "default". Throws std::runtime_error starting with the path and naming the problem.
+ObjectAsset read_obj(const std::string& path, const ObjReadOptions& options = {});
+
+// Writes the mesh with one "g"/"usemtl" block per part and a .mtl beside it (same stem) with the
+// materials' scalar parameters; images referenced by materials are written as PNG beside it.
+// Temporary names and renames: a failed write leaves nothing behind.
+void write_obj(const ObjectAsset& asset, const std::string& path);
+
+}  // namespace matgeom

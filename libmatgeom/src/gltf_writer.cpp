@@ -1,0 +1,232 @@
+#include "matgeom/gltf_writer.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <utility>
+
+#include <tiny_gltf.h>
+
+#include "matgeom/mesh_parts.h"
+
+namespace matgeom {
+namespace {
+
+constexpr int kArrayBuffer = 34962;
+constexpr int kElementArrayBuffer = 34963;
+
+glm::vec3 blender_to_gltf(const glm::vec3& v) { return {v.x, v.z, -v.y}; }
+
+// Appends raw values to the single buffer as a new buffer view; returns the view's index.
+template <class T>
+int add_buffer_view(tinygltf::Model& model, const std::vector<T>& values, int target) {
+  std::vector<unsigned char>& bytes = model.buffers[0].data;
+  tinygltf::BufferView view;
+  view.buffer = 0;
+  view.byteOffset = bytes.size();
+  view.byteLength = values.size() * sizeof(T);
+  view.target = target;
+  bytes.resize(bytes.size() + view.byteLength);
+  std::memcpy(bytes.data() + view.byteOffset, values.data(), view.byteLength);
+  model.bufferViews.push_back(view);
+  return static_cast<int>(model.bufferViews.size()) - 1;
+}
+
+int add_accessor(tinygltf::Model& model, int view, int component_type, int type, size_t count) {
+  tinygltf::Accessor accessor;
+  accessor.bufferView = view;
+  accessor.componentType = component_type;
+  accessor.type = type;
+  accessor.count = count;
+  model.accessors.push_back(accessor);
+  return static_cast<int>(model.accessors.size()) - 1;
+}
+
+template <class T>
+int add_float_attribute(tinygltf::Model& model, const std::vector<T>& values, int type) {
+  return add_accessor(model, add_buffer_view(model, values, kArrayBuffer), TINYGLTF_COMPONENT_TYPE_FLOAT, type,
+                      values.size());
+}
+
+tinygltf::Primitive make_primitive(tinygltf::Model& model, const TriangleMesh& part, int material) {
+  tinygltf::Primitive primitive;
+  primitive.mode = TINYGLTF_MODE_TRIANGLES;
+  primitive.material = material;
+
+  std::vector<glm::vec3> positions(part.positions.size());
+  std::transform(part.positions.begin(), part.positions.end(), positions.begin(), blender_to_gltf);
+  const int position = add_float_attribute(model, positions, TINYGLTF_TYPE_VEC3);
+  // glTF requires the bounds of POSITION.
+  glm::vec3 lower(std::numeric_limits<float>::max()), upper(std::numeric_limits<float>::lowest());
+  for (const glm::vec3& p : positions) lower = glm::min(lower, p), upper = glm::max(upper, p);
+  model.accessors[static_cast<size_t>(position)].minValues = {lower.x, lower.y, lower.z};
+  model.accessors[static_cast<size_t>(position)].maxValues = {upper.x, upper.y, upper.z};
+  primitive.attributes["POSITION"] = position;
+
+  if (!part.normals.empty()) {
+    std::vector<glm::vec3> normals(part.normals.size());
+    std::transform(part.normals.begin(), part.normals.end(), normals.begin(), blender_to_gltf);
+    primitive.attributes["NORMAL"] = add_float_attribute(model, normals, TINYGLTF_TYPE_VEC3);
+  }
+  if (!part.uvs.empty()) {
+    // glTF's v runs down the image from its top-left corner (see read_gltf).
+    std::vector<glm::vec2> uvs(part.uvs.size());
+    std::transform(part.uvs.begin(), part.uvs.end(), uvs.begin(),
+                   [](const glm::vec2& uv) { return glm::vec2(uv.x, 1.0f - uv.y); });
+    primitive.attributes["TEXCOORD_0"] = add_float_attribute(model, uvs, TINYGLTF_TYPE_VEC2);
+    if (!part.tangents.empty()) {
+      // The bitangent sign carries over unchanged with the v flip (see read_gltf).
+      std::vector<glm::vec4> tangents(part.tangents.size());
+      std::transform(part.tangents.begin(), part.tangents.end(), tangents.begin(), [](const glm::vec4& t) {
+        return glm::vec4(blender_to_gltf(glm::vec3(t)), t.w < 0.0f ? -1.0f : 1.0f);
+      });
+      primitive.attributes["TANGENT"] = add_float_attribute(model, tangents, TINYGLTF_TYPE_VEC4);
+    }
+  }
+  std::vector<uint32_t> indices;
+  indices.reserve(3 * part.triangles.size());
+  for (const glm::uvec3& t : part.triangles) indices.insert(indices.end(), {t.x, t.y, t.z});
+  primitive.indices = add_accessor(model, add_buffer_view(model, indices, kElementArrayBuffer),
+                                   TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, indices.size());
+  return primitive;
+}
+
+// Textures are (image, wrap) pairs; each distinct pair is written once.
+class TextureTable {
+ public:
+  TextureTable(tinygltf::Model& model, const std::vector<ImagePixels>& images) : model_(model), images_(images) {}
+
+  int texture(int image, TextureWrap wrap, const std::string& what) {
+    if (image < 0) return -1;
+    if (static_cast<size_t>(image) >= images_.size())
+      throw std::invalid_argument("write_gltf: " + what + " refers to image " + std::to_string(image) +
+                                  " but the asset has " + std::to_string(images_.size()));
+    const auto key = std::make_pair(image, wrap);
+    const auto found = textures_.find(key);
+    if (found != textures_.end()) return found->second;
+    tinygltf::Texture texture;
+    texture.source = gltf_image(image);
+    texture.sampler = sampler(wrap);
+    model_.textures.push_back(texture);
+    const int index = static_cast<int>(model_.textures.size()) - 1;
+    textures_.emplace(key, index);
+    return index;
+  }
+
+ private:
+  int gltf_image(int image) {
+    const auto found = gltf_images_.find(image);
+    if (found != gltf_images_.end()) return found->second;
+    const ImagePixels& pixels = images_[static_cast<size_t>(image)];
+    const size_t expected = static_cast<size_t>(pixels.width) * static_cast<size_t>(pixels.height) *
+                            static_cast<size_t>(pixels.channels);
+    if (pixels.width <= 0 || pixels.height <= 0 || pixels.channels < 1 || pixels.channels > 4 ||
+        pixels.data.size() != expected)
+      throw std::invalid_argument("write_gltf: image " + std::to_string(image) + " (" + pixels.name +
+                                  ") has inconsistent size or channels");
+    tinygltf::Image out;
+    out.name = pixels.name;
+    out.width = pixels.width;
+    out.height = pixels.height;
+    out.component = pixels.channels;
+    out.bits = 8;
+    out.pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+    out.mimeType = "image/png";
+    out.image = pixels.data;
+    model_.images.push_back(std::move(out));
+    const int index = static_cast<int>(model_.images.size()) - 1;
+    gltf_images_.emplace(image, index);
+    return index;
+  }
+
+  int sampler(TextureWrap wrap) {
+    const auto found = samplers_.find(wrap);
+    if (found != samplers_.end()) return found->second;
+    tinygltf::Sampler sampler;
+    const int mode = wrap == TextureWrap::Clamp ? TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE : TINYGLTF_TEXTURE_WRAP_REPEAT;
+    sampler.wrapS = mode;
+    sampler.wrapT = mode;
+    sampler.magFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
+    sampler.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
+    model_.samplers.push_back(sampler);
+    const int index = static_cast<int>(model_.samplers.size()) - 1;
+    samplers_.emplace(wrap, index);
+    return index;
+  }
+
+  tinygltf::Model& model_;
+  const std::vector<ImagePixels>& images_;
+  std::map<std::pair<int, TextureWrap>, int> textures_;
+  std::map<int, int> gltf_images_;
+  std::map<TextureWrap, int> samplers_;
+};
+
+// The inverse of read_gltf's mapping (reference/cycles.md: Blender's importer).
+tinygltf::Material make_material(const MaterialDesc& desc, TextureTable& textures) {
+  tinygltf::Material material;
+  material.name = desc.name;
+  tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
+  pbr.baseColorFactor = {desc.base_color.r, desc.base_color.g, desc.base_color.b, 1.0};
+  pbr.metallicFactor = desc.metallic;
+  pbr.roughnessFactor = desc.roughness;
+  const std::string what = "material " + desc.name;
+  pbr.baseColorTexture.index = textures.texture(desc.base_color_image, desc.wrap, what);
+  pbr.metallicRoughnessTexture.index = textures.texture(desc.metallic_roughness_image, desc.wrap, what);
+  material.normalTexture.index = textures.texture(desc.normal_image, desc.wrap, what);
+  material.normalTexture.scale = desc.normal_strength;
+  return material;
+}
+
+tinygltf::Model make_model(const ObjectAsset& asset) {
+  validate_mesh(asset.mesh, "write_gltf");
+  if (asset.mesh.triangles.empty()) throw std::invalid_argument("write_gltf: the mesh has no triangles");
+  if (asset.materials.size() < asset.mesh.part_count())
+    throw std::invalid_argument("write_gltf: " + std::to_string(asset.mesh.part_count()) + " parts but " +
+                                std::to_string(asset.materials.size()) + " materials");
+  tinygltf::Model model;
+  model.asset.version = "2.0";
+  model.asset.generator = "matpredict";
+  model.buffers.resize(1);
+  TextureTable textures(model, asset.images);
+  for (const MaterialDesc& desc : asset.materials) model.materials.push_back(make_material(desc, textures));
+
+  tinygltf::Mesh mesh;
+  for (const MeshPart& part : split_parts(asset.mesh))
+    mesh.primitives.push_back(make_primitive(model, part.mesh, static_cast<int>(part.id)));
+  model.meshes.push_back(mesh);
+  tinygltf::Node node;
+  node.mesh = 0;
+  model.nodes.push_back(node);
+  tinygltf::Scene scene;
+  scene.nodes = {0};
+  model.scenes.push_back(scene);
+  model.defaultScene = 0;
+  return model;
+}
+
+}  // namespace
+
+void write_gltf(const ObjectAsset& asset, const std::string& path) {
+  const tinygltf::Model model = make_model(asset);
+  const std::string extension = std::filesystem::path(path).extension().string();
+  const bool binary = extension == ".glb" || extension == ".GLB";
+  if (!binary && extension != ".gltf" && extension != ".GLTF")
+    throw std::invalid_argument("write_gltf: " + path + ": the extension must be .glb or .gltf");
+  const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
+  tinygltf::TinyGLTF writer;
+  const bool written = writer.WriteGltfSceneToFile(&model, temporary, /*embedImages=*/true,
+                                                   /*embedBuffers=*/true, /*prettyPrint=*/!binary, binary);
+  std::error_code error;
+  if (written) std::filesystem::rename(temporary, path, error);
+  if (!written || error) {
+    std::filesystem::remove(temporary, error);
+    throw std::runtime_error(path + ": cannot write the glTF file");
+  }
+}
+
+}  // namespace matgeom

@@ -1,0 +1,142 @@
+#include "matgeom/gltf_writer.h"
+
+#include <filesystem>
+#include <stdexcept>
+
+#include <catch2/catch.hpp>
+
+#include "matgeom/gltf_reader.h"
+#include "matgeom/mesh_parts.h"
+#include "matgeom/tangents.h"
+#include "temp_dir.h"
+
+// write_gltf against read_gltf (itself tested against hand-assembled files): what is written
+// reads back as the same asset, in both containers.
+
+using namespace matgeom;
+
+namespace {
+
+// Two parts that interleave in triangle order, with every attribute, two textured materials.
+ObjectAsset two_part_asset() {
+  ObjectAsset asset;
+  TriangleMesh& mesh = asset.mesh;
+  for (int j = 0; j <= 2; ++j)
+    for (int i = 0; i <= 3; ++i) {
+      const float x = 0.1f * static_cast<float>(i), y = 0.07f * static_cast<float>(j);
+      mesh.positions.emplace_back(x, y, 0.3f * x * y + 0.01f * static_cast<float>(i * j));
+      mesh.uvs.emplace_back(0.25f * static_cast<float>(i), 0.5f * static_cast<float>(j));
+    }
+  const auto index = [](int i, int j) { return static_cast<uint32_t>(j * 4 + i); };
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 3; ++i) {
+      mesh.triangles.emplace_back(index(i, j), index(i + 1, j), index(i + 1, j + 1));
+      mesh.triangles.emplace_back(index(i, j), index(i + 1, j + 1), index(i, j + 1));
+      mesh.triangle_parts.insert(mesh.triangle_parts.end(), 2, static_cast<uint32_t>((i + j) % 2));
+    }
+  compute_vertex_normals(mesh);
+  compute_tangents(mesh);
+  mesh.part_names = {"wood", "brass handle"};
+
+  ImagePixels rgb{"rgb.png", 3, 2, 3, {}}, rgba{"rgba.png", 2, 2, 4, {}};
+  for (int k = 0; k < 18; ++k) rgb.data.push_back(static_cast<uint8_t>(k * 14));
+  for (int k = 0; k < 16; ++k) rgba.data.push_back(static_cast<uint8_t>(255 - k * 13));
+  asset.images = {rgb, rgba};
+
+  MaterialDesc wood;
+  wood.name = "wood";
+  wood.base_color = glm::dvec3(0.5, 0.25, 0.125);
+  wood.base_color_image = 0;
+  wood.metallic = 0.0;
+  wood.roughness = 0.75;
+  wood.normal_image = 1;
+  wood.normal_strength = 0.5;
+  MaterialDesc brass;
+  brass.name = "brass handle";
+  brass.base_color = glm::dvec3(1.0, 0.75, 0.25);
+  brass.metallic = 1.0;
+  brass.roughness = 0.25;
+  brass.metallic_roughness_image = 1;
+  brass.wrap = TextureWrap::Clamp;
+  asset.materials = {wood, brass};
+  return asset;
+}
+
+void check_same_asset(const ObjectAsset& written, const ObjectAsset& read) {
+  // The reader concatenates primitives, one per part, in part order: the merged split.
+  const TriangleMesh expected = merge_parts(split_parts(written.mesh));
+  const TriangleMesh& mesh = read.mesh;
+  REQUIRE(mesh.vertex_count() == expected.vertex_count());
+  CHECK(mesh.triangles == expected.triangles);
+  CHECK(mesh.triangle_parts == expected.triangle_parts);
+  CHECK(mesh.part_names == expected.part_names);
+  CHECK(mesh.positions == expected.positions);  // axis swaps and negations are exact
+  REQUIRE(mesh.normals.size() == expected.normals.size());
+  REQUIRE(mesh.uvs.size() == expected.uvs.size());
+  REQUIRE(mesh.tangents.size() == expected.tangents.size());
+  for (size_t v = 0; v < mesh.vertex_count(); ++v) {
+    for (int c = 0; c < 3; ++c) {
+      CHECK(mesh.normals[v][c] == Approx(expected.normals[v][c]).margin(1e-6));
+      CHECK(mesh.tangents[v][c] == Approx(expected.tangents[v][c]).margin(1e-5));
+    }
+    CHECK(mesh.tangents[v].w == expected.tangents[v].w);
+    CHECK(mesh.uvs[v].x == expected.uvs[v].x);
+    CHECK(mesh.uvs[v].y == Approx(expected.uvs[v].y).margin(1e-7));  // 1 - (1 - v) rounds
+  }
+
+  REQUIRE(read.materials.size() == written.materials.size());
+  for (size_t k = 0; k < read.materials.size(); ++k) {
+    const MaterialDesc& a = written.materials[k];
+    const MaterialDesc& b = read.materials[k];
+    CHECK(b.name == a.name);
+    CHECK(b.base_color == a.base_color);
+    CHECK(b.metallic == a.metallic);
+    CHECK(b.roughness == a.roughness);
+    CHECK(b.normal_strength == a.normal_strength);
+    CHECK(b.wrap == a.wrap);
+    for (const auto& [image_a, image_b] : {std::pair{a.base_color_image, b.base_color_image},
+                                           std::pair{a.metallic_roughness_image, b.metallic_roughness_image},
+                                           std::pair{a.normal_image, b.normal_image}}) {
+      REQUIRE((image_a < 0) == (image_b < 0));
+      if (image_a < 0) continue;
+      const ImagePixels& pa = written.images[static_cast<size_t>(image_a)];
+      const ImagePixels& pb = read.images[static_cast<size_t>(image_b)];
+      CHECK(pb.width == pa.width);
+      CHECK(pb.height == pa.height);
+      CHECK(pb.channels == pa.channels);
+      CHECK(pb.data == pa.data);  // PNG is lossless
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("write_gltf round-trips through read_gltf as GLB and as glTF", "[geom]") {
+  const TempDir dir;
+  const ObjectAsset asset = two_part_asset();
+  for (const char* name : {"object.glb", "object.gltf"}) {
+    INFO(name);
+    write_gltf(asset, dir.file(name));
+    check_same_asset(asset, read_gltf(dir.file(name)));
+  }
+  // Nothing but the two files is left behind.
+  size_t files = 0;
+  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir.path())) ++files;
+  CHECK(files == 2);
+}
+
+TEST_CASE("write_gltf rejects what glTF cannot hold and leaves nothing behind", "[geom]") {
+  const TempDir dir;
+  ObjectAsset asset = two_part_asset();
+  CHECK_THROWS_AS(write_gltf(asset, dir.file("object.obj")), std::invalid_argument);
+  ObjectAsset too_few = asset;
+  too_few.materials.pop_back();
+  CHECK_THROWS_AS(write_gltf(too_few, dir.file("a.glb")), std::invalid_argument);
+  ObjectAsset bad_image = asset;
+  bad_image.materials[0].base_color_image = 5;
+  CHECK_THROWS_AS(write_gltf(bad_image, dir.file("b.glb")), std::invalid_argument);
+  ObjectAsset empty;
+  CHECK_THROWS_AS(write_gltf(empty, dir.file("c.glb")), std::invalid_argument);
+  CHECK_THROWS_AS(write_gltf(asset, dir.file("missing_dir/d.glb")), std::runtime_error);
+  CHECK(std::filesystem::is_empty(dir.path()));
+}

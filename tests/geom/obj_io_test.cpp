@@ -1,0 +1,670 @@
+#include "matgeom/obj_io.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "temp_dir.h"
+
+// read_obj against OBJ, MTL and PNG files written here as text and bytes, with expected values
+// worked out by hand (OBJ (x, y, z) is Blender (x, -z, y)); write_obj against read_obj.
+
+using namespace matgeom;
+using Catch::Matchers::Contains;
+
+namespace {
+
+void write_bytes(const std::string& path, const std::vector<uint8_t>& bytes) {
+  std::ofstream out(path, std::ios::binary);
+  out.write(reinterpret_cast<const char*>(bytes.data()),
+            static_cast<std::streamsize>(bytes.size()));
+  REQUIRE(out.good());
+}
+
+void write_text(const std::string& path, const std::string& text) {
+  write_bytes(path, std::vector<uint8_t>(text.begin(), text.end()));
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// The message of the runtime_error read_obj throws, or "" if it throws none.
+std::string read_error(const std::string& path) {
+  try {
+    read_obj(path);
+  } catch (const std::runtime_error& error) {
+    return error.what();
+  }
+  return "";
+}
+
+// ---- PNG files without a compressor: one zlib "stored" block.
+
+uint32_t crc32(const std::vector<uint8_t>& bytes) {
+  uint32_t crc = 0xFFFFFFFFu;
+  for (const uint8_t byte : bytes) {
+    crc ^= byte;
+    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+  }
+  return ~crc;
+}
+
+void append_be32(std::vector<uint8_t>& out, uint32_t value) {
+  for (int shift = 24; shift >= 0; shift -= 8) out.push_back(static_cast<uint8_t>(value >> shift));
+}
+
+void append_chunk(std::vector<uint8_t>& png, const char* type, const std::vector<uint8_t>& data) {
+  append_be32(png, static_cast<uint32_t>(data.size()));
+  std::vector<uint8_t> typed(type, type + 4);
+  typed.insert(typed.end(), data.begin(), data.end());
+  png.insert(png.end(), typed.begin(), typed.end());
+  append_be32(png, crc32(typed));
+}
+
+// 8-bit grey (channels 1) or RGB (channels 3) image, rows from the top.
+std::vector<uint8_t> encode_png(int width, int height, int channels,
+                                const std::vector<uint8_t>& pixels) {
+  const size_t row = static_cast<size_t>(width) * static_cast<size_t>(channels);
+  std::vector<uint8_t> raw;
+  for (size_t y = 0; y < static_cast<size_t>(height); ++y) {
+    raw.push_back(0);  // filter: none
+    raw.insert(raw.end(), pixels.begin() + static_cast<std::ptrdiff_t>(y * row),
+               pixels.begin() + static_cast<std::ptrdiff_t>((y + 1) * row));
+  }
+  REQUIRE(raw.size() < 65536);
+  const uint16_t length = static_cast<uint16_t>(raw.size());
+  std::vector<uint8_t> zlib = {0x78, 0x01, 0x01, static_cast<uint8_t>(length & 0xFF),
+                               static_cast<uint8_t>(length >> 8),
+                               static_cast<uint8_t>(~length & 0xFF),
+                               static_cast<uint8_t>((~length >> 8) & 0xFF)};
+  zlib.insert(zlib.end(), raw.begin(), raw.end());
+  uint32_t a = 1, b = 0;
+  for (const uint8_t byte : raw) {
+    a = (a + byte) % 65521;
+    b = (b + a) % 65521;
+  }
+  append_be32(zlib, (b << 16) | a);
+
+  std::vector<uint8_t> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  std::vector<uint8_t> header;
+  append_be32(header, static_cast<uint32_t>(width));
+  append_be32(header, static_cast<uint32_t>(height));
+  const uint8_t colour_type = channels == 1 ? 0 : 2;
+  header.insert(header.end(), {8, colour_type, 0, 0, 0});
+  append_chunk(png, "IHDR", header);
+  append_chunk(png, "IDAT", zlib);
+  append_chunk(png, "IEND", {});
+  return png;
+}
+
+// read_obj decodes every texture to RGBA.
+std::vector<uint8_t> as_rgba(int channels, const std::vector<uint8_t>& pixels) {
+  std::vector<uint8_t> rgba;
+  for (size_t i = 0; i < pixels.size(); i += static_cast<size_t>(channels)) {
+    for (int c = 0; c < 3; ++c) rgba.push_back(pixels[i + static_cast<size_t>(channels > 1 ? c : 0)]);
+    rgba.push_back(channels == 4 ? pixels[i + 3] : 255);
+  }
+  return rgba;
+}
+
+void check_vec3(const glm::vec3& actual, const glm::vec3& expected) {
+  INFO("actual (" << actual.x << ", " << actual.y << ", " << actual.z << "), expected ("
+                  << expected.x << ", " << expected.y << ", " << expected.z << ")");
+  CHECK(glm::length(actual - expected) < 1e-6f);
+}
+
+void check_color(const glm::dvec3& actual, const glm::dvec3& expected) {
+  for (int c = 0; c < 3; ++c) CHECK(actual[c] == Approx(expected[c]).margin(1e-6));
+}
+
+// ---- The two-material scene
+
+// Four corners of a quad and a triangle with relative indices that reuses one quad corner with
+// a different texture coordinate; a group before any "usemtl" has no material.
+const char* kTwoMaterialObj = R"(# two materials
+mtllib two.mtl
+v 0 0 0
+v 1 0 0
+v 1 2 0
+v 0 1 0
+vt 0 0
+vt 1 0
+vt 1 1
+vt 0 1
+vt 0.5 0.5
+vn 0 0 1
+g loose
+v 0 0 5
+v 1 0 5
+v 0 0 4
+f 5 6 7
+g tiles
+usemtl red
+f 1/1/1 2/2/1 3/3/1 4/4/1
+usemtl blue
+v 1 -1 0
+f -8/-1/-1 -1/-2/1 2/2/1
+)";
+
+const char* kTwoMaterialMtl = R"(newmtl red
+Kd 0.8 0.1 0.1
+Pr 0.25
+Pm 0.75
+
+newmtl unused
+Kd 0 1 0
+
+newmtl blue
+Kd 0.1 0.2 0.9
+Ks 0.4 0.5 0.6
+Ns 250
+illum 2
+)";
+
+}  // namespace
+
+TEST_CASE("OBJ reader: quad, triangle, two materials, a group without one, split vertices",
+          "[geom]") {
+  TempDir dir;
+  write_text(dir.file("two.obj"), kTwoMaterialObj);
+  write_text(dir.file("two.mtl"), kTwoMaterialMtl);
+  const ObjectAsset asset = read_obj(dir.file("two.obj"));
+  const TriangleMesh& mesh = asset.mesh;
+
+  // One vertex per distinct v/vt/vn triple in order of first use: the loose triangle (v5-v7),
+  // the quad split by tinyobjloader along its shorter diagonal v2-v4 into (v1 v2 v4) and
+  // (v2 v3 v4), then v1 again with vt5 (a new vertex), v8, and v2/vt2/vn1 (reused).
+  const std::vector<glm::vec3> positions = {{0, -5, 0}, {1, -5, 0}, {0, -4, 0},
+                                            {0, 0, 0},  {1, 0, 0},  {0, 0, 1},
+                                            {1, 0, 2},  {0, 0, 0},  {1, 0, -1}};
+  const std::vector<glm::vec2> uvs = {{0, 0}, {0, 0}, {0, 0},     {0, 0},     {1, 0},
+                                      {0, 1}, {1, 1}, {0.5, 0.5}, {0, 1}};
+  REQUIRE(mesh.vertex_count() == positions.size());
+  REQUIRE(mesh.uvs.size() == uvs.size());
+  for (size_t v = 0; v < positions.size(); ++v) {
+    check_vec3(mesh.positions[v], positions[v]);
+    CHECK(mesh.uvs[v] == uvs[v]);
+    // vn 0 0 1 is Blender's -y; the loose triangle has no normals and gets its face normal.
+    check_vec3(mesh.normals[v], v < 3 ? glm::vec3(0, 0, 1) : glm::vec3(0, -1, 0));
+  }
+  CHECK(mesh.triangles ==
+        std::vector<glm::uvec3>{{0, 1, 2}, {3, 4, 5}, {4, 6, 5}, {7, 8, 4}});
+
+  // Parts in MTL order of the used materials, then the faces without one.
+  CHECK(mesh.part_names == std::vector<std::string>{"red", "blue", "default"});
+  CHECK(mesh.triangle_parts == std::vector<uint32_t>{2, 0, 0, 1});
+  REQUIRE(asset.materials.size() == 3);
+  const MaterialDesc& red = asset.materials[0];
+  CHECK(red.name == "red");
+  check_color(red.base_color, {0.8, 0.1, 0.1});
+  CHECK(red.roughness == Approx(0.25));
+  CHECK(red.metallic == Approx(0.75));
+  CHECK(red.specular == 0.0);  // no Ks and no highlights (illum 2): Blender's Specular 0
+  const MaterialDesc& blue = asset.materials[1];
+  check_color(blue.base_color, {0.1, 0.2, 0.9});
+  CHECK(blue.roughness == Approx(0.5));  // 1 - sqrt(250 / 1000)
+  CHECK(blue.metallic == 0.0);
+  CHECK(blue.specular == Approx(0.5));  // mean of Ks
+  const MaterialDesc& none = asset.materials[2];
+  CHECK(none.name == "default");
+  check_color(none.base_color, glm::dvec3(0.8));
+  CHECK(none.roughness == 0.5);
+  CHECK(none.metallic == 0.0);
+  for (const MaterialDesc& material : asset.materials) {
+    CHECK(material.base_color_image == -1);
+    CHECK(material.metallic_roughness_image == -1);
+    CHECK(material.normal_image == -1);
+  }
+  CHECK(asset.images.empty());
+
+  // Tangents for the UVs: unit, perpendicular to the normal. The quad's u runs along +x.
+  REQUIRE(mesh.tangents.size() == positions.size());
+  for (size_t v = 0; v < positions.size(); ++v) {
+    const glm::vec3 t(mesh.tangents[v]);
+    CHECK(glm::length(t) == Approx(1.0f).margin(1e-5));
+    CHECK(std::abs(glm::dot(t, mesh.normals[v])) < 1e-5f);
+  }
+  check_vec3(glm::vec3(mesh.tangents[3]), glm::vec3(1, 0, 0));
+}
+
+TEST_CASE("OBJ reader maps MTL statements as Blender's importer does", "[geom]") {
+  struct Expected {
+    const char* name;
+    const char* statements;
+    glm::dvec3 base_color;
+    double roughness, metallic, specular;
+  };
+  const std::vector<Expected> cases = {
+      // Nothing given: Principled's grey, no Ns and no highlights: roughness 1, specular 0.
+      {"plain", "", glm::dvec3(0.8), 1.0, 0.0, 0.0},
+      // Highlights (illum 2) without Ns or Ks: roughness 0, specular 1.
+      {"highlight", "illum 2", glm::dvec3(0.8), 0.0, 0.0, 1.0},
+      // Reflection (illum 3..8): metallic is the mean of Ka, 1 without Ka; Ns 1000 is a mirror.
+      {"mirror", "illum 3\nKa 0.6 0.3 0.9\nNs 1000", glm::dvec3(0.8), 0.0, 0.6, 0.0},
+      {"reflect", "illum 5", glm::dvec3(0.8), 1.0, 1.0, 0.0},
+      // illum 9 is glass without reflection: Ka does not make it metallic.
+      {"glass", "illum 9\nKa 1 1 1", glm::dvec3(0.8), 1.0, 0.0, 0.0},
+      // Pr and Pm replace what Ns and Ka give.
+      {"pbr", "illum 3\nKa 0.9 0.9 0.9\nNs 0\nPr 0.3\nPm 0.2", glm::dvec3(0.8), 0.3, 0.2, 0.0},
+      // Out of [0, 1]: clamped; Ns beyond 1000 counts as 1000.
+      {"clamped", "Kd 2 0.5 0\nKs 3 3 3\nPr 1.5\nPm -0.5\nillum 4", {1.0, 0.5, 0.0}, 1.0, 1.0, 1.0},
+      {"shiny", "Ns 4000", glm::dvec3(0.8), 0.0, 0.0, 0.0},
+      // A negative Kd component: Blender keeps its default base colour.
+      {"negative", "Kd -0.5 0.2 0.2", glm::dvec3(0.8), 1.0, 0.0, 0.0},
+  };
+  std::string obj = "mtllib cases.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  std::string mtl;
+  for (const Expected& expected : cases) {
+    obj += std::string("usemtl ") + expected.name + "\nf 1 2 3\n";
+    mtl += std::string("newmtl ") + expected.name + "\n" + expected.statements + "\n";
+  }
+  TempDir dir;
+  write_text(dir.file("cases.obj"), obj);
+  write_text(dir.file("cases.mtl"), mtl);
+  const ObjectAsset asset = read_obj(dir.file("cases.obj"));
+  REQUIRE(asset.materials.size() == cases.size());
+  for (size_t k = 0; k < cases.size(); ++k) {
+    const MaterialDesc& material = asset.materials[k];
+    INFO("material " << cases[k].name);
+    CHECK(material.name == cases[k].name);
+    check_color(material.base_color, cases[k].base_color);
+    CHECK(material.roughness == Approx(cases[k].roughness).margin(1e-6));
+    CHECK(material.metallic == Approx(cases[k].metallic).margin(1e-6));
+    CHECK(material.specular == Approx(cases[k].specular).margin(1e-6));
+  }
+}
+
+TEST_CASE("OBJ reader decodes map_Kd, packs map_Pr into G and reads map_Bump and norm",
+          "[geom]") {
+  TempDir dir;
+  const std::vector<uint8_t> colors = {255, 0, 0, 0, 255, 0, 0, 0, 255, 10, 20, 30};
+  const std::vector<uint8_t> rough = {0, 64, 128, 255};
+  const std::vector<uint8_t> normal = {128, 128, 255};
+  write_bytes(dir.file("colors.png"), encode_png(2, 2, 3, colors));
+  write_bytes(dir.file("rough.png"), encode_png(2, 2, 1, rough));
+  write_bytes(dir.file("normal map.png"), encode_png(1, 1, 3, normal));
+  write_text(dir.file("textured.obj"),
+             "mtllib textured.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n"
+             "usemtl textured\nf 1/1 2/2 3/3\nusemtl shares\nf 3/3 2/2 1/1\n");
+  write_text(dir.file("textured.mtl"),
+             "newmtl textured\nKd 0.2 0.3 0.4\nmap_Kd colors.png\nmap_Pr rough.png\nPm 0.4\n"
+             "map_Bump -bm 0.7 normal map.png\n"
+             "newmtl shares\nmap_Kd \"colors.png\"\nnorm -bm 0.5 normal map.png\n");
+  const ObjectAsset asset = read_obj(dir.file("textured.obj"));
+
+  REQUIRE(asset.images.size() == 3);  // colors.png and the normal map are decoded once
+  const ImagePixels& base = asset.images[0];
+  CHECK(base.name == "colors.png");
+  CHECK(base.width == 2);
+  CHECK(base.height == 2);
+  CHECK(base.channels == 4);
+  CHECK(base.data == as_rgba(3, colors));
+  // Roughness in G, metallic B = 255 so that the factor Pm stands; R unused.
+  const ImagePixels& packed = asset.images[1];
+  CHECK(packed.channels == 3);
+  CHECK(packed.data == std::vector<uint8_t>{0, 0, 255, 0, 64, 255, 0, 128, 255, 0, 255, 255});
+  CHECK(asset.images[2].data == as_rgba(3, normal));
+
+  const MaterialDesc& textured = asset.materials[0];
+  // A map replaces its value in Blender: the base colour and roughness factors are 1.
+  CHECK(textured.base_color_image == 0);
+  check_color(textured.base_color, glm::dvec3(1.0));
+  CHECK(textured.metallic_roughness_image == 1);
+  CHECK(textured.roughness == 1.0);
+  CHECK(textured.metallic == Approx(0.4));
+  CHECK(textured.normal_image == 2);
+  CHECK(textured.normal_strength == Approx(0.7));
+  CHECK(textured.wrap == TextureWrap::Repeat);
+  const MaterialDesc& shares = asset.materials[1];
+  CHECK(shares.base_color_image == 0);  // the quotes are dropped, as Blender drops them
+  CHECK(shares.metallic_roughness_image == -1);
+  CHECK(shares.normal_image == 2);
+  CHECK(shares.normal_strength == Approx(0.5));
+}
+
+TEST_CASE("OBJ reader makes parts from material slots or from groups", "[geom]") {
+  TempDir dir;
+  write_text(dir.file("groups.obj"),
+             "mtllib groups.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+             "f 1 2 3\n"
+             "g first\nusemtl a\nf 1 2 3\nusemtl b\nf 1 3 4\n"
+             "g second\nf 2 3 4\n"
+             "g first\nusemtl a\nf 1 2 4\n");
+  write_text(dir.file("groups.mtl"), "newmtl a\nKd 1 0 0\nnewmtl b\nKd 0 0 1\n");
+
+  const ObjectAsset by_material = read_obj(dir.file("groups.obj"));
+  CHECK(by_material.mesh.part_names == std::vector<std::string>{"a", "b", "default"});
+  CHECK(by_material.mesh.triangle_parts == std::vector<uint32_t>{2, 0, 1, 1, 0});
+
+  ObjReadOptions options;
+  options.parts_from = ObjReadOptions::PartsFrom::Group;
+  const ObjectAsset by_group = read_obj(dir.file("groups.obj"), options);
+  // Groups in file order; faces before any "g" are unnamed; a repeated name is the same part.
+  CHECK(by_group.mesh.part_names == std::vector<std::string>{"default", "first", "second"});
+  CHECK(by_group.mesh.triangle_parts == std::vector<uint32_t>{0, 1, 1, 2, 1});
+  // A group's material is that of its first face; "second" continues with b.
+  REQUIRE(by_group.materials.size() == 3);
+  CHECK(by_group.materials[0].name == "default");
+  CHECK(by_group.materials[1].name == "a");
+  check_color(by_group.materials[1].base_color, {1, 0, 0});
+  CHECK(by_group.materials[2].name == "b");
+  check_color(by_group.materials[2].base_color, {0, 0, 1});
+  CHECK(by_group.mesh.positions == by_material.mesh.positions);
+  CHECK(by_group.mesh.triangles == by_material.mesh.triangles);
+}
+
+namespace {
+
+// Two parts whose triangles come part after part and whose vertices are numbered in order of
+// first use, which is the order read_obj numbers them in; values that need all nine digits.
+ObjectAsset round_trip_asset() {
+  ObjectAsset asset;
+  TriangleMesh& mesh = asset.mesh;
+  mesh.positions = {{0.1f, -2.5e-3f, 12345.678f}, {1.0f / 3.0f, 7e-8f, -1.0f},
+                    {-0.0f, 1e30f, 2.0f / 7.0f},  {3.14159274f, -1e-20f, 0.5f},
+                    {-123.456f, 0.7f, 0.3f},       {9.99999975e-6f, 6.0f, -7.25f}};
+  mesh.uvs = {{0.3f, 0.7f}, {2.5f, -0.25f}, {1.0f / 3.0f, 0.1f},
+              {0.0f, 1.0f}, {0.99999994f, 1e-7f}, {-3.0f, 4.5f}};
+  for (const glm::vec3& direction : {glm::vec3(1, 2, 3), glm::vec3(0, 0, 1), glm::vec3(-1, 0.5f, 0),
+                                     glm::vec3(0.3f, -0.4f, 0.5f), glm::vec3(0, -1, 0),
+                                     glm::vec3(2, 2, -1)}) {
+    mesh.normals.push_back(glm::normalize(direction));
+  }
+  mesh.triangles = {{0, 1, 2}, {0, 2, 3}, {4, 5, 1}};
+  mesh.triangle_parts = {0, 0, 1};
+  mesh.part_names = {"red_paint", "blue"};
+
+  ImagePixels base{"base.png", 2, 1, 4, {1, 2, 3, 4, 250, 251, 252, 253}};
+  ImagePixels metallic_roughness{"mr.png", 2, 1, 3, {0, 100, 200, 0, 50, 25}};
+  ImagePixels normal{"normal.png", 1, 1, 4, {128, 128, 255, 255}};
+  asset.images = {base, metallic_roughness, normal};
+
+  MaterialDesc red = default_material("red_paint");
+  red.base_color_image = 0;
+  red.base_color = glm::dvec3(1.0);
+  red.metallic_roughness_image = 1;
+  red.roughness = 1.0;
+  red.metallic = 1.0;
+  red.specular = 0.25;
+  MaterialDesc blue = default_material("blue");
+  blue.base_color = glm::dvec3(0.1, 0.2, 0.9);
+  blue.roughness = 0.8;
+  blue.metallic = 0.2;
+  blue.specular = 0.5;
+  blue.normal_image = 2;
+  blue.normal_strength = 0.75;
+  asset.materials = {red, blue};
+  return asset;
+}
+
+}  // namespace
+
+TEST_CASE("OBJ written by write_obj reads back as the same asset", "[geom]") {
+  TempDir dir;
+  const ObjectAsset original = round_trip_asset();
+  const std::string path = dir.file("round trip.obj");
+  write_obj(original, path);
+
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(dir.path())) {
+    files.push_back(entry.path().filename().string());
+  }
+  std::sort(files.begin(), files.end());
+  CHECK(files == std::vector<std::string>{"round trip.mtl", "round trip.obj",
+                                          "round trip_image0.png", "round trip_image1_metallic.png",
+                                          "round trip_image1_roughness.png",
+                                          "round trip_image2.png"});
+
+  const ObjectAsset read = read_obj(path);
+  const TriangleMesh& mesh = read.mesh;
+  CHECK(mesh.positions == original.mesh.positions);
+  CHECK(mesh.uvs == original.mesh.uvs);
+  CHECK(mesh.normals == original.mesh.normals);
+  CHECK(mesh.triangles == original.mesh.triangles);
+  CHECK(mesh.triangle_parts == original.mesh.triangle_parts);
+  CHECK(mesh.part_names == original.mesh.part_names);
+  CHECK(mesh.tangents.size() == mesh.vertex_count());
+
+  REQUIRE(read.materials.size() == 2);
+  for (size_t k = 0; k < 2; ++k) {
+    const MaterialDesc& expected = original.materials[k];
+    const MaterialDesc& actual = read.materials[k];
+    INFO("material " << expected.name);
+    CHECK(actual.name == expected.name);
+    check_color(actual.base_color, expected.base_color);
+    CHECK(actual.roughness == Approx(expected.roughness));
+    CHECK(actual.metallic == Approx(expected.metallic));
+    CHECK(actual.specular == Approx(expected.specular));
+    CHECK(actual.normal_strength == Approx(expected.normal_strength));
+    CHECK(actual.base_color_image == expected.base_color_image);
+    CHECK(actual.metallic_roughness_image == expected.metallic_roughness_image);
+    CHECK(actual.normal_image == expected.normal_image);
+  }
+  REQUIRE(read.images.size() == 3);
+  CHECK(read.images[0].data == original.images[0].data);
+  // Written as a grey map_Pr (G) and map_Pm (B) and packed again; R is not kept.
+  CHECK(read.images[1].data == std::vector<uint8_t>{0, 100, 200, 0, 50, 25});
+  CHECK(read.images[2].data == original.images[2].data);
+}
+
+TEST_CASE("write_obj makes names OBJ-safe and unique and refuses what it cannot write",
+          "[geom]") {
+  TempDir dir;
+  ObjectAsset asset = round_trip_asset();
+  asset.images.clear();
+  asset.materials[0] = default_material("two words\nand a line");
+  asset.materials[1] = default_material("two_words_and_a_line");
+  asset.mesh.part_names = {"", "group one"};
+  write_obj(asset, dir.file("names.obj"));
+  const std::string obj = read_text(dir.file("names.obj"));
+  CHECK_THAT(obj, Contains("mtllib names.mtl\n"));
+  CHECK_THAT(obj, Contains("g two_words_and_a_line\nusemtl two_words_and_a_line\n"));
+  CHECK_THAT(obj, Contains("g group_one\nusemtl two_words_and_a_line_2\n"));
+  CHECK_THAT(obj, Contains("\nf 1/1/1 2/2/2 3/3/3\n"));
+  ObjReadOptions by_group;
+  by_group.parts_from = ObjReadOptions::PartsFrom::Group;
+  CHECK(read_obj(dir.file("names.obj"), by_group).mesh.part_names ==
+        std::vector<std::string>{"two_words_and_a_line", "group_one"});
+
+  SECTION("fewer materials than parts") {
+    asset.materials.pop_back();
+    CHECK_THROWS_AS(write_obj(asset, dir.file("short.obj")), std::invalid_argument);
+  }
+  SECTION("an image index out of range") {
+    asset.materials[1].normal_image = 3;
+    CHECK_THROWS_AS(write_obj(asset, dir.file("image.obj")), std::invalid_argument);
+  }
+  SECTION("a failed write throws naming the path and leaves no temporary files") {
+    // The .obj cannot be renamed over a directory, and nothing can be written into a missing
+    // one.
+    const std::string taken = dir.file("taken.obj");
+    std::filesystem::create_directories(taken + "/inside");
+    for (const std::string& path : {taken, dir.file("missing directory/object.obj")}) {
+      try {
+        write_obj(round_trip_asset(), path);
+        FAIL("write_obj did not throw");
+      } catch (const std::runtime_error& error) {
+        CHECK_THAT(error.what(), Contains(path));
+      }
+    }
+    for (const auto& entry : std::filesystem::directory_iterator(dir.path())) {
+      CHECK_THAT(entry.path().filename().string(), !Contains(".tmp-"));
+    }
+  }
+}
+
+TEST_CASE("OBJ reader errors name the file and the problem", "[geom]") {
+  TempDir dir;
+  const std::string path = dir.file("broken.obj");
+  const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+
+  SECTION("missing file") {
+    CHECK_THAT(read_error(path), Contains(path + ": ") && Contains("no such file"));
+  }
+  SECTION("index out of range") {
+    // Past the end in a triangle, before the start through a relative index, past the end in a
+    // quad (which tinyobjloader drops with a warning) and past the texture coordinates.
+    for (const char* face : {"f 1 2 7\n", "f -5 1 2\n", "f 1 2 3 9\n", "vt 0 0\nf 1/2 2/1 3/1\n"}) {
+      write_text(path, triangle + face);
+      INFO(face);
+      CHECK_THAT(read_error(path), Contains(path + ": ") && Contains("out of range"));
+    }
+  }
+  SECTION("NaN and infinite vertices") {
+    // tinyobjloader reads 0e999 as 0 x inf = NaN; 1e999 is infinite.
+    for (const char* vertex : {"v 0e999 0 0\n", "v 0 1e999 0\n", "vn 0 0 -1e999\n"}) {
+      write_text(path, triangle + vertex + "f 1 2 3\n");
+      INFO(vertex);
+      CHECK_THAT(read_error(path), Contains(path + ": ") && Contains("non-finite"));
+    }
+  }
+  SECTION("zero faces") {
+    for (const std::string& text : {triangle, triangle + "f 1 1 2\nl 1 2\n"}) {
+      write_text(path, text);
+      CHECK_THAT(read_error(path), Contains(path + ": ") && Contains("no faces"));
+    }
+  }
+  SECTION("a face tinyobjloader cannot parse") {
+    write_text(path, triangle + "f 0 1 2\n");
+    CHECK_THAT(read_error(path), Contains(path + ": ") && Contains("tinyobjloader"));
+  }
+  SECTION("missing .mtl") {
+    write_text(path, "mtllib nowhere.mtl\n" + triangle + "f 1 2 3\n");
+    CHECK_THAT(read_error(path), Contains(path + ": ") && Contains("material library") &&
+                                     Contains(dir.file("nowhere.mtl")));
+  }
+  SECTION("missing or broken texture") {
+    write_text(path, "mtllib broken.mtl\n" + triangle + "usemtl m\nf 1 2 3\n");
+    write_text(dir.file("broken.mtl"), "newmtl m\nmap_Kd lost.png\n");
+    CHECK_THAT(read_error(path), Contains(path + ": ") && Contains(dir.file("broken.mtl")) &&
+                                     Contains("cannot open texture") &&
+                                     Contains(dir.file("lost.png")));
+    write_text(dir.file("lost.png"), "not a PNG");
+    CHECK_THAT(read_error(path), Contains(path + ": ") && Contains("cannot decode texture"));
+  }
+  SECTION("map_Pr and map_Pm of different sizes") {
+    write_text(path, "mtllib sizes.mtl\n" + triangle + "usemtl m\nf 1 2 3\n");
+    write_text(dir.file("sizes.mtl"), "newmtl m\nmap_Pr a.png\nmap_Pm b.png\n");
+    write_bytes(dir.file("a.png"), encode_png(1, 1, 1, {7}));
+    write_bytes(dir.file("b.png"), encode_png(2, 1, 1, {7, 8}));
+    CHECK_THAT(read_error(path), Contains(path + ": ") && Contains("differ in size"));
+  }
+  SECTION("a polygon too large for tinyobjloader's triangulation") {
+    std::string text = triangle + "f";
+    for (int corner = 0; corner < 10001; ++corner) text += " " + std::to_string(corner % 3 + 1);
+    write_text(path, text + "\n");
+    CHECK_THAT(read_error(path), Contains(path + ": ") && Contains("corners"));
+  }
+}
+
+TEST_CASE("OBJ reader ignores subdivision tags, which tinyobjloader copies into every shape",
+          "[geom]") {
+  // Unscreened, these 2000 lines would make tinyobjloader allocate about 600 MB per shape.
+  TempDir dir;
+  std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  for (int line = 0; line < 2000; ++line) text += "t crease 8192/8192/8192\n";
+  for (int shape = 0; shape < 3; ++shape) text += "o shape" + std::to_string(shape) + "\nf 1 2 3\n";
+  write_text(dir.file("tags.obj"), text);
+  CHECK(read_obj(dir.file("tags.obj")).mesh.triangle_count() == 3);
+}
+
+namespace {
+
+const char* kFuzzObj = R"(mtllib fuzz.mtl
+v 0 0 0
+v 1 0 0
+v 1 1 0
+v 0 1 0
+v 0.5 0.5 1e-3
+vt 0 0
+vt 1 0
+vt 1 1
+vn 0 0 1
+g body
+usemtl shiny
+f 1/1/1 2/2/1 3/3/1 4/1/1
+s 1
+o lid
+usemtl matte
+f -1//-1 -2//1 -3//1
+f 1 2 5 3 4
+l 1 2
+)";
+
+const char* kFuzzMtl = R"(newmtl shiny
+Kd 0.5 0.25 0.125
+Ns 96
+Pr 0.4
+illum 2
+newmtl matte
+Ka 0.2 0.2 0.2
+Pm 0.1
+illum 3
+map_Kd -s 1 1 1 tex.png
+map_Bump -bm 2 tex.png
+)";
+
+// read_obj either gives a valid asset or a runtime_error naming the file; anything else (another
+// exception, a crash, a sanitizer report) fails the test.
+void check_reads_or_rejects(const std::string& path) {
+  try {
+    const ObjectAsset asset = read_obj(path);
+    validate_mesh(asset.mesh, path);
+    REQUIRE(asset.mesh.triangle_count() > 0);
+    REQUIRE(asset.materials.size() >= asset.mesh.part_count());
+  } catch (const std::runtime_error& error) {
+    REQUIRE(std::string(error.what()).rfind(path + ": ", 0) == 0);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("OBJ reader survives truncated and mutated files", "[geom]") {
+  TempDir dir;
+  const std::string obj_path = dir.file("fuzz.obj");
+  const std::string mtl_path = dir.file("fuzz.mtl");
+  write_bytes(dir.file("tex.png"), encode_png(1, 1, 3, {1, 2, 3}));
+  const std::string obj = kFuzzObj;
+  const std::string mtl = kFuzzMtl;
+  write_text(obj_path, obj);
+  write_text(mtl_path, mtl);
+  REQUIRE(read_obj(obj_path).mesh.triangle_count() == 6);
+
+  for (size_t length = 0; length < obj.size(); ++length) {
+    write_text(obj_path, obj.substr(0, length));
+    check_reads_or_rejects(obj_path);
+  }
+  write_text(obj_path, obj);
+  for (size_t length = 0; length < mtl.size(); ++length) {
+    write_text(mtl_path, mtl.substr(0, length));
+    check_reads_or_rejects(obj_path);
+  }
+
+  // Single-byte mutations: a flipped bit, or a byte the number and index parsers react to.
+  std::mt19937 generator(20240611u);
+  const std::string replacements = "0123456789-+/.eE \t\n";
+  for (int mutation = 0; mutation < 3000; ++mutation) {
+    const bool in_mtl = mutation % 4 == 3;
+    std::string text = in_mtl ? mtl : obj;
+    const size_t at = std::uniform_int_distribution<size_t>(0, text.size() - 1)(generator);
+    if (mutation % 2 == 0) {
+      text[at] = static_cast<char>(text[at] ^ (1 << (generator() % 8)));
+    } else {
+      text[at] = replacements[generator() % replacements.size()];
+    }
+    write_text(in_mtl ? mtl_path : obj_path, text);
+    write_text(in_mtl ? obj_path : mtl_path, in_mtl ? obj : mtl);
+    check_reads_or_rejects(obj_path);
+  }
+}
