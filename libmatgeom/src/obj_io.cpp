@@ -357,11 +357,13 @@ class MeshAssembler {
   // Triangles that repeat a position have no surface; they are dropped, as Blender's mesh
   // validation drops faces that repeat a vertex.
   void add_triangle(const tinyobj::index_t* corners, uint32_t part) {
-    const int a = corners[0].vertex_index, b = corners[1].vertex_index,
-              c = corners[2].vertex_index;
+    const int a = corners[0].vertex_index, b = corners[1].vertex_index, c = corners[2].vertex_index;
     if (a == b || b == c || c == a) return;
-    assembled_.mesh.triangles.emplace_back(vertex(corners[0]), vertex(corners[1]),
-                                           vertex(corners[2]));
+    // One statement each: vertices are numbered in corner order.
+    const uint32_t first = vertex(corners[0]);
+    const uint32_t second = vertex(corners[1]);
+    const uint32_t third = vertex(corners[2]);
+    assembled_.mesh.triangles.emplace_back(first, second, third);
     assembled_.mesh.triangle_parts.push_back(part);
   }
 
@@ -372,8 +374,8 @@ class MeshAssembler {
   uint32_t vertex(const tinyobj::index_t& corner) {
     const std::array<int, 3> key = {corner.vertex_index, corner.texcoord_index,
                                     corner.normal_index};
-    const auto [found, inserted] = vertex_of_corner_.emplace(
-        key, static_cast<uint32_t>(assembled_.mesh.positions.size()));
+    const auto [found, inserted] =
+        vertex_of_corner_.emplace(key, static_cast<uint32_t>(assembled_.mesh.positions.size()));
     if (inserted) add_vertex(corner);
     return found->second;
   }
@@ -455,7 +457,8 @@ std::vector<uint8_t> to_8_bit(const tinygltf::Image& image) {
   if (image.bits == 8) return std::vector<uint8_t>(image.image.begin(), image.image.end());
   std::vector<uint8_t> bytes(image.image.size() / 2);
   for (size_t i = 0; i < bytes.size(); ++i) {
-    const uint32_t value = image.image[2 * i] | (static_cast<uint32_t>(image.image[2 * i + 1]) << 8);
+    const uint32_t value =
+        image.image[2 * i] | (static_cast<uint32_t>(image.image[2 * i + 1]) << 8);
     bytes[i] = static_cast<uint8_t>((value * 255u + 32767u) / 65535u);
   }
   return bytes;
@@ -476,9 +479,9 @@ ImagePixels decode_texture(const std::string& obj_path, const TextureSource& sou
   image.name = source.file.string();
   std::string errors;
   std::string warnings;
-  const bool decoded = tinygltf::LoadImageData(
-      &image, 0, &errors, &warnings, 0, 0, reinterpret_cast<const unsigned char*>(bytes.data()),
-      static_cast<int>(bytes.size()), nullptr);
+  const bool decoded = tinygltf::LoadImageData(&image, 0, &errors, &warnings, 0, 0,
+                                               reinterpret_cast<const unsigned char*>(bytes.data()),
+                                               static_cast<int>(bytes.size()), nullptr);
   const size_t expected = static_cast<size_t>(image.width) * static_cast<size_t>(image.height) *
                           static_cast<size_t>(image.component) *
                           static_cast<size_t>(image.bits / 8);
@@ -546,8 +549,8 @@ class TextureTable {
     }
     const ImagePixels& shape = roughness_source ? roughness : metallic;
     ImagePixels packed;
-    packed.name = (roughness_source ? roughness.name : "") + "+" +
-                  (metallic_source ? metallic.name : "");
+    packed.name =
+        (roughness_source ? roughness.name : "") + "+" + (metallic_source ? metallic.name : "");
     packed.width = shape.width;
     packed.height = shape.height;
     packed.channels = 3;
@@ -609,14 +612,15 @@ class MaterialConverter {
 
  private:
   void check_finite_values(const tinyobj::material_t& material, const std::string& what) const {
-    const std::vector<double> values = {
-        material.diffuse[0],  material.diffuse[1],  material.diffuse[2],  material.specular[0],
-        material.specular[1], material.specular[2], material.ambient[0],  material.ambient[1],
-        material.ambient[2],  material.shininess,   material.roughness,   material.metallic,
-        material.bump_texopt.bump_multiplier,       material.normal_texopt.bump_multiplier};
-    for (const double value : values) {
-      if (!std::isfinite(value)) fail(file_.path, what + ": non-finite value");
-    }
+    const auto finite3 = [](const tinyobj::real_t* v) {
+      return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
+    };
+    const bool finite = finite3(material.diffuse) && finite3(material.specular) &&
+                        finite3(material.ambient) && std::isfinite(material.shininess) &&
+                        std::isfinite(material.roughness) && std::isfinite(material.metallic) &&
+                        std::isfinite(material.bump_texopt.bump_multiplier) &&
+                        std::isfinite(material.normal_texopt.bump_multiplier);
+    if (!finite) fail(file_.path, what + ": non-finite value");
   }
 
   // The -1 "not given" markers come from kNotGivenMarkers.
@@ -636,7 +640,8 @@ class MaterialConverter {
     if (material.roughness >= 0.0f) {
       desc.roughness = unit_clamp(material.roughness);
     } else if (material.shininess >= 0.0f) {
-      desc.roughness = 1.0 - std::sqrt(std::clamp<double>(material.shininess, 0.0, 1000.0) / 1000.0);
+      desc.roughness =
+          1.0 - std::sqrt(std::clamp<double>(material.shininess, 0.0, 1000.0) / 1000.0);
     } else {
       desc.roughness = illum.highlight ? 0.0 : 1.0;
     }
@@ -655,8 +660,8 @@ class MaterialConverter {
   void set_textures(const tinyobj::material_t& material, size_t index, const std::string& what,
                     MaterialDesc& desc) const {
     if (!material.diffuse_texname.empty()) {
-      desc.base_color_image = textures_.color_texture(source(material.diffuse_texname, index,
-                                                             what + " map_Kd"));
+      desc.base_color_image =
+          textures_.color_texture(source(material.diffuse_texname, index, what + " map_Kd"));
       desc.base_color = glm::dvec3(1.0);
     }
     set_metallic_roughness_texture(material, index, what, desc);
@@ -685,12 +690,10 @@ class MaterialConverter {
                           const std::string& what, MaterialDesc& desc) const {
     const bool bump = !material.bump_texname.empty();
     if (!bump && material.normal_texname.empty()) return;
-    const TextureSource normal =
-        bump ? source(material.bump_texname, index, what + " map_Bump")
-             : source(material.normal_texname, index, what + " norm");
+    const TextureSource normal = bump ? source(material.bump_texname, index, what + " map_Bump")
+                                      : source(material.normal_texname, index, what + " norm");
     desc.normal_image = textures_.color_texture(normal);
-    const tinyobj::texture_option_t& options =
-        bump ? material.bump_texopt : material.normal_texopt;
+    const tinyobj::texture_option_t& options = bump ? material.bump_texopt : material.normal_texopt;
     desc.normal_strength = std::max(0.0, static_cast<double>(options.bump_multiplier));
   }
 
@@ -719,8 +722,8 @@ std::vector<MaterialDesc> part_materials(const ObjFile& file, const PartTable& p
   for (const int material : parts.materials) {
     auto found = converted.find(material);
     if (found == converted.end()) {
-      const MaterialDesc desc = material < 0 ? default_material()
-                                             : converter.convert(static_cast<size_t>(material));
+      const MaterialDesc desc =
+          material < 0 ? default_material() : converter.convert(static_cast<size_t>(material));
       found = converted.emplace(material, desc).first;
     }
     materials.push_back(found->second);
@@ -803,10 +806,9 @@ void check_writable(const ObjectAsset& asset) {
                                        asset.materials.size(), " materials"));
   }
   for (const MaterialDesc& material : asset.materials) {
-    const std::vector<double> values = {material.base_color.r, material.base_color.g,
-                                        material.base_color.b, material.specular,
-                                        material.roughness,    material.metallic,
-                                        material.normal_strength};
+    const std::vector<double> values = {
+        material.base_color.r, material.base_color.g, material.base_color.b,   material.specular,
+        material.roughness,    material.metallic,     material.normal_strength};
     if (!std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); })) {
       throw std::invalid_argument("write_obj: material '" + material.name +
                                   "' has a non-finite value");
@@ -827,7 +829,8 @@ ImagePixels channel_image(const ImagePixels& image, int channel) {
   grey.height = image.height;
   grey.channels = 1;
   grey.data.resize(image.data.size() / channels);
-  for (size_t i = 0; i < grey.data.size(); ++i) grey.data[i] = image.data[i * channels + source_channel];
+  for (size_t i = 0; i < grey.data.size(); ++i)
+    grey.data[i] = image.data[i * channels + source_channel];
   return grey;
 }
 
@@ -1069,7 +1072,8 @@ void write_obj(const ObjectAsset& asset, const std::string& path) {
   const fs::path obj_path(path);
   const std::string stem = obj_path.stem().string();
   if (std::any_of(stem.begin(), stem.end(), [](char c) { return c == '\n' || c == '\r'; })) {
-    throw std::invalid_argument("write_obj: " + path + ": an .obj cannot name a file with a line "
+    throw std::invalid_argument("write_obj: " + path +
+                                ": an .obj cannot name a file with a line "
                                 "break as its material library");
   }
 
@@ -1080,8 +1084,8 @@ void write_obj(const ObjectAsset& asset, const std::string& path) {
   std::vector<std::string> groups;
   for (uint32_t part = 0; part < mesh.part_count(); ++part) {
     const MaterialDesc& desc = asset.materials[part];
-    materials.push_back({material_names.claim(obj_safe_name(desc.name, "material")), &desc,
-                         images.maps_of(desc)});
+    materials.push_back(
+        {material_names.claim(obj_safe_name(desc.name, "material")), &desc, images.maps_of(desc)});
     const std::string part_name = part < mesh.part_names.size() ? mesh.part_names[part] : "";
     groups.push_back(group_names.claim(
         obj_safe_name(part_name.empty() ? desc.name : part_name, concat("part", part))));

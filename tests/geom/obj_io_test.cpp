@@ -84,10 +84,11 @@ std::vector<uint8_t> encode_png(int width, int height, int channels,
   }
   REQUIRE(raw.size() < 65536);
   const uint16_t length = static_cast<uint16_t>(raw.size());
-  std::vector<uint8_t> zlib = {0x78, 0x01, 0x01, static_cast<uint8_t>(length & 0xFF),
-                               static_cast<uint8_t>(length >> 8),
-                               static_cast<uint8_t>(~length & 0xFF),
-                               static_cast<uint8_t>((~length >> 8) & 0xFF)};
+  // zlib header, then a final stored block: length and its complement, little-endian.
+  std::vector<uint8_t> zlib = {0x78, 0x01, 0x01};
+  for (const uint16_t value : {length, static_cast<uint16_t>(~length)}) {
+    zlib.insert(zlib.end(), {static_cast<uint8_t>(value & 0xFF), static_cast<uint8_t>(value >> 8)});
+  }
   zlib.insert(zlib.end(), raw.begin(), raw.end());
   uint32_t a = 1, b = 0;
   for (const uint8_t byte : raw) {
@@ -112,7 +113,8 @@ std::vector<uint8_t> encode_png(int width, int height, int channels,
 std::vector<uint8_t> as_rgba(int channels, const std::vector<uint8_t>& pixels) {
   std::vector<uint8_t> rgba;
   for (size_t i = 0; i < pixels.size(); i += static_cast<size_t>(channels)) {
-    for (int c = 0; c < 3; ++c) rgba.push_back(pixels[i + static_cast<size_t>(channels > 1 ? c : 0)]);
+    for (int c = 0; c < 3; ++c)
+      rgba.push_back(pixels[i + static_cast<size_t>(channels > 1 ? c : 0)]);
     rgba.push_back(channels == 4 ? pixels[i + 3] : 255);
   }
   return rgba;
@@ -188,7 +190,7 @@ TEST_CASE("OBJ reader: quad, triangle, two materials, a group without one, split
   const std::vector<glm::vec3> positions = {{0, -5, 0}, {1, -5, 0}, {0, -4, 0},
                                             {0, 0, 0},  {1, 0, 0},  {0, 0, 1},
                                             {1, 0, 2},  {0, 0, 0},  {1, 0, -1}};
-  const std::vector<glm::vec2> uvs = {{0, 0}, {0, 0}, {0, 0},     {0, 0},     {1, 0},
+  const std::vector<glm::vec2> uvs = {{0, 0}, {0, 0}, {0, 0},     {0, 0}, {1, 0},
                                       {0, 1}, {1, 1}, {0.5, 0.5}, {0, 1}};
   REQUIRE(mesh.vertex_count() == positions.size());
   REQUIRE(mesh.uvs.size() == uvs.size());
@@ -198,8 +200,7 @@ TEST_CASE("OBJ reader: quad, triangle, two materials, a group without one, split
     // vn 0 0 1 is Blender's -y; the loose triangle has no normals and gets its face normal.
     check_vec3(mesh.normals[v], v < 3 ? glm::vec3(0, 0, 1) : glm::vec3(0, -1, 0));
   }
-  CHECK(mesh.triangles ==
-        std::vector<glm::uvec3>{{0, 1, 2}, {3, 4, 5}, {4, 6, 5}, {7, 8, 4}});
+  CHECK(mesh.triangles == std::vector<glm::uvec3>{{0, 1, 2}, {3, 4, 5}, {4, 6, 5}, {7, 8, 4}});
 
   // Parts in MTL order of the used materials, then the faces without one.
   CHECK(mesh.part_names == std::vector<std::string>{"red", "blue", "default"});
@@ -285,8 +286,7 @@ TEST_CASE("OBJ reader maps MTL statements as Blender's importer does", "[geom]")
   }
 }
 
-TEST_CASE("OBJ reader decodes map_Kd, packs map_Pr into G and reads map_Bump and norm",
-          "[geom]") {
+TEST_CASE("OBJ reader decodes map_Kd, packs map_Pr into G and reads map_Bump and norm", "[geom]") {
   TempDir dir;
   const std::vector<uint8_t> colors = {255, 0, 0, 0, 255, 0, 0, 0, 255, 10, 20, 30};
   const std::vector<uint8_t> rough = {0, 64, 128, 255};
@@ -373,12 +373,12 @@ ObjectAsset round_trip_asset() {
   TriangleMesh& mesh = asset.mesh;
   mesh.positions = {{0.1f, -2.5e-3f, 12345.678f}, {1.0f / 3.0f, 7e-8f, -1.0f},
                     {-0.0f, 1e30f, 2.0f / 7.0f},  {3.14159274f, -1e-20f, 0.5f},
-                    {-123.456f, 0.7f, 0.3f},       {9.99999975e-6f, 6.0f, -7.25f}};
-  mesh.uvs = {{0.3f, 0.7f}, {2.5f, -0.25f}, {1.0f / 3.0f, 0.1f},
+                    {-123.456f, 0.7f, 0.3f},      {9.99999975e-6f, 6.0f, -7.25f}};
+  mesh.uvs = {{0.3f, 0.7f}, {2.5f, -0.25f},       {1.0f / 3.0f, 0.1f},
               {0.0f, 1.0f}, {0.99999994f, 1e-7f}, {-3.0f, 4.5f}};
-  for (const glm::vec3& direction : {glm::vec3(1, 2, 3), glm::vec3(0, 0, 1), glm::vec3(-1, 0.5f, 0),
-                                     glm::vec3(0.3f, -0.4f, 0.5f), glm::vec3(0, -1, 0),
-                                     glm::vec3(2, 2, -1)}) {
+  for (const glm::vec3& direction :
+       {glm::vec3(1, 2, 3), glm::vec3(0, 0, 1), glm::vec3(-1, 0.5f, 0),
+        glm::vec3(0.3f, -0.4f, 0.5f), glm::vec3(0, -1, 0), glm::vec3(2, 2, -1)}) {
     mesh.normals.push_back(glm::normalize(direction));
   }
   mesh.triangles = {{0, 1, 2}, {0, 2, 3}, {4, 5, 1}};
@@ -458,8 +458,7 @@ TEST_CASE("OBJ written by write_obj reads back as the same asset", "[geom]") {
   CHECK(read.images[2].data == original.images[2].data);
 }
 
-TEST_CASE("write_obj makes names OBJ-safe and unique and refuses what it cannot write",
-          "[geom]") {
+TEST_CASE("write_obj makes names OBJ-safe and unique and refuses what it cannot write", "[geom]") {
   TempDir dir;
   ObjectAsset asset = round_trip_asset();
   asset.images.clear();
@@ -655,6 +654,7 @@ TEST_CASE("OBJ reader survives truncated and mutated files", "[geom]") {
   std::mt19937 generator(20240611u);
   const std::string replacements = "0123456789-+/.eE \t\n";
   for (int mutation = 0; mutation < 3000; ++mutation) {
+    // Every fourth mutation is in the .mtl; the file mutated before is restored.
     const bool in_mtl = mutation % 4 == 3;
     std::string text = in_mtl ? mtl : obj;
     const size_t at = std::uniform_int_distribution<size_t>(0, text.size() - 1)(generator);
@@ -663,8 +663,9 @@ TEST_CASE("OBJ reader survives truncated and mutated files", "[geom]") {
     } else {
       text[at] = replacements[generator() % replacements.size()];
     }
+    if (in_mtl) write_text(obj_path, obj);
+    if (mutation % 4 == 0) write_text(mtl_path, mtl);
     write_text(in_mtl ? mtl_path : obj_path, text);
-    write_text(in_mtl ? obj_path : mtl_path, in_mtl ? obj : mtl);
     check_reads_or_rejects(obj_path);
   }
 }

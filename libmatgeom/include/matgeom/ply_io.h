@@ -17,8 +17,9 @@ struct PlyReadOptions {
 // Reads element "vertex" (x y z; nx ny nz and s t / u v / texture_u texture_v when present) and
 // element "face" (list "vertex_indices" or "vertex_index"; polygons are fan-triangulated).
 // Parts: with write_ply's "comment part <k> <name>" lines, id k is part k of that table;
-// otherwise the distinct ids in increasing order become parts 0, 1, ... named
-// "<property>_<id>". Without an id property every triangle is in part 0 named "default".
+// otherwise the distinct ids in increasing order become parts 0, 1, ... named "<stem>_<id>",
+// the stem being the property name without a trailing "_id" (object_id 7 -> "object_7").
+// Without an id property every triangle is in part 0 named "default".
 // Throws std::runtime_error starting with the path and naming the problem (not PLY, truncated,
 // index out of range, non-finite vertex, no faces, unsupported property type...).
 TriangleMesh read_ply(const std::string& path, const PlyReadOptions& options = {});
