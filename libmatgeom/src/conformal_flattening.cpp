@@ -1,15 +1,17 @@
 #include "matgeom/conformal_flattening.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
-#include <utility>
-#include <algorithm>
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
+
+#include "planar_triangle.h"
 
 namespace matgeom {
 namespace {
@@ -23,19 +25,13 @@ struct TriangleGradient {
 
 TriangleGradient triangle_gradient(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& p2) {
   TriangleGradient result;
-  const glm::dvec3 e1 = p1 - p0, e2 = p2 - p0;
-  const glm::dvec3 normal = glm::cross(e1, e2);
-  const double twice_area = glm::length(normal);
-  const double e1_length = glm::length(e1);
-  if (!(twice_area > 0.0) || !(e1_length > 0.0)) return result;
-  const glm::dvec3 x_axis = e1 / e1_length;
-  const glm::dvec3 y_axis = glm::cross(normal / twice_area, x_axis);
-  const glm::dvec2 local[3] = {{0.0, 0.0}, {e1_length, 0.0}, {glm::dot(e2, x_axis), glm::dot(e2, y_axis)}};
+  const PlanarTriangle flat = planar_triangle(p0, p1, p2);
+  if (!(flat.area > 0.0)) return result;
   for (int j = 0; j < 3; ++j) {
-    const glm::dvec2 edge = local[(j + 2) % 3] - local[(j + 1) % 3];
+    const glm::dvec2 edge = flat.corner[(j + 2) % 3] - flat.corner[(j + 1) % 3];
     result.g[j] = glm::dvec2(-edge.y, edge.x);
   }
-  result.area = 0.5 * twice_area;
+  result.area = flat.area;
   return result;
 }
 

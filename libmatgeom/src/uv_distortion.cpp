@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "planar_triangle.h"
+
 namespace matgeom {
 namespace {
 
@@ -21,15 +23,10 @@ struct TriangleMap {
 TriangleMap triangle_map(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& p2, const glm::dvec2& q0,
                          const glm::dvec2& q1, const glm::dvec2& q2) {
   TriangleMap m;
-  const glm::dvec3 e1 = p1 - p0, e2 = p2 - p0;
-  const glm::dvec3 normal = glm::cross(e1, e2);
-  const double twice_area = glm::length(normal);
-  const double e1_length = glm::length(e1);
-  if (!(twice_area > 0.0) || !(e1_length > 0.0)) return m;
-  m.surface_area = 0.5 * twice_area;
-  const glm::dvec3 x_axis = e1 / e1_length;
-  const glm::dvec3 y_axis = glm::cross(normal / twice_area, x_axis);
-  const glm::dmat2 local(glm::dvec2(e1_length, 0.0), glm::dvec2(glm::dot(e2, x_axis), glm::dot(e2, y_axis)));
+  const PlanarTriangle flat = planar_triangle(p0, p1, p2);
+  if (!(flat.area > 0.0)) return m;
+  m.surface_area = flat.area;
+  const glm::dmat2 local(flat.corner[1], flat.corner[2]);
   const glm::dmat2 uv(q1 - q0, q2 - q0);
   const glm::dmat2 jacobian = uv * glm::inverse(local);
   m.uv_area = 0.5 * glm::determinant(uv);

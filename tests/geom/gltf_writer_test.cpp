@@ -1,6 +1,9 @@
 #include "matgeom/gltf_writer.h"
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <random>
 #include <stdexcept>
 
 #include <catch2/catch.hpp>
@@ -139,4 +142,45 @@ TEST_CASE("write_gltf rejects what glTF cannot hold and leaves nothing behind", 
   CHECK_THROWS_AS(write_gltf(empty, dir.file("c.glb")), std::invalid_argument);
   CHECK_THROWS_AS(write_gltf(asset, dir.file("missing_dir/d.glb")), std::runtime_error);
   CHECK(std::filesystem::is_empty(dir.path()));
+}
+
+namespace {
+
+std::string file_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// What read_gltf may do with damaged bytes: return a valid asset or throw std::runtime_error.
+// Any other exception escapes and fails the test; a crash fails it too.
+void check_reads_or_rejects(const std::string& path, const std::string& bytes) {
+  std::filesystem::remove(path);  // a fresh file: rewriting one in place makes ext4 flush it
+  std::ofstream(path, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  try {
+    const ObjectAsset asset = read_gltf(path);
+    CHECK_NOTHROW(validate_mesh(asset.mesh, path));
+  } catch (const std::runtime_error&) {
+    // rejected with a message: fine
+  }
+}
+
+}  // namespace
+
+TEST_CASE("glTF reader survives truncated and bit-flipped files", "[geom]") {
+  const TempDir dir;
+  for (const char* name : {"original.glb", "original.gltf"}) {
+    write_gltf(two_part_asset(), dir.file(name));
+    const std::string original = file_bytes(dir.file(name));
+    const std::string damaged_path = dir.file(std::string("damaged") + std::filesystem::path(name).extension().string());
+    // Every truncation up to 2 KiB (headers, JSON, buffer starts), then every 37th length.
+    for (size_t length = 0; length < original.size(); length += length < 2048 ? 1 : 37)
+      check_reads_or_rejects(damaged_path, original.substr(0, length));
+    std::mt19937 random(20261123u);
+    for (int flip = 0; flip < 1000; ++flip) {
+      std::string damaged = original;
+      const size_t byte = random() % damaged.size();
+      damaged[byte] = static_cast<char>(damaged[byte] ^ (1 << (random() % 8)));
+      check_reads_or_rejects(damaged_path, damaged);
+    }
+  }
 }
