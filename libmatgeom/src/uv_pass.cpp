@@ -192,6 +192,14 @@ std::vector<Chart> flattened_charts(const TriangleMesh& mesh, std::vector<std::v
   return charts;
 }
 
+// The paper's density for the part's area times the user scale; 0 for a part without area (all
+// its triangles degenerate), whose charts then collapse to points instead of growing without
+// bound.
+double part_target_density(const Chart& part, double scale) {
+  const double area = surface_area(part.welded_positions, part.welded_triangles);
+  return area > 0.0 ? scale * target_texel_density(area) : 0.0;
+}
+
 std::vector<std::vector<uint32_t>> part_triangles(const TriangleMesh& mesh) {
   std::vector<std::vector<uint32_t>> parts(mesh.part_count());
   for (size_t t = 0; t < mesh.triangle_count(); ++t)
@@ -248,8 +256,7 @@ UvPassResult uv_pass(const TriangleMesh& mesh, const UvPassOptions& options) {
     for (size_t p = 0; p < parts.size(); ++p) {
       if (parts[p].empty()) continue;
       const Chart whole = make_chart(mesh, parts[p]);
-      const double target = options.texel_density_scale *
-                            target_texel_density(surface_area(whole.welded_positions, whole.welded_triangles));
+      const double target = part_target_density(whole, options.texel_density_scale);
       result.parts.push_back(measure_part(mesh, parts[p], part_name(mesh, p), target, resolution));
     }
     return result;
@@ -264,8 +271,7 @@ UvPassResult uv_pass(const TriangleMesh& mesh, const UvPassOptions& options) {
     if (parts[p].empty()) continue;
     // The part as a compact surface: its area sets the density, its charts come from it.
     const Chart whole = make_chart(mesh, parts[p]);
-    const double target =
-        options.texel_density_scale * target_texel_density(surface_area(whole.welded_positions, whole.welded_triangles));
+    const double target = part_target_density(whole, options.texel_density_scale);
     const std::vector<uint32_t> chart_of = segment_charts(whole.welded_positions, whole.welded_triangles, options.charts);
     std::vector<std::vector<uint32_t>> pieces;  // charts grow through edges, so each is connected
     for (size_t k = 0; k < parts[p].size(); ++k) {

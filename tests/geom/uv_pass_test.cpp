@@ -268,3 +268,30 @@ TEST_CASE("The UV pass keeps parts and existing UVs on request", "[geom]") {
   bad.texel_density_scale = 0.0;
   CHECK_THROWS_AS(uv_pass(mesh, bad), std::invalid_argument);
 }
+
+TEST_CASE("The UV pass gives finite UVs for degenerate triangles and parts", "[geom]") {
+  TriangleMesh mesh = box(glm::vec3(0.3f, 0.2f, 0.1f));
+  mesh.triangle_parts.assign(mesh.triangle_count(), 0);
+  mesh.part_names = {"box", "slivers"};
+  // Part 1: only zero-area triangles (a repeated vertex, three collinear points).
+  const uint32_t base = static_cast<uint32_t>(mesh.positions.size());
+  for (const glm::vec3 p : {glm::vec3(1, 0, 0), glm::vec3(2, 0, 0), glm::vec3(3, 0, 0)}) {
+    mesh.positions.push_back(p);
+    mesh.normals.emplace_back(0.0f, 0.0f, 1.0f);
+  }
+  mesh.triangles.emplace_back(base, base + 1, base + 2);
+  mesh.triangles.emplace_back(base, base, base + 1);
+  mesh.triangle_parts.insert(mesh.triangle_parts.end(), 2, 1u);
+  // A sliver inside part 0 as well.
+  mesh.triangles.emplace_back(0u, 0u, 1u);
+  mesh.triangle_parts.push_back(0u);
+  const UvPassResult result = uv_pass(mesh);
+  for (const glm::vec2& uv : result.mesh.uvs) {
+    CHECK(std::isfinite(uv.x));
+    CHECK(std::isfinite(uv.y));
+  }
+  for (const glm::vec4& t : result.mesh.tangents) CHECK(std::isfinite(t.x + t.y + t.z + t.w));
+  REQUIRE(result.parts.size() == 2);
+  CHECK(result.parts[0].achieved_density == Approx(result.parts[0].target_density).epsilon(0.01));
+  CHECK(result.parts[1].target_density == 0.0);
+}
