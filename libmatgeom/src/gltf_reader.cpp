@@ -17,6 +17,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <tiny_gltf.h>
 
+#include "file_error.h"
 #include "matgeom/tangents.h"
 
 // Reading a glTF file is three steps: tinygltf parses the JSON, buffers and images; the node
@@ -33,17 +34,6 @@ struct GltfFile {
   tinygltf::Model model;
   bool quantized = false;  // KHR_mesh_quantization allows integer positions, normals, tangents
 };
-
-[[noreturn]] void fail(const std::string& path, const std::string& problem) {
-  throw std::runtime_error(path + ": " + problem);
-}
-
-template <typename... Args>
-std::string concat(const Args&... args) {
-  std::ostringstream out;
-  (out << ... << args);
-  return out.str();
-}
 
 std::string trim(std::string text) {
   while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();

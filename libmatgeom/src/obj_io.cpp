@@ -22,6 +22,7 @@
 #include <tiny_gltf.h>
 #include <tiny_obj_loader.h>
 
+#include "file_error.h"
 #include "matgeom/tangents.h"
 
 // Reading is four steps: the OBJ text is screened for the inputs tinyobjloader 2.0.0rc10 handles
@@ -38,17 +39,6 @@ namespace matgeom {
 namespace {
 
 namespace fs = std::filesystem;
-
-[[noreturn]] void fail(const std::string& path, const std::string& problem) {
-  throw std::runtime_error(path + ": " + problem);
-}
-
-template <typename... Args>
-std::string concat(const Args&... args) {
-  std::ostringstream out;
-  (out << ... << args);
-  return out.str();
-}
 
 std::string trim(const std::string& text) {
   const size_t begin = text.find_first_not_of(" \t\r\n");
@@ -113,15 +103,17 @@ size_t count_arguments(std::string_view line) {
 // face; real polygons stay far below this.
 constexpr size_t kMaxPolygonCorners = 10000;
 
-// Prepares OBJ text for tinyobjloader 2.0.0rc10. It copies every "t" (subdivision tag) line,
-// with up to 3 x 8192 values each, into every shape, so a few kilobytes of tags can claim
-// gigabytes; tags mean nothing to a triangle mesh, so their lines are blanked (which keeps the
-// line numbers of tinyobjloader's messages). Polygons with too many corners are refused.
+// Prepares OBJ text for tinyobjloader 2.0.0rc10, which mishandles two statements that mean
+// nothing to a triangle mesh: it copies every "t" (subdivision tag) line, with up to 3 x 8192
+// values each, into every shape, so a few kilobytes of tags can claim gigabytes; and it converts
+// "vw" (skin weight) joint numbers to int unchecked, undefined for 1e40. Their lines are blanked,
+// which keeps the line numbers of tinyobjloader's messages. Polygons with too many corners are
+// refused.
 void screen_obj_text(const std::string& path, std::string& text) {
   for_each_line(text, [&](size_t begin, size_t end) {
     const std::string_view line(text.data() + begin, end - begin);
     const std::string_view keyword = line_keyword(line);
-    if (keyword == "t") {
+    if (keyword == "t" || keyword == "vw") {
       std::fill(text.begin() + static_cast<std::ptrdiff_t>(begin),
                 text.begin() + static_cast<std::ptrdiff_t>(end), ' ');
       return;
@@ -144,14 +136,21 @@ constexpr const char* kNotGivenMarkers =
 
 // An .mtl text with kNotGivenMarkers at the start and after every "newmtl" line, recognised as
 // tinyobjloader's LoadMtl recognises it (trailing blanks trimmed, then "newmtl" and a blank).
+// Lines end in \n after this.
 std::string with_not_given_markers(const std::string& text) {
   std::string marked = kNotGivenMarkers;
   for_each_line(text, [&](size_t begin, size_t end) {
-    std::string_view line(text.data() + begin, end - begin);
-    marked.append(line.data(), line.size()).push_back('\n');
+    const std::string_view line(text.data() + begin, end - begin);
     const size_t last = line.find_last_not_of(" \t");
-    line = line.substr(0, last == std::string_view::npos ? 0 : last + 1);
-    if (line_keyword(line) == "newmtl") marked += kNotGivenMarkers;
+    const std::string_view trimmed = line.substr(0, last == std::string_view::npos ? 0 : last + 1);
+    if (line_keyword(trimmed) != "newmtl") {
+      marked.append(line.data(), line.size()).push_back('\n');
+      return;
+    }
+    // Blender trims material names. tinyobjloader keeps the blanks after the first, and then
+    // "usemtl", which reads one word, would miss the material.
+    const size_t name = trimmed.find_first_not_of(" \t", trimmed.find("newmtl") + 6);
+    marked.append("newmtl ").append(trimmed.substr(name)).append("\n").append(kNotGivenMarkers);
   });
   return marked;
 }
@@ -317,7 +316,9 @@ PartTable parts_by_group(const ObjFile& file) {
   for (const tinyobj::shape_t& shape : file.shapes) {
     std::vector<uint32_t>& parts = table.face_parts.emplace_back();
     if (shape.mesh.material_ids.empty()) continue;
-    const std::string name = shape.name.empty() ? "default" : shape.name;
+    // Blender trims names; tinyobjloader keeps what follows "o " up to the end of the line.
+    const std::string trimmed = trim(shape.name);
+    const std::string name = trimmed.empty() ? "default" : trimmed;
     const auto [found, inserted] =
         part_of_name.emplace(name, static_cast<uint32_t>(table.names.size()));
     if (inserted) {
@@ -354,8 +355,8 @@ class MeshAssembler {
     }
   }
 
-  // Triangles that repeat a position have no surface; they are dropped, as Blender's mesh
-  // validation drops faces that repeat a vertex.
+  // Triangles that repeat a position have no surface and are dropped (as read_gltf drops
+  // triangles that repeat a vertex).
   void add_triangle(const tinyobj::index_t* corners, uint32_t part) {
     const int a = corners[0].vertex_index, b = corners[1].vertex_index, c = corners[2].vertex_index;
     if (a == b || b == c || c == a) return;
@@ -801,6 +802,8 @@ void check_image(const ObjectAsset& asset, int image, const MaterialDesc& materi
 
 void check_writable(const ObjectAsset& asset) {
   validate_mesh(asset.mesh, "write_obj");
+  if (asset.mesh.triangles.empty())
+    throw std::invalid_argument("write_obj: the mesh has no triangles");
   if (asset.materials.size() < asset.mesh.part_count()) {
     throw std::invalid_argument(concat("write_obj: ", asset.mesh.part_count(), " parts but ",
                                        asset.materials.size(), " materials"));
@@ -926,6 +929,10 @@ struct NamedMaterial {
   MaterialMaps maps;
 };
 
+// The inverse of MaterialConverter. read_obj, like Blender, lets a map replace its factor, so a
+// factor other than 1 beside a map does not survive a round trip (it is still written, for
+// readers that multiply). MaterialDesc's wrap, specular tint and label id are not written:
+// Blender's importer reads no MTL statement for them.
 std::string mtl_text(const std::vector<NamedMaterial>& materials) {
   std::string text = "# matpredict\n";
   for (const NamedMaterial& material : materials) {
@@ -998,7 +1005,8 @@ std::string obj_text(const TriangleMesh& mesh, const std::string& library,
 
 // Files written beside their destinations under temporary names ("<file>.tmp-<pid>") and renamed
 // only once all of them are complete, in staging order -- the .obj last, so that no reader finds
-// an .obj whose .mtl or textures are missing. Temporaries not renamed are removed.
+// an .obj whose .mtl or textures are missing. If a rename fails, the files this commit created
+// are removed again (files it replaced stay replaced) and so are the temporaries.
 class StagedFiles {
  public:
   explicit StagedFiles(std::string obj_path) : obj_path_(std::move(obj_path)) {}
@@ -1011,7 +1019,7 @@ class StagedFiles {
 
   void stage(const fs::path& destination, const std::string& bytes) {
     const fs::path temporary = destination.string() + ".tmp-" + std::to_string(::getpid());
-    staged_.push_back({destination, temporary});
+    staged_.push_back({destination, temporary, false});
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     out.close();
@@ -1020,11 +1028,14 @@ class StagedFiles {
 
   void commit() {
     for (; committed_ < staged_.size(); ++committed_) {
+      Staged& file = staged_[committed_];
       std::error_code error;
-      fs::rename(staged_[committed_].temporary, staged_[committed_].destination, error);
+      file.replaces = fs::exists(file.destination, error);
+      fs::rename(file.temporary, file.destination, error);
       if (error) {
-        fail(obj_path_, "cannot rename " + staged_[committed_].temporary.string() + " to " +
-                            staged_[committed_].destination.string() + ": " + error.message());
+        remove_created();
+        fail(obj_path_, "cannot rename " + file.temporary.string() + " to " +
+                            file.destination.string() + ": " + error.message());
       }
     }
   }
@@ -1033,7 +1044,16 @@ class StagedFiles {
   struct Staged {
     fs::path destination;
     fs::path temporary;
+    bool replaces;  // the destination existed before the commit
   };
+
+  void remove_created() {
+    std::error_code ignored;
+    for (size_t i = 0; i < committed_; ++i) {
+      if (!staged_[i].replaces) fs::remove(staged_[i].destination, ignored);
+    }
+  }
+
   std::string obj_path_;
   std::vector<Staged> staged_;
   size_t committed_ = 0;
@@ -1073,8 +1093,7 @@ void write_obj(const ObjectAsset& asset, const std::string& path) {
   const std::string stem = obj_path.stem().string();
   if (std::any_of(stem.begin(), stem.end(), [](char c) { return c == '\n' || c == '\r'; })) {
     throw std::invalid_argument("write_obj: " + path +
-                                ": an .obj cannot name a file with a line "
-                                "break as its material library");
+                                ": \"mtllib\" cannot name a file with a line break");
   }
 
   ImageFiles images(asset.images, stem);
@@ -1086,6 +1105,7 @@ void write_obj(const ObjectAsset& asset, const std::string& path) {
     const MaterialDesc& desc = asset.materials[part];
     materials.push_back(
         {material_names.claim(obj_safe_name(desc.name, "material")), &desc, images.maps_of(desc)});
+    // Groups take the part's name, or else its material's.
     const std::string part_name = part < mesh.part_names.size() ? mesh.part_names[part] : "";
     groups.push_back(group_names.claim(
         obj_safe_name(part_name.empty() ? desc.name : part_name, concat("part", part))));

@@ -20,6 +20,8 @@
 #include <utility>
 #include <vector>
 
+#include "file_error.h"
+
 // Reading a PLY file is three steps: the whole file is loaded and its header parsed into element
 // and property declarations, which are checked against the file size before anything is
 // allocated for them; the body is read item by item (ASCII tokens, or binary values in either
@@ -28,17 +30,6 @@
 
 namespace matgeom {
 namespace {
-
-[[noreturn]] void fail(const std::string& path, const std::string& problem) {
-  throw std::runtime_error(path + ": " + problem);
-}
-
-template <typename... Args>
-std::string concat(const Args&... args) {
-  std::ostringstream out;
-  (out << ... << args);
-  return out.str();
-}
 
 // Text from the file for an error message, quoted and cut short: a corrupt file can put anything
 // where a keyword or a number should be.

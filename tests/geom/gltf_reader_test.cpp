@@ -16,6 +16,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
+#include "temp_dir.h"
+#include "test_files.h"
+
 // These tests write real glTF files byte by byte (JSON, binary buffers, PNG images, the GLB
 // container) and check what the reader makes of them against values computed here.
 
@@ -32,40 +35,6 @@ constexpr int kClampToEdge = 33071;
 constexpr int kModePoints = 0;
 constexpr int kModeTriangleStrip = 5;
 
-// A fresh directory per test case, removed afterwards.
-class TempDir {
- public:
-  TempDir() {
-    static int counter = 0;
-    path_ = fs::temp_directory_path() /
-            ("matgeom_gltf_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-
- private:
-  fs::path path_;
-};
-
-void write_bytes(const std::string& path, const std::vector<uint8_t>& bytes) {
-  std::ofstream out(path, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(bytes.data()),
-            static_cast<std::streamsize>(bytes.size()));
-  REQUIRE(out.good());
-}
-
-void write_text(const std::string& path, const std::string& text) {
-  write_bytes(path, std::vector<uint8_t>(text.begin(), text.end()));
-}
-
 std::string base64(const std::vector<uint8_t>& bytes) {
   static const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string out;
@@ -80,66 +49,6 @@ std::string base64(const std::vector<uint8_t>& bytes) {
     out += i + 2 < bytes.size() ? alphabet[triple & 63] : '=';
   }
   return out;
-}
-
-// ---- PNG writer: zlib "stored" blocks, so no compressor is needed.
-
-uint32_t crc32(const uint8_t* data, size_t size, uint32_t crc = 0) {
-  crc = ~crc;
-  for (size_t i = 0; i < size; ++i) {
-    crc ^= data[i];
-    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
-  }
-  return ~crc;
-}
-
-void put_be32(std::vector<uint8_t>& out, uint32_t value) {
-  for (int shift = 24; shift >= 0; shift -= 8) out.push_back(static_cast<uint8_t>(value >> shift));
-}
-
-void put_png_chunk(std::vector<uint8_t>& png, const char* type, const std::vector<uint8_t>& data) {
-  put_be32(png, static_cast<uint32_t>(data.size()));
-  std::vector<uint8_t> typed(type, type + 4);
-  typed.insert(typed.end(), data.begin(), data.end());
-  png.insert(png.end(), typed.begin(), typed.end());
-  put_be32(png, crc32(typed.data(), typed.size()));
-}
-
-// RGB image, `bits` = 8 or 16, samples row by row from the top (16-bit samples as given).
-std::vector<uint8_t> encode_png(int width, int height, int bits,
-                                const std::vector<uint16_t>& samples) {
-  std::vector<uint8_t> raw;
-  const size_t row_samples = static_cast<size_t>(width) * 3;
-  for (int y = 0; y < height; ++y) {
-    raw.push_back(0);  // filter: none
-    for (size_t s = 0; s < row_samples; ++s) {
-      const uint16_t value = samples[static_cast<size_t>(y) * row_samples + s];
-      if (bits == 16) raw.push_back(static_cast<uint8_t>(value >> 8));
-      raw.push_back(static_cast<uint8_t>(value & 0xff));
-    }
-  }
-  std::vector<uint8_t> zlib = {0x78, 0x01, 0x01};  // header, then one final stored block
-  zlib.push_back(static_cast<uint8_t>(raw.size() & 0xff));
-  zlib.push_back(static_cast<uint8_t>(raw.size() >> 8));
-  zlib.push_back(static_cast<uint8_t>(~raw.size() & 0xff));
-  zlib.push_back(static_cast<uint8_t>((~raw.size() >> 8) & 0xff));
-  zlib.insert(zlib.end(), raw.begin(), raw.end());
-  uint32_t a = 1, b = 0;
-  for (uint8_t byte : raw) {
-    a = (a + byte) % 65521;
-    b = (b + a) % 65521;
-  }
-  put_be32(zlib, (b << 16) | a);
-
-  std::vector<uint8_t> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  std::vector<uint8_t> header;
-  put_be32(header, static_cast<uint32_t>(width));
-  put_be32(header, static_cast<uint32_t>(height));
-  header.insert(header.end(), {static_cast<uint8_t>(bits), 2, 0, 0, 0});  // RGB, no interlace
-  put_png_chunk(png, "IHDR", header);
-  put_png_chunk(png, "IDAT", zlib);
-  put_png_chunk(png, "IEND", {});
-  return png;
 }
 
 // ---- glTF writer
@@ -347,8 +256,8 @@ std::string write_two_material_quad(const TempDir& dir, Container container) {
   doc["scenes"] = json::array({{{"nodes", {0}}}});
   doc["scene"] = 0;
 
-  const int base_image = writer.add_image(encode_png(2, 2, 8, kBaseColorPixels), "base.png");
-  const int wide_image = writer.add_image(encode_png(2, 1, 16, kSixteenBitPixels), "wide.png");
+  const int base_image = writer.add_image(encode_png(2, 2, 3, 8, kBaseColorPixels), "base.png");
+  const int wide_image = writer.add_image(encode_png(2, 1, 3, 16, kSixteenBitPixels), "wide.png");
   doc["samplers"] =
       json::array({{{"wrapS", kClampToEdge}, {"wrapT", kClampToEdge}}, json::object()});
   doc["textures"] = json::array(

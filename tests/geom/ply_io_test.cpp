@@ -14,6 +14,7 @@
 #include <catch2/catch.hpp>
 
 #include "temp_dir.h"
+#include "test_files.h"
 
 // These tests write PLY files byte by byte (ASCII text, binary values in either byte order
 // assembled here) and check what the reader makes of them against meshes written down here.
@@ -30,17 +31,6 @@ std::vector<std::string> directory_entries(const TempDir& dir) {
     names.push_back(entry.path().filename().string());
   }
   return names;
-}
-
-void write_bytes(const std::string& path, const std::string& bytes) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  REQUIRE(out.good());
-}
-
-std::string read_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
 // The message of the runtime_error read_ply throws, or "" when it reads the file.

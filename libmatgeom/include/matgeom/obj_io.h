@@ -12,6 +12,9 @@ struct ObjReadOptions {
   PartsFrom parts_from = PartsFrom::Material;
 };
 
+// OBJ is +Y up: as Blender's importer does with its default axes, (x, y, z) in the file becomes
+// (x, -z, y) in matpredict's +Z up frame, and write_obj converts back.
+//
 // Reads positions, normals and UVs (split into one vertex per distinct v/vt/vn triple),
 // triangulates polygons, and maps MTL materials to MaterialDesc (Kd, map_Kd, Pr/map_Pr, Pm/map_Pm,
 // norm/map_Bump; the conventions are in the .cpp). Faces without a material share a part named
