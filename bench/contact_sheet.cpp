@@ -39,11 +39,13 @@ int main(int argc, char** argv) {
   std::string output = "docs/images/builtin_objects.png";
   int size = 160, spp = 64, columns = 6;
   uint32_t seed = 0;
+  double exposure = 1.5;  // 1 klx indoor light reads dark at exposure 0
   app.add_option("--output", output, "PNG to write")->capture_default_str();
   app.add_option("--size", size, "pixels per object")->capture_default_str()->check(CLI::Range(16, 2048));
   app.add_option("--spp", spp, "samples per pixel")->capture_default_str()->check(CLI::Range(1, 65536));
   app.add_option("--columns", columns, "objects per row")->capture_default_str()->check(CLI::Range(1, 64));
   app.add_option("--seed", seed, "object seed")->capture_default_str();
+  app.add_option("--exposure", exposure, "display exposure in stops")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
   const std::vector<std::string> names = matgeom::builtin_object_names();
@@ -67,6 +69,6 @@ int main(int argc, char** argv) {
       std::copy_n(&frame.color[3 * static_cast<size_t>(y) * static_cast<size_t>(size)], 3 * size,
                   &sheet[3 * (static_cast<size_t>(y0 + y) * static_cast<size_t>(width) + static_cast<size_t>(x0))]);
   }
-  matrender::write_display_png(output, width, height, sheet.data(), nullptr);
+  matrender::write_display_png(output, width, height, sheet.data(), nullptr, exposure);
   fmt::print("wrote {} ({} x {})\n", output, width, height);
 }

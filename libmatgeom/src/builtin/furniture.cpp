@@ -18,8 +18,8 @@ namespace {
 using glm::dvec2;
 using glm::dvec3;
 
-constexpr int kRoundSegments = 24;     // around legs, rods and handles
-constexpr int kDiscSegments = 64;      // around round table tops and stool seats
+constexpr int kRoundSegments = 24;      // around legs, rods and handles
+constexpr int kDiscSegments = 64;       // around round table tops and stool seats
 constexpr int kCushionResolution = 12;  // grid of a cushion surface: 576 triangles a cushion
 // Joined pieces sink this far into each other, so that no seam of light shows between them.
 constexpr double kOverlap = 0.002;
@@ -134,7 +134,7 @@ TriangleMesh sheared(TriangleMesh upright, const dvec3& foot, const dvec3& top) 
 }
 
 // The transform taking a solid built along +z from the origin to point along `direction` from `at`.
-glm::dmat4 along(const dvec3& at, const dvec3& direction) {
+glm::dmat4 pointing(const dvec3& at, const dvec3& direction) {
   const dvec3 z(0.0, 0.0, 1.0), d = glm::normalize(direction);
   const dvec3 axis = glm::cross(z, d);
   const glm::dmat4 moved = translation(at);
@@ -144,7 +144,7 @@ glm::dmat4 along(const dvec3& at, const dvec3& direction) {
 
 // A round bar from `from` to `to` with flat ends.
 TriangleMesh rod(const dvec3& from, const dvec3& to, double radius) {
-  return transformed(cylinder_mesh(radius, 0.0, glm::length(to - from), kRoundSegments), along(from, to - from));
+  return transformed(cylinder_mesh(radius, 0.0, glm::length(to - from), kRoundSegments), pointing(from, to - from));
 }
 
 // A disc from z0 to z1 whose top edge is rounded over with radius `edge` (a table top, a seat).
@@ -191,8 +191,8 @@ LegStyle random_leg_style(UniformSource& random) { return static_cast<LegStyle>(
 // A turned leg, as on a lathe: a plain cylindrical block at the top where the rails join, a bead,
 // a baluster narrowing to a slim ankle and a small foot. Shape as (radius, height) fractions.
 std::vector<ProfilePoint> turned_leg_profile(double radius, double height) {
-  static const double kShape[][2] = {{0.62, 0.0},  {0.62, 0.03}, {0.5, 0.06},  {0.55, 0.35}, {0.8, 0.62},
-                                     {0.7, 0.7},   {0.92, 0.74}, {0.72, 0.78}, {1.0, 0.8},   {1.0, 1.0}};
+  static const double kShape[][2] = {{0.62, 0.0}, {0.62, 0.03}, {0.5, 0.06},  {0.55, 0.35}, {0.8, 0.62},
+                                     {0.7, 0.7},  {0.92, 0.74}, {0.72, 0.78}, {1.0, 0.8},   {1.0, 1.0}};
   std::vector<ProfilePoint> profile = {{0.0, 0.0}};
   for (const auto& point : kShape) profile.push_back({radius * point[0], height * point[1]});
   profile.push_back({0.0, height});
@@ -203,11 +203,13 @@ std::vector<ProfilePoint> turned_leg_profile(double radius, double height) {
 TriangleMesh leg(LegStyle style, const dvec2& at, double top_z, double thickness) {
   const double half = 0.5 * thickness;
   const dvec3 foot(at, 0.0);
-  if (style == LegStyle::Square) return chamfered_box(foot - dvec3(half, half, 0.0), dvec3(at + half, top_z), kEasedEdge);
+  if (style == LegStyle::Square)
+    return chamfered_box(foot - dvec3(half, half, 0.0), dvec3(at + half, top_z), kEasedEdge);
   if (style == LegStyle::Tapered) {  // mid-century legs narrow to about 60% at the foot
     return frustum(foot, dvec2(0.6 * half), dvec3(at, top_z), dvec2(half));
   }
-  if (style == LegStyle::Turned) return transformed(lathe_mesh(turned_leg_profile(half, top_z), kRoundSegments), translation(foot));
+  if (style == LegStyle::Turned)
+    return transformed(lathe_mesh(turned_leg_profile(half, top_z), kRoundSegments), translation(foot));
   return transformed(cylinder_mesh(half, 0.0, top_z, kRoundSegments), translation(foot));
 }
 
@@ -249,10 +251,9 @@ void add_aprons(ObjectBuilder& b, uint32_t part, const dvec2& half, double leg_t
 
 enum class HandleStyle { Bar, Knob };
 
-// A mushroom knob on +x, 25 mm deep with a 12-15 mm head, as sold for cabinet doors.
-std::vector<ProfilePoint> knob_profile(double head_radius) {
-  return {{0.0, 0.0},           {0.006, 0.0},         {0.005, 0.012}, {head_radius, 0.017},
-          {head_radius, 0.022}, {head_radius - 0.003, 0.025}, {0.0, 0.025}};
+// A mushroom knob along +z, 25 mm deep with a 28 mm head on a 12 mm neck, as sold for cabinets.
+std::vector<ProfilePoint> knob_profile() {
+  return {{0.0, 0.0}, {0.006, 0.0}, {0.005, 0.012}, {0.014, 0.017}, {0.014, 0.022}, {0.011, 0.025}, {0.0, 0.025}};
 }
 
 // A handle on a front whose face is at x = face_x, centred at (y, z): a bar pull (a 10 mm bar
@@ -262,7 +263,7 @@ void add_handle(ObjectBuilder& b, uint32_t part, HandleStyle style, double face_
   const dvec3 on_face(face_x - kOverlap, centre.x, centre.y);
   const dvec3 outward(1.0, 0.0, 0.0);
   if (style == HandleStyle::Knob) {
-    b.add(part, transformed(lathe_mesh(knob_profile(0.014), kRoundSegments), along(on_face, outward)));
+    b.add(part, transformed(lathe_mesh(knob_profile(), kRoundSegments), pointing(on_face, outward)));
     return;
   }
   constexpr double kStandoff = 0.028, kBarRadius = 0.005, kPostRadius = 0.0035;
@@ -283,17 +284,17 @@ TriangleMesh front_panel(double face_x, double thickness, const dvec2& y_range, 
                        dvec3(face_x + thickness, y_range.y - gap, z_range.y - gap), kEasedEdge);
 }
 
-// A drawer front with a handle at its centre (a horizontal bar a third of its width, or a knob).
+// A drawer front with a handle at its centre: a knob, or a horizontal bar a third as wide as the
+// front within the common 96-192 mm sizes.
 void add_drawer(ObjectBuilder& b, uint32_t front_part, uint32_t handle_part, HandleStyle style, double face_x,
                 double thickness, const dvec2& y_range, const dvec2& z_range) {
   b.add(front_part, front_panel(face_x, thickness, y_range, z_range));
-  const double bar = std::clamp((y_range.y - y_range.x) / 3.0, 0.096, 0.192);  // 96-192 mm hole spacing
-  add_handle(b, handle_part, style, face_x + thickness, dvec2(0.5 * (y_range.x + y_range.y), 0.5 * (z_range.x + z_range.y)),
-             true, bar);
+  const double bar = std::clamp((y_range.y - y_range.x) / 3.0, 0.096, 0.192);
+  add_handle(b, handle_part, style, face_x + thickness,
+             dvec2(0.5 * (y_range.x + y_range.y), 0.5 * (z_range.x + z_range.y)), true, bar);
 }
 
 }  // namespace
-
 
 // --- the objects -----------------------------------------------------------------------------
 
@@ -353,8 +354,9 @@ ObjectAsset make_table(uint32_t seed) {
   const LegStyle style = random_leg_style(r);
   const bool metal = style == LegStyle::Tube;
   const uint32_t base = b.add_part("base", metal ? Finish::BrushedMetal : wooden(r));
-  // Steel tube legs are 25-35 mm across, wooden ones 45-70 mm; they stand 5-9 cm in from the
-  // edge (inside the circle of a round top), leaving knee room.
+  // Steel tube legs are 25-35 mm across, wooden ones 45-70 mm. They stand 5-9 cm in from the
+  // edges, leaving knee room; under a round top, on a square whose corners are 0.42 of the
+  // diameter out, 8-10 cm in from the rim.
   const double leg_thickness = metal ? r.between(0.025, 0.035) : r.between(0.045, 0.07);
   const double inset = r.between(0.05, 0.09) + 0.5 * leg_thickness;
   const dvec2 half = round ? dvec2(0.3 * length) : dvec2(0.5 * depth - inset, 0.5 * length - inset);
@@ -383,8 +385,8 @@ ObjectAsset make_chair(uint32_t seed) {
 
   // A padded seat is a 5-8 cm cushion whose lower part sinks into its board, as foam does; a
   // plain seat is a 20-30 mm board.
-  const double cushion_thickness = r.between(0.05, 0.08);
-  const double board_top = padded ? seat_height - 0.8 * cushion_thickness : seat_height;
+  const double cushion_thickness = padded ? r.between(0.05, 0.08) : 0.0;
+  const double board_top = seat_height - 0.8 * cushion_thickness;
   const double board_bottom = board_top - (padded ? 0.02 : r.between(0.02, 0.03));
   b.add(padded ? frame : seat, chamfered_box(dvec3(-0.5 * seat_depth, -0.5 * seat_width, board_bottom),
                                              dvec3(0.5 * seat_depth, 0.5 * seat_width, board_top), kEasedEdge));
@@ -449,10 +451,11 @@ ObjectAsset make_chair(uint32_t seed) {
     const double pad = std::min(r.between(0.22, 0.32), rail_top - 0.02 - back_bottom);
     const double pad_thickness = r.between(0.04, 0.06), centre = rail_top - 0.02 - 0.5 * pad;
     const double lean = std::atan2(rake, back_height - post_bottom);
-    b.add(back, cushion(dvec3(pad, 2.0 * half.y, pad_thickness), 4.0, leaning_cushion(on_post_line(0.0, centre), lean)));
+    b.add(back,
+          cushion(dvec3(pad, 2.0 * half.y, pad_thickness), 4.0, leaning_cushion(on_post_line(0.0, centre), lean)));
     const dvec3 behind(-0.5 * pad_thickness, 0.0, 0.0);
-    b.add(frame, leaning_board(on_post_line(0.0, centre - 0.5 * pad) + behind, on_post_line(0.0, centre + 0.5 * pad) + behind,
-                               dvec2(0.006, half.y)));
+    b.add(frame, leaning_board(on_post_line(0.0, centre - 0.5 * pad) + behind,
+                               on_post_line(0.0, centre + 0.5 * pad) + behind, dvec2(0.006, half.y)));
   }
   return b.finish();
 }
@@ -509,7 +512,8 @@ ObjectAsset make_stool(uint32_t seed) {
       b.add(legs, ring(glm::length(dvec2(leg_centre(directions[0], z))), metal ? 0.01 : 0.012, z));
     } else {
       for (int k = 0; k < leg_count; ++k) {
-        b.add(legs, rod(leg_centre(directions[k], z), leg_centre(directions[(k + 1) % leg_count], z), 0.5 * leg_radius));
+        b.add(legs,
+              rod(leg_centre(directions[k], z), leg_centre(directions[(k + 1) % leg_count], z), 0.5 * leg_radius));
       }
     }
   }
@@ -524,7 +528,8 @@ ObjectAsset make_desk(uint32_t seed) {
   const double height = r.between(0.73, 0.76), width = r.between(1.1, 1.6), depth = r.between(0.6, 0.75);
   const double underside = height - r.between(0.025, 0.035);
   const uint32_t top = b.add_part("top", wooden(r));
-  b.add(top, chamfered_box(dvec3(-0.5 * depth, -0.5 * width, underside), dvec3(0.5 * depth, 0.5 * width, height), kEasedEdge));
+  b.add(top, chamfered_box(dvec3(-0.5 * depth, -0.5 * width, underside), dvec3(0.5 * depth, 0.5 * width, height),
+                           kEasedEdge));
 
   // 0: a drawer pedestal at one end and two legs at the other; 1: four legs with drawers in the
   // front apron; 2: two panel ends with a drawer box hung under the top.
@@ -534,7 +539,7 @@ ObjectAsset make_desk(uint32_t seed) {
   const uint32_t drawers = b.add_part("drawers", wooden(r));
   const uint32_t handles = b.add_part("handles", Finish::BrushedMetal);
   const HandleStyle handle = r.next() < 0.7 ? HandleStyle::Bar : HandleStyle::Knob;
-  constexpr double kFront = 0.018;  // drawer fronts are 18 mm boards
+  constexpr double kFront = 0.018;                  // drawer fronts are 18 mm boards
   const double side = r.next() < 0.5 ? -1.0 : 1.0;  // the end with the drawers
   const double half_depth = 0.5 * depth, half_width = 0.5 * width;
   // The y range from `near` to `far` in from the edge at the drawer end.
@@ -547,7 +552,8 @@ ObjectAsset make_desk(uint32_t seed) {
     const double plinth = 0.06, face = half_depth - 0.03 - kFront;
     const dvec2 span = from_end(0.02, 0.02 + r.between(0.4, 0.45));
     b.add(frame, box_mesh(dvec3(0.02 - half_depth, span.x, plinth), dvec3(face, span.y, underside + kOverlap)));
-    b.add(frame, box_mesh(dvec3(0.04 - half_depth, span.x + 0.02, 0.0), dvec3(face - 0.03, span.y - 0.02, plinth + kOverlap)));
+    b.add(frame,
+          box_mesh(dvec3(0.04 - half_depth, span.x + 0.02, 0.0), dvec3(face - 0.03, span.y - 0.02, plinth + kOverlap)));
     const int count = 2 + static_cast<int>(r.choice(2));
     const double pitch = (underside - plinth) / count;
     for (int k = 0; k < count; ++k) {
@@ -555,7 +561,9 @@ ObjectAsset make_desk(uint32_t seed) {
     }
     // Two legs at the far end, a rail between them and a modesty panel at the back.
     const double leg_thickness = r.between(0.04, 0.05), y = -side * (half_width - 0.05), x = half_depth - 0.05;
-    for (const double end : {-1.0, 1.0}) b.add(frame, leg(style, dvec2(end * x, y), underside + kOverlap, leg_thickness));
+    for (const double end : {-1.0, 1.0}) {
+      b.add(frame, leg(style, dvec2(end * x, y), underside + kOverlap, leg_thickness));
+    }
     b.add(frame, box_mesh(dvec3(-x, y - 0.01, underside - 0.08), dvec3(x, y + 0.01, underside + kOverlap)));
     const double panel_y = side > 0.0 ? span.x : span.y;
     b.add(frame, box_mesh(dvec3(0.04 - half_depth, std::min(y, panel_y), underside - 0.35),
@@ -585,8 +593,9 @@ ObjectAsset make_desk(uint32_t seed) {
     const double panel = r.between(0.025, 0.04), inner = half_width - 0.02 - panel;
     for (const double end : {-1.0, 1.0}) {
       const double outer = end * (half_width - 0.02);
-      b.add(frame, chamfered_box(dvec3(0.02 - half_depth, std::min(outer, end * inner), 0.0),
-                                 dvec3(half_depth - 0.02, std::max(outer, end * inner), underside + kOverlap), kEasedEdge));
+      b.add(frame,
+            chamfered_box(dvec3(0.02 - half_depth, std::min(outer, end * inner), 0.0),
+                          dvec3(half_depth - 0.02, std::max(outer, end * inner), underside + kOverlap), kEasedEdge));
     }
     b.add(frame, box_mesh(dvec3(0.05 - half_depth, -inner - kOverlap, underside - 0.4),
                           dvec3(0.068 - half_depth, inner + kOverlap, underside + kOverlap)));
@@ -653,7 +662,8 @@ ObjectAsset make_cabinet(uint32_t seed) {
     add_legs(b, carcass, LegStyle::Tapered, dvec2(0.5 * depth, half_width) - dvec2(0.03 + 0.5 * leg_thickness),
              base + kOverlap, leg_thickness);
   } else {
-    b.add(carcass, box_mesh(dvec3(back + 0.02, 0.03 - half_width, 0.0), dvec3(face - 0.03, half_width - 0.03, base + kOverlap)));
+    b.add(carcass,
+          box_mesh(dvec3(back + 0.02, 0.03 - half_width, 0.0), dvec3(face - 0.03, half_width - 0.03, base + kOverlap)));
   }
   // The carcass, maybe under a top board overhanging the sides and the front by 1-2 cm.
   double fronts_top = height;
@@ -718,7 +728,8 @@ ObjectAsset make_shelf(uint32_t seed) {
     const int gaps = std::max(2, static_cast<int>(std::lround((height - board - bottom) / pitch)));
     for (int k = 0; k <= gaps; ++k) {
       const double z = bottom + (height - board - bottom) * k / gaps;
-      b.add(boards, chamfered_box(dvec3(-half_depth, -half_width, z), dvec3(half_depth, half_width, z + board), kEasedEdge));
+      b.add(boards,
+            chamfered_box(dvec3(-half_depth, -half_width, z), dvec3(half_depth, half_width, z + board), kEasedEdge));
     }
     if (r.next() < 0.5) {
       const double x = -half_depth - 0.003;
@@ -737,16 +748,20 @@ ObjectAsset make_shelf(uint32_t seed) {
     b.add(frame, chamfered_box(dvec3(-half_depth, std::min(outer, inside), 0.0),
                                dvec3(half_depth, std::max(outer, inside), height - board + kOverlap), kEasedEdge));
   }
-  b.add(frame, chamfered_box(dvec3(-half_depth, -half_width, height - board), dvec3(half_depth, half_width, height), kEasedEdge));
-  b.add(frame, box_mesh(dvec3(half_depth - 0.02 - board, -inner, 0.0), dvec3(half_depth - 0.02, inner, plinth + kOverlap)));
-  const double back = r.next() < 0.6 ? 0.006 : 0.0;
-  if (back > 0.0) {
-    b.add(frame, box_mesh(dvec3(-half_depth, -inner, plinth), dvec3(-half_depth + back, inner, height - board + kOverlap)));
+  b.add(frame, chamfered_box(dvec3(-half_depth, -half_width, height - board), dvec3(half_depth, half_width, height),
+                             kEasedEdge));
+  b.add(frame,
+        box_mesh(dvec3(half_depth - 0.02 - board, -inner, 0.0), dvec3(half_depth - 0.02, inner, plinth + kOverlap)));
+  const double back_panel = r.next() < 0.6 ? 0.006 : 0.0;
+  if (back_panel > 0.0) {
+    b.add(frame, box_mesh(dvec3(-half_depth, -inner, plinth),
+                          dvec3(-half_depth + back_panel, inner, height - board + kOverlap)));
   }
   const int gaps = std::max(2, static_cast<int>(std::lround((height - board - plinth) / pitch)));
   for (int k = 0; k < gaps; ++k) {
     const double z = plinth + (height - board - plinth) * k / gaps;
-    b.add(boards, chamfered_box(dvec3(-half_depth + back, -inner, z), dvec3(half_depth - 0.01, inner, z + board), kEasedEdge));
+    b.add(boards, chamfered_box(dvec3(-half_depth + back_panel, -inner, z), dvec3(half_depth - 0.01, inner, z + board),
+                                kEasedEdge));
   }
   return b.finish();
 }
@@ -773,19 +788,23 @@ ObjectAsset make_sofa(uint32_t seed) {
   // The seat cushions rest 1 cm sunk in the deck of the base; the base and back are padded
   // blocks with 2 cm soft edges.
   constexpr double kSoftEdge = 0.02;
-  const double half_depth = 0.5 * depth, deck = seat_height - seat_cushion + 0.01, front_of_back = back_depth - half_depth;
+  const double half_depth = 0.5 * depth, front_of_back = back_depth - half_depth;
+  const double deck = seat_height - seat_cushion + 0.01;
   b.add(frame, chamfered_box(dvec3(-half_depth, -0.5 * inner - kOverlap, leg_height),
                              dvec3(half_depth, 0.5 * inner + kOverlap, deck), kSoftEdge));
   b.add(frame, chamfered_box(dvec3(-half_depth, -0.5 * inner - kOverlap, deck - kOverlap),
                              dvec3(front_of_back, 0.5 * inner + kOverlap, back_top), kSoftEdge));
   for (const double side : {-1.0, 1.0}) {
-    const double y0 = std::min(side * 0.5 * inner, side * 0.5 * width), y1 = std::max(side * 0.5 * inner, side * 0.5 * width);
+    const double outer = side * 0.5 * width, inside = side * 0.5 * inner;
+    const double y0 = std::min(outer, inside), y1 = std::max(outer, inside);
     if (rolled_arms) {
       // A block under a roll as wide as the arm, running front to back.
       const double roll = 0.5 * arm_width;
-      b.add(frame, chamfered_box(dvec3(-half_depth, y0, leg_height), dvec3(half_depth, y1, arm_height - roll), kSoftEdge));
-      b.add(frame, transformed(cylinder_mesh(roll, -half_depth, half_depth, 2 * kRoundSegments),
-                               translation(dvec3(0.0, 0.5 * (y0 + y1), arm_height - roll)) * rotation_about_y(0.5 * kPi)));
+      b.add(frame,
+            chamfered_box(dvec3(-half_depth, y0, leg_height), dvec3(half_depth, y1, arm_height - roll), kSoftEdge));
+      b.add(frame,
+            transformed(cylinder_mesh(roll, -half_depth, half_depth, 2 * kRoundSegments),
+                        translation(dvec3(0.0, 0.5 * (y0 + y1), arm_height - roll)) * rotation_about_y(0.5 * kPi)));
     } else {
       b.add(frame, chamfered_box(dvec3(-half_depth, y0, leg_height), dvec3(half_depth, y1, arm_height), kSoftEdge));
     }
@@ -795,16 +814,19 @@ ObjectAsset make_sofa(uint32_t seed) {
   // with their feet sunk 3 cm into the seat cushions and their tops near the back's top.
   const double lean = r.between(12.0, 18.0) * kPi / 180.0, back_cushion = r.between(0.14, 0.18);
   const double foot = seat_height - 0.03;
-  const double back_height = (back_top + r.between(-0.02, 0.03) - foot - back_cushion * std::sin(lean)) / std::cos(lean);
+  const double back_height =
+      (back_top + r.between(-0.02, 0.03) - foot - back_cushion * std::sin(lean)) / std::cos(lean);
   const dvec3 up_the_back(-std::sin(lean), 0.0, std::cos(lean)), out_of_the_back(std::cos(lean), 0.0, std::sin(lean));
   const double seat_depth = half_depth - front_of_back;
   for (int k = 0; k < seats; ++k) {
     const double y = -0.5 * inner + (k + 0.5) * seat_width;
     const dvec3 size(seat_depth, seat_width - 0.005, seat_cushion);  // 5 mm apart
-    b.add(cushions, cushion(size, 6.0, translation(dvec3(0.5 * (front_of_back + half_depth), y, deck + 0.5 * seat_cushion - 0.01))));
-    const dvec3 centre =
+    const dvec3 seat_centre(0.5 * (front_of_back + half_depth), y, deck + 0.5 * seat_cushion - 0.01);
+    b.add(cushions, cushion(size, 6.0, translation(seat_centre)));
+    const dvec3 back_centre =
         dvec3(front_of_back, y, foot) + 0.5 * back_height * up_the_back + 0.5 * back_cushion * out_of_the_back;
-    b.add(cushions, cushion(dvec3(back_height, seat_width - 0.005, back_cushion), 4.0, leaning_cushion(centre, lean)));
+    b.add(cushions,
+          cushion(dvec3(back_height, seat_width - 0.005, back_cushion), 4.0, leaning_cushion(back_centre, lean)));
   }
 
   // Legs under the corners, and under the middle of a three-seater's front and back.
@@ -812,7 +834,9 @@ ObjectAsset make_sofa(uint32_t seed) {
   const dvec2 half = dvec2(half_depth, 0.5 * width) - dvec2(0.04 + 0.5 * leg_thickness);
   add_legs(b, legs, leg_style, half, leg_height + kOverlap, leg_thickness);
   if (seats == 3) {
-    for (const double x : {-half.x, half.x}) b.add(legs, leg(leg_style, dvec2(x, 0.0), leg_height + kOverlap, leg_thickness));
+    for (const double x : {-half.x, half.x}) {
+      b.add(legs, leg(leg_style, dvec2(x, 0.0), leg_height + kOverlap, leg_thickness));
+    }
   }
   return b.finish();
 }
@@ -825,7 +849,7 @@ ObjectAsset make_bed(uint32_t seed) {
   const double mattress_width = kMattressWidths[r.choice(4)], mattress_length = 2.0;
   const double mattress_thickness = r.between(0.18, 0.25);
   // Rails 30-50 mm thick, 15-25 cm high, on 10-20 cm legs; the mattress sits 8 cm down in the
-  // frame, its top 0.45-0.6 m high; the headboard stands 0.95-1.2 m.
+  // frame, its top 0.35-0.6 m high; the headboard stands 0.95-1.2 m.
   const double rail = r.between(0.03, 0.05), rail_height = r.between(0.15, 0.25), leg_height = r.between(0.1, 0.2);
   const double headboard = r.between(0.04, 0.08), headboard_height = r.between(0.95, 1.2);
   const bool upholstered = r.next() < 0.3;  // a padded divan with its rails down to the floor
@@ -840,7 +864,8 @@ ObjectAsset make_bed(uint32_t seed) {
   const uint32_t pillows = b.add_part("pillows", Finish::Fabric);
 
   const double edge = upholstered ? 0.02 : kEasedEdge, rails_bottom = upholstered ? 0.0 : leg_height;
-  b.add(frame, chamfered_box(dvec3(head, -half_width, 0.0), dvec3(head + headboard, half_width, headboard_height), edge));
+  b.add(frame,
+        chamfered_box(dvec3(head, -half_width, 0.0), dvec3(head + headboard, half_width, headboard_height), edge));
   for (const double side : {-1.0, 1.0}) {
     const double outer = side * half_width, inside = side * (half_width - rail);
     b.add(frame, chamfered_box(dvec3(head + headboard - kOverlap, std::min(outer, inside), rails_bottom),
@@ -867,8 +892,8 @@ ObjectAsset make_bed(uint32_t seed) {
                           translation(dvec3(mattress_centre, 0.0, mattress_bottom + 0.5 * mattress_thickness))));
   const double duvet_length = 0.65 * mattress_length + 0.03, duvet_thickness = r.between(0.05, 0.08);
   const double duvet_foot = mattress_centre + 0.5 * mattress_length + 0.03;
-  b.add(duvet, cushion(dvec3(duvet_length, mattress_width + 0.06, duvet_thickness), 3.0,
-                       translation(dvec3(duvet_foot - 0.5 * duvet_length, 0.0, mattress_top + 0.5 * duvet_thickness - 0.015))));
+  const dvec3 duvet_centre(duvet_foot - 0.5 * duvet_length, 0.0, mattress_top + 0.5 * duvet_thickness - 0.015);
+  b.add(duvet, cushion(dvec3(duvet_length, mattress_width + 0.06, duvet_thickness), 3.0, translation(duvet_centre)));
 
   // Pillows 50 x 70 cm (narrower two abreast on a 1.4 m bed), 12-16 cm thick, propped 12-18
   // degrees against the headboard.
