@@ -86,22 +86,34 @@ void update_bounds(Chart& chart) {
   for (const glm::dvec2& uv : chart.uvs) chart.lower = glm::min(chart.lower, uv), chart.upper = glm::max(chart.upper, uv);
 }
 
-// Rotation of the flattened chart with the smallest bounding box, in 3-degree steps: LSCM's
-// orientation is arbitrary (set by its pins) and a tight box packs better.
+glm::dvec2 rotated(const glm::dvec2& uv, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return glm::dvec2(c * uv.x - s * uv.y, s * uv.x + c * uv.y);
+}
+
+// Width and height of the bounding box of the points turned by `angle`.
+glm::dvec2 rotated_box_size(const std::vector<glm::dvec2>& uvs, double angle) {
+  glm::dvec2 lower(std::numeric_limits<double>::max()), upper(std::numeric_limits<double>::lowest());
+  for (const glm::dvec2& uv : uvs) {
+    const glm::dvec2 r = rotated(uv, angle);
+    lower = glm::min(lower, r), upper = glm::max(upper, r);
+  }
+  return upper - lower;
+}
+
+// Rotation of the flattened chart with the smallest bounding box, in 3-degree steps, lying
+// with its long side along u: LSCM's orientation is arbitrary (set by its pins), and tight, flat
+// boxes make low shelves that waste little.
 void rotate_to_smallest_box(Chart& chart) {
   double best_area = std::numeric_limits<double>::max(), best_angle = 0.0;
   for (int step = 0; step < 30; ++step) {
-    const double angle = glm::radians(3.0 * step), c = std::cos(angle), s = std::sin(angle);
-    glm::dvec2 lower(std::numeric_limits<double>::max()), upper(std::numeric_limits<double>::lowest());
-    for (const glm::dvec2& uv : chart.uvs) {
-      const glm::dvec2 r(c * uv.x - s * uv.y, s * uv.x + c * uv.y);
-      lower = glm::min(lower, r), upper = glm::max(upper, r);
-    }
-    const double area = (upper.x - lower.x) * (upper.y - lower.y);
-    if (area < best_area) best_area = area, best_angle = angle;
+    const double angle = glm::radians(3.0 * step);
+    const glm::dvec2 size = rotated_box_size(chart.uvs, angle);
+    if (size.x * size.y < best_area) best_area = size.x * size.y, best_angle = angle;
   }
-  const double c = std::cos(best_angle), s = std::sin(best_angle);
-  for (glm::dvec2& uv : chart.uvs) uv = glm::dvec2(c * uv.x - s * uv.y, s * uv.x + c * uv.y);
+  const glm::dvec2 size = rotated_box_size(chart.uvs, best_angle);
+  if (size.y > size.x) best_angle += 0.5 * M_PI;
+  for (glm::dvec2& uv : chart.uvs) uv = rotated(uv, best_angle);
   update_bounds(chart);
 }
 

@@ -181,6 +181,19 @@ TEST_CASE("Packed rectangles never overlap and keep the gutter", "[geom]") {
   CHECK_THROWS_AS(pack_rectangles({glm::ivec2(0, 10)}, options), std::invalid_argument);
 }
 
+TEST_CASE("A few charts pack densely into a corner of a large tile, not along a strip", "[geom]") {
+  // Thirty leg-like strips and some small pieces: one full-width shelf would be 4096 pixels long
+  // and as tall as a strip, mostly empty.
+  std::vector<glm::ivec2> sizes(30, glm::ivec2(300, 24));
+  for (int k = 0; k < 20; ++k) sizes.emplace_back(10 + k, 12);
+  const PackingOptions options{4096, 2};
+  const Packing packing = pack_rectangles(sizes, options);
+  double area = 0.0;
+  for (const glm::ivec2& size : sizes) area += double(size.x) * size.y;
+  CHECK(packing.tiles == 1);
+  CHECK(area / (double(packing.last_tile_width) * packing.last_tile_height) > 0.7);
+}
+
 TEST_CASE("The UV pass reaches the target texel density from 5 cm to 3 m", "[geom]") {
   TriangleMesh unit_box = box(glm::vec3(1.0f, 0.6f, 0.4f));
   TriangleMesh cylinder = closed_cylinder(0.5f, 1.0f, 40);

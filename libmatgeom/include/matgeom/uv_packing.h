@@ -25,8 +25,10 @@ struct Packing {
 };
 
 // Shelf packing, tallest first (ties by input order): rectangles fill a shelf left to right and
-// shelves stack bottom to top; a tile is closed when the next shelf does not fit. Every
-// rectangle keeps gutter_pixels to its neighbours and to the tile edges. Throws
+// shelves stack bottom to top; a tile is closed when the next shelf does not fit. Shelves narrower
+// than the tile are tried too, and the packing with the fewest tiles and then the smallest used
+// area of the last tile is kept, so that a few charts fill a dense corner rather than one long,
+// mostly empty strip. Every rectangle keeps gutter_pixels to its neighbours and to the tile edges. Throws
 // std::invalid_argument when a size is not positive or does not fit in a tile with its gutters.
 Packing pack_rectangles(const std::vector<glm::ivec2>& sizes, const PackingOptions& options);
 
