@@ -76,11 +76,14 @@ matrender::Camera paper_camera(const matgeom::TriangleMesh& mesh, int width, int
   return camera;
 }
 
-double peak_rss_mib() {
+namespace {
+
+// A "Vm...:" line of /proc/self/status in MiB.
+double status_mib(const std::string& wanted) {
   std::ifstream status("/proc/self/status");
   std::string key;
   while (status >> key) {
-    if (key == "VmHWM:") {
+    if (key == wanted) {
       double kib;
       status >> kib;
       return kib / 1024.0;
@@ -89,6 +92,12 @@ double peak_rss_mib() {
   }
   return 0.0;
 }
+
+}  // namespace
+
+double peak_rss_mib() { return status_mib("VmHWM:"); }
+
+double rss_mib() { return status_mib("VmRSS:"); }
 
 void reset_peak_rss() { std::ofstream("/proc/self/clear_refs") << "5"; }
 

@@ -18,8 +18,9 @@ void add_paper_rig(matrender::Scene& scene, const matgeom::TriangleMesh& mesh);
 // Camera of the paper's grid, cell (5, 16) of 16 x 32, radius 1 m around the surface centroid.
 matrender::Camera paper_camera(const matgeom::TriangleMesh& mesh, int width, int height);
 
-// Peak resident memory since the last reset, in MiB (Linux /proc).
+// Peak resident memory since the last reset, and resident memory now, in MiB (Linux /proc).
 double peak_rss_mib();
+double rss_mib();
 void reset_peak_rss();
 
 }  // namespace bench

@@ -155,9 +155,10 @@ std::vector<std::vector<uint32_t>> edge_connected_pieces(const Chart& chart) {
   return pieces;
 }
 
-// Charts of one part, each flattened at the density and no larger than a tile allows: a chart
-// too large is halved at the median of its triangles along its longer UV side; a single
-// triangle too large is scaled down to fit (and marked shrunk).
+// Charts of one part, each flattened at the density, no larger than a tile allows, with an L2
+// stretch within the bound and filling enough of its box: any other chart is halved at the
+// median of its triangles along its longer UV side; a single triangle too large is scaled down to fit (and
+// marked shrunk).
 std::vector<Chart> flattened_charts(const TriangleMesh& mesh, std::vector<std::vector<uint32_t>> pending,
                                     double density, const UvPassOptions& options) {
   const double resolution = options.tile_resolution;
@@ -169,7 +170,13 @@ std::vector<Chart> flattened_charts(const TriangleMesh& mesh, std::vector<std::v
     flatten_at_density(chart, density, options.tile_resolution);
     const glm::dvec2 size_px = (chart.upper - chart.lower) * resolution;
     const double largest = std::max(size_px.x, size_px.y);
-    if (largest <= usable) {
+    const bool splittable = chart.triangles.size() > 1 && largest > 0.0;
+    const bool stretched =
+        splittable &&
+        measure_uv_distortion(chart.welded_positions, chart.welded_triangles, chart.uvs).stretch_l2 > options.max_stretch;
+    const bool sparse = splittable && uv_area(chart.uvs, chart.welded_triangles) <
+                                          options.min_box_fill * (chart.upper.x - chart.lower.x) * (chart.upper.y - chart.lower.y);
+    if (largest <= usable && !stretched && !sparse) {
       charts.push_back(std::move(chart));
       continue;
     }
@@ -226,6 +233,10 @@ std::string part_name(const TriangleMesh& mesh, size_t part) {
 void check_options(const UvPassOptions& options) {
   if (!(options.texel_density_scale > 0.0) || !std::isfinite(options.texel_density_scale))
     throw std::invalid_argument("uv_pass: the texel density scale must be positive");
+  if (!(options.min_box_fill >= 0.0 && options.min_box_fill < 1.0))
+    throw std::invalid_argument("uv_pass: the box fill bound must be in [0, 1)");
+  if (!(options.max_stretch >= 1.0))
+    throw std::invalid_argument("uv_pass: the stretch bound must be at least 1 (an isometry's stretch)");
   if (options.tile_resolution < 8 || options.gutter_pixels < 0 || 4 * options.gutter_pixels >= options.tile_resolution)
     throw std::invalid_argument("uv_pass: tile resolution " + std::to_string(options.tile_resolution) +
                                 " and gutter " + std::to_string(options.gutter_pixels) + " do not make a usable tile");

@@ -13,6 +13,7 @@
 #include "matgeom/builtin_objects.h"
 #include "matgeom/chart_segmentation.h"
 #include "matgeom/tangents.h"
+#include "matgeom/uv_distortion.h"
 #include "matgeom/uv_packing.h"
 
 // The UV pass: chart segmentation on shapes with known charts, the packer's guarantees on
@@ -63,6 +64,50 @@ TriangleMesh closed_cylinder(float r, float h, int segments) {
   for (int k = 0; k < segments; ++k) {
     mesh.triangles.emplace_back(bottom, side(0, k + 1), side(0, k));
     mesh.triangles.emplace_back(bottom + 1, side(1, k), side(1, k + 1));
+  }
+  return mesh;
+}
+
+// A closed latitude-longitude sphere with bumps of relative height `bumps`: curved everywhere,
+// with no sharp edge to cut along.
+TriangleMesh bumpy_sphere(float radius, float bumps, int rings, int segments) {
+  TriangleMesh mesh;
+  mesh.positions.emplace_back(0.0f, 0.0f, radius);
+  for (int i = 1; i < rings; ++i)
+    for (int k = 0; k < segments; ++k) {
+      const float theta = 3.14159265f * static_cast<float>(i) / static_cast<float>(rings);
+      const float phi = 6.2831853f * static_cast<float>(k) / static_cast<float>(segments);
+      const float r = radius * (1.0f + bumps * std::sin(5.0f * theta) * std::sin(6.0f * phi));
+      mesh.positions.emplace_back(r * std::sin(theta) * std::cos(phi), r * std::sin(theta) * std::sin(phi),
+                                  r * std::cos(theta));
+    }
+  mesh.positions.emplace_back(0.0f, 0.0f, -radius);
+  const uint32_t south = static_cast<uint32_t>(mesh.positions.size() - 1);
+  const auto at = [&](int i, int k) { return static_cast<uint32_t>(1 + (i - 1) * segments + k % segments); };
+  for (int k = 0; k < segments; ++k) {
+    mesh.triangles.emplace_back(0, at(1, k), at(1, k + 1));
+    mesh.triangles.emplace_back(south, at(rings - 1, k + 1), at(rings - 1, k));
+    for (int i = 1; i + 1 < rings; ++i) {
+      mesh.triangles.emplace_back(at(i, k), at(i + 1, k), at(i + 1, k + 1));
+      mesh.triangles.emplace_back(at(i, k), at(i + 1, k + 1), at(i, k + 1));
+    }
+  }
+  return mesh;
+}
+
+// A flat ring in the z = 0 plane, outer radius 1 and inner radius `inner`: one planar chart,
+// which fills only a small part of its bounding box.
+TriangleMesh flat_ring(float inner, int segments) {
+  TriangleMesh mesh;
+  for (int k = 0; k < segments; ++k) {
+    const float a = 6.2831853f * static_cast<float>(k) / static_cast<float>(segments);
+    mesh.positions.emplace_back(std::cos(a), std::sin(a), 0.0f);
+    mesh.positions.emplace_back(inner * std::cos(a), inner * std::sin(a), 0.0f);
+  }
+  const auto outer_at = [&](int k) { return static_cast<uint32_t>(2 * (k % segments)); };
+  for (int k = 0; k < segments; ++k) {
+    mesh.triangles.emplace_back(outer_at(k), outer_at(k + 1), outer_at(k + 1) + 1);
+    mesh.triangles.emplace_back(outer_at(k), outer_at(k + 1) + 1, outer_at(k) + 1);
   }
   return mesh;
 }
@@ -223,6 +268,55 @@ TEST_CASE("The UV pass reaches the target texel density from 5 cm to 3 m", "[geo
             CHECK(result.mesh.positions[result.mesh.triangles[t][c]] == mesh.positions[mesh.triangles[t][c]]);
       }
     }
+}
+
+TEST_CASE("Charts too stretched or too sparse in their box are halved until within the bounds", "[geom]") {
+  // Each chart of the output, measured on its own: L2 stretch (Sander et al. 2001) and the
+  // fraction of its UV box it covers.
+  const auto check_charts = [](const TriangleMesh& mesh, const UvPassOptions& options) {
+    const std::vector<uint32_t> chart = chart_of_triangles(mesh);
+    std::map<uint32_t, std::vector<glm::uvec3>> triangles_of;
+    for (size_t t = 0; t < mesh.triangle_count(); ++t) triangles_of[chart[t]].push_back(mesh.triangles[t]);
+    std::vector<glm::dvec3> positions(mesh.positions.begin(), mesh.positions.end());
+    std::vector<glm::dvec2> uvs(mesh.uvs.begin(), mesh.uvs.end());
+    for (const auto& [id, triangles] : triangles_of) {
+      if (triangles.size() == 1) continue;  // a single triangle cannot be split
+      glm::dvec2 lower(1e9), upper(-1e9);
+      double area = 0.0;
+      for (const glm::uvec3& t : triangles) {
+        for (int c = 0; c < 3; ++c) lower = glm::min(lower, uvs[t[c]]), upper = glm::max(upper, uvs[t[c]]);
+        const glm::dvec2 e1 = uvs[t.y] - uvs[t.x], e2 = uvs[t.z] - uvs[t.x];
+        area += 0.5 * std::abs(e1.x * e2.y - e1.y * e2.x);
+      }
+      INFO("chart of " << triangles.size() << " triangles");
+      CHECK(measure_uv_distortion(positions, triangles, uvs).stretch_l2 <= options.max_stretch * (1.0 + 1e-3));
+      CHECK(area >= options.min_box_fill * (upper.x - lower.x) * (upper.y - lower.y) * (1.0 - 1e-3));
+    }
+  };
+  const TriangleMesh sphere = bumpy_sphere(0.3f, 0.15f, 48, 96);
+  UvPassOptions unbounded;
+  unbounded.max_stretch = 1e9;
+  CHECK(uv_pass(sphere, unbounded).parts[0].distortion.stretch_l2 > 1.03);  // what LSCM alone gives
+  for (const double bound : {1.2, 1.03}) {
+    UvPassOptions options;
+    options.max_stretch = bound;
+    const UvPassResult result = uv_pass(sphere, options);
+    INFO("stretch bound " << bound << ": " << result.parts[0].charts << " charts");
+    // Every chart has the same density, so the part's stretch is their area-weighted RMS.
+    CHECK(result.parts[0].distortion.stretch_l2 <= bound * (1.0 + 1e-3));
+    CHECK(result.parts[0].achieved_density == Approx(result.parts[0].target_density).epsilon(0.01));
+    check_charts(result.mesh, options);
+  }
+  // A thin flat ring is a single isometric chart covering pi (1 - 0.9^2) / 4 = 15% of its box.
+  const TriangleMesh ring = flat_ring(0.9f, 96);
+  UvPassOptions whole;
+  whole.min_box_fill = 0.0;
+  CHECK(uv_pass(ring, whole).parts[0].charts == 1);
+  const UvPassResult split = uv_pass(ring);
+  CHECK(split.parts[0].charts > 1);
+  CHECK(split.parts[0].distortion.stretch_l2 == Approx(1.0).epsilon(1e-3));
+  check_charts(split.mesh, UvPassOptions{});
+  check_layout(split.mesh, UvPassOptions{});
 }
 
 TEST_CASE("The target density follows the paper's formula", "[geom]") {

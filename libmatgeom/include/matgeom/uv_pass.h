@@ -15,6 +15,13 @@ namespace matgeom {
 struct UvPassOptions {
   double texel_density_scale = 1.0;  // the paper's user scale s (it studies 0.1 .. 2)
   ChartOptions charts;
+  // A chart whose L2 stretch (uv_distortion.h) exceeds this after flattening is halved and
+  // flattened again: LSCM keeps angles but lets the scale drift across a curved chart, and the
+  // texel density should hold everywhere, not only on average.
+  double max_stretch = 1.2;
+  // A chart covering less than this fraction of its bounding box (an arc flattened from a ring,
+  // say) is halved too: packing places boxes, so the rest of the box would be wasted texture.
+  double min_box_fill = 0.2;
   int tile_resolution = 4096;  // pixels per UDIM tile side (the paper's 4k material maps)
   int gutter_pixels = 2;
   bool keep_existing_uvs = false;  // only report on the mesh's own UVs
