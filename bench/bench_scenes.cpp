@@ -36,13 +36,14 @@ matgeom::TriangleMesh displaced_sphere(size_t triangles) {
   return m;
 }
 
-void add_paper_rig(matrender::Scene& scene, const matgeom::TriangleMesh& mesh) {
+std::vector<matrender::Light> paper_rig_lights(const matgeom::TriangleMesh& mesh) {
   const matgeom::Sphere sphere = matgeom::minimal_enclosing_sphere(mesh.positions);
   // The paper's formula gives far more than the 1 klx it aims for (about 8e5 lx for the vase);
   // normalising keeps pixel values, and so the error table, in a displayable range.
   matgeom::LightRigOptions options;
   options.target_illuminance_lux = 1000.0;
   const matgeom::LightRig rig = matgeom::make_light_rig(sphere.center, sphere.radius, options);
+  std::vector<matrender::Light> lights;
   for (const matgeom::RigLight& l : rig.lights) {
     if (l.kind == matgeom::RigLightKind::Area) {
       matrender::RectLight rect;
@@ -51,7 +52,7 @@ void add_paper_rig(matrender::Scene& scene, const matgeom::TriangleMesh& mesh) {
       rect.size_y = l.size_y;
       rect.power = l.power;
       rect.color = l.color;
-      scene.add_light(rect);
+      lights.emplace_back(rect);
     } else {
       matrender::SpotLight spot;
       spot.position = l.position;
@@ -60,9 +61,22 @@ void add_paper_rig(matrender::Scene& scene, const matgeom::TriangleMesh& mesh) {
       spot.blend = l.spot_blend;
       spot.power = l.power;
       spot.color = l.color;
-      scene.add_light(spot);
+      lights.emplace_back(spot);
     }
   }
+  return lights;
+}
+
+void add_paper_rig(matrender::Scene& scene, const matgeom::TriangleMesh& mesh) {
+  for (const matrender::Light& light : paper_rig_lights(mesh)) scene.add_light(light);
+}
+
+matrender::Material bench_material() {
+  matrender::Material m;
+  m.base_color.value = glm::vec3(0.7f, 0.5f, 0.3f);
+  m.roughness.value = 0.35f;
+  m.metallic.value = 0.0f;
+  return m;
 }
 
 matrender::Camera paper_camera(const matgeom::TriangleMesh& mesh, int width, int height) {

@@ -85,13 +85,6 @@ double replay(const RawEmbree& raw, const std::vector<matrender::RayLog::Entry>&
   return seconds_since(start);
 }
 
-matrender::Material bench_material() {
-  matrender::Material m;
-  m.base_color.value = glm::vec3(0.7f, 0.5f, 0.3f);
-  m.roughness.value = 0.35f;
-  m.metallic.value = 0.0f;
-  return m;
-}
 
 void traversal_table(const std::vector<size_t>& sizes, int resolution, int spp) {
   fmt::print("\n## Path tracer against raw Embree on the same rays ({}x{}, {} spp, paper rig)\n\n", resolution,
@@ -102,7 +95,7 @@ void traversal_table(const std::vector<size_t>& sizes, int resolution, int spp) 
     bench::reset_peak_rss();
     const matgeom::TriangleMesh mesh = bench::displaced_sphere(target);
     matrender::Scene scene;
-    scene.add_mesh(mesh, {scene.add_material(bench_material())});
+    scene.add_mesh(mesh, {scene.add_material(bench::bench_material())});
     bench::add_paper_rig(scene, mesh);
     scene.commit();
     RawEmbree raw = build_raw_embree(mesh);

@@ -1,0 +1,135 @@
+# Renders a scene described by cycles_side_by_side's JSON with Blender 3.4 Cycles, once per
+# sample count, into linear EXRs, and records how long each render took. Blender is only a
+# reference for the bench, never a dependency of the product.
+#
+#   blender -b --factory-startup -noaudio --python-exit-code 1 -P cycles_render.py -- SCENE.json OUT_DIR SPP[,SPP...] THREADS
+#
+# Writes OUT_DIR/cycles_<spp>.exr for each sample count and OUT_DIR/cycles_timings.json
+# ({"<spp>": seconds}). The settings below switch off what would make Cycles' converged image
+# differ from the unbiased integral our renderer computes (clamping, glossy blur, adaptive
+# sampling, denoising, the shadow terminator offset) and keep its defaults otherwise.
+import json
+import os
+import sys
+import time
+
+import bpy
+from mathutils import Matrix
+
+
+def matrix_from_columns(values):
+    """A 4x4 matrix from 16 numbers in column-major order (glm's layout)."""
+    return Matrix([[values[4 * column + row] for column in range(4)] for row in range(4)])
+
+
+def add_mesh(scene, description, material):
+    mesh = bpy.data.meshes.new("object")
+    mesh.from_pydata([tuple(p) for p in description["positions"]], [],
+                     [tuple(t) for t in description["triangles"]])
+    mesh.update()
+    mesh.polygons.foreach_set("use_smooth", [True] * len(mesh.polygons))
+    mesh.use_auto_smooth = True  # custom split normals need it in 3.4
+    mesh.normals_split_custom_set_from_vertices([tuple(n) for n in description["normals"]])
+    mesh.materials.append(material)
+    obj = bpy.data.objects.new("object", mesh)
+    obj.cycles.shadow_terminator_geometry_offset = 0.0  # we do not offset shadow terminators
+    scene.collection.objects.link(obj)
+
+
+def make_material(description):
+    material = bpy.data.materials.new("material")
+    material.use_nodes = True
+    bsdf = material.node_tree.nodes["Principled BSDF"]
+    bsdf.distribution = "GGX"  # single-scatter GGX, as ours
+    bsdf.inputs["Base Color"].default_value = (*description["base_color"], 1.0)
+    bsdf.inputs["Metallic"].default_value = description["metallic"]
+    bsdf.inputs["Roughness"].default_value = description["roughness"]
+    bsdf.inputs["Specular"].default_value = description["specular"]
+    bsdf.inputs["Specular Tint"].default_value = description["specular_tint"]
+    return material
+
+
+def add_lamps(scene, lamps):
+    for k, lamp in enumerate(lamps):
+        light = bpy.data.lights.new(f"lamp_{k}", "AREA")
+        light.shape = "RECTANGLE"
+        light.size = lamp["size_x"]
+        light.size_y = lamp["size_y"]
+        light.energy = lamp["power"]
+        light.color = lamp["color"]
+        obj = bpy.data.objects.new(f"lamp_{k}", light)
+        obj.matrix_world = matrix_from_columns(lamp["light_to_world"])
+        scene.collection.objects.link(obj)
+
+
+def add_camera(scene, camera):
+    data = bpy.data.cameras.new("camera")
+    data.sensor_fit = "VERTICAL"
+    data.angle_y = camera["vertical_fov"]
+    obj = bpy.data.objects.new("camera", data)
+    obj.matrix_world = matrix_from_columns(camera["camera_to_world"])
+    scene.collection.objects.link(obj)
+    scene.camera = obj
+    scene.render.resolution_x = camera["width"]
+    scene.render.resolution_y = camera["height"]
+    scene.render.resolution_percentage = 100
+
+
+def set_world(scene, background):
+    world = bpy.data.worlds.new("world")
+    world.use_nodes = True
+    node = world.node_tree.nodes["Background"]
+    node.inputs["Color"].default_value = (*background, 1.0)
+    node.inputs["Strength"].default_value = 1.0
+    scene.world = world
+
+
+def set_cycles(scene, threads):
+    scene.render.engine = "CYCLES"
+    cycles = scene.cycles
+    cycles.device = "CPU"
+    cycles.use_adaptive_sampling = False
+    cycles.use_denoising = False
+    cycles.sample_clamp_direct = 0.0
+    cycles.sample_clamp_indirect = 0.0
+    cycles.blur_glossy = 0.0
+    cycles.seed = 0
+    cycles.pixel_filter_type = "BLACKMAN_HARRIS"
+    cycles.filter_width = 1.5
+    scene.render.threads_mode = "FIXED"
+    scene.render.threads = threads
+    scene.render.film_transparent = False
+    settings = scene.render.image_settings
+    settings.file_format = "OPEN_EXR"
+    settings.color_depth = "32"
+    settings.color_mode = "RGB"
+    settings.exr_codec = "ZIP"
+
+
+def main():
+    arguments = sys.argv[sys.argv.index("--") + 1:]
+    if len(arguments) != 4:
+        sys.exit("usage: blender -b --factory-startup -P cycles_render.py -- SCENE.json OUT_DIR SPP[,SPP...] THREADS")
+    scene_path, out_dir, spp_list, threads = arguments
+    with open(scene_path) as f:
+        description = json.load(f)
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    scene = bpy.context.scene
+    add_mesh(scene, description["mesh"], make_material(description["material"]))
+    add_lamps(scene, description["lamps"])
+    add_camera(scene, description["camera"])
+    set_world(scene, description["background"])
+    set_cycles(scene, int(threads))
+
+    timings = {}
+    for spp in [int(s) for s in spp_list.split(",")]:
+        scene.cycles.samples = spp
+        scene.render.filepath = os.path.join(out_dir, f"cycles_{spp}.exr")
+        start = time.perf_counter()
+        bpy.ops.render.render(write_still=True)
+        timings[str(spp)] = time.perf_counter() - start
+    with open(os.path.join(out_dir, "cycles_timings.json"), "w") as f:
+        json.dump(timings, f)
+
+
+main()
