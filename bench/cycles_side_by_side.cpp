@@ -6,82 +6,19 @@
 // Blender is a reference here, never a dependency of the product.
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <map>
 #include <stdexcept>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <CLI/CLI.hpp>
-#include <OpenImageIO/imageio.h>
 #include <fmt/core.h>
-#include <nlohmann/json.hpp>
 
 #include "bench_scenes.h"
 #include "matrender/render.h"
-
-#ifndef MATPREDICT_BENCH_SOURCE_DIR
-#error "MATPREDICT_BENCH_SOURCE_DIR must name bench/ (for cycles_render.py)"
-#endif
+#include "shaders_ref/cycles_reference.h"
 
 namespace {
-
-using nlohmann::json;
-
-json column_major(const glm::dmat4& m) {
-  json values = json::array();
-  for (int column = 0; column < 4; ++column)
-    for (int row = 0; row < 4; ++row) values.push_back(m[column][row]);
-  return values;
-}
-
-// What cycles_render.py rebuilds in Blender.
-json describe_scene(const matgeom::TriangleMesh& mesh, const matrender::Material& material,
-                    const std::vector<matrender::Light>& lights, const matrender::Camera& camera) {
-  json scene;
-  json positions = json::array(), normals = json::array(), triangles = json::array();
-  for (const glm::vec3& p : mesh.positions) positions.push_back({p.x, p.y, p.z});
-  for (const glm::vec3& n : mesh.normals) normals.push_back({n.x, n.y, n.z});
-  for (const glm::uvec3& t : mesh.triangles) triangles.push_back({t.x, t.y, t.z});
-  scene["mesh"] = {{"positions", positions}, {"normals", normals}, {"triangles", triangles}};
-  const glm::vec3 base = material.base_color.value;
-  scene["material"] = {{"base_color", {base.r, base.g, base.b}},
-                       {"metallic", material.metallic.value},
-                       {"roughness", material.roughness.value},
-                       {"specular", material.specular},
-                       {"specular_tint", material.specular_tint}};
-  json lamps = json::array();
-  for (const matrender::Light& light : lights) {
-    const auto* rect = std::get_if<matrender::RectLight>(&light);
-    if (!rect) throw std::runtime_error("cycles_side_by_side: only rectangle lamps are exported to Blender");
-    lamps.push_back({{"light_to_world", column_major(rect->light_to_world)},
-                     {"size_x", rect->size_x},
-                     {"size_y", rect->size_y},
-                     {"power", rect->power},
-                     {"color", {rect->color.r, rect->color.g, rect->color.b}}});
-  }
-  scene["lamps"] = lamps;
-  scene["camera"] = {{"camera_to_world", column_major(camera.camera_to_world)},
-                     {"vertical_fov", camera.vertical_fov},
-                     {"width", camera.width},
-                     {"height", camera.height}};
-  scene["background"] = {0.0, 0.0, 0.0};
-  return scene;
-}
-
-std::vector<float> read_rgb_exr(const std::string& path, int width, int height) {
-  auto input = OIIO::ImageInput::open(path);
-  if (!input) throw std::runtime_error(path + ": cannot open: " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = input->spec();
-  if (spec.width != width || spec.height != height || spec.nchannels < 3)
-    throw std::runtime_error(path + ": expected " + std::to_string(width) + "x" + std::to_string(height) + " RGB");
-  std::vector<float> rgb(static_cast<size_t>(width) * height * 3);
-  if (!input->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, rgb.data()))
-    throw std::runtime_error(path + ": " + input->geterror());
-  return rgb;
-}
 
 double rmse(const std::vector<float>& a, const std::vector<float>& b) {
   double sum = 0.0;
@@ -131,33 +68,33 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   std::sort(spp_list.begin(), spp_list.end());
 
-  const matgeom::TriangleMesh mesh = bench::displaced_sphere(triangles);
-  const matrender::Material material = bench::bench_material();
-  const std::vector<matrender::Light> lights = bench::paper_rig_lights(mesh);
-  const matrender::Camera camera = bench::paper_camera(mesh, resolution, resolution);
+  shaders_ref::CyclesScene cycles_scene;
+  cycles_scene.mesh = bench::displaced_sphere(triangles);
+  cycles_scene.material = bench::bench_material();
+  for (const matrender::Light& light : bench::paper_rig_lights(cycles_scene.mesh)) {
+    const auto* rect = std::get_if<matrender::RectLight>(&light);
+    if (!rect) throw std::runtime_error("cycles_side_by_side: the rig has a spot; only rectangles go to Blender");
+    cycles_scene.lamps.push_back(*rect);
+  }
+  cycles_scene.camera = bench::paper_camera(cycles_scene.mesh, resolution, resolution);
+  const matgeom::TriangleMesh& mesh = cycles_scene.mesh;
+  const matrender::Camera& camera = cycles_scene.camera;
 
-  std::filesystem::create_directories(work);
-  const std::string description_path = work + "/scene.json";
-  std::ofstream(description_path) << describe_scene(mesh, material, lights, camera).dump();
-
-  // Cycles first, alone on the machine; its references are rendered last.
-  std::string spp_argument;
-  for (const int spp : spp_list) spp_argument += std::to_string(spp) + ",";
-  spp_argument += std::to_string(reference_spp);
-  const std::string command = fmt::format("'{}' -b --factory-startup -noaudio --python-exit-code 1 -P '{}/cycles_render.py' -- '{}' '{}' {} {} > '{}/blender.log' 2>&1",
-                                          blender, MATPREDICT_BENCH_SOURCE_DIR, description_path, work, spp_argument,
-                                          threads, work);
-  fmt::print(stderr, "running Blender: {}\n", command);
-  if (std::system(command.c_str()) != 0) {
-    fmt::print(stderr, "cycles_side_by_side: Blender failed; see {}/blender.log\n", work);
+  // Cycles first, alone on the machine; its reference is rendered last.
+  std::vector<shaders_ref::CyclesRender> cycles_renders;
+  for (const int spp : spp_list) cycles_renders.push_back({spp, 0, "", 0.0});
+  cycles_renders.push_back({reference_spp, 0, "", 0.0});
+  fmt::print(stderr, "rendering with Blender into {} ...\n", work);
+  try {
+    shaders_ref::render_with_cycles(cycles_scene, cycles_renders, threads, work, blender);
+  } catch (const std::exception& error) {
+    fmt::print(stderr, "cycles_side_by_side: {}\n", error.what());
     return 1;
   }
-  json cycles_seconds;
-  std::ifstream(work + "/cycles_timings.json") >> cycles_seconds;
 
   matrender::Scene scene;
-  scene.add_mesh(mesh, {scene.add_material(material)});
-  for (const matrender::Light& light : lights) scene.add_light(light);
+  scene.add_mesh(mesh, {scene.add_material(cycles_scene.material)});
+  for (const matrender::RectLight& lamp : cycles_scene.lamps) scene.add_light(lamp);
   scene.commit();
   const auto render_ours = [&](int spp, double* seconds) {
     matrender::RenderSettings settings;
@@ -171,7 +108,7 @@ int main(int argc, char** argv) {
   double ours_reference_seconds;
   const std::vector<float> ours_reference = render_ours(reference_spp, &ours_reference_seconds);
   const std::vector<float> cycles_reference =
-      read_rgb_exr(work + "/cycles_" + std::to_string(reference_spp) + ".exr", resolution, resolution);
+      shaders_ref::read_rgb_exr(cycles_renders.back().exr_path, resolution, resolution);
 
   Curve ours, cycles;
   fmt::print("## libmatrender beside Blender 3.4 Cycles: bumpy sphere, {} triangles, paper rig, {}x{}, {} threads\n\n",
@@ -179,19 +116,20 @@ int main(int argc, char** argv) {
   fmt::print("BVH build (ours): {:.1f} ms. Cycles' times are whole render calls (scene sync, BVH, sampling, EXR).\n\n",
              1e3 * scene.bvh_build_seconds());
   fmt::print("| spp | ours s | ours RMSE | Cycles s | Cycles RMSE |\n|---:|---:|---:|---:|---:|\n");
-  for (const int spp : spp_list) {
+  for (size_t k = 0; k < spp_list.size(); ++k) {
+    const int spp = spp_list[k];
     double seconds;
     const std::vector<float> image = render_ours(spp, &seconds);
     ours.seconds.push_back(seconds + scene.bvh_build_seconds());
     ours.error.push_back(rmse(image, ours_reference));
-    cycles.seconds.push_back(cycles_seconds[std::to_string(spp)].get<double>());
-    cycles.error.push_back(rmse(read_rgb_exr(work + "/cycles_" + std::to_string(spp) + ".exr", resolution, resolution),
-                                cycles_reference));
+    cycles.seconds.push_back(cycles_renders[k].seconds);
+    cycles.error.push_back(
+        rmse(shaders_ref::read_rgb_exr(cycles_renders[k].exr_path, resolution, resolution), cycles_reference));
     fmt::print("| {} | {:.3f} | {:.5f} | {:.3f} | {:.5f} |\n", spp, ours.seconds.back(), ours.error.back(),
                cycles.seconds.back(), cycles.error.back());
   }
   fmt::print("\nReferences: ours {} spp in {:.2f} s, Cycles {} spp in {:.2f} s.\n\n", reference_spp,
-             ours_reference_seconds, reference_spp, cycles_seconds[std::to_string(reference_spp)].get<double>());
+             ours_reference_seconds, reference_spp, cycles_renders.back().seconds);
 
   fmt::print("| RMSE reached | ours s | Cycles s | Cycles / ours |\n|---:|---:|---:|---:|\n");
   for (size_t k = 0; k < cycles.error.size(); ++k) {

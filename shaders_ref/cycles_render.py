@@ -1,15 +1,15 @@
-# Renders a scene described by cycles_side_by_side's JSON with Blender 3.4 Cycles, once per
-# sample count, into linear EXRs, and records how long each render took. Blender is only a
-# reference for the bench, never a dependency of the product.
+# Renders a scene described by shaders_ref's cycles_reference.cpp with Blender 3.4 Cycles into
+# linear EXRs, once per requested (samples, seed), and records how long each render call took.
+# Blender is only a reference for the optional tests and the bench, never a product dependency.
 #
-#   blender -b --factory-startup -noaudio --python-exit-code 1 -P cycles_render.py -- SCENE.json OUT_DIR SPP[,SPP...] THREADS
+#   blender -b --factory-startup -noaudio --python-exit-code 1 -P cycles_render.py -- SCENE.json
 #
-# Writes OUT_DIR/cycles_<spp>.exr for each sample count and OUT_DIR/cycles_timings.json
-# ({"<spp>": seconds}). The settings below switch off what would make Cycles' converged image
-# differ from the unbiased integral our renderer computes (clamping, glossy blur, adaptive
-# sampling, denoising, the shadow terminator offset) and keep its defaults otherwise.
+# SCENE.json holds the mesh, material, lamps, camera and background, plus "threads", "renders"
+# ([{"spp", "seed", "path"}]) and "timings_path", where {"<path>": seconds} is written. The
+# settings below switch off what would make Cycles' converged image differ from the unbiased
+# integral libmatrender computes (clamping, glossy blur, adaptive sampling, denoising, the
+# shadow terminator offset) and keep Cycles' defaults otherwise.
 import json
-import os
 import sys
 import time
 
@@ -93,7 +93,6 @@ def set_cycles(scene, threads):
     cycles.sample_clamp_direct = 0.0
     cycles.sample_clamp_indirect = 0.0
     cycles.blur_glossy = 0.0
-    cycles.seed = 0
     cycles.pixel_filter_type = "BLACKMAN_HARRIS"
     cycles.filter_width = 1.5
     scene.render.threads_mode = "FIXED"
@@ -107,11 +106,10 @@ def set_cycles(scene, threads):
 
 
 def main():
-    arguments = sys.argv[sys.argv.index("--") + 1:]
-    if len(arguments) != 4:
-        sys.exit("usage: blender -b --factory-startup -P cycles_render.py -- SCENE.json OUT_DIR SPP[,SPP...] THREADS")
-    scene_path, out_dir, spp_list, threads = arguments
-    with open(scene_path) as f:
+    arguments = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    if len(arguments) != 1:
+        sys.exit("usage: blender -b --factory-startup -P cycles_render.py -- SCENE.json")
+    with open(arguments[0]) as f:
         description = json.load(f)
     bpy.ops.wm.read_factory_settings(use_empty=True)
     scene = bpy.context.scene
@@ -119,16 +117,17 @@ def main():
     add_lamps(scene, description["lamps"])
     add_camera(scene, description["camera"])
     set_world(scene, description["background"])
-    set_cycles(scene, int(threads))
+    set_cycles(scene, description["threads"])
 
     timings = {}
-    for spp in [int(s) for s in spp_list.split(",")]:
-        scene.cycles.samples = spp
-        scene.render.filepath = os.path.join(out_dir, f"cycles_{spp}.exr")
+    for render in description["renders"]:
+        scene.cycles.samples = render["spp"]
+        scene.cycles.seed = render["seed"]
+        scene.render.filepath = render["path"]
         start = time.perf_counter()
         bpy.ops.render.render(write_still=True)
-        timings[str(spp)] = time.perf_counter() - start
-    with open(os.path.join(out_dir, "cycles_timings.json"), "w") as f:
+        timings[render["path"]] = time.perf_counter() - start
+    with open(description["timings_path"], "w") as f:
         json.dump(timings, f)
 
 

@@ -1,0 +1,44 @@
+#pragma once
+// Blender 3.4 Cycles as an outside reference: a scene handed to Blender as a JSON description
+// that shaders_ref/cycles_render.py rebuilds there, rendered into linear EXRs. Blender is needed
+// only at run time, and only by the optional tests and the bench (../shared/reference/cycles.md).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "matgeom/mesh.h"
+#include "matrender/camera.h"
+#include "matrender/light.h"
+#include "matrender/material.h"
+
+namespace shaders_ref {
+
+// What Blender rebuilds: one smooth mesh (vertex normals) in one untextured Principled material,
+// rectangle lamps, a camera and a uniform background.
+struct CyclesScene {
+  matgeom::TriangleMesh mesh;
+  matrender::Material material;
+  std::vector<matrender::RectLight> lamps;
+  matrender::Camera camera;
+  glm::vec3 background{0.0f};
+};
+
+struct CyclesRender {
+  int samples_per_pixel = 16;
+  uint32_t seed = 0;
+  std::string exr_path;  // filled by render_with_cycles
+  double seconds = 0.0;  // the whole render call: scene sync, BVH, sampling, writing the EXR
+};
+
+// True when `blender --version` runs and reports Blender 3.4.
+bool cycles_available(const std::string& blender = "blender");
+
+// Writes `folder`/scene.json and runs Blender once for all `renders`, each into
+// `folder`/cycles_<spp>_<seed>.exr. Throws std::runtime_error naming Blender's log on failure.
+void render_with_cycles(const CyclesScene& scene, std::vector<CyclesRender>& renders, int threads,
+                        const std::string& folder, const std::string& blender = "blender");
+
+// Linear RGB of an EXR, row 0 at the top; throws if the size differs.
+std::vector<float> read_rgb_exr(const std::string& path, int width, int height);
+
+}  // namespace shaders_ref

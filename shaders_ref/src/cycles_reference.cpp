@@ -1,0 +1,115 @@
+#include "shaders_ref/cycles_reference.h"
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+
+#include <OpenImageIO/imageio.h>
+#include <nlohmann/json.hpp>
+
+#ifndef MATPREDICT_CYCLES_SCRIPT
+#error "MATPREDICT_CYCLES_SCRIPT must name shaders_ref/cycles_render.py"
+#endif
+
+namespace shaders_ref {
+namespace {
+
+using nlohmann::json;
+
+json column_major(const glm::dmat4& m) {
+  json values = json::array();
+  for (int column = 0; column < 4; ++column)
+    for (int row = 0; row < 4; ++row) values.push_back(m[column][row]);
+  return values;
+}
+
+json describe(const CyclesScene& scene) {
+  json positions = json::array(), normals = json::array(), triangles = json::array();
+  for (const glm::vec3& p : scene.mesh.positions) positions.push_back({p.x, p.y, p.z});
+  for (const glm::vec3& n : scene.mesh.normals) normals.push_back({n.x, n.y, n.z});
+  for (const glm::uvec3& t : scene.mesh.triangles) triangles.push_back({t.x, t.y, t.z});
+  const matrender::Material& m = scene.material;
+  if (m.base_color.texture || m.metallic.texture || m.roughness.texture || m.normal_map)
+    throw std::invalid_argument("render_with_cycles: textured materials are not passed to Blender");
+  if (scene.mesh.normals.size() != scene.mesh.positions.size())
+    throw std::invalid_argument("render_with_cycles: the mesh needs one normal per vertex");
+  json lamps = json::array();
+  for (const matrender::RectLight& lamp : scene.lamps)
+    lamps.push_back({{"light_to_world", column_major(lamp.light_to_world)},
+                     {"size_x", lamp.size_x},
+                     {"size_y", lamp.size_y},
+                     {"power", lamp.power},
+                     {"color", {lamp.color.r, lamp.color.g, lamp.color.b}}});
+  const matrender::Camera& c = scene.camera;
+  return {{"mesh", {{"positions", positions}, {"normals", normals}, {"triangles", triangles}}},
+          {"material",
+           {{"base_color", {m.base_color.value.r, m.base_color.value.g, m.base_color.value.b}},
+            {"metallic", m.metallic.value},
+            {"roughness", m.roughness.value},
+            {"specular", m.specular},
+            {"specular_tint", m.specular_tint}}},
+          {"lamps", lamps},
+          {"camera",
+           {{"camera_to_world", column_major(c.camera_to_world)},
+            {"vertical_fov", c.vertical_fov},
+            {"width", c.width},
+            {"height", c.height}}},
+          {"background", {scene.background.r, scene.background.g, scene.background.b}}};
+}
+
+std::string quoted(const std::string& s) { return "'" + s + "'"; }
+
+}  // namespace
+
+bool cycles_available(const std::string& blender) {
+  const std::string command = quoted(blender) + " --version 2>/dev/null";
+  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
+  if (!pipe) return false;
+  std::array<char, 256> line{};
+  return fgets(line.data(), line.size(), pipe.get()) && std::string(line.data()).rfind("Blender 3.4", 0) == 0;
+}
+
+void render_with_cycles(const CyclesScene& scene, std::vector<CyclesRender>& renders, int threads,
+                        const std::string& folder, const std::string& blender) {
+  std::filesystem::create_directories(folder);
+  json description = describe(scene);
+  description["threads"] = threads;
+  description["timings_path"] = folder + "/cycles_timings.json";
+  json jobs = json::array();
+  for (CyclesRender& render : renders) {
+    render.exr_path =
+        folder + "/cycles_" + std::to_string(render.samples_per_pixel) + "_" + std::to_string(render.seed) + ".exr";
+    jobs.push_back({{"spp", render.samples_per_pixel}, {"seed", render.seed}, {"path", render.exr_path}});
+  }
+  description["renders"] = jobs;
+  const std::string scene_path = folder + "/scene.json", log_path = folder + "/blender.log";
+  std::ofstream(scene_path) << description.dump();
+
+  const std::string command = quoted(blender) + " -b --factory-startup -noaudio --python-exit-code 1 -P " +
+                              quoted(MATPREDICT_CYCLES_SCRIPT) + " -- " + quoted(scene_path) + " > " +
+                              quoted(log_path) + " 2>&1";
+  if (std::system(command.c_str()) != 0)
+    throw std::runtime_error("Blender failed to render " + scene_path + "; see " + log_path);
+  json timings;
+  std::ifstream(folder + "/cycles_timings.json") >> timings;
+  for (CyclesRender& render : renders) render.seconds = timings.at(render.exr_path).get<double>();
+}
+
+std::vector<float> read_rgb_exr(const std::string& path, int width, int height) {
+  auto input = OIIO::ImageInput::open(path);
+  if (!input) throw std::runtime_error(path + ": cannot open: " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = input->spec();
+  if (spec.width != width || spec.height != height || spec.nchannels < 3)
+    throw std::runtime_error(path + ": expected a " + std::to_string(width) + "x" + std::to_string(height) +
+                             " RGB image");
+  std::vector<float> rgb(static_cast<size_t>(width) * static_cast<size_t>(height) * 3);
+  if (!input->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, rgb.data()))
+    throw std::runtime_error(path + ": " + input->geterror());
+  return rgb;
+}
+
+}  // namespace shaders_ref
