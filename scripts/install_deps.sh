@@ -10,6 +10,8 @@ packages=(
   libtinygltf-dev libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libfmt-dev
   catch2
 )
+# Blender 3.4 is a reference for the optional tests against Cycles, never a build dependency.
+if [ "${MATPREDICT_BLENDER_TESTS:-0}" = 1 ]; then packages+=(blender); fi
 
 missing=()
 for p in "${packages[@]}"; do
