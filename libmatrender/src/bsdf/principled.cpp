@@ -75,6 +75,14 @@ glm::vec3 PrincipledBsdf::eval(const glm::vec3& wi, float* pdf) const {
   return value;
 }
 
+bool PrincipledBsdf::sample(glm::vec2 u, BsdfSample* out) const {
+  const float u_lobe = u.x;
+  const float p = diffuse_probability_;
+  const float rescaled = u_lobe < p ? u_lobe / p : (u_lobe - p) / (1.0f - p);
+  u.x = std::min(rescaled, 0x1.fffffep-1f);
+  return sample(u_lobe, u, out);
+}
+
 bool PrincipledBsdf::sample(float u_lobe, glm::vec2 u, BsdfSample* out) const {
   if (wo_.z <= 0.0f) return false;
   const bool pick_diffuse = u_lobe < diffuse_probability_;

@@ -39,6 +39,11 @@ class PrincipledBsdf {
   // Picks a lobe with u_lobe (proportional to the lobe's sample weight, as Cycles does) and a
   // direction with u. Returns false when no direction could be made (no lobe, below horizon).
   bool sample(float u_lobe, glm::vec2 u, BsdfSample* out) const;
+  // The same with the lobe picked by u.x, which is then rescaled within the picked lobe's
+  // interval and reused for the direction, so each lobe's directions keep u's 2-D
+  // stratification (Cycles 3.4, kernel/closure/... shader_bsdf_pick: "rescale to reuse for
+  // direction sample").
+  bool sample(glm::vec2 u, BsdfSample* out) const;
 
   bool has_diffuse() const { return diffuse_probability_ > 0.0f; }
   bool has_specular() const { return diffuse_probability_ < 1.0f && specular_enabled_; }

@@ -14,13 +14,13 @@ namespace {
 
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
-// Random-number pairs of one path vertex: (lamp choice, lobe choice), lamp point, BSDF
-// direction, (Russian roulette, unused).
+// Random-number pairs of one path vertex: the lamp (its choice reused for the point on it), the
+// BSDF (its lobe choice reused for the direction), and (Russian roulette, unused). Pair 0 is the
+// pixel filter's.
 struct VertexDimensions {
-  uint32_t choices, light_point, bsdf_direction, roulette;
+  uint32_t light, bsdf, roulette;
   explicit VertexDimensions(int bounce)
-      : choices(1 + 4 * static_cast<uint32_t>(bounce)), light_point(choices + 1),
-        bsdf_direction(choices + 2), roulette(choices + 3) {}
+      : light(1 + 3 * static_cast<uint32_t>(bounce)), bsdf(light + 1), roulette(light + 2) {}
 };
 
 float max_component(const glm::vec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
@@ -84,11 +84,10 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     const ShadingFrame frame = ShadingFrame::from_normal(sp.shading_normal);
     const glm::vec3 wo = frame.to_local(wo_world);
     const PrincipledBsdf bsdf(sp.inputs, wo);
-    const glm::vec2 choices = sampler.get_2d(dims.choices);
 
     // Next-event estimation: one lamp, one point on it.
     if (!lights_.empty() && !bsdf.is_delta_only()) {
-      const auto light = lights_.sample(sp.position, choices.x, sampler.get_2d(dims.light_point));
+      const auto light = lights_.sample(sp.position, sampler.get_2d(dims.light));
       if (light) {
         float pdf_bsdf;
         const glm::vec3 f = bsdf.eval(frame.to_local(light->wi), &pdf_bsdf);
@@ -107,7 +106,7 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     }
 
     BsdfSample s;
-    if (!bsdf.sample(choices.y, sampler.get_2d(dims.bsdf_direction), &s)) break;
+    if (!bsdf.sample(sampler.get_2d(dims.bsdf), &s)) break;
     throughput *= s.weight;
     if (!(max_component(throughput) > 0.0f)) break;
     bsdf_pdf = s.pdf;

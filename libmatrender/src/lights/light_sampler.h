@@ -22,8 +22,11 @@ class LightSampler {
   size_t count() const { return rects_.size() + deltas_.size(); }
   float selection_pdf() const { return empty() ? 0.0f : 1.0f / static_cast<float>(count()); }
 
-  // A sample of one uniformly chosen lamp; its pdf includes the selection probability.
-  std::optional<LightSample> sample(const glm::vec3& p, float u_select, glm::vec2 u) const;
+  // A sample of one uniformly chosen lamp; its pdf includes the selection probability. u.x
+  // picks the lamp and is then rescaled to [0, 1) within the lamp's interval and reused for the
+  // point on it, so each lamp's points keep the 2-D stratification of u (Cycles 3.4,
+  // kernel/light/light.h, light_distribution_sample: "rescale to reuse random number").
+  std::optional<LightSample> sample(const glm::vec3& p, glm::vec2 u) const;
 
   const std::vector<PreparedRectLight>& rect_lights() const { return rects_; }
   const RectLightHits& rect_light_hits() const { return rect_hits_; }
