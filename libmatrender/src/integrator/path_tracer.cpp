@@ -87,7 +87,7 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
 
     // Next-event estimation: one lamp, one point on it.
     if (!lights_.empty() && !bsdf.is_delta_only()) {
-      const auto light = lights_.sample(sp.position, sampler.get_2d(dims.light));
+      const auto light = lights_.sample(sp.position, sp.shading_normal, sampler.get_2d(dims.light));
       if (light) {
         float pdf_bsdf;
         const glm::vec3 f = bsdf.eval(frame.to_local(light->wi), &pdf_bsdf);

@@ -22,6 +22,8 @@ PreparedRectLight::PreparedRectLight(const RectLight& light) {
   rect_.length_y = static_cast<float>(light.size_y);
   rect_.corner = glm::vec3(center - 0.5 * light.size_x * axis_x - 0.5 * light.size_y * axis_y);
   center_ = glm::vec3(center);
+  const glm::vec3 edge_x = rect_.length_x * rect_.x, edge_y = rect_.length_y * rect_.y;
+  corners_ = {rect_.corner, rect_.corner + edge_x, rect_.corner + edge_x + edge_y, rect_.corner + edge_y};
   area_ = static_cast<float>(light.size_x * light.size_y);
   radiance_ = glm::vec3(light.power * light.color / (4.0 * light.size_x * light.size_y));
 }
@@ -30,8 +32,14 @@ bool PreparedRectLight::sees_emitting_side(const glm::vec3& p) const {
   return glm::dot(p - center_, rect_.z) < 0.0f;
 }
 
-std::optional<LightSample> PreparedRectLight::sample(const glm::vec3& p, glm::vec2 u) const {
-  if (!sees_emitting_side(p)) return std::nullopt;
+bool PreparedRectLight::below_plane(const glm::vec3& p, const glm::vec3& n) const {
+  for (const glm::vec3& corner : corners_)
+    if (glm::dot(corner - p, n) > 0.0f) return false;
+  return true;
+}
+
+std::optional<LightSample> PreparedRectLight::sample(const glm::vec3& p, const glm::vec3& n, glm::vec2 u) const {
+  if (!sees_emitting_side(p) || below_plane(p, n)) return std::nullopt;
   const SphericalRectangle spherical(p, rect_);
   glm::vec3 point;
   float pdf;

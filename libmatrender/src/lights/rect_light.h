@@ -1,6 +1,7 @@
 #pragma once
 // One-sided rectangular area lamp, Cycles 3.4 conventions: radiance L = P c / (4 a b) emitted
 // toward the lamp's local -Z (../shared/reference/cycles.md). Sampled by solid angle.
+#include <array>
 #include <optional>
 
 #include <glm/glm.hpp>
@@ -17,8 +18,10 @@ class PreparedRectLight {
 
   // Samples a point uniformly in the solid angle the lamp subtends from p (by area when that
   // solid angle is too small to compute accurately). Returns nothing when p does not see the
-  // emitting side.
-  std::optional<LightSample> sample(const glm::vec3& p, glm::vec2 u) const;
+  // emitting side, or when the whole lamp lies on or below the plane through p normal to n (the
+  // shading normal): a reflecting BSDF gives every such direction zero, so the sample could only
+  // cost time.
+  std::optional<LightSample> sample(const glm::vec3& p, const glm::vec3& n, glm::vec2 u) const;
   // Solid-angle pdf of sample() producing direction wi from p, given that the ray hits the lamp
   // at distance t.
   float pdf(const glm::vec3& p, const glm::vec3& wi, float t) const;
@@ -29,9 +32,11 @@ class PreparedRectLight {
 
  private:
   bool sees_emitting_side(const glm::vec3& p) const;
+  bool below_plane(const glm::vec3& p, const glm::vec3& n) const;
 
   Rectangle3 rect_;
   glm::vec3 center_{0.0f};
+  std::array<glm::vec3, 4> corners_{};
   float area_ = 0.0f;
   glm::vec3 radiance_{0.0f};
 };
