@@ -8,6 +8,7 @@
 #include "matgeom/camera_grid.h"
 #include "matgeom/light_rig.h"
 #include "matgeom/tangents.h"
+#include "matrender/rig_lights.h"
 
 namespace bench {
 
@@ -42,29 +43,7 @@ std::vector<matrender::Light> paper_rig_lights(const matgeom::TriangleMesh& mesh
   // normalising keeps pixel values, and so the error table, in a displayable range.
   matgeom::LightRigOptions options;
   options.target_illuminance_lux = 1000.0;
-  const matgeom::LightRig rig = matgeom::make_light_rig(sphere.center, sphere.radius, options);
-  std::vector<matrender::Light> lights;
-  for (const matgeom::RigLight& l : rig.lights) {
-    if (l.kind == matgeom::RigLightKind::Area) {
-      matrender::RectLight rect;
-      rect.light_to_world = l.light_to_world;
-      rect.size_x = l.size_x;
-      rect.size_y = l.size_y;
-      rect.power = l.power;
-      rect.color = l.color;
-      lights.emplace_back(rect);
-    } else {
-      matrender::SpotLight spot;
-      spot.position = l.position;
-      spot.direction = -glm::dvec3(l.light_to_world[2]);
-      spot.spot_angle = l.spot_angle;
-      spot.blend = l.spot_blend;
-      spot.power = l.power;
-      spot.color = l.color;
-      lights.emplace_back(spot);
-    }
-  }
-  return lights;
+  return matrender::rig_lights(matgeom::make_light_rig(sphere.center, sphere.radius, options));
 }
 
 void add_paper_rig(matrender::Scene& scene, const matgeom::TriangleMesh& mesh) {

@@ -14,6 +14,7 @@
 #include "matgeom/mesh.h"
 #include "matgeom/mesh_io.h"
 #include "matrender/asset.h"
+#include "matrender/rig_lights.h"
 #include "matrender/texture.h"
 
 namespace render_object {
@@ -128,19 +129,6 @@ void add_object(matrender::Scene& scene, const ObjectDescription& object, const 
   }
 }
 
-matrender::Light render_light(const matgeom::RigLight& light) {
-  if (light.kind == matgeom::RigLightKind::Area)
-    return matrender::RectLight{light.light_to_world, light.size_x, light.size_y, light.power, light.color};
-  matrender::SpotLight spot;
-  spot.position = light.position;
-  spot.direction = -glm::dvec3(light.light_to_world[2]);  // lamps emit down their local -Z
-  spot.spot_angle = light.spot_angle;
-  spot.blend = light.spot_blend;
-  spot.power = light.power;
-  spot.color = light.color;
-  return spot;
-}
-
 void add_lights(const LightsDescription& lights, BuiltScene& built) {
   if (const auto* listed = std::get_if<std::vector<matrender::Light>>(&lights)) {
     for (const matrender::Light& light : *listed) built.scene.add_light(light);
@@ -149,7 +137,7 @@ void add_lights(const LightsDescription& lights, BuiltScene& built) {
   matgeom::LightRigOptions options;
   options.target_illuminance_lux = std::get<LightRigDescription>(lights).target_illuminance_lux;
   built.rig = matgeom::make_light_rig(built.bounds.center, built.bounds.radius, options);
-  for (const matgeom::RigLight& light : built.rig->lights) built.scene.add_light(render_light(light));
+  for (const matrender::Light& light : matrender::rig_lights(*built.rig)) built.scene.add_light(light);
 }
 
 glm::dmat4 camera_to_world(const CameraDescription& camera, const glm::dvec3& centroid) {

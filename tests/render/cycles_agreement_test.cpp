@@ -8,6 +8,7 @@
 // has d_i. Both means are tested against their standard errors over the 4096 pixels.
 #include <cmath>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -17,6 +18,7 @@
 #include "matgeom/light_rig.h"
 #include "matgeom/tangents.h"
 #include "matrender/render.h"
+#include "matrender/rig_lights.h"
 #include "shaders_ref/cycles_reference.h"
 
 namespace {
@@ -53,15 +55,10 @@ shaders_ref::CyclesScene paper_scene(const matrender::Material& material) {
   const matgeom::Sphere bound = matgeom::minimal_enclosing_sphere(scene.mesh.positions);
   matgeom::LightRigOptions options;
   options.target_illuminance_lux = 1000.0;
-  for (const matgeom::RigLight& light : matgeom::make_light_rig(bound.center, bound.radius, options).lights) {
-    REQUIRE(light.kind == matgeom::RigLightKind::Area);  // spots only come for objects under 0.15 m
-    matrender::RectLight rect;
-    rect.light_to_world = light.light_to_world;
-    rect.size_x = light.size_x;
-    rect.size_y = light.size_y;
-    rect.power = light.power;
-    rect.color = light.color;
-    scene.lamps.push_back(rect);
+  for (const matrender::Light& light : matrender::rig_lights(matgeom::make_light_rig(bound.center, bound.radius, options))) {
+    const auto* rect = std::get_if<matrender::RectLight>(&light);
+    REQUIRE(rect);  // spots only come for objects under 0.15 m
+    scene.lamps.push_back(*rect);
   }
   matgeom::CameraGridSpec grid;
   grid.center = bound.center;

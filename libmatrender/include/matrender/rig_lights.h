@@ -1,0 +1,14 @@
+#pragma once
+// The paper's light rig (matgeom/light_rig.h) as libmatrender lamps: its area lights become
+// rectangle lamps, its accents for small objects spot lamps, both emitting down their local -Z.
+#include <vector>
+
+#include "matgeom/light_rig.h"
+#include "matrender/light.h"
+
+namespace matrender {
+
+Light rig_light(const matgeom::RigLight& light);
+std::vector<Light> rig_lights(const matgeom::LightRig& rig);
+
+}  // namespace matrender
