@@ -7,9 +7,10 @@
 # SCENE.json holds the mesh, material, lamps, camera and background, plus "threads", "renders"
 # ([{"spp", "seed", "path"}]) and "timings_path", where {"<path>": seconds} is written. The
 # settings below switch off what would make Cycles' converged image differ from the unbiased
-# integral libmatrender computes (clamping, glossy blur, adaptive sampling, denoising, the
-# shadow terminator offset) and keep Cycles' defaults otherwise.
+# integral libmatrender computes (clamping, glossy blur, adaptive sampling, denoising) and keep
+# Cycles' defaults otherwise; the shadow terminator geometry offset comes from the description.
 import json
+import math
 import sys
 import time
 
@@ -29,10 +30,11 @@ def add_mesh(scene, description, material):
     mesh.update()
     mesh.polygons.foreach_set("use_smooth", [True] * len(mesh.polygons))
     mesh.use_auto_smooth = True  # custom split normals need it in 3.4
+    mesh.auto_smooth_angle = math.pi  # and no edge may be split by angle
     mesh.normals_split_custom_set_from_vertices([tuple(n) for n in description["normals"]])
     mesh.materials.append(material)
     obj = bpy.data.objects.new("object", mesh)
-    obj.cycles.shadow_terminator_geometry_offset = 0.0  # we do not offset shadow terminators
+    obj.cycles.shadow_terminator_geometry_offset = description["shadow_terminator_geometry_offset"]
     scene.collection.objects.link(obj)
 
 

@@ -45,7 +45,11 @@ json describe(const CyclesScene& scene) {
                      {"power", lamp.power},
                      {"color", {lamp.color.r, lamp.color.g, lamp.color.b}}});
   const matrender::Camera& c = scene.camera;
-  return {{"mesh", {{"positions", positions}, {"normals", normals}, {"triangles", triangles}}},
+  return {{"mesh",
+           {{"positions", positions},
+            {"normals", normals},
+            {"triangles", triangles},
+            {"shadow_terminator_geometry_offset", scene.shadow_terminator_geometry_offset}}},
           {"material",
            {{"base_color", {m.base_color.value.r, m.base_color.value.g, m.base_color.value.b}},
             {"metallic", m.metallic.value},

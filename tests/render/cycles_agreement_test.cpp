@@ -27,9 +27,10 @@ constexpr int kResolution = 64;
 constexpr int kSamples = 256;
 
 // A sphere of radius 0.3 m with bumps, its vertex normals smooth: curvature, self-shadowing and
-// every angle of incidence in one object.
-matgeom::TriangleMesh bumpy_sphere() {
-  constexpr int kRings = 48, kSegments = 96;
+// every angle of incidence in one object. Few rings make a coarse, faceted sphere whose shadow
+// terminators depend on Cycles' geometry offset.
+matgeom::TriangleMesh bumpy_sphere(int rings = 48) {
+  const int kRings = rings, kSegments = 2 * rings;
   matgeom::TriangleMesh mesh;
   for (int i = 0; i <= kRings; ++i)
     for (int j = 0; j <= kSegments; ++j) {
@@ -48,9 +49,10 @@ matgeom::TriangleMesh bumpy_sphere() {
   return mesh;
 }
 
-shaders_ref::CyclesScene paper_scene(const matrender::Material& material) {
+shaders_ref::CyclesScene paper_scene(const matrender::Material& material, int rings, float terminator_offset) {
   shaders_ref::CyclesScene scene;
-  scene.mesh = bumpy_sphere();
+  scene.mesh = bumpy_sphere(rings);
+  scene.shadow_terminator_geometry_offset = terminator_offset;
   scene.material = material;
   const matgeom::Sphere bound = matgeom::minimal_enclosing_sphere(scene.mesh.positions);
   matgeom::LightRigOptions options;
@@ -69,7 +71,9 @@ shaders_ref::CyclesScene paper_scene(const matrender::Material& material) {
 
 std::vector<float> render_ours(const shaders_ref::CyclesScene& cycles_scene, uint32_t seed) {
   matrender::Scene scene;
-  scene.add_mesh(cycles_scene.mesh, {scene.add_material(cycles_scene.material)});
+  matrender::MeshOptions options;
+  options.shadow_terminator_geometry_offset = cycles_scene.shadow_terminator_geometry_offset;
+  scene.add_mesh(cycles_scene.mesh, {scene.add_material(cycles_scene.material)}, options);
   for (const matrender::RectLight& lamp : cycles_scene.lamps) scene.add_light(lamp);
   matrender::RenderSettings settings;
   settings.samples_per_pixel = kSamples;
@@ -130,6 +134,9 @@ struct Case {
   std::string name;
   glm::vec3 base_color;
   float metallic, roughness, specular, specular_tint;
+  int rings = 48;  // 6: a coarse sphere of 132 triangles, where ensure_valid_reflection bends the
+                   // shading normal off the smooth one and Cycles' bump shadowing term matters
+  float terminator_offset = 0.1f;  // Cycles' default; the next test case is about this offset
 };
 
 }  // namespace
@@ -143,6 +150,7 @@ TEST_CASE("Renders agree with Blender 3.4 Cycles up to noise", "[render][blender
       {"metal_0.2", {0.95f, 0.65f, 0.3f}, 1.0f, 0.2f, 0.5f, 0.0f},
       {"metal_0", {0.9f, 0.9f, 0.9f}, 1.0f, 0.0f, 0.5f, 0.0f},
       {"half_metal_0.6", {0.5f, 0.8f, 0.5f}, 0.5f, 0.6f, 0.5f, 0.0f},
+      {"coarse_sphere_no_terminator_offset", {0.8f, 0.8f, 0.8f}, 0.0f, 0.5f, 0.5f, 0.0f, 6, 0.0f},
   };
   const std::string work = "cycles_agreement_out";
   for (const Case& c : cases) {
@@ -152,7 +160,7 @@ TEST_CASE("Renders agree with Blender 3.4 Cycles up to noise", "[render][blender
     material.roughness.value = c.roughness;
     material.specular = c.specular;
     material.specular_tint = c.specular_tint;
-    const shaders_ref::CyclesScene scene = paper_scene(material);
+    const shaders_ref::CyclesScene scene = paper_scene(material, c.rings, c.terminator_offset);
     std::vector<shaders_ref::CyclesRender> renders = {{kSamples, 1, "", 0.0}, {kSamples, 2, "", 0.0}};
     shaders_ref::render_with_cycles(scene, renders, 2, work + "/" + c.name);
     const Agreement a =
@@ -166,5 +174,48 @@ TEST_CASE("Renders agree with Blender 3.4 Cycles up to noise", "[render][blender
     // Four standard errors: a false alarm about once in 30000 runs of a test case.
     CHECK(a.excess.mean <= 4.0 * a.excess.standard_error);
     CHECK(std::abs(a.difference.mean) <= 4.0 * a.difference.standard_error);
+  }
+}
+
+std::vector<float> minus(std::vector<float> a, const std::vector<float>& b) {
+  for (size_t i = 0; i < a.size(); ++i) a[i] -= b[i];
+  return a;
+}
+
+// On a coarse smooth sphere (6 rings, 132 triangles) the geometry offset moves the shadow line
+// off the facets and brightens the image by about 2 %. What it changes must be what it changes
+// in Cycles: the images of offset 0.5 and 0.1 minus those of offset 0 are compared like the
+// images above (each renderer's seed-to-seed spread of its own difference image is its noise).
+// Differences cancel whatever the two renderers do alike on a coarse mesh without the offset.
+TEST_CASE("The shadow terminator geometry offset changes renders as it does in Cycles", "[render][blender]") {
+  REQUIRE(shaders_ref::cycles_available());
+  matrender::Material material;
+  material.base_color.value = glm::vec3(0.8f);
+  material.roughness.value = 0.5f;
+  const auto render_both = [&](float offset, std::vector<float> ours[2], std::vector<float> cycles[2]) {
+    const shaders_ref::CyclesScene scene = paper_scene(material, 6, offset);
+    std::vector<shaders_ref::CyclesRender> renders = {{kSamples, 1, "", 0.0}, {kSamples, 2, "", 0.0}};
+    shaders_ref::render_with_cycles(scene, renders, 2, "cycles_agreement_out/terminator_" + std::to_string(offset));
+    for (int k = 0; k < 2; ++k) {
+      ours[k] = render_ours(scene, static_cast<uint32_t>(k + 1));
+      cycles[k] = shaders_ref::read_rgb_exr(renders[k].exr_path, kResolution, kResolution);
+    }
+  };
+  std::vector<float> ours_off[2], cycles_off[2];
+  render_both(0.0f, ours_off, cycles_off);
+  for (const float offset : {0.1f, 0.5f}) {
+    std::vector<float> ours[2], cycles[2];
+    render_both(offset, ours, cycles);
+    const Agreement a = compare(minus(ours[0], ours_off[0]), minus(ours[1], ours_off[1]),
+                                minus(cycles[0], cycles_off[0]), minus(cycles[1], cycles_off[1]));
+    INFO("offset " << offset << ": mean change ours " << a.mean_ours << ", Cycles " << a.mean_cycles
+                   << " (difference +- " << a.difference.standard_error << "); excess " << a.excess.mean << " +- "
+                   << a.excess.standard_error);
+    CHECK(a.mean_ours > 0.0);  // the offset brightens the terminator
+    // Where and how much, pixel by pixel: within the noise.
+    CHECK(a.excess.mean <= 4.0 * a.excess.standard_error);
+    // In total our change is 4 % smaller than Cycles' (6 standard errors; docs/conventions.md,
+    // known differences): held here to within 10 % until that is understood.
+    CHECK(a.mean_ours == Approx(a.mean_cycles).epsilon(0.10));
   }
 }

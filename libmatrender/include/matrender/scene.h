@@ -16,6 +16,14 @@ namespace matrender {
 
 class SceneData;  // internal: geometry, materials and the Embree scene
 
+struct MeshOptions {
+  // Cycles' per-object Shading > Shadow Terminator > Geometry Offset (default 0.1): shadow rays
+  // of smooth-shaded triangles near the light's terminator start from the smooth surface the
+  // vertex normals describe instead of the flat triangle, so coarse meshes do not show their
+  // facets in the shadow line. 0 turns it off; meshes without normals never use it.
+  float shadow_terminator_geometry_offset = 0.1f;
+};
+
 class Scene {
  public:
   Scene();
@@ -30,7 +38,8 @@ class Scene {
   // Adds a copy of `mesh`. part_materials[k] is the material id of part k and must cover every
   // part id the mesh uses. Throws std::invalid_argument for an invalid mesh or material id, and
   // std::logic_error after commit().
-  uint32_t add_mesh(const matgeom::TriangleMesh& mesh, const std::vector<uint32_t>& part_materials);
+  uint32_t add_mesh(const matgeom::TriangleMesh& mesh, const std::vector<uint32_t>& part_materials,
+                    const MeshOptions& options = {});
 
   void add_light(const Light& light);
   void clear_lights();

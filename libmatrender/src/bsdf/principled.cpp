@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "bsdf/bump_shadowing.h"
 #include "bsdf/microfacet_ggx.h"
 #include "bsdf/principled_diffuse.h"
 
@@ -15,8 +16,11 @@ float luminance(const glm::vec3& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0
 
 }  // namespace
 
-PrincipledBsdf::PrincipledBsdf(const PrincipledInputs& inputs, const glm::vec3& wo)
-    : wo_(wo), diffuse_model_(inputs.diffuse_model) {
+PrincipledBsdf::PrincipledBsdf(const PrincipledInputs& inputs, const glm::vec3& wo, const glm::vec3& smooth_normal)
+    : wo_(wo),
+      smooth_normal_(smooth_normal),
+      bump_shadowing_(smooth_normal != glm::vec3(0.0f, 0.0f, 1.0f)),
+      diffuse_model_(inputs.diffuse_model) {
   const glm::vec3 base = glm::max(inputs.base_color, glm::vec3(0.0f));
   const float metallic = glm::clamp(inputs.metallic, 0.0f, 1.0f);
   const float specular = glm::clamp(inputs.specular, 0.0f, 1.0f);
@@ -48,7 +52,8 @@ glm::vec3 PrincipledBsdf::eval_diffuse(const glm::vec3& wi) const {
   const float f_cos = diffuse_model_ == DiffuseModel::Principled
                           ? principled_diffuse_eval_cos(wo_, wi, roughness_)
                           : lambert_eval_cos(wo_, wi);
-  return diffuse_weight_ * f_cos;
+  const float shadowing = bump_shadowing_ ? bump_shadowing_term(smooth_normal_, wi) : 1.0f;
+  return diffuse_weight_ * (f_cos * shadowing);
 }
 
 glm::vec3 PrincipledBsdf::eval_specular(const glm::vec3& wi) const {

@@ -31,7 +31,11 @@ struct BsdfSample {
 // All directions in the local shading frame: +Z = shading normal, pointing away from the surface.
 class PrincipledBsdf {
  public:
-  PrincipledBsdf(const PrincipledInputs& inputs, const glm::vec3& wo);
+  // smooth_normal: Cycles' sd->N (the interpolated normal before normal mapping and
+  // ensure_valid_reflection) in the local frame. Where it differs from +Z, the diffuse lobe is
+  // multiplied by Cycles' bump shadowing term (bump_shadowing.h).
+  PrincipledBsdf(const PrincipledInputs& inputs, const glm::vec3& wo,
+                 const glm::vec3& smooth_normal = glm::vec3(0.0f, 0.0f, 1.0f));
 
   // Sum over lobes of weight * f * cos(theta_i); *pdf receives the mixture pdf of sampling wi.
   glm::vec3 eval(const glm::vec3& wi, float* pdf) const;
@@ -56,6 +60,8 @@ class PrincipledBsdf {
 
  private:
   glm::vec3 wo_;
+  glm::vec3 smooth_normal_;
+  bool bump_shadowing_;  // smooth_normal_ differs from the shading normal
   glm::vec3 diffuse_weight_{0.0f};
   DiffuseModel diffuse_model_;
   float roughness_;

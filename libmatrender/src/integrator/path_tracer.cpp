@@ -1,12 +1,14 @@
 #include "integrator/path_tracer.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
 #include "accel/ray_offset.h"
 #include "bsdf/principled.h"
 #include "bsdf/shading_frame.h"
+#include "integrator/shadow_terminator.h"
 #include "sampling/warp.h"
 
 namespace matrender {
@@ -24,6 +26,26 @@ struct VertexDimensions {
 };
 
 float max_component(const glm::vec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
+
+bool is_finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// Where a shadow ray toward unit direction wi starts before the usual ray offset: the hit point,
+// lifted toward the smooth surface near the terminator of a smooth-shaded triangle (Cycles'
+// shadow_ray_offset; shadow_terminator.h).
+glm::vec3 shadow_ray_start(const MeshData& mesh, const RayHit& hit, const SurfacePoint& sp, const glm::vec3& wi) {
+  const float cutoff = mesh.shadow_terminator_geometry_offset;
+  if (mesh.normals.empty() || !(cutoff > 0.0f)) return sp.position;
+  const float smooth_dot_l = glm::dot(sp.smooth_normal, wi);
+  const glm::vec3 ng = smooth_dot_l < 0.0f ? -sp.geometric_normal : sp.geometric_normal;
+  const float amount = shadow_terminator_offset_amount(std::abs(smooth_dot_l), glm::dot(ng, wi), cutoff);
+  if (!(amount > 0.0f)) return sp.position;
+  const glm::uvec3 tri = mesh.triangles[hit.triangle];
+  const std::array<glm::vec3, 3> v = {mesh.positions[tri.x], mesh.positions[tri.y], mesh.positions[tri.z]};
+  const std::array<glm::vec3, 3> n = {mesh.normals[tri.x], mesh.normals[tri.y], mesh.normals[tri.z]};
+  const glm::vec3 w(1.0f - hit.u - hit.v, hit.u, hit.v);
+  const glm::vec3 lifted = sp.position + amount * smooth_surface_offset(v, n, w, ng);
+  return is_finite(lifted) ? lifted : sp.position;
+}
 
 }  // namespace
 
@@ -83,7 +105,9 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
 
     const ShadingFrame frame = ShadingFrame::from_normal(sp.shading_normal);
     const glm::vec3 wo = frame.to_local(wo_world);
-    const PrincipledBsdf bsdf(sp.inputs, wo);
+    const glm::vec3 smooth_local =
+        sp.smooth_normal == sp.shading_normal ? glm::vec3(0.0f, 0.0f, 1.0f) : frame.to_local(sp.smooth_normal);
+    const PrincipledBsdf bsdf(sp.inputs, wo, smooth_local);
 
     // Next-event estimation: one lamp, one point on it.
     if (!lights_.empty() && !bsdf.is_delta_only()) {
@@ -94,10 +118,19 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
         if (max_component(f) > 0.0f) {
           const glm::vec3 side = glm::dot(light->wi, sp.geometric_normal) >= 0.0f ? sp.geometric_normal
                                                                                   : -sp.geometric_normal;
-          const glm::vec3 shadow_origin = offset_ray_origin(sp.position, side);
+          // From a start lifted off the triangle the ray aims again at the same lamp point.
+          const glm::vec3 start = shadow_ray_start(scene_.meshes[hit.mesh], hit, sp, light->wi);
+          glm::vec3 shadow_dir = light->wi;
+          float shadow_distance = light->distance;
+          if (start != sp.position) {
+            const glm::vec3 to_light = sp.position + light->distance * light->wi - start;
+            shadow_distance = glm::length(to_light);
+            shadow_dir = to_light / shadow_distance;
+          }
+          const glm::vec3 shadow_origin = offset_ray_origin(start, side);
           ++result.rays;
           // Shorten the shadow ray by a relative margin so it cannot hit geometry touching the lamp.
-          if (!scene_.accel.occluded(shadow_origin, light->wi, light->distance * (1.0f - 1e-4f))) {
+          if (!scene_.accel.occluded(shadow_origin, shadow_dir, shadow_distance * (1.0f - 1e-4f))) {
             const float weight = light->delta ? 1.0f : power_heuristic(light->pdf, pdf_bsdf);
             result.radiance += throughput * f * light->radiance * (weight / light->pdf);
           }

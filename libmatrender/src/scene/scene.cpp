@@ -22,7 +22,8 @@ uint32_t Scene::add_material(Material material) {
 const Material& Scene::material(uint32_t id) const { return data_->materials.at(id); }
 size_t Scene::material_count() const { return data_->materials.size(); }
 
-uint32_t Scene::add_mesh(const matgeom::TriangleMesh& mesh, const std::vector<uint32_t>& part_materials) {
+uint32_t Scene::add_mesh(const matgeom::TriangleMesh& mesh, const std::vector<uint32_t>& part_materials,
+                         const MeshOptions& options) {
   if (data_->committed) throw std::logic_error("Scene::add_mesh: the scene is already committed");
   const std::string what = "mesh " + std::to_string(data_->meshes.size());
   matgeom::validate_mesh(mesh, what);
@@ -34,6 +35,8 @@ uint32_t Scene::add_mesh(const matgeom::TriangleMesh& mesh, const std::vector<ui
   for (uint32_t id : part_materials)
     if (id >= data_->materials.size())
       throw std::invalid_argument(what + ": material id " + std::to_string(id) + " does not exist");
+  if (!(options.shadow_terminator_geometry_offset >= 0.0f && options.shadow_terminator_geometry_offset <= 1.0f))
+    throw std::invalid_argument(what + ": shadow terminator geometry offset must be in [0, 1]");
 
   MeshData m;
   m.positions = mesh.positions;
@@ -43,6 +46,7 @@ uint32_t Scene::add_mesh(const matgeom::TriangleMesh& mesh, const std::vector<ui
   m.triangles = mesh.triangles;
   m.triangle_parts = mesh.triangle_parts;
   m.part_materials = part_materials;
+  m.shadow_terminator_geometry_offset = options.shadow_terminator_geometry_offset;
   bool needs_tangents = false;
   for (uint32_t id : part_materials) needs_tangents |= data_->materials[id].normal_map != nullptr;
   if (needs_tangents && m.tangents.empty() && !m.uvs.empty()) {

@@ -20,6 +20,7 @@ struct MeshData {
   std::vector<glm::uvec3> triangles;
   std::vector<uint32_t> triangle_parts;  // empty = part 0
   std::vector<uint32_t> part_materials;  // material id of each part
+  float shadow_terminator_geometry_offset = 0.1f;  // MeshOptions
 };
 
 class SceneData {

@@ -68,6 +68,7 @@ SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm:
   sp.material = mesh.part_materials[static_cast<size_t>(sp.part)];
   const Material& material = scene.materials[sp.material];
 
+  sp.smooth_normal = facing_sign * n_front;
   if (material.normal_map && !mesh.tangents.empty()) {
     const glm::vec4 tangent =
         b0 * mesh.tangents[tri.x] + b1 * mesh.tangents[tri.y] + b2 * mesh.tangents[tri.z];

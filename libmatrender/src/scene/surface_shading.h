@@ -15,6 +15,9 @@ struct SurfacePoint {
   glm::vec3 position{0.0f};
   glm::vec3 geometric_normal{0.0f, 0.0f, 1.0f};  // flipped to face the incoming ray
   glm::vec3 shading_normal{0.0f, 0.0f, 1.0f};    // smooth + normal map, valid for reflection
+  // The interpolated vertex normal before normal mapping and ensure_valid_reflection (Cycles'
+  // sd->N; the geometric normal without vertex normals), flipped to face the incoming ray.
+  glm::vec3 smooth_normal{0.0f, 0.0f, 1.0f};
   glm::vec2 uv{0.0f};
   uint32_t material = 0;
   int32_t part = 0;

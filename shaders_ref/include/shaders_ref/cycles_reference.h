@@ -21,6 +21,7 @@ struct CyclesScene {
   std::vector<matrender::RectLight> lamps;
   matrender::Camera camera;
   glm::vec3 background{0.0f};
+  float shadow_terminator_geometry_offset = 0.1f;  // Cycles' default, as matrender::MeshOptions
 };
 
 struct CyclesRender {
