@@ -123,7 +123,9 @@ void add_object(matrender::Scene& scene, const ObjectDescription& object, const 
   const std::vector<std::optional<uint32_t>> assigned = assigned_materials(object, asset, materials);
   // A mesh or slot the renderer rejects (non-finite vertex, bad image index) is a bad input file.
   try {
-    matrender::add_asset(scene, asset, assigned);
+    matrender::MeshOptions options;
+    options.shadow_terminator_geometry_offset = object.shadow_terminator_geometry_offset;
+    matrender::add_asset(scene, asset, assigned, options);
   } catch (const std::invalid_argument& e) {
     throw object.origin.error("", e.what());
   }

@@ -73,6 +73,8 @@ struct ObjectDescription {
   // not covered keep the object's own materials (glTF slots, built-in materials).
   std::optional<std::string> material;
   std::map<std::string, std::string> part_materials;
+  // Cycles' Shading > Shadow Terminator > Geometry Offset of the object (Blender's default 0.1).
+  float shadow_terminator_geometry_offset = 0.1f;
   Origin origin;
 };
 

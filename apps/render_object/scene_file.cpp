@@ -503,14 +503,15 @@ ObjectDescription read_object(const Node& node, const fs::path& folder,
   ObjectDescription object;
   object.origin = node.origin();
   if (node.has("mesh")) {
-    node.expect_keys({"mesh", "transform", "material", "materials"});
+    node.expect_keys({"mesh", "transform", "material", "materials", "shadow_terminator_geometry_offset"});
     const std::string path = read_existing_file(node.required("mesh"), folder);
     const std::vector<std::string>& extensions = matgeom::object_file_extensions();
     if (std::find(extensions.begin(), extensions.end(), lowercase_extension(path)) == extensions.end())
       node.required("mesh").fail("expected a .glb, .gltf, .ply or .obj file");
     object.source = MeshFile{path};
   } else {
-    node.expect_keys({"builtin", "seed", "transform", "material", "materials"});
+    node.expect_keys(
+        {"builtin", "seed", "transform", "material", "materials", "shadow_terminator_geometry_offset"});
     BuiltinObject builtin;
     const std::vector<std::string> names = matgeom::builtin_object_names();
     builtin.name = names[node.required("builtin").choice(names)];
@@ -518,6 +519,9 @@ ObjectDescription read_object(const Node& node, const fs::path& folder,
     object.source = builtin;
   }
   if (auto transform = node.find("transform")) object.object_to_world = read_transform(*transform);
+  if (auto offset = node.find("shadow_terminator_geometry_offset"))
+    object.shadow_terminator_geometry_offset = static_cast<float>(
+        offset->number_where([](double v) { return v >= 0.0 && v <= 1.0; }, "a number in [0, 1]"));
   if (node.has("material") && node.has("materials")) node.fail("give either \"material\" or \"materials\", not both");
   if (auto name = node.find("material")) object.material = read_material_name(*name, materials);
   if (auto parts = node.find("materials"))

@@ -44,7 +44,8 @@ Material material_from_desc(const matgeom::MaterialDesc& desc, const std::vector
 }
 
 std::vector<uint32_t> add_asset(Scene& scene, const matgeom::ObjectAsset& asset,
-                                const std::vector<std::optional<uint32_t>>& material_overrides) {
+                                const std::vector<std::optional<uint32_t>>& material_overrides,
+                                const MeshOptions& options) {
   std::vector<TexturePtr> as_srgb(asset.images.size()), as_data(asset.images.size());
   auto decode = [&](int index, ColorSpace space, matgeom::TextureWrap wrap, std::vector<TexturePtr>& decoded) {
     if (index < 0 || static_cast<size_t>(index) >= asset.images.size() || decoded[static_cast<size_t>(index)]) return;
@@ -67,7 +68,7 @@ std::vector<uint32_t> add_asset(Scene& scene, const matgeom::ObjectAsset& asset,
       ids[k] = scene.add_material(Material{});
     }
   }
-  scene.add_mesh(asset.mesh, ids);
+  scene.add_mesh(asset.mesh, ids, options);
   return ids;
 }
 

@@ -18,8 +18,9 @@ Material material_from_desc(const matgeom::MaterialDesc& desc,
 // Adds the asset's mesh and a material per part; returns the material id of each part. Part k
 // uses material_overrides[k] when that is set (an id already in the scene), else the asset's own
 // slot k, else the default Material. Images are decoded once per colour space they are used in,
-// and only for the slots that are used.
+// and only for the slots that are used. `options` go to Scene::add_mesh.
 std::vector<uint32_t> add_asset(Scene& scene, const matgeom::ObjectAsset& asset,
-                                const std::vector<std::optional<uint32_t>>& material_overrides = {});
+                                const std::vector<std::optional<uint32_t>>& material_overrides = {},
+                                const MeshOptions& options = {});
 
 }  // namespace matrender
