@@ -47,14 +47,16 @@ PosedRectangle pose(double x0, double x1, double y0, double y1, double h) {
   return p;
 }
 
+// A test rectangle [x0, x1] x [y0, y1] seen from height h above its plane (see pose()).
+struct RectangleCase {
+  const char* name;
+  double x0, x1, y0, y1, h;
+};
+
 }  // namespace
 
 TEST_CASE("The spherical rectangle's solid angle matches the closed form", "[render]") {
-  struct Case {
-    const char* name;
-    double x0, x1, y0, y1, h;
-  };
-  const std::vector<Case> cases = {
+  const std::vector<RectangleCase> cases = {
       {"centred square", -0.25, 0.25, -0.25, 0.25, 1.0},
       {"off-axis", 0.4, 1.1, -0.2, 0.5, 0.8},
       {"straddling one axis", -2.0, 3.0, 0.5, 0.9, 0.3},
@@ -63,7 +65,7 @@ TEST_CASE("The spherical rectangle's solid angle matches the closed form", "[ren
       {"tiny, off-axis", 2.0, 2.001, 1.0, 1.002, 1.0},
       {"grazing", 1.0, 2.0, -0.5, 0.5, 1e-3},
   };
-  for (const Case& c : cases) {
+  for (const RectangleCase& c : cases) {
     const PosedRectangle p = pose(c.x0, c.x1, c.y0, c.y1, c.h);
     const double expected = closed_form_solid_angle(c.x0, c.x1, c.y0, c.y1, c.h);
     const float got = SphericalRectangle(p.origin, p.rect).solid_angle();
@@ -76,11 +78,7 @@ TEST_CASE("The spherical rectangle's solid angle matches the closed form", "[ren
 }
 
 TEST_CASE("Spherical rectangle samples are uniform in solid angle (chi-square)", "[render]") {
-  struct Case {
-    const char* name;
-    double x0, x1, y0, y1, h;
-  };
-  const std::vector<Case> cases = {
+  const std::vector<RectangleCase> cases = {
       {"centred square", -0.25, 0.25, -0.25, 0.25, 1.0},
       {"off-axis, close", 0.1, 1.5, -0.3, 0.9, 0.2},
       {"wide, grazing", 0.2, 4.0, -1.0, 1.0, 0.05},
@@ -90,7 +88,7 @@ TEST_CASE("Spherical rectangle samples are uniform in solid angle (chi-square)",
   // Bonferroni over the cases for a family-wise false-failure rate of 1e-3.
   const double significance = 1e-3 / static_cast<double>(cases.size());
   UniformFloats rng(0x5eed0003);
-  for (const Case& c : cases) {
+  for (const RectangleCase& c : cases) {
     const PosedRectangle p = pose(c.x0, c.x1, c.y0, c.y1, c.h);
     const SphericalRectangle spherical(p.origin, p.rect);
     const double total = closed_form_solid_angle(c.x0, c.x1, c.y0, c.y1, c.h);

@@ -10,6 +10,7 @@
 #include "bsdf/shading_frame.h"
 #include "integrator/shadow_terminator.h"
 #include "sampling/warp.h"
+#include "util/finite.h"
 
 namespace matrender {
 namespace {
@@ -26,8 +27,6 @@ struct VertexDimensions {
 };
 
 float max_component(const glm::vec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
-
-bool is_finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // Where a shadow ray toward unit direction wi starts before the usual ray offset: the hit point,
 // lifted toward the smooth surface near the terminator of a smooth-shaded triangle (Cycles'

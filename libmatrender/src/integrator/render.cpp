@@ -19,6 +19,7 @@
 #include "lights/light_sampler.h"
 #include "sampling/owen_sobol.h"
 #include "scene/scene_data.h"
+#include "util/finite.h"
 
 namespace matrender {
 namespace {
@@ -36,8 +37,6 @@ std::vector<Tile> make_tiles(int width, int height) {
       tiles.push_back({x, y, std::min(x + kTileSize, width), std::min(y + kTileSize, height)});
   return tiles;
 }
-
-bool is_finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // Everything one pixel accumulates over its samples.
 struct PixelAccumulator {

@@ -3,11 +3,10 @@
 #include <cmath>
 
 #include "bsdf/shading_frame.h"
+#include "util/finite.h"
 
 namespace matrender {
 namespace {
-
-bool is_finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // Unit vector or `fallback` when v has no usable length.
 glm::vec3 normalize_or(const glm::vec3& v, const glm::vec3& fallback) {
