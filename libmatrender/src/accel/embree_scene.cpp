@@ -95,8 +95,8 @@ void EmbreeScene::intersect_coherent(const glm::vec3& origin, const glm::vec3* d
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-  RTCRayHit8 packet;
-  int valid[kPacketSize];
+  alignas(64) RTCRayHit16 packet;
+  alignas(64) int valid[kPacketSize];
   for (int i = 0; i < kPacketSize; ++i) {
     valid[i] = i < count ? -1 : 0;
     const glm::vec3 dir = dirs[i < count ? i : 0];
@@ -117,7 +117,7 @@ void EmbreeScene::intersect_coherent(const glm::vec3& origin, const glm::vec3* d
     packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
     packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
   }
-  rtcIntersect8(valid, scene_, &context, &packet);
+  rtcIntersect16(valid, scene_, &context, &packet);
   for (int i = 0; i < count; ++i) {
     RayHit& hit = hits[i];
     hit = RayHit();

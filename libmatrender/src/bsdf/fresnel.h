@@ -35,6 +35,8 @@ struct InterpolatedFresnel {
   InterpolatedFresnel() = default;
   InterpolatedFresnel(glm::vec3 cspec0_, float ior_)
       : cspec0(cspec0_), ior(ior_), f0(fresnel_dielectric_cos(1.0f, ior_)) {}
+  // With f0 = fresnel_dielectric_cos(1, ior) known: ((ior - 1) / (ior + 1))^2 in closed form.
+  InterpolatedFresnel(glm::vec3 cspec0_, float ior_, float f0_) : cspec0(cspec0_), ior(ior_), f0(f0_) {}
 
   glm::vec3 operator()(float cos_i) const {
     const float fh = (fresnel_dielectric_cos(cos_i, ior) - f0) / (1.0f - f0);

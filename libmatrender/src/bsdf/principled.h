@@ -28,14 +28,31 @@ struct BsdfSample {
   bool glossy = false;     // which lobe was sampled (Cycles' diffuse vs glossy bounce counts)
 };
 
+// What the lobes take from the material inputs alone, before any view direction: computed once
+// per material when no input is textured, once per shading point otherwise.
+struct PrincipledLobes {
+  explicit PrincipledLobes(const PrincipledInputs& inputs);
+
+  glm::vec3 diffuse_weight{0.0f};  // (1 - metallic) base colour
+  DiffuseModel diffuse_model;
+  float roughness;
+  float alpha;                     // GGX alpha = roughness^2
+  bool singular;                   // a perfect mirror
+  bool specular_enabled;           // specular > 0 or metallic > 0
+  InterpolatedFresnel fresnel;
+};
+
 // All directions in the local shading frame: +Z = shading normal, pointing away from the surface.
 class PrincipledBsdf {
  public:
   // smooth_normal: Cycles' sd->N (the interpolated normal before normal mapping and
   // ensure_valid_reflection) in the local frame. Where it differs from +Z, the diffuse lobe is
   // multiplied by Cycles' bump shadowing term (bump_shadowing.h).
-  PrincipledBsdf(const PrincipledInputs& inputs, const glm::vec3& wo,
+  PrincipledBsdf(const PrincipledLobes& lobes, const glm::vec3& wo,
                  const glm::vec3& smooth_normal = glm::vec3(0.0f, 0.0f, 1.0f));
+  PrincipledBsdf(const PrincipledInputs& inputs, const glm::vec3& wo,
+                 const glm::vec3& smooth_normal = glm::vec3(0.0f, 0.0f, 1.0f))
+      : PrincipledBsdf(PrincipledLobes(inputs), wo, smooth_normal) {}
 
   // Sum over lobes of weight * f * cos(theta_i); *pdf receives the mixture pdf of sampling wi.
   glm::vec3 eval(const glm::vec3& wi, float* pdf) const;
@@ -52,23 +69,22 @@ class PrincipledBsdf {
   bool has_diffuse() const { return diffuse_probability_ > 0.0f; }
   bool has_specular() const { return diffuse_probability_ < 1.0f && specular_enabled_; }
   // True when every lobe is a delta (light sampling cannot contribute).
-  bool is_delta_only() const { return !has_diffuse() && singular_; }
+  bool is_delta_only() const { return !has_diffuse() && lobes_.singular; }
 
   // Weight * f * cos of the lobes separately, for tests against the reference.
   glm::vec3 eval_diffuse(const glm::vec3& wi) const;
   glm::vec3 eval_specular(const glm::vec3& wi) const;
 
  private:
+  // The specular value and, in *pdf, the specular lobe's own sampling pdf.
+  glm::vec3 eval_specular(const glm::vec3& wi, float* pdf) const;
+
+  PrincipledLobes lobes_;
   glm::vec3 wo_;
   glm::vec3 smooth_normal_;
-  bool bump_shadowing_;  // smooth_normal_ differs from the shading normal
-  glm::vec3 diffuse_weight_{0.0f};
-  DiffuseModel diffuse_model_;
-  float roughness_;
-  float alpha_;
-  bool singular_;
-  bool specular_enabled_;
-  InterpolatedFresnel fresnel_;
+  bool bump_shadowing_;     // smooth_normal_ differs from the shading normal
+  bool specular_enabled_;   // the lobes' flag, off when neither lobe reflects anything from wo
+  float g1_wo_;             // Smith G1 of wo, shared by every evaluation
   float diffuse_probability_ = 0.0f;  // 1 - specular probability; 0 when there is no diffuse lobe
 };
 

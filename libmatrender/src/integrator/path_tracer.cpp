@@ -48,6 +48,14 @@ glm::vec3 shadow_ray_start(const MeshData& mesh, const RayHit& hit, const Surfac
 
 }  // namespace
 
+PathTracer::PathTracer(const SceneData& scene, const LightSampler& lights, const PathSettings& settings)
+    : scene_(scene), lights_(lights), settings_(settings) {
+  for (const Material& material : scene.materials) {
+    const std::optional<PrincipledInputs> inputs = constant_inputs(material);
+    constant_lobes_.push_back(inputs ? std::optional<PrincipledLobes>(PrincipledLobes(*inputs)) : std::nullopt);
+  }
+}
+
 glm::vec3 PathTracer::lamps_hit(const glm::vec3& origin, const glm::vec3& dir, float t_max,
                                 float bsdf_pdf, bool bsdf_delta) const {
   glm::vec3 sum(0.0f);
@@ -106,7 +114,8 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     const glm::vec3 wo = frame.to_local(wo_world);
     const glm::vec3 smooth_local =
         sp.smooth_normal == sp.shading_normal ? glm::vec3(0.0f, 0.0f, 1.0f) : frame.to_local(sp.smooth_normal);
-    const PrincipledBsdf bsdf(sp.inputs, wo, smooth_local);
+    const std::optional<PrincipledLobes>& constant = constant_lobes_[sp.material];
+    const PrincipledBsdf bsdf(constant ? *constant : PrincipledLobes(sp.inputs), wo, smooth_local);
 
     // Next-event estimation: one lamp, one point on it.
     if (!lights_.empty() && !bsdf.is_delta_only()) {

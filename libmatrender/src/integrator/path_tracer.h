@@ -2,6 +2,8 @@
 // Unidirectional path tracing with next-event estimation and multiple importance sampling
 // (Veach 1997, ch. 9), bounce limits and Russian roulette as Cycles 3.4 applies them.
 #include <cstdint>
+#include <optional>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -29,8 +31,7 @@ struct PathResult {
 
 class PathTracer {
  public:
-  PathTracer(const SceneData& scene, const LightSampler& lights, const PathSettings& settings)
-      : scene_(scene), lights_(lights), settings_(settings) {}
+  PathTracer(const SceneData& scene, const LightSampler& lights, const PathSettings& settings);
 
   // Radiance along the camera ray, whose closest hit the caller traced (camera rays go to
   // Embree in packets); random numbers come from `sampler` pairs 1, 2, ... (pair 0 is the
@@ -46,6 +47,8 @@ class PathTracer {
   const SceneData& scene_;
   const LightSampler& lights_;
   PathSettings settings_;
+  // Per material: its lobes when no input is textured (computed once, not at every hit).
+  std::vector<std::optional<PrincipledLobes>> constant_lobes_;
 };
 
 }  // namespace matrender

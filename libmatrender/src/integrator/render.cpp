@@ -87,6 +87,8 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
   std::atomic<bool> cancelled{false};
   std::mutex progress_mutex;
   const uint32_t spp = static_cast<uint32_t>(settings.samples_per_pixel);
+  // Without AOVs beyond alpha a pixel only counts its hits.
+  const bool surface_aovs = (settings.aovs & ~static_cast<uint32_t>(AovAlpha)) != 0;
 
   auto render_pixel = [&](int x, int y, uint64_t& tile_rays, uint64_t& tile_discarded) {
     const uint32_t pixel_index = static_cast<uint32_t>(y) * static_cast<uint32_t>(camera.width) + static_cast<uint32_t>(x);
@@ -120,6 +122,7 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
       }
       if (!path.hit) continue;
       ++acc.hits;
+      if (!surface_aovs) continue;
       const SurfacePoint& sp = path.first;
       acc.base_color += glm::dvec3(glm::clamp(sp.inputs.base_color, 0.0f, 1.0f));
       acc.roughness += glm::clamp(sp.inputs.roughness, 0.0f, 1.0f);

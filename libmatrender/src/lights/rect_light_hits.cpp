@@ -2,22 +2,21 @@
 
 namespace matrender {
 
-RectLightHits::RectLightHits(const std::vector<PreparedRectLight>& lamps) : count_(lamps.size()) {
-  const size_t padded = (count_ + kBlock - 1) / kBlock * kBlock;
-  for (auto* array : {&center_x_, &center_y_, &center_z_, &x_x_, &x_y_, &x_z_, &y_x_, &y_y_, &y_z_, &z_x_, &z_y_,
-                      &z_z_})
-    array->assign(padded, 0.0f);
-  half_x_.assign(padded, -1.0f);
-  half_y_.assign(padded, -1.0f);
-  for (size_t k = 0; k < count_; ++k) {
-    const Rectangle3& r = lamps[k].rectangle();
-    const glm::vec3 c = lamps[k].center();
-    center_x_[k] = c.x, center_y_[k] = c.y, center_z_[k] = c.z;
-    x_x_[k] = r.x.x, x_y_[k] = r.x.y, x_z_[k] = r.x.z;
-    y_x_[k] = r.y.x, y_y_[k] = r.y.y, y_z_[k] = r.y.z;
-    z_x_[k] = r.z.x, z_y_[k] = r.z.y, z_z_[k] = r.z.z;
-    half_x_[k] = 0.5f * r.length_x;
-    half_y_[k] = 0.5f * r.length_y;
+RectLightHits::RectLightHits(const std::vector<PreparedRectLight>& lamps) {
+  Block padding{};
+  for (size_t i = 0; i < kBlock; ++i) padding.half_x[i] = padding.half_y[i] = -1.0f;
+  blocks_.assign((lamps.size() + kBlock - 1) / kBlock, padding);
+  for (size_t lamp = 0; lamp < lamps.size(); ++lamp) {
+    Block& k = blocks_[lamp / kBlock];
+    const size_t i = lamp % kBlock;
+    const Rectangle3& r = lamps[lamp].rectangle();
+    const glm::vec3 c = lamps[lamp].center();
+    k.center_x[i] = c.x, k.center_y[i] = c.y, k.center_z[i] = c.z;
+    k.x_x[i] = r.x.x, k.x_y[i] = r.x.y, k.x_z[i] = r.x.z;
+    k.y_x[i] = r.y.x, k.y_y[i] = r.y.y, k.y_z[i] = r.y.z;
+    k.z_x[i] = r.z.x, k.z_y[i] = r.z.y, k.z_z[i] = r.z.z;
+    k.half_x[i] = 0.5f * r.length_x;
+    k.half_y[i] = 0.5f * r.length_y;
   }
 }
 

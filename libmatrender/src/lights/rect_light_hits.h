@@ -1,12 +1,14 @@
 #pragma once
 // The ray test every BSDF-sampled ray makes against every rectangular lamp, over the lamps'
-// geometry stored as structure-of-arrays in blocks of kBlock so that the compiler evaluates a
-// block with SIMD instructions and no branch per lamp.
-#include <cmath>
+// geometry stored as structure-of-arrays in blocks of kBlock, each block tested with SIMD
+// instructions and no branch per lamp.
 #include <cstddef>
 #include <vector>
 
 #include <glm/glm.hpp>
+#if defined(__SSE__)
+#include <xmmintrin.h>
+#endif
 
 #include "lights/rect_light.h"
 
@@ -14,44 +16,67 @@ namespace matrender {
 
 class RectLightHits {
  public:
-  static constexpr size_t kBlock = 8;
+  // One SSE register of lamps: the paper's rig of nine lamps pads to 12, not 16.
+  static constexpr size_t kBlock = 4;
 
   explicit RectLightHits(const std::vector<PreparedRectLight>& lamps);
 
-  bool empty() const { return count_ == 0; }
+  bool empty() const { return blocks_.empty(); }
 
   // Calls visit(lamp_index, t) for every lamp whose emitting side the ray meets at a distance
   // t in (0, t_max), in lamp order.
   template <class Visit>
   void for_each_hit(const glm::vec3& origin, const glm::vec3& dir, float t_max, Visit&& visit) const {
-    for (size_t base = 0; base < count_; base += kBlock) {
-      float t_hit[kBlock];
-      for (size_t i = 0; i < kBlock; ++i) {
-        const size_t k = base + i;
-        // Plane through the centre with normal z (the lamp's back); it emits toward -z, so a
-        // ray sees the emitting side when it travels along +z.
-        const float facing = dir.x * z_x_[k] + dir.y * z_y_[k] + dir.z * z_z_[k];
-        const float to_center_x = center_x_[k] - origin.x, to_center_y = center_y_[k] - origin.y,
-                    to_center_z = center_z_[k] - origin.z;
-        const float t = (to_center_x * z_x_[k] + to_center_y * z_y_[k] + to_center_z * z_z_[k]) / facing;
-        const float px = t * dir.x - to_center_x, py = t * dir.y - to_center_y, pz = t * dir.z - to_center_z;
-        const float lx = px * x_x_[k] + py * x_y_[k] + pz * x_z_[k];
-        const float ly = px * y_x_[k] + py * y_y_[k] + pz * y_z_[k];
-        // Non-short-circuit & keeps the loop free of branches, so it vectorises.
-        const bool hit = (facing > 0.0f) & (t > 0.0f) & (t < t_max) & (std::abs(lx) <= half_x_[k]) &
-                         (std::abs(ly) <= half_y_[k]);
-        t_hit[i] = hit ? t : -1.0f;
+    const Float4 ox = broadcast(origin.x), oy = broadcast(origin.y), oz = broadcast(origin.z);
+    const Float4 dx = broadcast(dir.x), dy = broadcast(dir.y), dz = broadcast(dir.z);
+    const Float4 t_end = broadcast(t_max);
+    for (size_t b = 0; b < blocks_.size(); ++b) {
+      const Block& k = blocks_[b];
+      // Plane through the centre with normal z (the lamp's back); it emits toward -z, so a ray
+      // sees the emitting side when it travels along +z.
+      const Float4 facing = dx * k.z_x + dy * k.z_y + dz * k.z_z;
+      const Float4 to_center_x = k.center_x - ox, to_center_y = k.center_y - oy, to_center_z = k.center_z - oz;
+      const Float4 t = (to_center_x * k.z_x + to_center_y * k.z_y + to_center_z * k.z_z) / facing;
+      const Float4 px = t * dx - to_center_x, py = t * dy - to_center_y, pz = t * dz - to_center_z;
+      const Float4 lx = px * k.x_x + py * k.x_y + pz * k.x_z;
+      const Float4 ly = px * k.y_x + py * k.y_y + pz * k.y_z;
+      const Int4 hit = (facing > 0.0f) & (t > 0.0f) & (t < t_end) & (lx <= k.half_x) & (-lx <= k.half_x) &
+                       (ly <= k.half_y) & (-ly <= k.half_y);
+      // Almost every ray misses every lamp: one branch per block, not one per lamp.
+      for (unsigned mask = lane_mask(hit); mask != 0; mask &= mask - 1) {
+        const size_t i = static_cast<size_t>(__builtin_ctz(mask));
+        visit(b * kBlock + i, t[i]);
       }
-      for (size_t i = 0; i < kBlock; ++i)
-        if (t_hit[i] > 0.0f) visit(base + i, t_hit[i]);
     }
   }
 
  private:
-  size_t count_ = 0;
-  // Padded to a multiple of kBlock with lamps of negative size, which no ray hits.
-  std::vector<float> center_x_, center_y_, center_z_, x_x_, x_y_, x_z_, y_x_, y_y_, y_z_, z_x_, z_y_, z_z_,
-      half_x_, half_y_;
+  // GCC/Clang vector extensions: element-wise arithmetic and comparisons (all bits set where
+  // true) on kBlock lanes, as SSE on x86-64 and NEON on arm64.
+  using Float4 = float __attribute__((vector_size(4 * sizeof(float))));
+  using Int4 = int __attribute__((vector_size(4 * sizeof(int))));
+  static_assert(kBlock == 4, "Float4 holds one block");
+
+  static Float4 broadcast(float v) { return Float4{v, v, v, v}; }
+  // Bit i set where lane i of a comparison result is true.
+  static unsigned lane_mask(Int4 m) {
+#if defined(__SSE__)
+    return static_cast<unsigned>(_mm_movemask_ps(reinterpret_cast<__m128>(m)));
+#else
+    return static_cast<unsigned>((m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8));
+#endif
+  }
+
+  // kBlock lamps: centre, the rectangle's unit axes x, y, z and half side lengths. The last
+  // block is padded with lamps of negative size, which no ray hits.
+  struct Block {
+    Float4 center_x, center_y, center_z;
+    Float4 x_x, x_y, x_z;
+    Float4 y_x, y_y, y_z;
+    Float4 z_x, z_y, z_z;
+    Float4 half_x, half_y;
+  };
+  std::vector<Block> blocks_;
 };
 
 }  // namespace matrender

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "sampling/warp.h"
+#include "util/polynomial_atan2.h"
 
 namespace matrender {
 
@@ -36,7 +37,7 @@ SphericalRectangle::SphericalRectangle(const glm::vec3& origin, const Rectangle3
     return Complex{h * std::sqrt(x * x + y * y + z0_sq), sign * x * y};
   };
   const auto argument_of_product = [](Complex a, Complex b) {
-    return std::atan2(a.re * b.im + a.im * b.re, a.re * b.re - a.im * b.im);
+    return polynomial_atan2(a.re * b.im + a.im * b.re, a.re * b.re - a.im * b.im);
   };
   const float s0_plus_s1 = argument_of_product(corner(x1_, y0_, -1.0f), corner(x1_, y1_, 1.0f));
   const float s2_plus_s3 = argument_of_product(corner(x0_, y1_, -1.0f), corner(x0_, y0_, 1.0f));

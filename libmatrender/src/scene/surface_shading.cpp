@@ -93,4 +93,16 @@ SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm:
   return sp;
 }
 
+std::optional<PrincipledInputs> constant_inputs(const Material& material) {
+  if (material.base_color.texture || material.metallic.texture || material.roughness.texture) return std::nullopt;
+  PrincipledInputs inputs;
+  inputs.base_color = material.base_color.value;
+  inputs.metallic = material.metallic.value;
+  inputs.roughness = material.roughness.value;
+  inputs.specular = material.specular;
+  inputs.specular_tint = material.specular_tint;
+  inputs.diffuse_model = material.diffuse_model;
+  return inputs;
+}
+
 }  // namespace matrender

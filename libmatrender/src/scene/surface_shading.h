@@ -2,6 +2,7 @@
 // From a ray hit to everything shading needs: position, normals facing the viewer, UV, and the
 // material's inputs after texture lookups.
 #include <cstdint>
+#include <optional>
 
 #include <glm/glm.hpp>
 
@@ -26,5 +27,8 @@ struct SurfacePoint {
 
 // wo = unit direction from the hit back toward the ray origin.
 SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm::vec3& wo);
+
+// The inputs shade_surface gives every point of `material` when none of them is textured.
+std::optional<PrincipledInputs> constant_inputs(const Material& material);
 
 }  // namespace matrender
