@@ -41,10 +41,6 @@ inline uint32_t laine_karras_permutation(uint32_t x, uint32_t seed) {
   return x;
 }
 
-inline uint32_t nested_uniform_scramble(uint32_t x, uint32_t seed) {
-  return reverse_bits(laine_karras_permutation(reverse_bits(x), seed));
-}
-
 // First two Sobol dimensions as 32-bit fixed point: van der Corput, and the dimension whose
 // generator matrix is Pascal's triangle mod 2 (direction numbers v_k = v_{k-1} ^ (v_{k-1} >> 1)).
 inline uint32_t sobol_dimension0(uint32_t index) { return reverse_bits(index); }
@@ -78,11 +74,14 @@ struct PairSeeds {
         y(hash_combine(seed, 0x1b873593u)) {}
 };
 
-// 2-D point `sample_index` of the scrambled sequence with the given seeds. Both coordinates are
-// nested_uniform_scramble(reverse_bits(r), seed) = reverse_bits(laine_karras_permutation(r, seed))
-// for r = index and r = sobol_dimension1_reversed(index): the inner reversals cancel.
-inline glm::vec2 owen_sobol_2d(uint32_t sample_index, const PairSeeds& seeds) {
-  const uint32_t shuffled = nested_uniform_scramble(sample_index, seeds.shuffle);
+// 2-D point of the scrambled sequence with the given seeds, for the sample whose index reversed
+// is `reversed_index` (every pair of a sample shares it). The index is shuffled by a nested
+// uniform scramble, shuffled = reverse_bits(laine_karras_permutation(reverse_bits(index))), and
+// both coordinates are nested_uniform_scramble(reverse_bits(r), seed) =
+// reverse_bits(laine_karras_permutation(r, seed)) for r = shuffled and
+// r = sobol_dimension1_reversed(shuffled): the inner reversals cancel.
+inline glm::vec2 owen_sobol_2d_reversed_index(uint32_t reversed_index, const PairSeeds& seeds) {
+  const uint32_t shuffled = reverse_bits(laine_karras_permutation(reversed_index, seeds.shuffle));
   const uint32_t x = reverse_bits(laine_karras_permutation(shuffled, seeds.x));
   const uint32_t y = reverse_bits(laine_karras_permutation(sobol_dimension1_reversed(shuffled), seeds.y));
   return {fixed_point_to_unit_float(x), fixed_point_to_unit_float(y)};
@@ -111,16 +110,18 @@ class PixelSeeds {
   mutable std::array<PairSeeds, kCachedPairs> cache_;
 };
 
-// The random numbers of one camera sample: pair k of the path is owen_sobol_2d(sample, seeds_k).
+// The random numbers of one camera sample: pair k of the path is point `sample` of
+// owen_sobol_2d_reversed_index with seeds_k.
 class PixelSampler {
  public:
-  PixelSampler(const PixelSeeds& seeds, uint32_t sample_index) : seeds_(seeds), sample_index_(sample_index) {}
+  PixelSampler(const PixelSeeds& seeds, uint32_t sample_index)
+      : seeds_(seeds), reversed_index_(reverse_bits(sample_index)) {}
 
-  glm::vec2 get_2d(uint32_t pair) const { return owen_sobol_2d(sample_index_, seeds_.pair(pair)); }
+  glm::vec2 get_2d(uint32_t pair) const { return owen_sobol_2d_reversed_index(reversed_index_, seeds_.pair(pair)); }
 
  private:
   const PixelSeeds& seeds_;
-  uint32_t sample_index_;
+  uint32_t reversed_index_;
 };
 
 }  // namespace matrender

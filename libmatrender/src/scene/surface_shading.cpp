@@ -12,7 +12,7 @@ namespace {
 glm::vec3 normalize_or(const glm::vec3& v, const glm::vec3& fallback) {
   const float len2 = glm::dot(v, v);
   if (!(len2 > 1e-30f) || !std::isfinite(len2)) return fallback;
-  return v / std::sqrt(len2);
+  return v * (1.0f / std::sqrt(len2));
 }
 
 glm::vec3 eval_color(const ColorParam& p, glm::vec2 uv) {
