@@ -6,25 +6,31 @@
 #include "matrender/camera.h"
 #include "matrender/render.h"
 #include "matrender/scene.h"
+#include "matrender/texture.h"
 #include "test_scenes.h"
 
 using namespace matrender;
 
 namespace {
 
-Scene glossy_box_scene() {
+// `white`, when given, multiplies every material input that can be textured.
+Scene glossy_box_scene(const TexturePtr& white = nullptr) {
+  const auto texture = [&](Material m) {
+    m.base_color.texture = m.roughness.texture = m.metallic.texture = white;
+    return m;
+  };
   Scene scene;
   Material floor = test_scenes::lambert(0.7f);
   floor.diffuse_model = DiffuseModel::Principled;
   floor.specular = 0.5f;
   floor.roughness.value = 0.3f;
   matgeom::TriangleMesh mesh = test_scenes::horizontal_square(4.0);
-  scene.add_mesh(mesh, {scene.add_material(floor)});
+  scene.add_mesh(mesh, {scene.add_material(texture(floor))});
   Material metal;
   metal.base_color.value = glm::vec3(0.9f, 0.6f, 0.3f);
   metal.metallic.value = 1.0f;
   metal.roughness.value = 0.2f;
-  scene.add_mesh(test_scenes::horizontal_square(0.5, 0.4), {scene.add_material(metal)});
+  scene.add_mesh(test_scenes::horizontal_square(0.5, 0.4), {scene.add_material(texture(metal))});
   RectLight lamp;
   lamp.light_to_world[3] = glm::dvec4(0.0, 0.0, 2.0, 1.0);
   lamp.power = 200.0;
@@ -56,4 +62,23 @@ TEST_CASE("One and two threads give bit-identical images for the same seed", "[r
   settings.seed = 4;
   render(scene, camera, settings, other_seed);
   CHECK(std::memcmp(one.color.data(), other_seed.color.data(), one.color.size() * sizeof(float)) != 0);
+}
+
+// Untextured materials get their BSDF lobes computed once per material instead of at every hit;
+// through white textures the same material takes the per-hit path and must give the same image.
+TEST_CASE("A constant material renders as the same material through white textures", "[render]") {
+  const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+  const TexturePtr white_texture = Texture::from_pixelsf(1, 1, 4, white, ColorSpace::NonColor);
+  const Camera camera = Camera::look_at({2.0, -2.0, 1.5}, {0, 0, 0.2}, {0, 0, 1}, 0.7, 32, 24);
+  RenderSettings settings;
+  settings.samples_per_pixel = 8;
+  settings.threads = 1;
+  FrameBuffers constant, textured;
+  Scene constant_scene = glossy_box_scene();
+  render(constant_scene, camera, settings, constant);
+  Scene textured_scene = glossy_box_scene(white_texture);
+  render(textured_scene, camera, settings, textured);
+  REQUIRE(constant.color.size() == textured.color.size());
+  CHECK(test_scenes::all_finite(constant.color));
+  CHECK(std::memcmp(constant.color.data(), textured.color.data(), constant.color.size() * sizeof(float)) == 0);
 }

@@ -35,15 +35,6 @@ PixelFilterSampler::PixelFilterSampler() {
   }
 }
 
-float PixelFilterSampler::inverse_cdf(float u) const {
-  const float x = std::clamp(u, 0.0f, 1.0f) * kTableSize;
-  const int i = std::min(static_cast<int>(x), kTableSize - 1);
-  const float t = x - static_cast<float>(i);
-  return inverse_cdf_[i] + t * (inverse_cdf_[i + 1] - inverse_cdf_[i]);
-}
-
-glm::vec2 PixelFilterSampler::sample(glm::vec2 u) const { return {inverse_cdf(u.x), inverse_cdf(u.y)}; }
-
 const PixelFilterSampler& blackman_harris_sampler() {
   static const PixelFilterSampler sampler;
   return sampler;

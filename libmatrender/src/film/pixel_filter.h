@@ -2,6 +2,7 @@
 // Cycles' pixel filter: Blackman-Harris with filter_width 1.5 px, which Cycles doubles internally,
 // so the window spans [-1.5, 1.5] px. Offsets are importance-sampled separably through the
 // inverted CDF and every sample has weight 1 (Cycles' filter_table; the pixel is the plain mean).
+#include <algorithm>
 #include <array>
 
 #include <glm/glm.hpp>
@@ -17,9 +18,14 @@ class PixelFilterSampler {
   static constexpr double kRadius = 1.5;
   PixelFilterSampler();
   // Maps u in [0,1)^2 to an offset from the pixel centre, distributed as w(x) w(y).
-  glm::vec2 sample(glm::vec2 u) const;
-  // The 1-D inverse CDF (tests).
-  float inverse_cdf(float u) const;
+  glm::vec2 sample(glm::vec2 u) const { return {inverse_cdf(u.x), inverse_cdf(u.y)}; }
+  // The 1-D inverse CDF, interpolated linearly in the table.
+  float inverse_cdf(float u) const {
+    const float x = std::clamp(u, 0.0f, 1.0f) * kTableSize;
+    const int i = std::min(static_cast<int>(x), kTableSize - 1);
+    const float t = x - static_cast<float>(i);
+    return inverse_cdf_[i] + t * (inverse_cdf_[i + 1] - inverse_cdf_[i]);
+  }
 
  private:
   static constexpr int kTableSize = 1024;

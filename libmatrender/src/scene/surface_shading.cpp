@@ -60,12 +60,15 @@ SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm:
     n_front = normalize_or(b0 * mesh.normals[tri.x] + b1 * mesh.normals[tri.y] + b2 * mesh.normals[tri.z],
                            ng_front);
   }
-  if (!mesh.uvs.empty()) sp.uv = b0 * mesh.uvs[tri.x] + b1 * mesh.uvs[tri.y] + b2 * mesh.uvs[tri.z];
-  if (!std::isfinite(sp.uv.x) || !std::isfinite(sp.uv.y)) sp.uv = glm::vec2(0.0f);
-
   sp.part = mesh.triangle_parts.empty() ? 0 : static_cast<int32_t>(mesh.triangle_parts[hit.triangle]);
   sp.material = mesh.part_materials[static_cast<size_t>(sp.part)];
   const Material& material = scene.materials[sp.material];
+
+  // Only textures read the UV.
+  const bool textured = material.base_color.texture || material.metallic.texture || material.roughness.texture ||
+                        material.normal_map;
+  if (textured && !mesh.uvs.empty()) sp.uv = b0 * mesh.uvs[tri.x] + b1 * mesh.uvs[tri.y] + b2 * mesh.uvs[tri.z];
+  if (!std::isfinite(sp.uv.x) || !std::isfinite(sp.uv.y)) sp.uv = glm::vec2(0.0f);
 
   sp.smooth_normal = facing_sign * n_front;
   if (material.normal_map && !mesh.tangents.empty()) {
