@@ -80,6 +80,9 @@ TEST_CASE("Sobol dimension 1 equals the direction-number recurrence", "[render]"
     INFO("index " << index);
     REQUIRE(sobol_dimension1(index) == by_direction_numbers(index));
     REQUIRE(reverse_bits(reverse_bits(index)) == index);
+    const uint32_t other = hash_u32(index);
+    REQUIRE(reverse_bits64((uint64_t{other} << 32) | index) ==
+            ((uint64_t{reverse_bits(index)} << 32) | reverse_bits(other)));
   }
   for (uint32_t small = 0; small < 4096; ++small) REQUIRE(sobol_dimension1(small) == by_direction_numbers(small));
   CHECK(reverse_bits(1u) == 0x80000000u);

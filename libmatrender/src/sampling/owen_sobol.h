@@ -18,6 +18,13 @@ inline uint32_t reverse_bits(uint32_t x) {
   return ((x >> 4) & 0x0F0F0F0Fu) | ((x & 0x0F0F0F0Fu) << 4);
 }
 
+inline uint64_t reverse_bits64(uint64_t x) {
+  x = __builtin_bswap64(x);
+  x = ((x >> 1) & 0x5555555555555555u) | ((x & 0x5555555555555555u) << 1);
+  x = ((x >> 2) & 0x3333333333333333u) | ((x & 0x3333333333333333u) << 2);
+  return ((x >> 4) & 0x0F0F0F0F0F0F0F0Fu) | ((x & 0x0F0F0F0F0F0F0F0Fu) << 4);
+}
+
 // 32-bit integer hash (Wellons' "lowbias32"): good avalanche, used only to derive seeds.
 inline uint32_t hash_u32(uint32_t x) {
   x ^= x >> 16;
@@ -82,9 +89,11 @@ struct PairSeeds {
 // r = sobol_dimension1_reversed(shuffled): the inner reversals cancel.
 inline glm::vec2 owen_sobol_2d_reversed_index(uint32_t reversed_index, const PairSeeds& seeds) {
   const uint32_t shuffled = reverse_bits(laine_karras_permutation(reversed_index, seeds.shuffle));
-  const uint32_t x = reverse_bits(laine_karras_permutation(shuffled, seeds.x));
-  const uint32_t y = reverse_bits(laine_karras_permutation(sobol_dimension1_reversed(shuffled), seeds.y));
-  return {fixed_point_to_unit_float(x), fixed_point_to_unit_float(y)};
+  const uint32_t x_reversed = laine_karras_permutation(shuffled, seeds.x);
+  const uint32_t y_reversed = laine_karras_permutation(sobol_dimension1_reversed(shuffled), seeds.y);
+  // Both reversals in one 64-bit reversal: it swaps the halves and reverses each.
+  const uint64_t xy = reverse_bits64((uint64_t{y_reversed} << 32) | x_reversed);
+  return {fixed_point_to_unit_float(static_cast<uint32_t>(xy >> 32)), fixed_point_to_unit_float(static_cast<uint32_t>(xy))};
 }
 
 // Seeds of every dimension pair of one pixel. They do not depend on the sample index, so all
