@@ -15,10 +15,14 @@ class CameraRays {
       : origin_(glm::vec3(camera.camera_to_world[3])),
         right_(glm::normalize(glm::vec3(camera.camera_to_world[0]))),
         up_(glm::normalize(glm::vec3(camera.camera_to_world[1]))),
-        back_(glm::normalize(glm::vec3(camera.camera_to_world[2]))),
-        tan_half_fov_(static_cast<float>(std::tan(0.5 * camera.vertical_fov))),
-        width_(static_cast<float>(camera.width)),
-        height_(static_cast<float>(camera.height)) {}
+        back_(glm::normalize(glm::vec3(camera.camera_to_world[2]))) {
+    const double tan_half_fov = std::tan(0.5 * camera.vertical_fov);
+    const double aspect = static_cast<double>(camera.width) / camera.height;
+    scale_x_ = static_cast<float>(2.0 * tan_half_fov * aspect / camera.width);
+    offset_x_ = static_cast<float>(tan_half_fov * aspect);
+    scale_y_ = static_cast<float>(2.0 * tan_half_fov / camera.height);
+    offset_y_ = static_cast<float>(tan_half_fov);
+  }
 
   glm::vec3 origin() const { return origin_; }
   glm::vec3 forward() const { return -back_; }
@@ -26,17 +30,18 @@ class CameraRays {
   const glm::vec3& up() const { return up_; }
   const glm::vec3& back() const { return back_; }
 
-  // Unit direction through raster position (px, py) in pixels from the top-left corner.
+  // Unit direction through raster position (px, py) in pixels from the top-left corner: the
+  // point (2 px / W - 1) tan(fov/2) aspect right, (1 - 2 py / H) tan(fov/2) up on the plane one
+  // unit ahead, with the divisions folded into per-camera constants.
   glm::vec3 direction(float px, float py) const {
-    const float sx = (2.0f * px / width_ - 1.0f) * tan_half_fov_ * (width_ / height_);
-    const float sy = (1.0f - 2.0f * py / height_) * tan_half_fov_;
+    const float sx = px * scale_x_ - offset_x_;
+    const float sy = offset_y_ - py * scale_y_;
     return glm::normalize(sx * right_ + sy * up_ - back_);
   }
 
  private:
   glm::vec3 origin_, right_, up_, back_;
-  float tan_half_fov_;
-  float width_, height_;
+  float scale_x_, offset_x_, scale_y_, offset_y_;
 };
 
 }  // namespace matrender
