@@ -83,3 +83,41 @@ TEST_CASE("Blocked lamp hits equal a plain ray-rectangle test", "[render]") {
   CHECK(total_hits > 500);
   CHECK(decided > 200000);
 }
+
+// The bounding-sphere cull must keep every true hit, the farthest from the centre included:
+// rays aimed just inside a corner from far and near.
+TEST_CASE("Rays aimed just inside a lamp's corners hit it", "[render]") {
+  UniformFloats rng(0x5eed0005);
+  std::vector<RectLight> lamps;
+  for (int i = 0; i < 6; ++i) {
+    RectLight lamp;
+    const glm::dvec3 axis = glm::normalize(glm::dvec3(rng.next() - 0.5, rng.next() - 0.5, rng.next() + 0.1));
+    lamp.light_to_world = glm::rotate(glm::translate(glm::dmat4(1.0), glm::dvec3(2.0 * i, 1.0, 3.0)),
+                                      6.28 * double(rng.next()), axis);
+    lamp.size_x = 0.05 + 2.0 * rng.next();
+    lamp.size_y = 0.05 + 2.0 * rng.next();
+    lamps.push_back(lamp);
+  }
+  std::vector<PreparedRectLight> prepared(lamps.begin(), lamps.end());
+  const RectLightHits hits(prepared);
+  int aimed = 0;
+  for (size_t k = 0; k < lamps.size(); ++k) {
+    const Rectangle3& r = prepared[k].rectangle();
+    for (int corner = 0; corner < 4; ++corner) {
+      const float fx = corner & 1 ? 0.999f : 0.001f, fy = corner & 2 ? 0.999f : 0.001f;
+      const glm::vec3 target = r.corner + fx * r.length_x * r.x + fy * r.length_y * r.y;
+      for (float distance : {0.01f, 1.0f, 100.0f}) {
+        // From the emitting side (-z), in a random direction off the normal.
+        const glm::vec3 away = glm::normalize(-r.z + 0.9f * (rng.next() - 0.5f) * r.x + 0.9f * (rng.next() - 0.5f) * r.y);
+        const glm::vec3 origin = target + distance * away;
+        const glm::vec3 dir = glm::normalize(target - origin);
+        bool found = false;
+        hits.for_each_hit(origin, dir, INFINITY, [&](size_t index, float) { found = found || index == k; });
+        INFO("lamp " << k << " corner " << corner << " distance " << distance);
+        CHECK(found);
+        ++aimed;
+      }
+    }
+  }
+  CHECK(aimed == 72);
+}

@@ -4,7 +4,7 @@ namespace matrender {
 
 RectLightHits::RectLightHits(const std::vector<PreparedRectLight>& lamps) {
   Block padding{};
-  for (size_t i = 0; i < kBlock; ++i) padding.half_x[i] = padding.half_y[i] = -1.0f;
+  for (size_t i = 0; i < kBlock; ++i) padding.half_x[i] = padding.half_y[i] = padding.radius2[i] = -1.0f;
   blocks_.assign((lamps.size() + kBlock - 1) / kBlock, padding);
   for (size_t lamp = 0; lamp < lamps.size(); ++lamp) {
     Block& k = blocks_[lamp / kBlock];
@@ -17,6 +17,8 @@ RectLightHits::RectLightHits(const std::vector<PreparedRectLight>& lamps) {
     k.z_x[i] = r.z.x, k.z_y[i] = r.z.y, k.z_z[i] = r.z.z;
     k.half_x[i] = 0.5f * r.length_x;
     k.half_y[i] = 0.5f * r.length_y;
+    // The half diagonal, 1 % larger.
+    k.radius2[i] = 1.0201f * (k.half_x[i] * k.half_x[i] + k.half_y[i] * k.half_y[i]);
   }
 }
 

@@ -30,12 +30,21 @@ class RectLightHits {
     const Float4 ox = broadcast(origin.x), oy = broadcast(origin.y), oz = broadcast(origin.z);
     const Float4 dx = broadcast(dir.x), dy = broadcast(dir.y), dz = broadcast(dir.z);
     const Float4 t_end = broadcast(t_max);
+    const float dir_length2 = glm::dot(dir, dir);
+    const Float4 d2 = broadcast(dir_length2);
     for (size_t b = 0; b < blocks_.size(); ++b) {
       const Block& k = blocks_[b];
+      const Float4 to_center_x = k.center_x - ox, to_center_y = k.center_y - oy, to_center_z = k.center_z - oz;
+      // Cull by each lamp's bounding sphere: skip the block when the ray's line passes every
+      // centre farther than the radius, |oc|^2 |d|^2 - (oc.d)^2 > r^2 |d|^2. The relative slack
+      // covers the cancellation of that difference for lines through a centre.
+      const Float4 along = to_center_x * dx + to_center_y * dy + to_center_z * dz;
+      const Float4 oc2 = to_center_x * to_center_x + to_center_y * to_center_y + to_center_z * to_center_z;
+      const Int4 near_line = oc2 * d2 - along * along <= (k.radius2 + 1e-5f * oc2) * d2;
+      if (lane_mask(near_line) == 0) continue;
       // Plane through the centre with normal z (the lamp's back); it emits toward -z, so a ray
       // sees the emitting side when it travels along +z.
       const Float4 facing = dx * k.z_x + dy * k.z_y + dz * k.z_z;
-      const Float4 to_center_x = k.center_x - ox, to_center_y = k.center_y - oy, to_center_z = k.center_z - oz;
       const Float4 t = (to_center_x * k.z_x + to_center_y * k.z_y + to_center_z * k.z_z) / facing;
       const Float4 px = t * dx - to_center_x, py = t * dy - to_center_y, pz = t * dz - to_center_z;
       const Float4 lx = px * k.x_x + py * k.x_y + pz * k.x_z;
@@ -67,14 +76,16 @@ class RectLightHits {
 #endif
   }
 
-  // kBlock lamps: centre, the rectangle's unit axes x, y, z and half side lengths. The last
-  // block is padded with lamps of negative size, which no ray hits.
+  // kBlock lamps: centre, the rectangle's unit axes x, y, z, half side lengths and the squared
+  // radius of a sphere about the centre enclosing the rectangle. The last block is padded with
+  // lamps of negative size and radius, which no ray hits.
   struct Block {
     Float4 center_x, center_y, center_z;
     Float4 x_x, x_y, x_z;
     Float4 y_x, y_y, y_z;
     Float4 z_x, z_y, z_z;
     Float4 half_x, half_y;
+    Float4 radius2;
   };
   std::vector<Block> blocks_;
 };
