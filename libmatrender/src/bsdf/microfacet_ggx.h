@@ -25,12 +25,13 @@ inline float ggx_d(const glm::vec3& m, float alpha) {
   return a2 / (kPi * denom * denom);
 }
 
-// Smith G1 = 2 / (1 + sqrt(1 + alpha^2 tan^2 theta))   (Walter et al. 2007, eq. 34), with
-// tan^2 = (w.x^2 + w.y^2) / w.z^2 for the same reason.
+// Smith G1 = 2 / (1 + sqrt(1 + alpha^2 tan^2 theta))   (Walter et al. 2007, eq. 34), multiplied
+// through by cos theta = w.z: 2 w.z / (w.z + sqrt(w.z^2 + alpha^2 (w.x^2 + w.y^2))), which needs
+// no tan^2 (useless in float near normal incidence at tiny alpha) and one division.
 inline float ggx_g1(const glm::vec3& w, float alpha) {
   if (w.z <= 0.0f) return 0.0f;
-  const float a2_tan2 = alpha * alpha * (w.x * w.x + w.y * w.y) / (w.z * w.z);
-  return 2.0f / (1.0f + std::sqrt(1.0f + a2_tan2));
+  const float a2_sin2 = alpha * alpha * (w.x * w.x + w.y * w.y);
+  return 2.0f * w.z / (w.z + std::sqrt(w.z * w.z + a2_sin2));
 }
 
 // Visible normal for view direction wo (wo.z > 0), Heitz 2018 listing 1.

@@ -49,7 +49,7 @@ PrincipledBsdf::PrincipledBsdf(const PrincipledLobes& lobes, const glm::vec3& wo
   const float total = diffuse_sample_weight + specular_sample_weight;
   diffuse_probability_ = total > 0.0f ? diffuse_sample_weight / total : 0.0f;
   if (!(total > 0.0f)) specular_enabled_ = false;
-  g1_wo_ = specular_enabled_ && !lobes_.singular ? ggx_g1(wo, lobes_.alpha) : 0.0f;
+  g1_wo_over_4cos_ = specular_enabled_ && !lobes_.singular ? ggx_g1(wo, lobes_.alpha) / (4.0f * wo.z) : 0.0f;
 }
 
 glm::vec3 PrincipledBsdf::eval_diffuse(const glm::vec3& wi) const {
@@ -72,7 +72,7 @@ glm::vec3 PrincipledBsdf::eval_specular(const glm::vec3& wi, float* pdf) const {
   const glm::vec3 m = glm::normalize(wo_ + wi);
   // D G1(wo) / (4 cos_o) is both the visible-normal sampling pdf of wi (ggx_reflection_pdf) and,
   // times F G1(wi), the value f cos = F D G / (4 cos_o cos_i) * cos_i.
-  const float d_g1_over_4cos = ggx_d(m, lobes_.alpha) * g1_wo_ / (4.0f * wo_.z);
+  const float d_g1_over_4cos = ggx_d(m, lobes_.alpha) * g1_wo_over_4cos_;
   *pdf = d_g1_over_4cos;
   return lobes_.fresnel(glm::dot(wi, m)) * (d_g1_over_4cos * ggx_g1(wi, lobes_.alpha));
 }
@@ -126,7 +126,7 @@ bool PrincipledBsdf::sample(float u_lobe, glm::vec2 u, BsdfSample* out) const {
   const glm::vec3 value = eval(wi, &pdf);
   if (!(pdf > 0.0f)) return false;
   out->wi = wi;
-  out->weight = value / pdf;
+  out->weight = value * (1.0f / pdf);
   out->pdf = pdf;
   out->delta = false;
   out->glossy = !pick_diffuse;

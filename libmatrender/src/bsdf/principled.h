@@ -84,7 +84,7 @@ class PrincipledBsdf {
   glm::vec3 smooth_normal_;
   bool bump_shadowing_;     // smooth_normal_ differs from the shading normal
   bool specular_enabled_;   // the lobes' flag, off when neither lobe reflects anything from wo
-  float g1_wo_;             // Smith G1 of wo, shared by every evaluation
+  float g1_wo_over_4cos_;   // Smith G1(wo) / (4 cos_o), shared by every evaluation
   float diffuse_probability_ = 0.0f;  // 1 - specular probability; 0 when there is no diffuse lobe
 };
 
