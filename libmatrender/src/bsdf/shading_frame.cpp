@@ -4,11 +4,7 @@
 
 namespace matrender {
 
-glm::vec3 ensure_valid_reflection(const glm::vec3& ng, const glm::vec3& wo, const glm::vec3& n) {
-  const float threshold = std::min(0.9f * glm::dot(ng, wo), 0.01f);
-  const glm::vec3 reflected = 2.0f * glm::dot(n, wo) * n - wo;
-  if (glm::dot(ng, reflected) >= threshold) return n;
-
+glm::vec3 bend_for_valid_reflection(const glm::vec3& ng, const glm::vec3& wo, const glm::vec3& n, float threshold) {
   // 2-D problem in the plane spanned by x (the part of n orthogonal to ng) and ng. A unit normal
   // (nx, nz) there reflects wo to height 2 (nx ix + nz iz) nz - iz; setting that to `threshold`
   // and squaring gives a quadratic in nz^2 with roots (c +- b) / (2a), where
