@@ -37,6 +37,22 @@ glm::vec3 apply_normal_map(const Material& material, glm::vec2 uv, const glm::ve
   return normalize_or(normal + (mapped - normal) * material.normal_strength, normal);
 }
 
+bool has_textured_input(const Material& material) {
+  return material.base_color.texture || material.metallic.texture || material.roughness.texture;
+}
+
+// The inputs with every texture left out: the constants, and the untexturable parameters.
+PrincipledInputs untextured_inputs(const Material& material) {
+  PrincipledInputs inputs;
+  inputs.base_color = material.base_color.value;
+  inputs.metallic = material.metallic.value;
+  inputs.roughness = material.roughness.value;
+  inputs.specular = material.specular;
+  inputs.specular_tint = material.specular_tint;
+  inputs.diffuse_model = material.diffuse_model;
+  return inputs;
+}
+
 }  // namespace
 
 SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm::vec3& wo) {
@@ -65,8 +81,7 @@ SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm:
   const Material& material = scene.materials[sp.material];
 
   // Only textures read the UV.
-  const bool textured = material.base_color.texture || material.metallic.texture || material.roughness.texture ||
-                        material.normal_map;
+  const bool textured = has_textured_input(material) || material.normal_map;
   if (textured && !mesh.uvs.empty()) sp.uv = b0 * mesh.uvs[tri.x] + b1 * mesh.uvs[tri.y] + b2 * mesh.uvs[tri.z];
   if (!std::isfinite(sp.uv.x) || !std::isfinite(sp.uv.y)) sp.uv = glm::vec2(0.0f);
 
@@ -80,6 +95,7 @@ SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm:
   if (!is_finite(n)) n = sp.geometric_normal;
   sp.shading_normal = ensure_valid_reflection(sp.geometric_normal, wo, n);
 
+  sp.inputs = untextured_inputs(material);
   sp.inputs.base_color = eval_color(material.base_color, sp.uv);
   if (material.metallic.texture && material.metallic.texture == material.roughness.texture) {
     // One lookup for a packed metallic-roughness (ORM) image.
@@ -90,22 +106,12 @@ SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm:
     sp.inputs.metallic = eval_scalar(material.metallic, sp.uv);
     sp.inputs.roughness = eval_scalar(material.roughness, sp.uv);
   }
-  sp.inputs.specular = material.specular;
-  sp.inputs.specular_tint = material.specular_tint;
-  sp.inputs.diffuse_model = material.diffuse_model;
   return sp;
 }
 
 std::optional<PrincipledInputs> constant_inputs(const Material& material) {
-  if (material.base_color.texture || material.metallic.texture || material.roughness.texture) return std::nullopt;
-  PrincipledInputs inputs;
-  inputs.base_color = material.base_color.value;
-  inputs.metallic = material.metallic.value;
-  inputs.roughness = material.roughness.value;
-  inputs.specular = material.specular;
-  inputs.specular_tint = material.specular_tint;
-  inputs.diffuse_model = material.diffuse_model;
-  return inputs;
+  if (has_textured_input(material)) return std::nullopt;
+  return untextured_inputs(material);
 }
 
 }  // namespace matrender
