@@ -6,7 +6,8 @@
 #include <vector>
 
 #include "film/pixel_filter.h"
-#include "sampling/owen_sobol.h"
+#include "sampling/pixel_sampler.h"
+#include "sampling/sample_packet.h"
 
 using namespace matrender;
 
@@ -43,6 +44,37 @@ TEST_CASE("Different pixels, pairs and seeds give different points", "[render]")
   // Same inputs, same point: the image cannot depend on evaluation order.
   const PixelSeeds a_again(3, 0);
   CHECK(PixelSampler(a, 9).get_2d(7) == PixelSampler(a_again, 9).get_2d(7));
+}
+
+TEST_CASE("A sample packet holds the scalar sampler's points, bit for bit, on every instruction set", "[render]") {
+  // Packets start anywhere (render.cpp steps by kPacketSamples), including where the index
+  // wraps past 2^32.
+  const std::vector<LaneIsa> isas = supported_lane_isas();
+  REQUIRE(isas.front() == LaneIsa::Baseline);
+  for (uint32_t pixel : {0u, 17u, 123456u}) {
+    for (uint32_t seed : {0u, 42u}) {
+      const PixelSeeds seeds(pixel, seed);
+      for (uint32_t first : {0u, 16u, 1000u, 0xFFFFFFF8u}) {
+        for (LaneIsa isa : isas) {
+          const SamplePacket packet(seeds, first, isa);
+          for (int lane = 0; lane < kPacketSamples; ++lane) {
+            const PixelSampler scalar(seeds, first + static_cast<uint32_t>(lane));
+            const PixelSampler from_packet(packet, lane);
+            for (uint32_t pair = 0; pair < kPacketPairs + 2; ++pair) {
+              INFO("pixel " << pixel << " seed " << seed << " sample " << first + lane << " pair " << pair
+                            << " instruction set " << static_cast<int>(isa));
+              REQUIRE(from_packet.get_2d(pair) == scalar.get_2d(pair));
+              if (pair < kPacketPairs) REQUIRE(packet.point(pair, lane) == scalar.get_2d(pair));
+            }
+          }
+        }
+        // The default constructor picks one of them: same points again.
+        const SamplePacket widest(seeds, first);
+        for (int lane = 0; lane < kPacketSamples; ++lane)
+          REQUIRE(widest.point(1, lane) == PixelSampler(seeds, first + static_cast<uint32_t>(lane)).get_2d(1));
+      }
+    }
+  }
 }
 
 TEST_CASE("The pixel filter's inverse CDF follows Blackman-Harris", "[render]") {

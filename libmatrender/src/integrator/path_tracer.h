@@ -8,7 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "lights/light_sampler.h"
-#include "sampling/owen_sobol.h"
+#include "sampling/pixel_sampler.h"
 #include "scene/scene_data.h"
 #include "scene/surface_shading.h"
 

@@ -17,7 +17,7 @@
 #include "film/pixel_filter.h"
 #include "integrator/path_tracer.h"
 #include "lights/light_sampler.h"
-#include "sampling/owen_sobol.h"
+#include "sampling/pixel_sampler.h"
 #include "scene/scene_data.h"
 #include "util/finite.h"
 
@@ -94,46 +94,42 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
     const uint32_t pixel_index = static_cast<uint32_t>(y) * static_cast<uint32_t>(camera.width) + static_cast<uint32_t>(x);
     PixelAccumulator acc;
     const PixelSeeds seeds(pixel_index, settings.seed);
-    constexpr int kPacket = EmbreeScene::kPacketSize;
-    glm::vec2 offsets[kPacket];
-    glm::vec3 dirs[kPacket];
-    RayHit camera_hits[kPacket];
-    for (uint32_t s = 0; s < spp; ++s) {
-      const int lane = static_cast<int>(s % kPacket);
-      if (lane == 0) {
-        // The next packet of this pixel's camera rays.
-        const int count = static_cast<int>(std::min<uint32_t>(kPacket, spp - s));
-        for (int i = 0; i < count; ++i) {
-          offsets[i] = filter.sample(PixelSampler(seeds, s + static_cast<uint32_t>(i)).get_2d(0));
-          dirs[i] = rays.direction(static_cast<float>(x) + 0.5f + offsets[i].x,
-                                   static_cast<float>(y) + 0.5f + offsets[i].y);
+    static_assert(kPacketSamples == EmbreeScene::kPacketSize, "one sample packet per camera-ray packet");
+    glm::vec2 offsets[kPacketSamples];
+    glm::vec3 dirs[kPacketSamples];
+    RayHit camera_hits[kPacketSamples];
+    for (uint32_t first = 0; first < spp; first += kPacketSamples) {
+      const int count = static_cast<int>(std::min<uint32_t>(kPacketSamples, spp - first));
+      const SamplePacket packet(seeds, first);
+      for (int lane = 0; lane < count; ++lane) {
+        offsets[lane] = filter.sample(packet.point(0, lane));
+        dirs[lane] = rays.direction(static_cast<float>(x) + 0.5f + offsets[lane].x,
+                                    static_cast<float>(y) + 0.5f + offsets[lane].y);
+      }
+      data.accel.intersect_coherent(rays.origin(), dirs, count, camera_hits);
+      for (int lane = 0; lane < count; ++lane) {
+        const PathResult path = tracer.trace(rays.origin(), dirs[lane], camera_hits[lane], PixelSampler(packet, lane));
+        tile_rays += path.rays;
+        if (is_finite(path.radiance)) {
+          acc.color += glm::dvec3(path.radiance);
+        } else {
+          ++tile_discarded;
         }
-        data.accel.intersect_coherent(rays.origin(), dirs, count, camera_hits);
-      }
-      const PixelSampler sampler(seeds, s);
-      const glm::vec2 offset = offsets[lane];
-      const glm::vec3 dir = dirs[lane];
-      const PathResult path = tracer.trace(rays.origin(), dir, camera_hits[lane], sampler);
-      tile_rays += path.rays;
-      if (is_finite(path.radiance)) {
-        acc.color += glm::dvec3(path.radiance);
-      } else {
-        ++tile_discarded;
-      }
-      if (!path.hit) continue;
-      ++acc.hits;
-      if (!surface_aovs) continue;
-      const SurfacePoint& sp = path.first;
-      acc.base_color += glm::dvec3(glm::clamp(sp.inputs.base_color, 0.0f, 1.0f));
-      acc.roughness += glm::clamp(sp.inputs.roughness, 0.0f, 1.0f);
-      acc.metallic += glm::clamp(sp.inputs.metallic, 0.0f, 1.0f);
-      acc.normal += glm::dvec3(sp.shading_normal);
-      const float offset2 = glm::dot(offset, offset);
-      if (offset2 < acc.nearest_offset2) {
-        acc.nearest_offset2 = offset2;
-        acc.depth = path.first_distance * glm::dot(dir, rays.forward());
-        acc.label = data.materials[sp.material].label_id;
-        acc.part = sp.part;
+        if (!path.hit) continue;
+        ++acc.hits;
+        if (!surface_aovs) continue;
+        const SurfacePoint& sp = path.first;
+        acc.base_color += glm::dvec3(glm::clamp(sp.inputs.base_color, 0.0f, 1.0f));
+        acc.roughness += glm::clamp(sp.inputs.roughness, 0.0f, 1.0f);
+        acc.metallic += glm::clamp(sp.inputs.metallic, 0.0f, 1.0f);
+        acc.normal += glm::dvec3(sp.shading_normal);
+        const float offset2 = glm::dot(offsets[lane], offsets[lane]);
+        if (offset2 < acc.nearest_offset2) {
+          acc.nearest_offset2 = offset2;
+          acc.depth = path.first_distance * glm::dot(dirs[lane], rays.forward());
+          acc.label = data.materials[sp.material].label_id;
+          acc.part = sp.part;
+        }
       }
     }
     const size_t i = pixel_index;

@@ -39,7 +39,10 @@ inline uint32_t hash_combine(uint32_t a, uint32_t b) { return hash_u32(a ^ (hash
 
 // Laine-Karras permutation on bit-reversed values: each output bit flips depending only on
 // higher-order input bits, i.e. a nested uniform (Owen) scramble (Burley 2020, section 3).
-inline uint32_t laine_karras_permutation(uint32_t x, uint32_t seed) {
+// Word is uint32_t, or a vector of them for lane-parallel use (sample_packet.cpp, which needs
+// them inlined so that each instruction set compiles its own copy).
+template <typename Word>
+[[gnu::always_inline]] inline Word laine_karras_permutation(Word x, uint32_t seed) {
   x += seed;
   x ^= x * 0x6c50b47cu;
   x ^= x * 0xb82f1e52u;
@@ -56,7 +59,8 @@ inline uint32_t sobol_dimension0(uint32_t index) { return reverse_bits(index); }
 // bits of j are a subset of those of k, so bit j of the product with Pascal's matrix is the XOR
 // of index bits k over all supersets k of j: a superset-sum transform over the five bits of a
 // bit position, one shift-and-mask step per bit.
-inline uint32_t sobol_dimension1_reversed(uint32_t index) {
+template <typename Word>
+[[gnu::always_inline]] inline Word sobol_dimension1_reversed(Word index) {
   index ^= (index >> 1) & 0x55555555u;
   index ^= (index >> 2) & 0x33333333u;
   index ^= (index >> 4) & 0x0F0F0F0Fu;
@@ -117,20 +121,6 @@ class PixelSeeds {
   uint32_t pixel_seed_;
   mutable uint64_t filled_ = 0;
   mutable std::array<PairSeeds, kCachedPairs> cache_;
-};
-
-// The random numbers of one camera sample: pair k of the path is point `sample` of
-// owen_sobol_2d_reversed_index with seeds_k.
-class PixelSampler {
- public:
-  PixelSampler(const PixelSeeds& seeds, uint32_t sample_index)
-      : seeds_(seeds), reversed_index_(reverse_bits(sample_index)) {}
-
-  glm::vec2 get_2d(uint32_t pair) const { return owen_sobol_2d_reversed_index(reversed_index_, seeds_.pair(pair)); }
-
- private:
-  const PixelSeeds& seeds_;
-  uint32_t reversed_index_;
 };
 
 }  // namespace matrender
