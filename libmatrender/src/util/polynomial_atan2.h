@@ -19,9 +19,12 @@ inline float polynomial_atan2(float y, float x) {
   // atan(small / big) in [0, pi/4]; above tan(pi/8) use atan(q) = pi/4 + atan((q - 1) / (q + 1)).
   const bool upper = small > tan_pi_over_8 * big;
   const double r = upper ? (small - big) / (small + big) : small / big;
-  const double z = r * r;
-  double series = 1.0 / 19.0;
-  for (int k = 8; k >= 0; --k) series = 1.0 / (2 * k + 1) - z * series;  // Horner in z; constants fold
+  // sum_k c_k w^k with c_k = 1 / (2k + 1), w = -r^2, by Estrin's scheme: pairs c_k + c_k+1 w
+  // combined with w^2, w^4, w^8, a dependency chain of five multiply-adds instead of Horner's
+  // nine (Knuth, TAOCP vol. 2, 4.6.4).
+  const double w = -(r * r), w2 = w * w, w4 = w2 * w2, w8 = w4 * w4;
+  const auto pair = [w](int k) { return 1.0 / (2 * k + 1) + (1.0 / (2 * k + 3)) * w; };
+  const double series = (pair(0) + w2 * pair(2)) + w4 * (pair(4) + w2 * pair(6)) + w8 * pair(8);
   double angle = (upper ? 0.25 * pi : 0.0) + r * series;
   if (ay > ax) angle = 0.5 * pi - angle;
   if (x < 0.0f) angle = pi - angle;
