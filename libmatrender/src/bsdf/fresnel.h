@@ -31,15 +31,16 @@ struct InterpolatedFresnel {
   glm::vec3 cspec0{0.04f};
   float ior = 1.5f;
   float f0 = 0.04f;  // fresnel_dielectric_cos(1, ior)
+  float inv_one_minus_f0 = 1.0f / 0.96f;  // once per material, not one division per evaluation
 
   InterpolatedFresnel() = default;
-  InterpolatedFresnel(glm::vec3 cspec0_, float ior_)
-      : cspec0(cspec0_), ior(ior_), f0(fresnel_dielectric_cos(1.0f, ior_)) {}
+  InterpolatedFresnel(glm::vec3 cspec0_, float ior_) : InterpolatedFresnel(cspec0_, ior_, fresnel_dielectric_cos(1.0f, ior_)) {}
   // With f0 = fresnel_dielectric_cos(1, ior) known: ((ior - 1) / (ior + 1))^2 in closed form.
-  InterpolatedFresnel(glm::vec3 cspec0_, float ior_, float f0_) : cspec0(cspec0_), ior(ior_), f0(f0_) {}
+  InterpolatedFresnel(glm::vec3 cspec0_, float ior_, float f0_)
+      : cspec0(cspec0_), ior(ior_), f0(f0_), inv_one_minus_f0(1.0f / (1.0f - f0_)) {}
 
   glm::vec3 operator()(float cos_i) const {
-    const float fh = (fresnel_dielectric_cos(cos_i, ior) - f0) / (1.0f - f0);
+    const float fh = (fresnel_dielectric_cos(cos_i, ior) - f0) * inv_one_minus_f0;
     return cspec0 * (1.0f - fh) + glm::vec3(fh);
   }
 };
