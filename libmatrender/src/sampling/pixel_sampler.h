@@ -13,6 +13,8 @@ namespace matrender {
 // Pair k is point `sample` of owen_sobol_2d_reversed_index with the pixel's seeds of pair k.
 class PixelSampler {
  public:
+  // One sample on its own, every pair computed scalar (the reference the packets are tested
+  // against; the renderer uses packets).
   PixelSampler(const PixelSeeds& seeds, uint32_t sample_index)
       : seeds_(seeds), reversed_index_(reverse_bits(sample_index)) {}
   // Lane `lane` of a packet, which must outlive the sampler.
