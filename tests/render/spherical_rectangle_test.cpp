@@ -121,3 +121,27 @@ TEST_CASE("Spherical rectangle samples are uniform in solid angle (chi-square)",
     CHECK(p_value > significance);
   }
 }
+
+TEST_CASE("Spherical rectangle samples at v = 0 and v -> 1 land on the near and far y edges", "[render]") {
+  // The second variable moves the point from the y0 edge to the y1 edge. Rectangles reaching far
+  // along -y or +y put |h0| or |h1| within float rounding of 1, where the y coordinate must come
+  // from the edge on that side.
+  const std::vector<RectangleCase> cases = {
+      {"ordinary", -0.4, 0.3, -0.2, 0.6, 1.0},
+      {"far along -y", -0.4, 0.3, -1e4, 0.5, 1.0},
+      {"far along +y", -0.4, 0.3, -0.5, 1e4, 1.0},
+  };
+  for (const RectangleCase& c : cases) {
+    const PosedRectangle p = pose(c.x0, c.x1, c.y0, c.y1, c.h);
+    const SphericalRectangle spherical(p.origin, p.rect);
+    for (float u : {0.1f, 0.5f, 0.9f}) {
+      const auto local_y = [&](float v) {
+        const glm::dvec3 local = glm::dvec3(spherical.sample({u, v})) - glm::dvec3(p.rect.corner);
+        return glm::dot(local, glm::dvec3(p.rect.y));
+      };
+      INFO(c.name << ", u = " << u);
+      CHECK(local_y(0.0f) == Approx(0.0).margin(1e-3 * p.rect.length_y));
+      CHECK(local_y(0x1.fffffep-1f) == Approx(p.rect.length_y).margin(1e-3 * p.rect.length_y));
+    }
+  }
+}

@@ -27,6 +27,7 @@ class SphericalRectangle {
   glm::vec3 origin_, x_, y_, z_;
   float x0_, y0_, x1_, y1_, z0_;
   float b0_, b1_, k_, solid_angle_;
+  float one_minus_b0_sq_;  // 1 - b0^2 without the cancellation
 };
 
 }  // namespace matrender
