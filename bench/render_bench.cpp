@@ -87,7 +87,7 @@ double replay(const RawEmbree& raw, const std::vector<matrender::RayLog::Entry>&
 }
 
 
-void traversal_table(const std::vector<size_t>& sizes, int resolution, int spp) {
+void traversal_table(const std::vector<size_t>& sizes, int resolution, int spp, int rounds) {
   fmt::print("\n## Path tracer against raw Embree on the same rays ({}x{}, {} spp, paper rig)\n\n", resolution,
              resolution, spp);
   fmt::print("| triangles | threads | BVH build ms (ours / raw) | rays | path tracer Mrays/s | raw Embree Mrays/s | ratio | Msamples/s | peak MiB |\n");
@@ -108,8 +108,9 @@ void traversal_table(const std::vector<size_t>& sizes, int resolution, int spp) 
       settings.aovs = 0;
       matrender::FrameBuffers frame;
       // Log the render's rays in an untimed pass (the log costs time); it also warms caches
-      // and the thread pool for the timed passes. The two sides then run in turn, five times,
-      // and each keeps its fastest run: on a shared machine a slow spell hits both alike.
+      // and the thread pool for the timed passes. The two sides then run in turn, `rounds`
+      // times, and each keeps its fastest run: on a shared machine slow spells come and go, and
+      // the fastest of several runs is each side's speed without them.
       matrender::RayLog log;
       scene.data().accel.set_ray_log(&log);
       matrender::render(scene, camera, settings, frame);
@@ -119,7 +120,7 @@ void traversal_table(const std::vector<size_t>& sizes, int resolution, int spp) 
       log.per_thread.clear();
       matrender::RenderStats stats;
       double raw_seconds = std::numeric_limits<double>::infinity();
-      for (int round = 0; round < 5; ++round) {
+      for (int round = 0; round < rounds; ++round) {
         const matrender::RenderStats run = matrender::render(scene, camera, settings, frame);
         if (round == 0 || run.seconds < stats.seconds) stats = run;
         raw_seconds = std::min(raw_seconds, replay(raw, rays, threads));
@@ -198,16 +199,19 @@ void error_versus_time(VaseScene& v, int reference_spp, int max_spp) {
 int main(int argc, char** argv) {
   CLI::App app{"render_bench: libmatrender speed beside raw Embree, and error versus time"};
   std::vector<size_t> sizes{10000, 200000, 1000000};
-  int resolution = 256, spp = 16, vase_spp = 64, reference_spp = 2048, max_spp = 256;
+  int resolution = 256, spp = 16, vase_spp = 64, reference_spp = 2048, max_spp = 256, rounds = 9;
   app.add_option("--triangles", sizes, "Mesh sizes for the traversal table")->capture_default_str();
   app.add_option("--resolution", resolution, "Image side in pixels")->capture_default_str();
   app.add_option("--spp", spp, "Samples per pixel of the traversal table")->capture_default_str();
+  app.add_option("--rounds", rounds, "Timed runs of each side of the traversal table (each keeps its fastest)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   app.add_option("--vase-spp", vase_spp, "Samples per pixel of the samples/s table")->capture_default_str();
   app.add_option("--reference-spp", reference_spp, "Samples per pixel of the reference image")->capture_default_str();
   app.add_option("--max-spp", max_spp, "Largest spp of the error table")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
-  traversal_table(sizes, resolution, spp);
+  traversal_table(sizes, resolution, spp, rounds);
   VaseScene vase = textured_vase(resolution);
   samples_per_second(vase, vase_spp);
   error_versus_time(vase, reference_spp, max_spp);
