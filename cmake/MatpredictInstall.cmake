@@ -1,11 +1,12 @@
-# `cmake --install` exports matpredict::matgeom and matpredict::matrender for find_package(matpredict).
+# `cmake --install` exports matpredict::matgeom, matpredict::matrender and
+# matpredict::matlearn_metrics for find_package(matpredict).
 include(CMakePackageConfigHelpers)
-install(TARGETS matgeom matrender EXPORT matpredictTargets
+install(TARGETS matgeom matrender matlearn_metrics EXPORT matpredictTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-install(DIRECTORY libmatgeom/include/matgeom libmatrender/include/matrender
+install(DIRECTORY libmatgeom/include/matgeom libmatrender/include/matrender libmatlearn/include/matlearn
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(EXPORT matpredictTargets NAMESPACE matpredict::
         DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/matpredict)

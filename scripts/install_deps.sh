@@ -9,6 +9,7 @@ packages=(
   libopenimageio-dev
   libtinygltf-dev libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libfmt-dev
   catch2
+  python3-skimage
 )
 # Blender 3.4 is a reference for the optional tests against Cycles, never a build dependency.
 if [ "${MATPREDICT_BLENDER_TESTS:-0}" = 1 ]; then packages+=(blender); fi

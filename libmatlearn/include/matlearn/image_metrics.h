@@ -1,0 +1,37 @@
+#pragma once
+// The image metrics of the MatPredict paper's appendix, computed correctly on float images: every
+// function states the data range it assumes, and restricts itself to a mask when one is given.
+// `truth` and `prediction` must have the same width, height and channel count; a non-empty mask
+// must have one entry per pixel. Violations throw std::invalid_argument naming the problem.
+// Needs no torch: the renderer's benchmarks use these too.
+#include "matlearn/image.h"
+
+namespace matlearn {
+
+// Root-mean-square error per channel, divided by the data range, averaged over channels.
+double rmse(const Image& truth, const Image& prediction, double data_range, const Mask& mask = {});
+
+// 10 log10(range^2 / MSE), the MSE pooled over channels and pixels, in dB; +infinity for
+// identical images.
+double psnr(const Image& truth, const Image& prediction, double data_range, const Mask& mask = {});
+
+// Signal to reconstruction error (Lanaras et al. 2018): per channel 10 log10(mean(truth)^2 / MSE)
+// in dB, averaged over channels; +infinity where a channel is reproduced exactly.
+double sre(const Image& truth, const Image& prediction, const Mask& mask = {});
+
+// Structural similarity (Wang et al. 2004) with scikit-image's defaults: 7 x 7 uniform windows,
+// K1 = 0.01, K2 = 0.03, sample covariances; per channel, averaged. The map is averaged over the
+// centres of the windows that fit inside the image, and of those only centres inside the mask.
+double ssim(const Image& truth, const Image& prediction, double data_range, const Mask& mask = {});
+
+// Universal image quality index Q (Wang and Bovik 2002) on 8 x 8 windows moved by one pixel,
+// per channel, averaged; windows without variance follow the authors' reference code
+// (img_qi.m): Q = 2 mu_x mu_y / (mu_x^2 + mu_y^2), or 1 when both means are 0 too. A window
+// counts when its pixel (4, 4) lies inside the mask.
+double uiq(const Image& truth, const Image& prediction, const Mask& mask = {});
+
+// Spectral angle between the channel vectors of each pixel, in degrees, averaged over pixels;
+// pixels where either vector is zero have no angle and are left out (NaN when none is left).
+double sam_degrees(const Image& truth, const Image& prediction, const Mask& mask = {});
+
+}  // namespace matlearn
