@@ -30,6 +30,12 @@ double ssim(const Image& truth, const Image& prediction, double data_range, cons
 // counts when its pixel (4, 4) lies inside the mask.
 double uiq(const Image& truth, const Image& prediction, const Mask& mask = {});
 
+// Feature similarity (Zhang et al. 2011) per channel, averaged: phase congruency (Kovesi's,
+// with the FSIM reference code's 4 scales and 4 orientations) and Scharr gradient magnitude,
+// T1 = 0.85 and T2 = 160 (255 / data_range)^-2; summed over the mask. NaN where neither image
+// has any phase congruency (flat images). No downsampling of large images.
+double fsim(const Image& truth, const Image& prediction, double data_range, const Mask& mask = {});
+
 // Spectral angle between the channel vectors of each pixel, in degrees, averaged over pixels;
 // pixels where either vector is zero have no angle and are left out (NaN when none is left).
 double sam_degrees(const Image& truth, const Image& prediction, const Mask& mask = {});

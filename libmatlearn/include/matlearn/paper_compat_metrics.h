@@ -38,6 +38,10 @@ double ssim(const Image8& truth, const Image8& prediction);
 // Q on 8 x 8 windows without special cases: a window where Q is 0 / 0 counts as 0 (numpy's
 // nan_to_num), so two equal flat windows score 0, not 1.
 double uiq(const Image8& truth, const Image8& prediction);
+// Per band: phasepack's phase congruency (6 orientations, nscale 4, minWaveLength 6, mult 2,
+// sigmaOnf 0.5978) summed over orientations, and OpenCV's Scharr into uint16 (negative
+// derivatives clip to 0; the squares wrap modulo 2^16 in numpy); T1 = 0.85, T2 = 160; averaged.
+double fsim(const Image8& truth, const Image8& prediction);
 // Per pixel arccos(sum_c (x_c y_c mod 256) / (|x| |y|)) in degrees, averaged: the products
 // overflow 8 bits as numpy's uint8 multiplication does, which puts near-identical images near
 // 90 degrees. 0 as soon as one pixel is black in either image (its NaN makes the mean NaN, which
