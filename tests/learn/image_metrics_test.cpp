@@ -90,7 +90,7 @@ std::map<std::string, double> skimage_metrics(const Image& truth, const Image& p
 
 }  // namespace
 
-TEST_CASE("Identical images: RMSE 0, PSNR and SRE infinite, SSIM, UIQ 1, SAM 0", "[learn]") {
+TEST_CASE("Identical images: RMSE 0, PSNR and SRE infinite, SSIM, UIQ, FSIM, ISSM 1, SAM 0", "[learn]") {
   const Image image = smooth_image(40, 32, 3, 1);
   CHECK(rmse(image, image, 1.0) == 0.0);
   CHECK(psnr(image, image, 1.0) == std::numeric_limits<double>::infinity());
@@ -98,9 +98,11 @@ TEST_CASE("Identical images: RMSE 0, PSNR and SRE infinite, SSIM, UIQ 1, SAM 0",
   CHECK(ssim(image, image, 1.0) == Approx(1.0).epsilon(1e-12));
   CHECK(uiq(image, image) == Approx(1.0).epsilon(1e-12));
   CHECK(sam_degrees(image, image) == 0.0);
+  CHECK(issm(image, image) == 1.0);
+  CHECK(fsim(image, image, 1.0) == Approx(1.0).epsilon(1e-12));
 }
 
-TEST_CASE("A constant offset gives its closed-form RMSE, PSNR and SRE", "[learn]") {
+TEST_CASE("A constant offset gives its closed-form RMSE, PSNR, SRE and ISSM", "[learn]") {
   const Image truth = smooth_image(40, 32, 3, 2);
   Image prediction = truth;
   const float offset = 0.0625f;  // exact in binary: the differences carry no rounding
@@ -108,16 +110,12 @@ TEST_CASE("A constant offset gives its closed-form RMSE, PSNR and SRE", "[learn]
   CHECK(rmse(truth, prediction, 1.0) == Approx(offset).epsilon(1e-6));
   CHECK(rmse(truth, prediction, 255.0) == Approx(offset / 255.0).epsilon(1e-6));
   CHECK(psnr(truth, prediction, 1.0) == Approx(-20.0 * std::log10(offset)).epsilon(1e-6));
-  // SRE per channel: 10 log10(mean^2 / offset^2), averaged in dB.
-  double expected_sre = 0.0;
-  for (int c = 0; c < 3; ++c) {
-    double mean = 0.0;
-    for (int y = 0; y < truth.height; ++y)
-      for (int x = 0; x < truth.width; ++x) mean += truth.at(x, y, c);
-    mean /= static_cast<double>(truth.pixel_count());
-    expected_sre += 10.0 * std::log10(mean * mean / (double(offset) * offset)) / 3.0;
-  }
-  CHECK(sre(truth, prediction) == Approx(expected_sre).epsilon(1e-6));
+  // SRE: 10 log10(sum X^2 / (N offset^2)); ISSM: 1 / (1 + sqrt(N) offset / ||X||).
+  double energy = 0.0;
+  for (float v : truth.values) energy += double(v) * v;
+  const double n = static_cast<double>(truth.values.size());
+  CHECK(sre(truth, prediction) == Approx(10.0 * std::log10(energy / (n * offset * offset))).epsilon(1e-6));
+  CHECK(issm(truth, prediction) == Approx(1.0 / (1.0 + std::sqrt(n) * offset / std::sqrt(energy))).epsilon(1e-6));
 }
 
 TEST_CASE("SAM of colours rotated by a known angle is that angle", "[learn]") {

@@ -1,23 +1,28 @@
 #pragma once
-// The image metrics of the MatPredict paper's appendix, computed correctly on float images: every
-// function states the data range it assumes, and restricts itself to a mask when one is given.
-// `truth` and `prediction` must have the same width, height and channel count; a non-empty mask
-// must have one entry per pixel. Violations throw std::invalid_argument naming the problem.
-// Needs no torch: the renderer's benchmarks use these too.
+// The image metrics of the MatPredict paper's appendix ("Closed-form definitions of the eight
+// similarity metrics"), computed as defined there on float images: the error metrics pool all
+// covered pixels and channels (the appendix's flattened X and Y), the windowed and feature
+// metrics work per channel and average; every function states the data range it assumes and
+// restricts itself to a mask when one is given. `truth` and `prediction` must have the same
+// width, height and channel count; a non-empty mask must have one entry per pixel. Violations
+// throw std::invalid_argument naming the problem. Needs no torch: the renderer's benchmarks can
+// use these too. (matlearn/paper_compat_metrics.h reproduces what the paper's table computed.)
 #include "matlearn/image.h"
 
 namespace matlearn {
 
-// Root-mean-square error per channel, divided by the data range, averaged over channels.
+// sqrt(mean (Y - X)^2) / data_range.
 double rmse(const Image& truth, const Image& prediction, double data_range, const Mask& mask = {});
 
-// 10 log10(range^2 / MSE), the MSE pooled over channels and pixels, in dB; +infinity for
-// identical images.
+// 10 log10(range^2 / mean (Y - X)^2) in dB; +infinity for identical images.
 double psnr(const Image& truth, const Image& prediction, double data_range, const Mask& mask = {});
 
-// Signal to reconstruction error (Lanaras et al. 2018): per channel 10 log10(mean(truth)^2 / MSE)
-// in dB, averaged over channels; +infinity where a channel is reproduced exactly.
+// Signal to reconstruction error, PSNR against the image's energy: 10 log10(sum X^2 /
+// sum (Y - X)^2) in dB; +infinity for identical images.
 double sre(const Image& truth, const Image& prediction, const Mask& mask = {});
+
+// 1 / (1 + ||Y - X||_F / ||X||_F), in (0, 1]: the appendix's "relative Frobenius norm" form.
+double issm(const Image& truth, const Image& prediction, const Mask& mask = {});
 
 // Structural similarity (Wang et al. 2004) with scikit-image's defaults: 7 x 7 uniform windows,
 // K1 = 0.01, K2 = 0.03, sample covariances; per channel, averaged. The map is averaged over the

@@ -42,6 +42,9 @@ double uiq(const Image8& truth, const Image8& prediction);
 // sigmaOnf 0.5978) summed over orientations, and OpenCV's Scharr into uint16 (negative
 // derivatives clip to 0; the squares wrap modulo 2^16 in numpy); T1 = 0.85, T2 = 160; averaged.
 double fsim(const Image8& truth, const Image8& prediction);
+// Always 0 on 8-bit images: its Canny edge correlation is 0 / 0 there (paper_compat_metrics.cpp
+// says why), and nan_to_num turns the NaN result into 0.
+double issm(const Image8& truth, const Image8& prediction);
 // Per pixel arccos(sum_c (x_c y_c mod 256) / (|x| |y|)) in degrees, averaged: the products
 // overflow 8 bits as numpy's uint8 multiplication does, which puts near-identical images near
 // 90 degrees. 0 as soon as one pixel is black in either image (its NaN makes the mean NaN, which

@@ -34,8 +34,23 @@ Image8 quantize_8bit(const Image& image) {
   return narrow;
 }
 
-double rmse(const Image8& truth, const Image8& prediction) { return matlearn::rmse(widen(truth), widen(prediction), kMaxP); }
+double rmse(const Image8& truth, const Image8& prediction) {
+  const Image x = widen(truth), y = widen(prediction);
+  check_image_pair("RMSE (paper compat)", x, y, {});
+  const size_t channels = static_cast<size_t>(x.channels);
+  double total = 0.0;
+  for (size_t c = 0; c < channels; ++c) {
+    double squared_error = 0.0;
+    for (size_t p = 0; p < x.pixel_count(); ++p) {
+      const double d = (double(x.values[p * channels + c]) - y.values[p * channels + c]) / kMaxP;
+      squared_error += d * d;
+    }
+    total += std::sqrt(squared_error / static_cast<double>(x.pixel_count()));
+  }
+  return total / static_cast<double>(channels);
+}
 
+// The mean of equal-sized bands' MSEs is the pooled MSE.
 double psnr(const Image8& truth, const Image8& prediction) { return matlearn::psnr(widen(truth), widen(prediction), kMaxP); }
 
 double ssim(const Image8& truth, const Image8& prediction) { return matlearn::ssim(widen(truth), widen(prediction), kMaxP); }
@@ -69,6 +84,15 @@ double uiq(const Image8& truth, const Image8& prediction) {
     // The numerator vanishes with the denominator: 0 / 0, which nan_to_num makes 0.
     return denominator > 0.0 ? 4.0 * m.cov_xy * m.mean_x * m.mean_y / denominator : 0.0;
   });
+}
+
+double issm(const Image8& truth, const Image8& prediction) {
+  check_image_pair("ISSM (paper compat)", widen(truth), widen(prediction), {});
+  // The package's ISSM multiplies in an edge correlation from Canny(uint8(x / 16), 100, 200).
+  // On 8-bit input those values are at most 15, so Sobel's |dx| + |dy| is at most 2 * 4 * 15 =
+  // 120, below the high threshold 200: no edge ever starts, both edge maps are all zero, the
+  // correlation is 0 / 0 and the whole ratio NaN, which nan_to_num returns as 0.
+  return 0.0;
 }
 
 double sam_degrees(const Image8& truth, const Image8& prediction) {
