@@ -1,0 +1,34 @@
+#pragma once
+// One sample of a MatPredict dataset (matlearn/dataset_index.h), decoded and resized the way the
+// repository's loader does it (../shared/reference/matpredict_repo.md, section 3.1), with its
+// weak points fixed where they touch the data: targets are resized with the object mask as
+// weights, so the background does not bleed into the silhouette (W16), and the albedo can be
+// decoded to linear values for a loss in linear space (W5).
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "matlearn/dataset_index.h"
+#include "matlearn/image.h"
+
+namespace matlearn {
+
+struct SampleSettings {
+  int size = 224;              // maps are resized to size x size
+  bool linear_albedo = false;  // sRGB-decode the stored (display-encoded) albedo
+};
+
+struct MaterialSample {
+  Image input;                       // RGB in [0, 1] as stored, alpha dropped; size x size x 3
+  Image albedo;                      // size x size x 3
+  Image roughness;                   // ORM green; size x size x 1
+  Image metallic;                    // ORM blue; size x size x 1
+  std::vector<int32_t> material_id;  // label ids, nearest-resized (0 = background)
+  Mask mask;                         // material_id > 0; every pixel when there is no label file
+  bool has_label = false;
+};
+
+// Throws std::runtime_error naming the file when a map cannot be read.
+MaterialSample read_sample(const std::filesystem::path& root, const SampleId& id, const SampleSettings& settings);
+
+}  // namespace matlearn

@@ -1,0 +1,20 @@
+#pragma once
+// Resizing the maps of a sample. resize_bilinear is Pillow's BILINEAR resize (a triangle filter
+// widened by the downscale factor, so shrinking averages instead of aliasing), which the
+// repository's loader applies to every map; resize_bilinear_weighted is the same filter as a
+// normalised convolution, sum w m v / sum w m, so that pixels outside the object (m = 0) do not
+// darken the targets along its silhouette (weak point W16); resize_nearest is Pillow's NEAREST,
+// for label ids.
+#include <cstdint>
+#include <vector>
+
+#include "matlearn/image.h"
+
+namespace matlearn {
+
+Image resize_bilinear(const Image& image, int width, int height);
+// weights: one per pixel of `image`. Output pixels whose footprint has no weight get 0.
+Image resize_bilinear_weighted(const Image& image, const std::vector<float>& weights, int width, int height);
+std::vector<int32_t> resize_nearest(const std::vector<int32_t>& ids, int in_width, int in_height, int width, int height);
+
+}  // namespace matlearn

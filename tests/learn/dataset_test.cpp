@@ -1,0 +1,193 @@
+// The MatPredict dataset layout (matlearn/dataset_index.h) and one sample's decoding
+// (matlearn/sample_reader.h), on a small dataset written here as real PNG files, and the resize
+// against Pillow's.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include <OpenImageIO/imageio.h>
+
+#include "data/resample.h"
+#include "matlearn/dataset_index.h"
+#include "matlearn/sample_reader.h"
+
+using namespace matlearn;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kSize = 16;
+
+// An 8-bit PNG whose value at (x, y, c) is value(x, y, c).
+template <class Value>
+void write_png(const fs::path& path, int channels, Value value) {
+  fs::create_directories(path.parent_path());
+  std::vector<uint8_t> pixels(static_cast<size_t>(kSize * kSize * channels));
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x)
+      for (int c = 0; c < channels; ++c) pixels[static_cast<size_t>((y * kSize + x) * channels + c)] = value(x, y, c);
+  auto out = OIIO::ImageOutput::create(path.string());
+  REQUIRE(out);
+  REQUIRE(out->open(path.string(), OIIO::ImageSpec(kSize, kSize, channels, OIIO::TypeDesc::UINT8)));
+  REQUIRE(out->write_image(OIIO::TypeDesc::UINT8, pixels.data()));
+  REQUIRE(out->close());
+}
+
+// The object: a disc of radius 5 px centred in the frame.
+bool inside_object(int x, int y) { return (x - 7.5) * (x - 7.5) + (y - 7.5) * (y - 7.5) < 25.0; }
+
+// A frame: RGBA image and albedo, ORM with roughness 0.2 (51) and metallic 0.8 (204) on the
+// object, label 7 (wood) on it; background 0 everywhere, as the generator writes it.
+void write_frame(const fs::path& variant, const std::string& stem, bool with_label, bool with_orm = true) {
+  write_png(variant / "images" / (stem + ".png"), 4, [](int x, int y, int c) -> uint8_t {
+    return inside_object(x, y) ? (c == 3 ? 255 : static_cast<uint8_t>(40 * c + 60)) : 0;
+  });
+  write_png(variant / "albedo" / (stem + ".png"), 4, [](int x, int y, int c) -> uint8_t {
+    return inside_object(x, y) ? (c == 3 ? 255 : 200) : 0;
+  });
+  if (with_orm)
+    write_png(variant / "ORM" / (stem + ".png"), 4, [](int x, int y, int c) -> uint8_t {
+      const uint8_t on_object[4] = {255, 51, 204, 255};
+      return inside_object(x, y) ? on_object[c] : 0;
+    });
+  if (with_label)
+    write_png(variant / "label" / (stem + ".png"), 1, [](int x, int y, int) -> uint8_t { return inside_object(x, y) ? 7 : 0; });
+}
+
+// chair_01/var000: 000, 001 (001 without a label); chair_01/var001: 000 and 001, whose ORM is
+// missing (not a sample); table/var000: 000; chair_01/_tmp_channels: ignored.
+fs::path make_dataset() {
+  const fs::path root = fs::temp_directory_path() / "matpredict_dataset_test";
+  fs::remove_all(root);
+  write_frame(root / "chair_01" / "var000", "000", true);
+  write_frame(root / "chair_01" / "var000", "001", false);
+  write_frame(root / "chair_01" / "var001", "000", true);
+  write_frame(root / "chair_01" / "var001", "001", true, false);
+  write_frame(root / "table" / "var000", "000", true);
+  write_frame(root / "chair_01" / "_tmp_channels", "000", true);
+  std::ofstream(root / "split.yaml") << "name: tiny\nstrategy: object_disjoint\nseed: 42\n"
+                                        "ratios: {train: 0.7, val: 0.15, test: 0.15}\n"
+                                        "train:\n- chair_01/var000/000\n- chair_01/var001/000\n"
+                                        "val:\n- table/var000/000\ntest: []\n";
+  return root;
+}
+
+}  // namespace
+
+TEST_CASE("The dataset index follows the repository loader's rules", "[learn]") {
+  const fs::path root = make_dataset();
+  std::vector<std::string> ids;
+  for (const SampleId& s : index_dataset(root)) ids.push_back(s.str());
+  CHECK(ids == std::vector<std::string>{"chair_01/var000/000", "chair_01/var000/001", "chair_01/var001/000",
+                                        "table/var000/000"});
+  CHECK_THROWS_WITH(index_dataset(root / "nowhere"), Catch::Contains("nowhere") && Catch::Contains("not a directory"));
+}
+
+TEST_CASE("Split files list samples in file order and every listed sample must exist", "[learn]") {
+  const fs::path root = make_dataset();
+  const SplitFile split = read_split_file(root / "split.yaml");
+  CHECK(split.name == "tiny");
+  CHECK(split.seed == 42);
+  const std::vector<SampleId> train = split_samples(split, "train", root);
+  REQUIRE(train.size() == 2);
+  CHECK(train[1].str() == "chair_01/var001/000");
+  CHECK(split_samples(split, "test", root).empty());
+
+  SplitFile broken = split;
+  broken.val.push_back("chair_01/var001/001");  // its ORM is missing
+  CHECK_THROWS_WITH(split_samples(broken, "val", root), Catch::Contains("chair_01/var001/001"));
+  CHECK_THROWS_WITH(split_samples(split, "holdout", root), Catch::Contains("holdout"));
+  std::ofstream(root / "bad.yaml") << "name: bad\ntrain: chair_01/var000/000\n";
+  CHECK_THROWS_WITH(read_split_file(root / "bad.yaml"), Catch::Contains("bad.yaml") && Catch::Contains("'train'"));
+  std::ofstream(root / "not_yaml.yaml") << "train: [unclosed\n";
+  CHECK_THROWS_WITH(read_split_file(root / "not_yaml.yaml"), Catch::Contains("not_yaml.yaml"));
+  CHECK_THROWS_AS(SampleId::parse("chair_01/000"), std::invalid_argument);
+}
+
+TEST_CASE("A sample decodes the maps the loader reads, at the model size", "[learn]") {
+  const fs::path root = make_dataset();
+  SampleSettings settings;
+  settings.size = kSize;
+  const MaterialSample s = read_sample(root, SampleId::parse("chair_01/var000/000"), settings);
+  REQUIRE(s.has_label);
+  REQUIRE(s.input.width == kSize);
+  const size_t centre = 8 * kSize + 8, corner = 0;
+  CHECK(s.material_id[centre] == 7);
+  CHECK(s.material_id[corner] == 0);
+  CHECK(s.mask[centre] == 1);
+  CHECK(s.mask[corner] == 0);
+  // RGB without alpha; roughness from ORM's green, metallic from its blue.
+  CHECK(s.input.at(8, 8, 2) == Approx(140.0 / 255.0));
+  CHECK(s.roughness.at(8, 8, 0) == Approx(51.0 / 255.0));
+  CHECK(s.metallic.at(8, 8, 0) == Approx(204.0 / 255.0));
+  CHECK(s.albedo.at(8, 8, 0) == Approx(200.0 / 255.0));
+
+  // Without a label file every pixel counts, as in the repository.
+  const MaterialSample unlabelled = read_sample(root, SampleId::parse("chair_01/var000/001"), settings);
+  CHECK_FALSE(unlabelled.has_label);
+  CHECK(std::all_of(unlabelled.mask.begin(), unlabelled.mask.end(), [](uint8_t m) { return m == 1; }));
+
+  // Linear albedo: the sRGB decode of 200/255.
+  settings.linear_albedo = true;
+  const MaterialSample linear = read_sample(root, SampleId::parse("chair_01/var000/000"), settings);
+  CHECK(linear.albedo.at(8, 8, 0) == Approx(std::pow((200.0 / 255.0 + 0.055) / 1.055, 2.4)).epsilon(1e-5));
+  CHECK_THROWS_WITH(read_sample(root, SampleId::parse("chair_01/var001/001"), settings), Catch::Contains("ORM"));
+}
+
+TEST_CASE("Shrunk targets keep their value along the silhouette (W16)", "[learn]") {
+  // Halving the 16 px frame averages 2 x 2 blocks and more: along the disc's edge a plain
+  // bilinear resize mixes in the black background; the mask-weighted one does not.
+  const fs::path root = make_dataset();
+  SampleSettings settings;
+  settings.size = 8;
+  const MaterialSample s = read_sample(root, SampleId::parse("table/var000/000"), settings);
+  int edge_pixels = 0;
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x) {
+      if (!s.mask[static_cast<size_t>(y * 8 + x)]) continue;
+      CHECK(s.roughness.at(x, y, 0) == Approx(51.0 / 255.0).epsilon(1e-5));
+      CHECK(s.albedo.at(x, y, 1) == Approx(200.0 / 255.0).epsilon(1e-5));
+      if (s.input.at(x, y, 0) < 0.9f * 60.0f / 255.0f) ++edge_pixels;  // the input is not reweighted
+    }
+  CHECK(edge_pixels > 0);  // so the test does look at pixels where the background mixes in
+}
+
+TEST_CASE("The bilinear resize is Pillow's, to its 8-bit rounding", "[learn]") {
+  // Pillow (Debian's python3-pil) resizes 8-bit images in fixed point and rounds to 8 bits, so
+  // the two agree within one level.
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> byte(0, 255);
+  const fs::path dir = fs::temp_directory_path() / "matpredict_resize_test";
+  fs::create_directories(dir);
+  for (const auto& [w, h, ow, oh] : {std::array<int, 4>{37, 29, 16, 12}, std::array<int, 4>{10, 7, 23, 17},
+                                     std::array<int, 4>{64, 64, 64, 64}}) {
+    Image image(w, h, 3);
+    std::vector<uint8_t> bytes(image.values.size());
+    for (size_t i = 0; i < bytes.size(); ++i) {
+      bytes[i] = static_cast<uint8_t>(byte(rng));
+      image.values[i] = bytes[i] / 255.0f;
+    }
+    std::ofstream(dir / "in.u8", std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    std::ostringstream command;
+    command << MATPREDICT_DEBIAN_PYTHON << " " << MATPREDICT_PIL_RESIZE_SCRIPT << " " << w << " " << h << " "
+            << dir / "in.u8" << " " << ow << " " << oh << " " << dir / "out.u8";
+    INFO(command.str() << " (needs Debian's python3-pil)");
+    REQUIRE(std::system(command.str().c_str()) == 0);
+    std::vector<char> pillow(static_cast<size_t>(ow * oh * 3));
+    std::ifstream(dir / "out.u8", std::ios::binary).read(pillow.data(), static_cast<std::streamsize>(pillow.size()));
+    const Image ours = resize_bilinear(image, ow, oh);
+    double worst = 0.0;
+    for (size_t i = 0; i < pillow.size(); ++i)
+      worst = std::max(worst, std::abs(ours.values[i] * 255.0 - static_cast<uint8_t>(pillow[i])));
+    INFO(w << "x" << h << " -> " << ow << "x" << oh << ": worst difference " << worst << " levels");
+    CHECK(worst <= 1.0);
+  }
+}
