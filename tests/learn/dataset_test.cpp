@@ -17,6 +17,7 @@
 
 #include "data/resample.h"
 #include "matlearn/dataset_index.h"
+#include "matlearn/sample_loader.h"
 #include "matlearn/sample_reader.h"
 
 using namespace matlearn;
@@ -190,4 +191,25 @@ TEST_CASE("The bilinear resize is Pillow's, to its 8-bit rounding", "[learn]") {
     INFO(w << "x" << h << " -> " << ow << "x" << oh << ": worst difference " << worst << " levels");
     CHECK(worst <= 1.0);
   }
+}
+
+TEST_CASE("Loader batches decode the same data on 1 and 2 threads", "[learn]") {
+  const fs::path root = make_dataset();
+  LoaderSettings settings;
+  settings.batch_size = 3;
+  settings.sample.size = 8;
+  settings.threads = 1;
+  const SampleLoader one(root, index_dataset(root), settings);
+  settings.threads = 2;
+  const SampleLoader two(root, index_dataset(root), settings);
+  REQUIRE(one.batch_count() == 2);
+  for (size_t b = 0; b < one.batch_count(); ++b) {
+    const std::vector<MaterialSample> a = one.batch(1, b), c = two.batch(1, b);
+    REQUIRE(a.size() == c.size());
+    for (size_t i = 0; i < a.size(); ++i) {
+      CHECK(a[i].albedo.values == c[i].albedo.values);
+      CHECK(a[i].material_id == c[i].material_id);
+    }
+  }
+  CHECK(one.batch(1, 1).size() == 1);  // 4 samples in batches of 3
 }
