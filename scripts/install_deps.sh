@@ -8,8 +8,9 @@ packages=(
   libembree-dev libtbb-dev libglm-dev libeigen3-dev
   libopenimageio-dev
   libtinygltf-dev libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libfmt-dev libyaml-cpp-dev
+  libtorch-dev libopenblas0-openmp
   catch2
-  python3-skimage python3-pil
+  python3-skimage python3-pil python3-torch python3-torchvision
 )
 # Blender 3.4 is a reference for the optional tests against Cycles, never a build dependency.
 if [ "${MATPREDICT_BLENDER_TESTS:-0}" = 1 ]; then packages+=(blender); fi
