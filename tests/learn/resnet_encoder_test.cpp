@@ -1,6 +1,9 @@
 // The ResNet-50 encoder (matlearn/models/resnet_encoder.h) against torchvision's resnet50 run by
 // Debian's python3-torchvision: the same parameter and buffer names and shapes, and with the same
 // weights, the same feature maps.
+// libtorch includes glog, whose CHECK macro would replace Catch's (passing checks would vanish
+// and failing ones abort): Catch's macros go by their CATCH_ names here.
+#define CATCH_CONFIG_PREFIX_ALL
 #include <catch2/catch.hpp>
 
 #include <cstdlib>
@@ -11,6 +14,7 @@
 #include <sstream>
 #include <string>
 
+#include "matlearn/models/resnet50_u.h"
 #include "matlearn/models/resnet_encoder.h"
 #include "matlearn/models/state_dict.h"
 
@@ -55,12 +59,12 @@ std::map<std::string, torch::Tensor> tensors_in(const fs::path& path) {
 
 }  // namespace
 
-TEST_CASE("The ResNet-50 encoder has torchvision's parameter names, shapes and count", "[learn]") {
+CATCH_TEST_CASE("The ResNet-50 encoder has torchvision's parameter names, shapes and count", "[learn]") {
   std::map<std::string, std::string> reference;
   std::ifstream names(torchvision_reference() / "names.txt");
   std::string name, shape;
   while (names >> name >> shape) reference[name] = shape;
-  REQUIRE(reference.size() == 318);
+  CATCH_REQUIRE(reference.size() == 318);
 
   ResNet50Encoder encoder;
   std::map<std::string, std::string> ours;
@@ -70,11 +74,11 @@ TEST_CASE("The ResNet-50 encoder has torchvision's parameter names, shapes and c
     parameter_count += p.value().numel();
   }
   for (const auto& b : encoder->named_buffers()) ours[b.key()] = shape_text(b.value());
-  CHECK(ours == reference);
-  CHECK(parameter_count == 23508032);  // ../shared/reference/networks.md: encoder only
+  CATCH_CHECK(ours == reference);
+  CATCH_CHECK(parameter_count == 23508032);  // ../shared/reference/networks.md: encoder only
 }
 
-TEST_CASE("With torchvision's weights the encoder computes torchvision's feature maps", "[learn]") {
+CATCH_TEST_CASE("With torchvision's weights the encoder computes torchvision's feature maps", "[learn]") {
   const fs::path dir = torchvision_reference();
   ResNet50Encoder encoder;
   load_state_dict(*encoder, dir / "weights.pt");
@@ -86,15 +90,15 @@ TEST_CASE("With torchvision's weights the encoder computes torchvision's feature
       {"stem", f.stem}, {"layer1", f.layer1}, {"layer2", f.layer2}, {"layer3", f.layer3}, {"layer4", f.layer4}};
   for (const auto& [stage, ours] : stages) {
     const torch::Tensor& theirs = io.at(stage);
-    REQUIRE(ours.sizes() == theirs.sizes());
+    CATCH_REQUIRE(ours.sizes() == theirs.sizes());
     const double scale = std::max(1.0, theirs.abs().max().item<double>());
     const double difference = (ours - theirs).abs().max().item<double>();
-    INFO(stage << ": largest difference " << difference << " for values up to " << scale);
-    CHECK(difference <= 1e-4 * scale);
+    CATCH_INFO(stage << ": largest difference " << difference << " for values up to " << scale);
+    CATCH_CHECK(difference <= 1e-4 * scale);
   }
 }
 
-TEST_CASE("Weights that do not fit are an error naming the tensors", "[learn]") {
+CATCH_TEST_CASE("Weights that do not fit are an error naming the tensors", "[learn]") {
   const fs::path dir = torchvision_reference();
   ResNet50Encoder encoder;
   // A state dict with one tensor of the wrong shape and one unknown name.
@@ -105,13 +109,27 @@ TEST_CASE("Weights that do not fit are an error naming the tensors", "[learn]") 
   dict.insert("fc.weight", torch::zeros({1000, 2048}));
   const std::vector<char> bytes = torch::pickle_save(dict);
   std::ofstream(dir / "bad.pt", std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  CHECK_THROWS_WITH(load_state_dict(*encoder, dir / "bad.pt"),
+  CATCH_CHECK_THROWS_WITH(load_state_dict(*encoder, dir / "bad.pt"),
                     Catch::Contains("conv1.weight") && Catch::Contains("unexpected fc.weight"));
   std::ofstream(dir / "garbage.pt") << "not a tensor file";
-  CHECK_THROWS_WITH(load_state_dict(*encoder, dir / "garbage.pt"), Catch::Contains("garbage.pt"));
+  CATCH_CHECK_THROWS_WITH(load_state_dict(*encoder, dir / "garbage.pt"), Catch::Contains("garbage.pt"));
   // A round trip through save_state_dict.
   ResNet50Encoder other;
   save_state_dict(*encoder, dir / "round_trip.pt");
   load_state_dict(*other, dir / "round_trip.pt");
-  CHECK(torch::equal(other->named_parameters()["layer3.2.conv2.weight"], encoder->named_parameters()["layer3.2.conv2.weight"]));
+  CATCH_CHECK(torch::equal(other->named_parameters()["layer3.2.conv2.weight"], encoder->named_parameters()["layer3.2.conv2.weight"]));
+}
+
+CATCH_TEST_CASE("ResNet50-U has the reconstructed parameter count and full-resolution output", "[learn]") {
+  int64_t six = 0, three = 0;
+  ResNet50U model(6);
+  for (const torch::Tensor& p : model->parameters()) six += p.numel();
+  for (const torch::Tensor& p : ResNet50U(3)->parameters()) three += p.numel();
+  CATCH_CHECK(six == 39642470);  // ../shared/reference/networks.md; the paper's 39.5M
+  CATCH_CHECK(six - three == 3 * (16 + 1));  // only the 1x1 head depends on the outputs
+  model->eval();
+  torch::NoGradGuard no_grad;
+  const torch::Tensor out = model->forward(torch::randn({2, 3, 64, 96}));
+  CATCH_CHECK(out.sizes() == torch::IntArrayRef({2, 6, 64, 96}));
+  CATCH_CHECK(torch::isfinite(out).all().item<bool>());
 }
