@@ -6,6 +6,7 @@
 #include <random>
 
 #include "matlearn/image_metrics.h"
+#include "noisy_image.h"
 #include "matlearn/paper_compat_metrics.h"
 #include "metrics/phase_congruency.h"
 
@@ -39,14 +40,6 @@ Image textured_image(uint32_t seed) {
                             (x > 20 && x < 40 && y > 25 ? 0.1f : 0.0f);  // and an edged block
   }
   return image;
-}
-
-Image with_noise(const Image& image, float sigma, uint32_t seed) {
-  std::mt19937 rng(seed);
-  std::normal_distribution<float> noise(0.0f, sigma);
-  Image noisy = image;
-  for (float& v : noisy.values) v += noise(rng);
-  return noisy;
 }
 
 }  // namespace
@@ -97,7 +90,7 @@ TEST_CASE("FSIM is 1 for identical images and falls as noise grows", "[learn]") 
   CHECK(fsim(image, image, 1.0) == Approx(1.0).epsilon(1e-12));
   double previous = 1.0;
   for (float sigma : {0.01f, 0.03f, 0.1f}) {
-    const double value = fsim(image, with_noise(image, sigma, 7), 1.0);
+    const double value = fsim(image, plus_noise(image, sigma, 7), 1.0);
     INFO("noise " << sigma << ": FSIM " << value);
     CHECK(value < previous);
     CHECK(value > 0.0);
@@ -109,7 +102,7 @@ TEST_CASE("FSIM is 1 for identical images and falls as noise grows", "[learn]") 
 TEST_CASE("FSIM does not depend on the units of the data range", "[learn]") {
   // Gradients scale with the values and T2 with the square of the range; phase congruency
   // does not scale at all.
-  const Image truth = textured_image(3), prediction = with_noise(truth, 0.03f, 8);
+  const Image truth = textured_image(3), prediction = plus_noise(truth, 0.03f, 8);
   Image truth_255 = truth, prediction_255 = prediction;
   for (float& v : truth_255.values) v *= 255.0f;
   for (float& v : prediction_255.values) v *= 255.0f;
@@ -117,7 +110,7 @@ TEST_CASE("FSIM does not depend on the units of the data range", "[learn]") {
 }
 
 TEST_CASE("Paper-compatible FSIM is 1 for identical images and below 1 otherwise", "[learn]") {
-  const Image truth = textured_image(4), prediction = with_noise(truth, 0.03f, 9);
+  const Image truth = textured_image(4), prediction = plus_noise(truth, 0.03f, 9);
   const paper_compat::Image8 truth8 = paper_compat::quantize_8bit(truth);
   const paper_compat::Image8 prediction8 = paper_compat::quantize_8bit(prediction);
   CHECK(paper_compat::fsim(truth8, truth8) == Approx(1.0).epsilon(1e-12));

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "matlearn/image_metrics.h"
+#include "noisy_image.h"
 
 using namespace matlearn;
 
@@ -29,14 +30,6 @@ Image smooth_image(int width, int height, int channels, uint32_t seed) {
       for (int x = 0; x < width; ++x) image.at(x, y, c) = 0.5f + 0.4f * std::sin(fx * x + fy * y + p);
   }
   return image;
-}
-
-Image plus_noise(const Image& image, float sigma, uint32_t seed) {
-  std::mt19937 rng(seed);
-  std::normal_distribution<float> noise(0.0f, sigma);
-  Image noisy = image;
-  for (float& v : noisy.values) v += noise(rng);
-  return noisy;
 }
 
 // A disc covering about half the image.

@@ -1,0 +1,14 @@
+#pragma once
+// The learn tests' noisy copies of an image: fixed-seed Gaussian noise added to every value.
+#include <cstdint>
+#include <random>
+
+#include "matlearn/image.h"
+
+inline matlearn::Image plus_noise(const matlearn::Image& image, float sigma, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<float> noise(0.0f, sigma);
+  matlearn::Image noisy = image;
+  for (float& v : noisy.values) v += noise(rng);
+  return noisy;
+}
