@@ -17,6 +17,7 @@
 #include "matlearn/models/resnet50_u.h"
 #include "matlearn/models/resnet_encoder.h"
 #include "matlearn/models/state_dict.h"
+#include "regressor_checks.h"
 
 using namespace matlearn;
 namespace fs = std::filesystem;
@@ -121,15 +122,5 @@ CATCH_TEST_CASE("Weights that do not fit are an error naming the tensors", "[lea
 }
 
 CATCH_TEST_CASE("ResNet50-U has the reconstructed parameter count and full-resolution output", "[learn]") {
-  int64_t six = 0, three = 0;
-  ResNet50U model(6);
-  for (const torch::Tensor& p : model->parameters()) six += p.numel();
-  for (const torch::Tensor& p : ResNet50U(3)->parameters()) three += p.numel();
-  CATCH_CHECK(six == 39642470);  // ../shared/reference/networks.md; the paper's 39.5M
-  CATCH_CHECK(six - three == 3 * (16 + 1));  // only the 1x1 head depends on the outputs
-  model->eval();
-  torch::NoGradGuard no_grad;
-  const torch::Tensor out = model->forward(torch::randn({2, 3, 64, 96}));
-  CATCH_CHECK(out.sizes() == torch::IntArrayRef({2, 6, 64, 96}));
-  CATCH_CHECK(torch::isfinite(out).all().item<bool>());
+  check_regressor<ResNet50U>(39642470, 16, 64, 96);  // ../shared/reference/networks.md; the paper's 39.5M
 }
