@@ -112,12 +112,7 @@ std::vector<double> wrapped_scharr_magnitude(const std::vector<double>& v, int w
 }  // namespace
 
 double fsim(const Image8& truth, const Image8& prediction) {
-  Image x, y;
-  x.width = y.width = truth.width;
-  x.height = y.height = truth.height;
-  x.channels = y.channels = truth.channels;
-  x.values.assign(truth.values.begin(), truth.values.end());
-  y.values.assign(prediction.values.begin(), prediction.values.end());
+  const Image x = widen(truth), y = widen(prediction);
   check_image_pair("FSIM (paper compat)", x, y, {});
   // phasepack's phasecong as the package calls it: 6 orientations, nscale 4, minWaveLength 6,
   // mult 2, sigmaOnf 0.5978; the six orientations' PC maps summed; T1 = 0.85, T2 = 160.

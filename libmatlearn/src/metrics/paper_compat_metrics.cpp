@@ -8,7 +8,6 @@
 #include "metrics/window_moments.h"
 
 namespace matlearn::paper_compat {
-namespace {
 
 Image widen(const Image8& image) {
   Image wide;
@@ -18,8 +17,6 @@ Image widen(const Image8& image) {
   wide.values.assign(image.values.begin(), image.values.end());
   return wide;
 }
-
-}  // namespace
 
 Image8 quantize_8bit(const Image& image) {
   Image8 narrow;

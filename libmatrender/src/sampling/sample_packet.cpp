@@ -87,6 +87,13 @@ FillFunction fill_function(LaneIsa isa) {
 // Chosen once: the CPU does not change while the library is loaded.
 const FillFunction widest_fill = fill_function(supported_lane_isas().back());
 
+// Gathers the packet's pair seeds (the fill functions take plain arrays) and fills with `fill`.
+void fill_packet(FillFunction fill, const PixelSeeds& seeds, uint32_t first_sample, PairPoints& x, PairPoints& y) {
+  PairSeeds pair_seeds[kPacketPairs];
+  for (uint32_t pair = 0; pair < kPacketPairs; ++pair) pair_seeds[pair] = seeds.pair(pair);
+  fill(pair_seeds, first_sample, x, y);
+}
+
 }  // namespace
 
 std::vector<LaneIsa> supported_lane_isas() {
@@ -101,9 +108,7 @@ std::vector<LaneIsa> supported_lane_isas() {
 
 SamplePacket::SamplePacket(const PixelSeeds& seeds, uint32_t first_sample)
     : seeds_(seeds), first_sample_(first_sample) {
-  PairSeeds pair_seeds[kPacketPairs];
-  for (uint32_t pair = 0; pair < kPacketPairs; ++pair) pair_seeds[pair] = seeds.pair(pair);
-  widest_fill(pair_seeds, first_sample, x_, y_);
+  fill_packet(widest_fill, seeds, first_sample, x_, y_);
 }
 
 SamplePacket::SamplePacket(const PixelSeeds& seeds, uint32_t first_sample, LaneIsa isa)
@@ -111,9 +116,7 @@ SamplePacket::SamplePacket(const PixelSeeds& seeds, uint32_t first_sample, LaneI
   const std::vector<LaneIsa> supported = supported_lane_isas();
   if (std::find(supported.begin(), supported.end(), isa) == supported.end())
     throw std::invalid_argument("SamplePacket: this CPU lacks the requested instruction set");
-  PairSeeds pair_seeds[kPacketPairs];
-  for (uint32_t pair = 0; pair < kPacketPairs; ++pair) pair_seeds[pair] = seeds.pair(pair);
-  fill_function(isa)(pair_seeds, first_sample, x_, y_);
+  fill_packet(fill_function(isa), seeds, first_sample, x_, y_);
 }
 
 }  // namespace matrender
