@@ -2,9 +2,10 @@
 """Converts torchvision ImageNet weights into the state dict of a libmatlearn encoder.
 
 Usage: convert_torchvision_weights.py MODEL IN.pth OUT.pt
-  MODEL   resnet50 (swin_t and convnext_tiny follow with their encoders)
+  MODEL   resnet50, swin_t or convnext_tiny
   IN.pth  the weights as torchvision distributes them (a state dict, e.g.
-          resnet50-11ad3fa6.pth); nothing is downloaded
+          resnet50-11ad3fa6.pth, swin_t-704ceda3.pth, convnext_tiny-983f1562.pth);
+          nothing is downloaded
   OUT.pt  the encoder's tensors, classifier dropped, for matlearn::load_state_dict
 
 Run it with Debian's Python (/usr/bin/python3, package python3-torch); the encoders' module
@@ -15,7 +16,7 @@ import sys
 
 import torch
 
-CLASSIFIER_PREFIXES = {"resnet50": ("fc.",)}
+CLASSIFIER_PREFIXES = {"resnet50": ("fc.",), "swin_t": ("head.",), "convnext_tiny": ("classifier.",)}
 
 
 def main() -> int:
