@@ -6,18 +6,14 @@
 
 #include <torch/torch.h>
 
-template <class Model>
-int64_t parameter_count(const Model& model) {
-  int64_t count = 0;
-  for (const torch::Tensor& p : model->parameters()) count += p.numel();
-  return count;
-}
+#include "matlearn/models/regressor.h"
 
-template <class Model>
-void check_regressor(int64_t expected_parameters, int64_t head_inputs, int64_t height, int64_t width) {
-  Model six(6);
-  CATCH_CHECK(parameter_count(six) == expected_parameters);
-  CATCH_CHECK(parameter_count(six) - parameter_count(Model(3)) == 3 * (head_inputs + 1));
+inline void check_regressor(matlearn::Architecture architecture, int64_t expected_parameters, int64_t head_inputs,
+                            int64_t height, int64_t width) {
+  const auto six = matlearn::make_regressor(architecture, 6);
+  CATCH_CHECK(matlearn::parameter_count(*six) == expected_parameters);
+  CATCH_CHECK(matlearn::parameter_count(*six) - matlearn::parameter_count(*matlearn::make_regressor(architecture, 3)) ==
+              3 * (head_inputs + 1));
   six->eval();
   torch::NoGradGuard no_grad;
   const torch::Tensor out = six->forward(torch::randn({2, 3, height, width}));

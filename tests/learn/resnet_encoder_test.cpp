@@ -1,5 +1,5 @@
 // The ResNet-50 encoder (matlearn/models/resnet_encoder.h) against torchvision's resnet50, the
-// strict state-dict loading, and ResNet50-U.
+// strict state-dict loading.
 // libtorch includes glog, whose CHECK macro would replace Catch's (passing checks would vanish
 // and failing ones abort): Catch's macros go by their CATCH_ names here.
 #define CATCH_CONFIG_PREFIX_ALL
@@ -7,10 +7,8 @@
 
 #include <fstream>
 
-#include "matlearn/models/resnet50_u.h"
 #include "matlearn/models/resnet_encoder.h"
 #include "matlearn/models/state_dict.h"
-#include "regressor_checks.h"
 #include "torchvision_reference.h"
 
 using namespace matlearn;
@@ -51,8 +49,4 @@ CATCH_TEST_CASE("Weights that do not fit are an error naming the tensors", "[lea
   load_state_dict(*other, dir / "round_trip.pt");
   CATCH_CHECK(torch::equal(other->named_parameters()["layer3.2.conv2.weight"],
                            encoder->named_parameters()["layer3.2.conv2.weight"]));
-}
-
-CATCH_TEST_CASE("ResNet50-U has the reconstructed parameter count and full-resolution output", "[learn]") {
-  check_regressor<ResNet50U>(39642470, 16, 64, 96);  // ../shared/reference/networks.md; the paper's 39.5M
 }

@@ -15,17 +15,17 @@ torch::nn::Sequential double_conv(int64_t in_channels, int64_t out_channels) {
 
 }  // namespace
 
-UNetNoSkipImpl::UNetNoSkipImpl(int64_t output_channels) {
+UNetNoSkipImpl::UNetNoSkipImpl(int64_t output_channels, int64_t width_divisor) {
   encoder_ = register_module("encoder", torch::nn::ModuleList());
   decoder_ = register_module("decoder", torch::nn::ModuleList());
   int64_t channels = 3;
   for (int64_t width : kEncoderWidths) {
-    encoder_->push_back(double_conv(channels, width));
-    channels = width;
+    encoder_->push_back(double_conv(channels, width / width_divisor));
+    channels = width / width_divisor;
   }
   for (int64_t width : kDecoderWidths) {
-    decoder_->push_back(UpConv(channels, width));
-    channels = width;
+    decoder_->push_back(UpConv(channels, width / width_divisor));
+    channels = width / width_divisor;
   }
   head_ = register_module("head", torch::nn::Conv2d(torch::nn::Conv2dOptions(channels, output_channels, 1)));
 }

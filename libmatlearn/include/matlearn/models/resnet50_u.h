@@ -8,16 +8,16 @@
 #include <torch/torch.h>
 
 #include "matlearn/models/decoder_blocks.h"
+#include "matlearn/models/regressor.h"
 #include "matlearn/models/resnet_encoder.h"
 
 namespace matlearn {
 
-class ResNet50UImpl : public torch::nn::Module {
+class ResNet50UImpl : public RegressorImpl {
  public:
   explicit ResNet50UImpl(int64_t output_channels);
-  // N x 3 x H x W (ImageNet-normalised) to N x output_channels x H x W, no activation.
-  torch::Tensor forward(const torch::Tensor& image);
-  ResNet50Encoder& encoder() { return encoder_; }
+  torch::Tensor forward(const torch::Tensor& image) override;
+  torch::nn::Module* encoder() override { return encoder_.get(); }
 
  private:
   ResNet50Encoder encoder_{nullptr};
