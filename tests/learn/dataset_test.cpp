@@ -19,6 +19,7 @@
 #include "matlearn/dataset_index.h"
 #include "matlearn/sample_loader.h"
 #include "matlearn/sample_reader.h"
+#include "synthetic_png.h"
 
 using namespace matlearn;
 namespace fs = std::filesystem;
@@ -27,19 +28,9 @@ namespace {
 
 constexpr int kSize = 16;
 
-// An 8-bit PNG whose value at (x, y, c) is value(x, y, c).
 template <class Value>
 void write_png(const fs::path& path, int channels, Value value) {
-  fs::create_directories(path.parent_path());
-  std::vector<uint8_t> pixels(static_cast<size_t>(kSize * kSize * channels));
-  for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x)
-      for (int c = 0; c < channels; ++c) pixels[static_cast<size_t>((y * kSize + x) * channels + c)] = value(x, y, c);
-  auto out = OIIO::ImageOutput::create(path.string());
-  REQUIRE(out);
-  REQUIRE(out->open(path.string(), OIIO::ImageSpec(kSize, kSize, channels, OIIO::TypeDesc::UINT8)));
-  REQUIRE(out->write_image(OIIO::TypeDesc::UINT8, pixels.data()));
-  REQUIRE(out->close());
+  write_synthetic_png(path, kSize, channels, value);
 }
 
 // The object: a disc of radius 5 px centred in the frame.

@@ -1,0 +1,32 @@
+#pragma once
+// Decoded samples (matlearn/sample_reader.h) stacked into the tensors a training step uses.
+#include <vector>
+
+#include <torch/torch.h>
+
+#include "matlearn/models/regressor.h"
+#include "matlearn/sample_reader.h"
+#include "matlearn/training/output_layout.h"
+
+namespace matlearn {
+
+struct Batch {
+  torch::Tensor input;   // N x 3 x H x W, normalised for the network
+  torch::Tensor target;  // N x regression_channels x H x W in [0, 1], in the layout's order
+  torch::Tensor mask;    // N x 1 x H x W, 1 on the object
+  torch::Tensor labels;  // N x H x W material ids (int64); kIgnoredLabel where a sample has no label
+};
+
+// The label of pixels that carry none (cross-entropy skips them), torch's default ignore index.
+constexpr int64_t kIgnoredLabel = -100;
+
+Batch make_batch(const std::vector<MaterialSample>& samples, const OutputLayout& layout,
+                 InputNormalization normalization);
+
+// RGB in [0, 1], N x 3 x H x W, normalised with ImageNet's mean and standard deviation or not.
+torch::Tensor normalize_input(const torch::Tensor& rgb, InputNormalization normalization);
+
+// An HWC image as a C x H x W tensor (a copy).
+torch::Tensor to_chw(const Image& image);
+
+}  // namespace matlearn

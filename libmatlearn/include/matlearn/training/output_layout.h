@@ -1,0 +1,39 @@
+#pragma once
+// Which maps a regressor predicts, in which channels, and how much each weighs in the loss (the
+// paper's extensibility section: T = [B | R | M | N], L = sum_c w_c ||T_hat_c - T_c||^2). The
+// paper's default is base colour (3) + roughness (3, the grey map repeated, as it stacks RGB
+// maps) = 6 channels; the segmentation head of the repository's second task adds one channel per
+// material class after the maps.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace matlearn {
+
+enum class MapKind { base_color, roughness, metallic };
+
+struct OutputGroup {
+  MapKind map;
+  int64_t channels;  // 3 for base colour; 1 or 3 for roughness and metallic
+  double weight = 1.0;
+};
+
+struct OutputLayout {
+  std::vector<OutputGroup> groups;
+  int64_t material_classes = 0;  // 0: no segmentation head
+  double material_weight = 1.0;
+
+  int64_t regression_channels() const;
+  int64_t output_channels() const { return regression_channels() + material_classes; }
+  // Channel index of the group's first channel.
+  int64_t first_channel(size_t group) const;
+  // Base colour 3 + roughness 3, both weight 1.
+  static OutputLayout paper();
+};
+
+std::string map_name(MapKind map);  // "base_color", "roughness", "metallic"
+// Throws std::invalid_argument naming the bad entry: a map twice, base colour not 3 channels,
+// another map not 1 or 3, a negative weight, 1 material class, no output at all.
+void validate(const OutputLayout& layout);
+
+}  // namespace matlearn

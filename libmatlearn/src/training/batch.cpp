@@ -1,0 +1,56 @@
+#include "matlearn/training/batch.h"
+
+#include <stdexcept>
+
+namespace matlearn {
+
+torch::Tensor to_chw(const Image& image) {
+  return torch::from_blob(const_cast<float*>(image.values.data()), {image.height, image.width, image.channels},
+                          torch::kFloat32)
+      .permute({2, 0, 1})
+      .clone();
+}
+
+torch::Tensor normalize_input(const torch::Tensor& rgb, InputNormalization normalization) {
+  if (normalization == InputNormalization::none) return rgb;
+  // torchvision's ImageNet statistics, with which every pretrained trunk was trained.
+  const torch::Tensor mean = torch::tensor({0.485f, 0.456f, 0.406f}).view({1, 3, 1, 1});
+  const torch::Tensor std = torch::tensor({0.229f, 0.224f, 0.225f}).view({1, 3, 1, 1});
+  return (rgb - mean) / std;
+}
+
+namespace {
+
+torch::Tensor target_of(const MaterialSample& sample, const OutputGroup& group) {
+  const Image& map = group.map == MapKind::base_color ? sample.albedo
+                     : group.map == MapKind::roughness ? sample.roughness
+                                                       : sample.metallic;
+  const torch::Tensor t = to_chw(map);
+  return t.size(0) == group.channels ? t : t.expand({group.channels, t.size(1), t.size(2)});
+}
+
+}  // namespace
+
+Batch make_batch(const std::vector<MaterialSample>& samples, const OutputLayout& layout,
+                 InputNormalization normalization) {
+  if (samples.empty()) throw std::invalid_argument("make_batch: no samples");
+  std::vector<torch::Tensor> inputs, targets, masks, labels;
+  for (const MaterialSample& s : samples) {
+    inputs.push_back(to_chw(s.input));
+    std::vector<torch::Tensor> maps;
+    for (const OutputGroup& group : layout.groups) maps.push_back(target_of(s, group));
+    targets.push_back(maps.empty() ? torch::empty({0, s.input.height, s.input.width}) : torch::cat(maps, 0));
+    const int64_t h = s.input.height, w = s.input.width;
+    masks.push_back(torch::tensor(std::vector<uint8_t>(s.mask.begin(), s.mask.end())).view({1, h, w}).to(torch::kFloat32));
+    labels.push_back(s.has_label ? torch::tensor(std::vector<int64_t>(s.material_id.begin(), s.material_id.end())).view({h, w})
+                                 : torch::full({h, w}, kIgnoredLabel, torch::kLong));
+  }
+  Batch batch;
+  batch.input = normalize_input(torch::stack(inputs), normalization);
+  batch.target = torch::stack(targets);
+  batch.mask = torch::stack(masks);
+  batch.labels = torch::stack(labels);
+  return batch;
+}
+
+}  // namespace matlearn

@@ -1,0 +1,51 @@
+#include "matlearn/training/output_layout.h"
+
+#include <stdexcept>
+
+namespace matlearn {
+
+int64_t OutputLayout::regression_channels() const {
+  int64_t channels = 0;
+  for (const OutputGroup& g : groups) channels += g.channels;
+  return channels;
+}
+
+int64_t OutputLayout::first_channel(size_t group) const {
+  int64_t channel = 0;
+  for (size_t g = 0; g < group; ++g) channel += groups[g].channels;
+  return channel;
+}
+
+OutputLayout OutputLayout::paper() {
+  OutputLayout layout;
+  layout.groups = {{MapKind::base_color, 3, 1.0}, {MapKind::roughness, 3, 1.0}};
+  return layout;
+}
+
+std::string map_name(MapKind map) {
+  switch (map) {
+    case MapKind::base_color: return "base_color";
+    case MapKind::roughness: return "roughness";
+    case MapKind::metallic: return "metallic";
+  }
+  throw std::logic_error("unknown map kind");
+}
+
+void validate(const OutputLayout& layout) {
+  for (size_t g = 0; g < layout.groups.size(); ++g) {
+    const OutputGroup& group = layout.groups[g];
+    const std::string name = map_name(group.map);
+    for (size_t h = 0; h < g; ++h)
+      if (layout.groups[h].map == group.map) throw std::invalid_argument("output map " + name + " is listed twice");
+    if (group.map == MapKind::base_color ? group.channels != 3 : group.channels != 1 && group.channels != 3)
+      throw std::invalid_argument("output map " + name + " cannot have " + std::to_string(group.channels) +
+                                  " channels (base_color 3, the others 1 or 3)");
+    if (!(group.weight >= 0.0)) throw std::invalid_argument("output map " + name + " has a negative loss weight");
+  }
+  if (layout.material_classes == 1 || layout.material_classes < 0)
+    throw std::invalid_argument("a segmentation head needs at least 2 material classes");
+  if (!(layout.material_weight >= 0.0)) throw std::invalid_argument("the material loss weight is negative");
+  if (layout.output_channels() == 0) throw std::invalid_argument("the network would predict nothing");
+}
+
+}  // namespace matlearn

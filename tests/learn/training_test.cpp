@@ -1,0 +1,247 @@
+// Training (matlearn/training/*): the loss on hand-computed cases, the learning-rate schedules'
+// closed forms, checkpoints, a network overfitting four images, and a resumed run that continues
+// exactly as the uninterrupted one.
+// libtorch includes glog, whose CHECK would replace Catch's: Catch's macros go by CATCH_ names.
+#define CATCH_CONFIG_PREFIX_ALL
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "matlearn/dataset_index.h"
+#include "matlearn/training/checkpoint.h"
+#include "matlearn/training/learning_rate_schedule.h"
+#include "matlearn/training/loss.h"
+#include "matlearn/training/trainer.h"
+#include "synthetic_png.h"
+
+using namespace matlearn;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kSize = 32;
+
+// Sample k of a tiny dataset in the MatPredict layout: a disc whose colour, albedo and roughness
+// depend on k (far from the untrained network's 0.5), label k % 3 + 1 on it.
+void write_sample(const fs::path& root, int k) {
+  const fs::path variant = root / ("object_" + std::to_string(k % 2)) / ("var00" + std::to_string(k / 2));
+  const auto inside = [](int x, int y) { return (x - 15.5) * (x - 15.5) + (y - 15.5) * (y - 15.5) < 120.0; };
+  const uint8_t albedo[4][3] = {{230, 20, 20}, {20, 230, 20}, {20, 20, 230}, {230, 230, 20}};
+  const uint8_t roughness[4] = {25, 230, 25, 230};
+  write_synthetic_png(variant / "images" / "000.png", kSize, 4, [&](int x, int y, int c) -> uint8_t {
+    if (!inside(x, y)) return 0;
+    return c == 3 ? 255 : static_cast<uint8_t>(albedo[k][c] * (0.6 + 0.4 * x / kSize) * (roughness[k] > 100 ? 0.7 : 1.0));
+  });
+  write_synthetic_png(variant / "albedo" / "000.png", kSize, 4, [&](int x, int y, int c) -> uint8_t {
+    return inside(x, y) ? (c == 3 ? 255 : albedo[k][c]) : 0;
+  });
+  write_synthetic_png(variant / "ORM" / "000.png", kSize, 4, [&](int x, int y, int c) -> uint8_t {
+    const uint8_t orm[4] = {255, roughness[k], 0, 255};
+    return inside(x, y) ? orm[c] : 0;
+  });
+  write_synthetic_png(variant / "label" / "000.png", kSize, 1, [&](int x, int y, int) -> uint8_t {
+    return inside(x, y) ? static_cast<uint8_t>(k % 3 + 1) : 0;
+  });
+}
+
+fs::path four_image_dataset() {
+  static const fs::path root = [] {
+    const fs::path r = fs::temp_directory_path() / "matpredict_training_test_data";
+    fs::remove_all(r);
+    for (int k = 0; k < 4; ++k) write_sample(r, k);
+    return r;
+  }();
+  return root;
+}
+
+TrainingConfig quick_config(const std::string& output) {
+  TrainingConfig c;
+  c.dataset_root = four_image_dataset();
+  c.train_samples = index_dataset(c.dataset_root);
+  c.network = "unet_no_skip";
+  c.width_divisor = 4;
+  c.image_size = kSize;
+  c.batch_size = 4;
+  c.threads = 1;
+  c.learning_rate = 2e-3;
+  c.output_dir = fs::temp_directory_path() / output;
+  fs::remove_all(c.output_dir);
+  return c;
+}
+
+Batch constant_batch(float target, float mask_fraction_rows) {
+  Batch b;
+  b.input = torch::zeros({2, 3, 4, 4});
+  b.target = torch::full({2, 6, 4, 4}, target);
+  b.mask = torch::zeros({2, 1, 4, 4});
+  b.mask.narrow(2, 0, static_cast<int64_t>(mask_fraction_rows * 4)).fill_(1.0);
+  b.labels = torch::full({2, 4, 4}, kIgnoredLabel, torch::kLong);
+  return b;
+}
+
+}  // namespace
+
+CATCH_TEST_CASE("The loss is the masked error of the sigmoid maps, weighted per map", "[learn]") {
+  OutputLayout layout = OutputLayout::paper();
+  layout.groups[1].weight = 0.5;
+  // Logits 0 predict 0.5 everywhere; the target is 0.1 on the object rows and would be 0.9 off it.
+  Batch batch = constant_batch(0.1f, 0.5f);
+  batch.target.narrow(2, 2, 2).fill_(0.9f);
+  const torch::Tensor zero_logits = torch::zeros({2, 6, 4, 4});
+  const LossTerms mse = training_loss(zero_logits, batch, layout, RegressionLoss::mse);
+  CATCH_CHECK(mse.group_terms[0] == Catch::Detail::Approx(0.16));
+  CATCH_CHECK(mse.group_terms[1] == Catch::Detail::Approx(0.16));
+  CATCH_CHECK(mse.total.item<double>() == Catch::Detail::Approx(0.16 + 0.5 * 0.16));
+  const LossTerms l1 = training_loss(zero_logits, batch, layout, RegressionLoss::l1);
+  CATCH_CHECK(l1.group_terms[0] == Catch::Detail::Approx(0.4));
+  // An empty mask gives 0, not NaN.
+  const LossTerms empty = training_loss(zero_logits, constant_batch(0.1f, 0.0f), layout, RegressionLoss::mse);
+  CATCH_CHECK(empty.total.item<double>() == 0.0);
+  // Cross-entropy of uniform logits over 4 classes is log 4 on every labelled pixel; unlabelled
+  // pixels do not count, labels beyond the classes are an error.
+  layout.material_classes = 4;
+  batch.labels.select(0, 0).fill_(2);
+  const LossTerms ce = training_loss(torch::zeros({2, 10, 4, 4}), batch, layout, RegressionLoss::mse);
+  CATCH_CHECK(ce.material_term == Catch::Detail::Approx(std::log(4.0)));
+  batch.labels.select(0, 1).fill_(4);
+  CATCH_CHECK_THROWS_WITH(training_loss(torch::zeros({2, 10, 4, 4}), batch, layout, RegressionLoss::mse),
+                          Catch::Contains("material id 4"));
+}
+
+CATCH_TEST_CASE("Output layouts are checked", "[learn]") {
+  OutputLayout layout = OutputLayout::paper();
+  CATCH_CHECK(layout.output_channels() == 6);
+  layout.groups.push_back({MapKind::metallic, 1, 1.0});
+  CATCH_CHECK(layout.output_channels() == 7);
+  CATCH_CHECK(layout.first_channel(2) == 6);
+  layout.groups.push_back({MapKind::roughness, 1, 1.0});
+  CATCH_CHECK_THROWS_WITH(validate(layout), Catch::Contains("twice"));
+  layout.groups.pop_back();
+  layout.groups[0].channels = 1;
+  CATCH_CHECK_THROWS_WITH(validate(layout), Catch::Contains("base_color"));
+  layout.groups[0].channels = 3;
+  layout.material_classes = 1;
+  CATCH_CHECK_THROWS(validate(layout));
+}
+
+CATCH_TEST_CASE("Learning-rate schedules follow PyTorch's closed forms", "[learn]") {
+  ScheduleSettings step;  // StepLR(20, 0.5)
+  ScheduleState s = start_schedule(2e-4);
+  for (int e = 0; e < 19; ++e) s = finish_epoch(step, 2e-4, s, 1.0);
+  CATCH_CHECK(s.rate == Catch::Detail::Approx(2e-4));
+  s = finish_epoch(step, 2e-4, s, 1.0);
+  CATCH_CHECK(s.rate == Catch::Detail::Approx(1e-4));
+  for (int e = 0; e < 20; ++e) s = finish_epoch(step, 2e-4, s, 1.0);
+  CATCH_CHECK(s.rate == Catch::Detail::Approx(5e-5));
+
+  ScheduleSettings cosine;
+  cosine.kind = ScheduleKind::cosine;
+  cosine.t_max = 50;
+  s = start_schedule(1e-4);
+  for (int e = 0; e < 25; ++e) s = finish_epoch(cosine, 1e-4, s, 1.0);
+  CATCH_CHECK(s.rate == Catch::Detail::Approx(0.5e-4));
+  for (int e = 0; e < 25; ++e) s = finish_epoch(cosine, 1e-4, s, 1.0);
+  CATCH_CHECK(s.rate == Catch::Detail::Approx(0.0).margin(1e-20));
+
+  // Plateau, patience 2: improvements keep the rate; the third epoch without one halves it.
+  ScheduleSettings plateau;
+  plateau.kind = ScheduleKind::plateau;
+  plateau.patience = 2;
+  s = start_schedule(1.0);
+  for (double loss : {5.0, 4.0, 4.0, 3.9999, 4.5}) s = finish_epoch(plateau, 1.0, s, loss);
+  CATCH_CHECK(s.rate == 0.5);
+  CATCH_CHECK(s.epochs_without_improvement == 0);
+  CATCH_CHECK_THROWS_WITH(schedule_kind_named("linear"), Catch::Contains("linear"));
+}
+
+CATCH_TEST_CASE("A network overfits four images: the training loss falls tenfold", "[learn]") {
+  TrainingConfig c = quick_config("matpredict_overfit_test");
+  c.epochs = 200;  // one step of all four images per epoch
+  c.learning_rate = 3e-3;
+  c.schedule.step_size = 1000;  // a constant rate
+  Trainer trainer(c);
+  CATCH_REQUIRE(trainer.train());
+  const double first = trainer.history().front().train_loss, last = trainer.history().back().train_loss;
+  CATCH_INFO("loss " << first << " -> " << last);
+  CATCH_CHECK(last * 10.0 <= first);
+  CATCH_CHECK(std::isfinite(last));
+  // The log has a header and one row per epoch.
+  std::ifstream log(c.output_dir / "log.csv");
+  std::string header;
+  std::getline(log, header);
+  CATCH_CHECK(header == "epoch,train_loss,train_base_color,train_roughness,train_material,validation_loss,learning_rate,seconds");
+  int rows = 0;
+  for (std::string row; std::getline(log, row);) ++rows;
+  CATCH_CHECK(rows == 200);
+}
+
+CATCH_TEST_CASE("A resumed run continues exactly as the uninterrupted run", "[learn]") {
+  // Cosine schedule, AdamW, a segmentation head and validation: every piece of state matters.
+  const auto configure = [](const std::string& output, int epochs) {
+    TrainingConfig c = quick_config(output);
+    c.epochs = epochs;
+    c.batch_size = 3;  // two steps per epoch, the second with one sample
+    c.optimizer = OptimizerKind::adamw;
+    c.weight_decay = 1e-2;
+    c.schedule.kind = ScheduleKind::cosine;
+    c.schedule.t_max = 4;
+    c.layout.material_classes = 4;
+    c.validation_samples = {c.train_samples[0]};
+    return c;
+  };
+  Trainer straight(configure("matpredict_resume_straight", 4));
+  CATCH_REQUIRE(straight.train());
+
+  const TrainingConfig first_half = configure("matpredict_resume_split", 2);
+  {
+    Trainer interrupted(first_half);
+    CATCH_REQUIRE(interrupted.train());
+  }
+  TrainingConfig second_half = configure("matpredict_resume_resumed", 4);
+  fs::remove_all(second_half.output_dir);
+  fs::copy(first_half.output_dir, second_half.output_dir, fs::copy_options::recursive);
+  Trainer resumed(second_half);
+  resumed.resume(second_half.output_dir / "checkpoints" / "last.pt");
+  CATCH_CHECK(resumed.epochs_done() == 2);
+  CATCH_REQUIRE(resumed.train());
+
+  auto a = straight.model().named_parameters(), b = resumed.model().named_parameters();
+  for (const auto& p : a) CATCH_CHECK(torch::equal(p.value(), b[p.key()]));
+  auto abuf = straight.model().named_buffers(), bbuf = resumed.model().named_buffers();
+  for (const auto& p : abuf) CATCH_CHECK(torch::equal(p.value(), bbuf[p.key()]));
+  for (size_t e = 0; e < 2; ++e)
+    CATCH_CHECK(straight.history()[e + 2].train_loss == resumed.history()[e].train_loss);
+  // The resumed log holds all four epochs.
+  std::ifstream log(second_half.output_dir / "log.csv");
+  int lines = 0;
+  for (std::string row; std::getline(log, row);) ++lines;
+  CATCH_CHECK(lines == 5);
+}
+
+CATCH_TEST_CASE("Checkpoints keep the design and reject other files", "[learn]") {
+  TrainingConfig c = quick_config("matpredict_checkpoint_test");
+  c.epochs = 1;
+  c.layout.groups.push_back({MapKind::metallic, 1, 0.25});
+  Trainer trainer(c);
+  CATCH_REQUIRE(trainer.train());
+  const fs::path last = c.output_dir / "checkpoints" / "last.pt";
+  const CheckpointHeader header = read_checkpoint_header(last);
+  CATCH_CHECK(header.network == "unet_no_skip");
+  CATCH_CHECK(header.width_divisor == 4);
+  CATCH_CHECK(header.layout.output_channels() == 7);
+  CATCH_CHECK(header.layout.groups[2].weight == 0.25);
+  CATCH_CHECK(header.epochs_done == 1);
+  const auto model = load_checkpoint_model(last, header);
+  CATCH_CHECK(torch::equal(model->named_parameters()["head.weight"], trainer.model().named_parameters()["head.weight"]));
+  std::ofstream(c.output_dir / "not_a_checkpoint.pt") << "hello";
+  CATCH_CHECK_THROWS_WITH(read_checkpoint_header(c.output_dir / "not_a_checkpoint.pt"),
+                          Catch::Contains("not_a_checkpoint.pt"));
+  // A checkpoint of another design does not resume this one.
+  TrainingConfig other = quick_config("matpredict_checkpoint_other");
+  other.epochs = 1;
+  Trainer mismatched(other);
+  CATCH_CHECK_THROWS_WITH(mismatched.resume(last), Catch::Contains("7 outputs"));
+}
