@@ -10,12 +10,12 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "interrupt.h"
+#include "common/interrupt.h"
 #include "matgeom/builtin_objects.h"
 #include "matrender/image_io.h"
 #include "matrender/render.h"
 #include "options.h"
-#include "progress_bar.h"
+#include "common/progress_bar.h"
 #include "scene_builder.h"
 
 using namespace render_object;
@@ -55,12 +55,12 @@ void report_summary(const matrender::RenderStats& stats, const BuiltScene& built
 }
 
 int render_and_write(const Options& options) {
-  const std::atomic<bool>* cancel = cancel_on_interrupt();
+  const std::atomic<bool>* cancel = app_support::cancel_on_interrupt();
   const SceneDescription description = describe_scene(options);
   BuiltScene built = build_scene(description);
 
   matrender::RenderSettings settings = description.settings;
-  ProgressBar progress;
+  app_support::ProgressBar progress("render");
   settings.progress = [&progress](double fraction) { progress.update(fraction); };
   settings.cancel = cancel;
   matrender::FrameBuffers frame;

@@ -14,13 +14,13 @@ namespace matlearn {
 // every network); UNet-no-skip learns from scratch on [0, 1].
 const std::vector<ArchitectureInfo>& architectures() {
   static const std::vector<ArchitectureInfo> list = {
-      {Architecture::unet_no_skip, "unet_no_skip", "U-Net encoder 64..1024 without long skips, 4 upconvs (paper: 23.6M)",
+      {Architecture::unet_no_skip, "unet_no_skip", "U-Net encoder 64..1024 without long skips, 4 upconvs",
        "", InputNormalization::none, 16},
-      {Architecture::resnet50_u, "resnet50_u", "ResNet-50 trunk, U-Net-style decoder with skips (paper: 39.5M)",
+      {Architecture::resnet50_u, "resnet50_u", "ResNet-50 trunk, U-Net-style decoder with skips",
        "resnet50", InputNormalization::imagenet, 32},
-      {Architecture::swin_t_u, "swin_t_u", "Swin-T trunk, 1x1 + 5 upconvs, no skips (paper: 31.6M)", "swin_t",
+      {Architecture::swin_t_u, "swin_t_u", "Swin-T trunk, 1x1 + 5 upconvs, no skips", "swin_t",
        InputNormalization::imagenet, 32},
-      {Architecture::convnext_t_u, "convnext_t_u", "ConvNeXt-T trunk, 1x1 + 5 upconvs, no skips (paper: 32.0M)",
+      {Architecture::convnext_t_u, "convnext_t_u", "ConvNeXt-T trunk, 1x1 + 5 upconvs, no skips",
        "convnext_tiny", InputNormalization::imagenet, 32},
       {Architecture::repo_resnet50_unet, "repo_resnet50_unet",
        "the MatPredict repository's ResNet50UNet (67.1M with 5 outputs)", "resnet50", InputNormalization::imagenet,

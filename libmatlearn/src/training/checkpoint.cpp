@@ -38,7 +38,7 @@ json header_json(const CheckpointHeader& h) {
             {"epochs_without_improvement", h.schedule.epochs_without_improvement}}},
           {"best_validation_loss", h.best_validation_loss},
           {"has_best_validation", h.has_best_validation},
-          {"config", h.config_json}};
+          {"config", h.config_text}};
 }
 
 CheckpointHeader header_from_json(const json& j) {
@@ -60,7 +60,7 @@ CheckpointHeader header_from_json(const json& j) {
   h.schedule.epochs_without_improvement = s.at("epochs_without_improvement").get<int>();
   h.best_validation_loss = j.at("best_validation_loss").get<double>();
   h.has_best_validation = j.at("has_best_validation").get<bool>();
-  h.config_json = j.at("config").get<std::string>();
+  h.config_text = j.at("config").get<std::string>();
   return h;
 }
 

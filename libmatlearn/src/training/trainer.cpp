@@ -198,7 +198,7 @@ bool Trainer::train(const TrainingCallbacks& callbacks) {
     header.image_size = config_.image_size;
     header.epochs_done = epochs_done_;
     header.schedule = schedule_;
-    header.config_json = config_.config_json;
+    header.config_text = config_.config_text;
     const bool improved = report.validated && (!has_best_ || report.validation_loss < best_validation_loss_);
     if (improved) {
       has_best_ = true;

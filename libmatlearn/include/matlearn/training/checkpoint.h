@@ -25,7 +25,7 @@ struct CheckpointHeader {
   ScheduleState schedule;
   double best_validation_loss = 0.0;  // meaningful when has_best_validation
   bool has_best_validation = false;
-  std::string config_json;  // the full training configuration, for the record
+  std::string config_text;  // the full training settings (YAML), for the record
 };
 
 void save_checkpoint(const std::filesystem::path& path, const CheckpointHeader& header, RegressorImpl& model,

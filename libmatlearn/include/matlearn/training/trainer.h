@@ -46,7 +46,7 @@ struct TrainingConfig {
   uint64_t seed = 42;
   int validate_every = 1;  // epochs; the last epoch is always validated
   std::filesystem::path output_dir;
-  std::string config_json;  // stored in checkpoints for the record
+  std::string config_text;  // stored in checkpoints for the record
 };
 
 struct EpochReport {

@@ -2,7 +2,7 @@
 
 #include <signal.h>
 
-namespace render_object {
+namespace app_support {
 namespace {
 
 // Only lock-free atomics may be touched from a signal handler.
@@ -22,4 +22,4 @@ const std::atomic<bool>* cancel_on_interrupt() {
   return &interrupted;
 }
 
-}  // namespace render_object
+}  // namespace app_support

@@ -2,11 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <unistd.h>
 
 #include <fmt/format.h>
 
-namespace render_object {
+namespace app_support {
 namespace {
 
 constexpr int kBarWidth = 30;
@@ -26,21 +27,21 @@ std::string eta(double fraction, double elapsed) {
 
 }  // namespace
 
-ProgressBar::ProgressBar(std::FILE* out)
-    : out_(out), terminal_(::isatty(::fileno(out)) == 1), start_(std::chrono::steady_clock::now()) {}
+ProgressBar::ProgressBar(std::string label, std::FILE* out)
+    : label_(std::move(label)), out_(out), terminal_(::isatty(::fileno(out)) == 1), start_(std::chrono::steady_clock::now()) {}
 
-std::string ProgressBar::terminal_line(double fraction, double elapsed) const {
+std::string ProgressBar::terminal_line(double fraction, double elapsed, const std::string& detail) const {
   const int filled = static_cast<int>(fraction * kBarWidth);
-  return fmt::format("render [{}{}] {:3d}%  {}", std::string(static_cast<size_t>(filled), '#'),
+  return fmt::format("{} [{}{}] {:3d}%  {}{}{}", label_, std::string(static_cast<size_t>(filled), '#'),
                      std::string(static_cast<size_t>(kBarWidth - filled), '.'),
-                     static_cast<int>(fraction * 100.0), eta(fraction, elapsed));
+                     static_cast<int>(fraction * 100.0), eta(fraction, elapsed), detail.empty() ? "" : "  ", detail);
 }
 
-void ProgressBar::update(double fraction) {
+void ProgressBar::update(double fraction, const std::string& detail) {
   fraction = std::clamp(fraction, 0.0, 1.0);
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   if (terminal_) {
-    std::string line = terminal_line(fraction, elapsed);
+    std::string line = terminal_line(fraction, elapsed, detail);
     if (line == last_line_) return;
     // "\r" returns to the line start, "\x1b[K" clears what a longer previous line left behind.
     std::fprintf(out_, "\r%s\x1b[K", line.c_str());
@@ -48,7 +49,8 @@ void ProgressBar::update(double fraction) {
   } else {
     const int tenth = static_cast<int>(fraction * 10.0);
     if (tenth == last_tenth_) return;
-    std::fprintf(out_, "render %3d%%  %s\n", tenth * 10, eta(fraction, elapsed).c_str());
+    std::fprintf(out_, "%s %3d%%  %s%s%s\n", label_.c_str(), tenth * 10, eta(fraction, elapsed).c_str(),
+                 detail.empty() ? "" : "  ", detail.c_str());
     last_tenth_ = tenth;
   }
   std::fflush(out_);
@@ -59,4 +61,4 @@ void ProgressBar::finish() {
   std::fflush(out_);
 }
 
-}  // namespace render_object
+}  // namespace app_support

@@ -1,4 +1,4 @@
-# Runs the command given after "--" and checks how it ended. Used by render_object's ctest tests.
+# Runs the command given after "--" and checks how it ended. Used by the apps' ctest tests.
 #   EXIT_CODE  the exit code the command must return
 #   EXPECT     regular expression its stdout + stderr must match (optional)
 #   CLEAN      folder removed before the run, so files from an earlier run prove nothing (optional)

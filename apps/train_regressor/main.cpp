@@ -1,0 +1,146 @@
+// train_regressor: trains a network that predicts material maps (and optionally material
+// classes) from one RGB image, on a dataset in the MatPredict repository's layout.
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "common/interrupt.h"
+#include "common/progress_bar.h"
+#include "matlearn/models/regressor.h"
+#include "matlearn/training/trainer.h"
+#include "training_options.h"
+
+namespace {
+
+using namespace train_regressor;
+
+// The paper's table (millions of parameters) for its four networks.
+double paper_millions(matlearn::Architecture a) {
+  switch (a) {
+    case matlearn::Architecture::unet_no_skip: return 23.6;
+    case matlearn::Architecture::resnet50_u: return 39.5;
+    case matlearn::Architecture::swin_t_u: return 31.6;
+    case matlearn::Architecture::convnext_t_u: return 32.0;
+    default: return 0.0;
+  }
+}
+
+// 23730758 -> "23,730,758".
+std::string with_thousands(int64_t n) {
+  std::string digits = std::to_string(n);
+  for (int i = static_cast<int>(digits.size()) - 3; i > 0; i -= 3) digits.insert(static_cast<size_t>(i), ",");
+  return digits;
+}
+
+void describe(const matlearn::TrainingConfig& config) {
+  const int64_t outputs = config.layout.output_channels();
+  fmt::print("Networks for {} output channels ({} map channels, {} material classes):\n", outputs,
+             config.layout.regression_channels(), config.layout.material_classes);
+  fmt::print("  {:<20} {:>12} {:>15}  {}\n", "network", "parameters", "paper", "design");
+  for (const matlearn::ArchitectureInfo& a : matlearn::architectures()) {
+    const int64_t count = matlearn::parameter_count(*matlearn::make_regressor(a.architecture, outputs));
+    const double paper = paper_millions(a.architecture);
+    const std::string paper_text =
+        paper > 0 ? fmt::format("{:.1f}M ({:+.2f}%)", paper, 100.0 * (static_cast<double>(count) / (paper * 1e6) - 1.0))
+                  : "-";
+    fmt::print("  {:<20} {:>12} {:>15}  {}\n", a.name, with_thousands(count), paper_text, a.description);
+  }
+  if (config.width_divisor != 1) {
+    const auto thin = matlearn::make_regressor(matlearn::architecture_named(config.network).architecture, outputs,
+                                               config.width_divisor);
+    fmt::print("  {} with widths / {}: {} parameters\n", config.network, config.width_divisor,
+               with_thousands(matlearn::parameter_count(*thin)));
+  }
+  fmt::print("The paper's counts are for 6 outputs (base colour 3 + roughness 3).\n");
+}
+
+void write_text(const std::filesystem::path& path, const std::string& text) {
+  std::filesystem::create_directories(path.parent_path());
+  const std::filesystem::path temporary = path.string() + ".partial";
+  {
+    std::ofstream out(temporary);
+    out << text;
+    if (!out) throw InputError("cannot write " + temporary.string());
+  }
+  std::filesystem::rename(temporary, path);
+}
+
+int train(const Options& options) {
+  const std::map<std::string, std::string> settings = resolve_settings(options);
+  const matlearn::TrainingConfig config = training_config(settings, !options.describe);
+  if (options.describe) {
+    describe(config);
+    return 0;
+  }
+  matlearn::Trainer trainer(config);
+  const std::filesystem::path last = config.output_dir / "checkpoints" / "last.pt";
+  const std::string pretrained = settings.at("pretrained_model");
+  if (options.resume || !pretrained.empty()) {
+    const std::filesystem::path from = pretrained.empty() ? last : std::filesystem::path(pretrained);
+    try {
+      trainer.resume(from);
+    } catch (const std::exception& e) {
+      throw InputError(e.what());
+    }
+    fmt::print("resuming after epoch {} from {}\n", trainer.epochs_done(), from.string());
+  }
+  write_text(config.output_dir / "config.yaml", settings_yaml(settings));
+  fmt::print("training {} ({} parameters) on {} samples, validating on {}; {} epochs of batch {} at {} px\n",
+             config.network, matlearn::parameter_count(trainer.model()), config.train_samples.size(),
+             config.validation_samples.size(), config.epochs, config.batch_size, config.image_size);
+  std::fflush(stdout);
+
+  std::unique_ptr<app_support::ProgressBar> bar;
+  matlearn::TrainingCallbacks callbacks;
+  callbacks.cancel = app_support::cancel_on_interrupt();
+  callbacks.step = [&](int epoch, size_t step, size_t steps, double loss) {
+    if (step == 1) bar = std::make_unique<app_support::ProgressBar>(fmt::format("epoch {}/{}", epoch, config.epochs));
+    bar->update(static_cast<double>(step) / static_cast<double>(steps), fmt::format("loss {:.5f}", loss));
+  };
+  callbacks.epoch_finished = [&](const matlearn::EpochReport& r) {
+    if (bar) bar->finish();
+    const std::string validation = r.validated ? fmt::format("  validation {:.5f}", r.validation_loss) : "";
+    fmt::print("epoch {}/{}: train {:.5f}{}  rate {:.3g}  {:.1f} s\n", r.epoch, config.epochs, r.train_loss,
+               validation, r.learning_rate, r.seconds);
+    std::fflush(stdout);
+  };
+  if (!trainer.train(callbacks)) {
+    if (bar) bar->finish();
+    fmt::print(stderr, "train_regressor: interrupted; {} holds epoch {} (continue with --resume)\n", last.string(),
+               trainer.epochs_done());
+    return 130;
+  }
+  fmt::print("wrote {}: checkpoints/last.pt{}, log.csv (one row per epoch), config.yaml (the settings)\n",
+             config.output_dir.string(),
+             std::filesystem::exists(config.output_dir / "checkpoints" / "best.pt") ? ", checkpoints/best.pt" : "");
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "Trains a network that predicts material maps (base colour, roughness, metallic) and optionally material "
+      "classes from one RGB image, on a dataset in the MatPredict repository's layout. Settings come from the "
+      "defaults (the paper's protocol), then --config, then the options below.",
+      "train_regressor"};
+  Options options;
+  add_options(app, options);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    return train(options);
+  } catch (const InputError& e) {
+    fmt::print(stderr, "train_regressor: {}\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "train_regressor: {}\n", e.what());
+    return 1;
+  }
+}

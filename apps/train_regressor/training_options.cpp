@@ -1,0 +1,240 @@
+#include "training_options.h"
+
+#include <algorithm>
+#include <sstream>
+
+#include <yaml-cpp/yaml.h>
+
+#include "matlearn/sample_loader.h"
+
+namespace train_regressor {
+namespace {
+
+struct Setting {
+  const char* key;  // the YAML key; the option is --key with dashes
+  const char* default_value;
+  const char* help;
+};
+
+// An empty default for the optimiser settings means the paper's choice for the network: AdamW
+// 1e-4 with weight decay 1e-2 for Swin-T, Adam 2e-4 for the others.
+const std::vector<Setting>& settings_table() {
+  static const std::vector<Setting> table = {
+      {"dataset_root", "", "dataset folder in the MatPredict layout (<object>/<variant>/{images,albedo,ORM,label})"},
+      {"split_file", "", "split YAML with train and val lists (the repository's); none: 80/20 by variant folder"},
+      {"model_name", "unet_no_skip",
+       "network: unet_no_skip, resnet50_u, swin_t_u, convnext_t_u, repo_resnet50_unet (alias resnet50_unet), "
+       "repo_swin_t_unet (alias swin_t_unet)"},
+      {"width_divisor", "1", "divide unet_no_skip's channel widths by this (4: a quick 1.5M-parameter network)"},
+      {"encoder_weights", "", "torchvision weights converted by scripts/convert_torchvision_weights.py, for the trunk"},
+      {"output_dir", "train_output", "folder for checkpoints/, log.csv and config.yaml"},
+      {"task_mode", "pbr", "pbr (material maps), material (segmentation only) or both"},
+      {"outputs", "base_color,roughness:3",
+       "predicted maps with channel counts, in order: base_color, roughness[:1|3], metallic[:1|3]"},
+      {"albedo_weight", "1", "loss weight of the base colour"},
+      {"roughness_weight", "1", "loss weight of the roughness"},
+      {"metallic_weight", "1", "loss weight of the metallic map"},
+      {"material_num_classes", "8", "segmentation classes (the repository's 8 families, 0 = background)"},
+      {"material_ce_weight", "1", "loss weight of the segmentation cross-entropy"},
+      {"loss", "mse", "regression loss: mse (the paper's) or l1 (the repository's)"},
+      {"linear_albedo", "false", "supervise the albedo decoded from sRGB to linear values"},
+      {"optimizer_name", "", "adam or adamw (default: the paper's for the network)"},
+      {"lr", "", "initial learning rate (default: the paper's, 2e-4, or 1e-4 for Swin-T)"},
+      {"weight_decay", "", "weight decay (default: the paper's, 0, or 1e-2 for Swin-T)"},
+      {"schedule", "step", "learning-rate schedule: step, cosine or plateau"},
+      {"step_size", "20", "step schedule: epochs between reductions"},
+      {"gamma", "0.5", "step and plateau schedules: reduction factor"},
+      {"t_max", "50", "cosine schedule: half period in epochs"},
+      {"patience", "5", "plateau schedule: epochs without improvement before a reduction"},
+      {"epochs", "50", "epochs to train"},
+      {"batch_size", "8", "samples per step"},
+      {"image_size", "224", "side the samples are resized to"},
+      {"threads", "0", "torch and decoding threads (0: all cores; libtorch alone would use 1)"},
+      {"seed", "42", "seed of the initial weights, the split and the sample order"},
+      {"validate_every", "1", "epochs between validations (the last epoch is always validated)"},
+      {"pretrained_model", "", "checkpoint to continue from (as the repository's option)"},
+  };
+  return table;
+}
+
+// Keys of the repository's training template that have no effect here; accepted so that its
+// files load, and named when set.
+const std::vector<std::string>& ignored_repository_keys() {
+  static const std::vector<std::string> keys = {
+      "num_workers", "num_vis_samples", "val_vis_ids_file", "optimizer_momentum", "material_weight",
+      "material_map_file", "material_ignore_background", "no_pretrained", "use_wandb", "wandb_project",
+      "wandb_run_name", "append_timestamp", "timestamp_format", "log_path"};
+  return keys;
+}
+
+std::string option_name(const std::string& key) {
+  std::string name = key;
+  std::replace(name.begin(), name.end(), '_', '-');
+  return "--" + name;
+}
+
+template <class T>
+T parse_value(const std::map<std::string, std::string>& s, const std::string& key) {
+  const std::string& text = s.at(key);
+  std::istringstream in(text);
+  T value{};
+  in >> value;
+  if (!in || !in.eof()) throw InputError(key + ": \"" + text + "\" is not a valid number");
+  return value;
+}
+
+bool parse_bool(const std::map<std::string, std::string>& s, const std::string& key) {
+  const std::string& text = s.at(key);
+  if (text == "true" || text == "1" || text == "yes") return true;
+  if (text == "false" || text == "0" || text == "no") return false;
+  throw InputError(key + ": expected true or false, got \"" + text + "\"");
+}
+
+std::string network_name(const std::string& name) {
+  if (name == "resnet50_unet") return "repo_resnet50_unet";
+  if (name == "swin_t_unet") return "repo_swin_t_unet";
+  return name;
+}
+
+// "base_color,roughness:3,metallic" with the weights of the *_weight keys.
+std::vector<matlearn::OutputGroup> output_groups(const std::map<std::string, std::string>& s) {
+  std::vector<matlearn::OutputGroup> groups;
+  std::istringstream list(s.at("outputs"));
+  for (std::string entry; std::getline(list, entry, ',');) {
+    const size_t colon = entry.find(':');
+    const std::string name = entry.substr(0, colon);
+    int64_t channels = name == "base_color" ? 3 : 1;
+    if (colon != std::string::npos) {
+      const std::string count = entry.substr(colon + 1);
+      if (count != "1" && count != "3") throw InputError("outputs: \"" + entry + "\": channels must be 1 or 3");
+      channels = std::stoi(count);
+    }
+    if (name == "base_color")
+      groups.push_back({matlearn::MapKind::base_color, channels, parse_value<double>(s, "albedo_weight")});
+    else if (name == "roughness")
+      groups.push_back({matlearn::MapKind::roughness, channels, parse_value<double>(s, "roughness_weight")});
+    else if (name == "metallic")
+      groups.push_back({matlearn::MapKind::metallic, channels, parse_value<double>(s, "metallic_weight")});
+    else
+      throw InputError("outputs: unknown map \"" + name + "\" (base_color, roughness, metallic)");
+  }
+  return groups;
+}
+
+}  // namespace
+
+void add_options(CLI::App& app, Options& options) {
+  app.add_option("-c,--config", options.config_file, "YAML settings (keys as the options without dashes)")
+      ->check(CLI::ExistingFile);
+  app.add_flag("--describe", options.describe, "print the networks' parameter counts for these outputs and exit");
+  app.add_flag("--resume", options.resume, "continue from <output_dir>/checkpoints/last.pt");
+  for (const Setting& setting : settings_table()) {
+    const std::string key = setting.key;
+    std::string help = setting.help;
+    if (*setting.default_value) help += " [" + std::string(setting.default_value) + "]";
+    app.add_option_function<std::string>(
+        option_name(key), [&options, key](const std::string& value) { options.command_line[key] = value; }, help);
+  }
+}
+
+std::map<std::string, std::string> resolve_settings(const Options& options) {
+  std::map<std::string, std::string> settings;
+  for (const Setting& setting : settings_table()) settings[setting.key] = setting.default_value;
+  if (!options.config_file.empty()) {
+    const std::string file = options.config_file.string();
+    YAML::Node root;
+    try {
+      root = YAML::LoadFile(file);
+    } catch (const YAML::Exception& e) {
+      throw InputError(file + ": not valid YAML: " + e.what());
+    }
+    if (!root.IsMap()) throw InputError(file + ": expected a mapping of settings");
+    for (const auto& entry : root) {
+      const std::string key = entry.first.as<std::string>();
+      const bool ignored = std::count(ignored_repository_keys().begin(), ignored_repository_keys().end(), key) > 0;
+      if (ignored) continue;
+      if (!settings.count(key)) throw InputError(file + ": unknown key \"" + key + "\"");
+      if (!entry.second.IsScalar() && !entry.second.IsNull()) throw InputError(file + ": " + key + ": expected a single value");
+      settings[key] = entry.second.IsNull() ? "" : entry.second.as<std::string>();
+    }
+  }
+  for (const auto& [key, value] : options.command_line) settings[key] = value;
+  // The paper's optimiser for the network, where none was chosen.
+  const bool swin = network_name(settings["model_name"]) == "swin_t_u";
+  if (settings["optimizer_name"].empty()) settings["optimizer_name"] = swin ? "adamw" : "adam";
+  if (settings["lr"].empty()) settings["lr"] = swin ? "1e-4" : "2e-4";
+  if (settings["weight_decay"].empty()) settings["weight_decay"] = swin ? "1e-2" : "0";
+  return settings;
+}
+
+matlearn::TrainingConfig training_config(const std::map<std::string, std::string>& s, bool with_dataset) {
+  matlearn::TrainingConfig c;
+  try {
+    c.network = network_name(s.at("model_name"));
+    matlearn::architecture_named(c.network);
+    c.width_divisor = parse_value<int64_t>(s, "width_divisor");
+    c.encoder_weights = s.at("encoder_weights");
+    c.output_dir = s.at("output_dir");
+    const std::string task = s.at("task_mode");
+    if (task != "pbr" && task != "material" && task != "both")
+      throw InputError("task_mode: expected pbr, material or both, got \"" + task + "\"");
+    if (task != "material") c.layout.groups = output_groups(s);
+    else c.layout.groups.clear();
+    if (task != "pbr") {
+      c.layout.material_classes = parse_value<int64_t>(s, "material_num_classes");
+      c.layout.material_weight = parse_value<double>(s, "material_ce_weight");
+    }
+    matlearn::validate(c.layout);
+    const std::string loss = s.at("loss");
+    if (loss != "mse" && loss != "l1") throw InputError("loss: expected mse or l1, got \"" + loss + "\"");
+    c.loss = loss == "mse" ? matlearn::RegressionLoss::mse : matlearn::RegressionLoss::l1;
+    c.linear_albedo = parse_bool(s, "linear_albedo");
+    c.optimizer = matlearn::optimizer_kind_named(s.at("optimizer_name"));
+    c.learning_rate = parse_value<double>(s, "lr");
+    c.weight_decay = parse_value<double>(s, "weight_decay");
+    c.schedule.kind = matlearn::schedule_kind_named(s.at("schedule"));
+    c.schedule.step_size = parse_value<int>(s, "step_size");
+    c.schedule.gamma = parse_value<double>(s, "gamma");
+    c.schedule.t_max = parse_value<int>(s, "t_max");
+    c.schedule.patience = parse_value<int>(s, "patience");
+    c.epochs = parse_value<int>(s, "epochs");
+    c.batch_size = parse_value<int>(s, "batch_size");
+    c.image_size = parse_value<int>(s, "image_size");
+    c.threads = parse_value<int>(s, "threads");
+    c.seed = parse_value<uint64_t>(s, "seed");
+    c.validate_every = parse_value<int>(s, "validate_every");
+  } catch (const std::invalid_argument& e) {
+    throw InputError(e.what());
+  }
+  c.config_text = settings_yaml(s);
+  if (!with_dataset) return c;
+  if (s.at("dataset_root").empty()) throw InputError("no dataset: give --dataset-root or dataset_root in --config");
+  c.dataset_root = s.at("dataset_root");
+  try {
+    const std::vector<matlearn::SampleId> all = matlearn::index_dataset(c.dataset_root);
+    if (all.empty()) throw InputError(c.dataset_root.string() + ": no samples in the MatPredict layout");
+    if (!s.at("split_file").empty()) {
+      const matlearn::SplitFile split = matlearn::read_split_file(s.at("split_file"));
+      c.train_samples = matlearn::split_samples(split, "train", c.dataset_root);
+      c.validation_samples = matlearn::split_samples(split, "val", c.dataset_root);
+    } else {
+      const auto parts = matlearn::split_by_variant(all, matlearn::SplitRatios{}, c.seed);
+      c.train_samples = parts[0];
+      c.validation_samples = parts[1];
+    }
+  } catch (const std::runtime_error& e) {
+    if (dynamic_cast<const InputError*>(&e)) throw;
+    throw InputError(e.what());
+  }
+  return c;
+}
+
+std::string settings_yaml(const std::map<std::string, std::string>& settings) {
+  YAML::Emitter out;
+  out << YAML::BeginMap;
+  for (const Setting& setting : settings_table()) out << YAML::Key << setting.key << YAML::Value << settings.at(setting.key);
+  out << YAML::EndMap;
+  return std::string(out.c_str()) + "\n";
+}
+
+}  // namespace train_regressor
