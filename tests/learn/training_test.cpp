@@ -15,62 +15,14 @@
 #include "matlearn/training/learning_rate_schedule.h"
 #include "matlearn/training/loss.h"
 #include "matlearn/training/trainer.h"
-#include "synthetic_png.h"
+#include "training_dataset.h"
 
 using namespace matlearn;
 namespace fs = std::filesystem;
 
 namespace {
 
-constexpr int kSize = 32;
-
-// Sample k of a tiny dataset in the MatPredict layout: a disc whose colour, albedo and roughness
-// depend on k (far from the untrained network's 0.5), label k % 3 + 1 on it.
-void write_sample(const fs::path& root, int k) {
-  const fs::path variant = root / ("object_" + std::to_string(k % 2)) / ("var00" + std::to_string(k / 2));
-  const auto inside = [](int x, int y) { return (x - 15.5) * (x - 15.5) + (y - 15.5) * (y - 15.5) < 120.0; };
-  const uint8_t albedo[4][3] = {{230, 20, 20}, {20, 230, 20}, {20, 20, 230}, {230, 230, 20}};
-  const uint8_t roughness[4] = {25, 230, 25, 230};
-  write_synthetic_png(variant / "images" / "000.png", kSize, 4, [&](int x, int y, int c) -> uint8_t {
-    if (!inside(x, y)) return 0;
-    return c == 3 ? 255 : static_cast<uint8_t>(albedo[k][c] * (0.6 + 0.4 * x / kSize) * (roughness[k] > 100 ? 0.7 : 1.0));
-  });
-  write_synthetic_png(variant / "albedo" / "000.png", kSize, 4, [&](int x, int y, int c) -> uint8_t {
-    return inside(x, y) ? (c == 3 ? 255 : albedo[k][c]) : 0;
-  });
-  write_synthetic_png(variant / "ORM" / "000.png", kSize, 4, [&](int x, int y, int c) -> uint8_t {
-    const uint8_t orm[4] = {255, roughness[k], 0, 255};
-    return inside(x, y) ? orm[c] : 0;
-  });
-  write_synthetic_png(variant / "label" / "000.png", kSize, 1, [&](int x, int y, int) -> uint8_t {
-    return inside(x, y) ? static_cast<uint8_t>(k % 3 + 1) : 0;
-  });
-}
-
-fs::path four_image_dataset() {
-  static const fs::path root = [] {
-    const fs::path r = fs::temp_directory_path() / "matpredict_training_test_data";
-    fs::remove_all(r);
-    for (int k = 0; k < 4; ++k) write_sample(r, k);
-    return r;
-  }();
-  return root;
-}
-
-TrainingConfig quick_config(const std::string& output) {
-  TrainingConfig c;
-  c.dataset_root = four_image_dataset();
-  c.train_samples = index_dataset(c.dataset_root);
-  c.network = "unet_no_skip";
-  c.width_divisor = 4;
-  c.image_size = kSize;
-  c.batch_size = 4;
-  c.threads = 1;
-  c.learning_rate = 2e-3;
-  c.output_dir = fs::temp_directory_path() / output;
-  fs::remove_all(c.output_dir);
-  return c;
-}
+using training_dataset::quick_config;
 
 Batch constant_batch(float target, float mask_fraction_rows) {
   Batch b;

@@ -1,0 +1,153 @@
+// evaluate: scores a trained regressor on a dataset split with the paper's eight metrics and
+// writes tables per material and per object, and a panel per material.
+#include <cstdio>
+#include <fstream>
+#include <memory>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "common/progress_bar.h"
+#include "matlearn/dataset_index.h"
+#include "matlearn/evaluation/evaluator.h"
+#include "matlearn/evaluation/report.h"
+#include "matlearn/material_families.h"
+#include "matlearn/sample_loader.h"
+#include "matlearn/training/checkpoint.h"
+
+namespace {
+
+struct InputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct Options {
+  std::filesystem::path checkpoint = "train_output/checkpoints/best.pt";
+  std::filesystem::path dataset_root;
+  std::filesystem::path split_file;
+  std::string split = "test";
+  uint64_t seed = 42;
+  bool paper_compat = false;
+  std::filesystem::path output_dir = "evaluation_output";
+  int batch_size = 8;
+  int threads = 0;
+};
+
+std::vector<matlearn::SampleId> samples_to_score(const Options& o) {
+  if (!o.split_file.empty()) {
+    if (o.split != "train" && o.split != "val" && o.split != "test")
+      throw InputError("--split: expected train, val or test, got \"" + o.split + "\"");
+    return matlearn::split_samples(matlearn::read_split_file(o.split_file), o.split, o.dataset_root);
+  }
+  // train_regressor's split without a split file: whole variant folders, 80/20 by the seed.
+  const auto parts = matlearn::split_by_variant(matlearn::index_dataset(o.dataset_root), matlearn::SplitRatios{}, o.seed);
+  return o.split == "train" ? parts[0] : parts[1];
+}
+
+std::string file_name(const std::string& text) {
+  std::string name = text;
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-') c = '_';
+  return name;
+}
+
+int run(const Options& o) {
+  std::filesystem::path checkpoint = o.checkpoint;
+  // train_regressor writes best.pt only when it validated; last.pt always.
+  if (!std::filesystem::exists(checkpoint) && checkpoint.filename() == "best.pt" &&
+      std::filesystem::exists(checkpoint.parent_path() / "last.pt"))
+    checkpoint = checkpoint.parent_path() / "last.pt";
+  matlearn::CheckpointHeader header;
+  std::shared_ptr<matlearn::RegressorImpl> model;
+  try {
+    header = matlearn::read_checkpoint_header(checkpoint);
+    model = matlearn::load_checkpoint_model(checkpoint, header);
+  } catch (const std::runtime_error& e) {
+    throw InputError(e.what());
+  }
+  if (header.layout.regression_channels() == 0) throw InputError(checkpoint.string() + " predicts no maps to score");
+  std::vector<matlearn::SampleId> samples;
+  try {
+    samples = samples_to_score(o);
+  } catch (const std::runtime_error& e) {
+    if (dynamic_cast<const InputError*>(&e)) throw;
+    throw InputError(e.what());
+  }
+  if (samples.empty()) throw InputError("the " + o.split + " split of " + o.dataset_root.string() + " is empty");
+  fmt::print("scoring {} ({} epochs) on {} {} samples, {} metrics\n", header.network, header.epochs_done,
+             samples.size(), o.split, o.paper_compat ? "paper-compatible" : "correct");
+  std::fflush(stdout);
+
+  matlearn::EvaluationSettings settings;
+  settings.convention = o.paper_compat ? matlearn::MetricConvention::paper_compat : matlearn::MetricConvention::correct;
+  settings.batch_size = o.batch_size;
+  settings.threads = o.threads;
+  app_support::ProgressBar bar("evaluate");
+  const matlearn::EvaluationResult result = matlearn::evaluate_samples(
+      *model, header, o.dataset_root, samples, settings,
+      [&bar](size_t done, size_t total) { bar.update(static_cast<double>(done) / static_cast<double>(total)); });
+  bar.finish();
+
+  const std::string convention =
+      o.paper_compat
+          ? "paper-compatible: image-similarity-measures' conventions on 8-bit maps (RMSE and PSNR with max_p 4095, "
+            "its SAM), background set to 0, whole images; only for comparing with the paper"
+          : "correct: float maps in [0, 1], data range 1, only the object's pixels (each family's pixels in the "
+            "material table); SAM in degrees, - for one-channel maps";
+  const std::string preamble = fmt::format(
+      "# Evaluation of {}\n\nCheckpoint `{}` ({}, {} epochs, {} px), {} split of `{}`: {} samples.\n"
+      "Metrics: {}. Predictions are the sigmoid of the network's output, as in training.\n",
+      header.network, checkpoint.string(), header.network, header.epochs_done, header.image_size, o.split,
+      o.dataset_root.string(), samples.size(), convention);
+  const std::vector<matlearn::ReportTable> tables = matlearn::report_tables(result.scores);
+  matlearn::write_report(o.output_dir, tables, preamble);
+  for (const auto& [material, sample] : result.samples_by_material)
+    matlearn::write_panel(o.output_dir / "panels" /
+                              (file_name(material == matlearn::kWholeObject ? "object" : matlearn::material_family_name(material)) +
+                               ".png"),
+                          sample);
+
+  for (const matlearn::ReportRow& row : tables.back().rows)
+    fmt::print("{:<12} RMSE {:.4f}  PSNR {:.2f}  SSIM {:.4f}  FSIM {:.4f}  SAM {:.2f}\n", row.map,
+               row.mean[matlearn::Metric::rmse], row.mean[matlearn::Metric::psnr], row.mean[matlearn::Metric::ssim],
+               row.mean[matlearn::Metric::fsim], row.mean[matlearn::Metric::sam]);
+  fmt::print("wrote {}: metrics.md, metrics.csv, metrics.json (by material, by object, overall), panels/ "
+             "(input | truth | prediction | error x4 per map, one per material)\n",
+             o.output_dir.string());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Scores a network trained by train_regressor on a dataset split with the paper's eight metrics (RMSE, "
+               "PSNR, SRE, SSIM, FSIM, UIQ, SAM, ISSM) and writes tables per material and per object (markdown, CSV, "
+               "JSON) and one PNG panel per material.",
+               "evaluate"};
+  Options o;
+  app.add_option("--checkpoint", o.checkpoint, "checkpoint train_regressor wrote (falls back to last.pt beside a missing best.pt)")
+      ->capture_default_str();
+  app.add_option("--dataset-root", o.dataset_root, "dataset folder in the MatPredict layout")->required();
+  app.add_option("--split-file", o.split_file, "split YAML; without one, the 80/20 variant split train_regressor used")
+      ->check(CLI::ExistingFile);
+  app.add_option("--split", o.split, "train, val or test (without a split file: train or the 20 % part)")->capture_default_str();
+  app.add_option("--seed", o.seed, "seed of the split without a split file")->capture_default_str();
+  app.add_flag("--paper-compat", o.paper_compat, "image-similarity-measures' conventions (8-bit, max_p 4095, its SAM), to compare with the paper");
+  app.add_option("--output-dir", o.output_dir, "folder for the tables and panels")->capture_default_str();
+  app.add_option("--batch-size", o.batch_size, "samples per forward pass")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--threads", o.threads, "torch and decoding threads (0: all cores)")->capture_default_str();
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    return run(o);
+  } catch (const InputError& e) {
+    fmt::print(stderr, "evaluate: {}\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "evaluate: {}\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,37 @@
+#pragma once
+// Evaluation tables shaped like the paper's (one row per material or object, the eight metrics
+// per predicted map), written as markdown, CSV and JSON, and one PNG panel per material.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "matlearn/evaluation/evaluator.h"
+
+namespace matlearn {
+
+struct ReportRow {
+  std::string group;  // a material family, an object, or "all"
+  std::string map;
+  int maps_scored = 0;
+  MetricScores mean;
+};
+
+struct ReportTable {
+  std::string title;  // "by material", "by object", "overall"
+  std::vector<ReportRow> rows;
+};
+
+// Means over the scored maps: by material family (each family's pixels), by object and over
+// everything (whole objects).
+std::vector<ReportTable> report_tables(const std::vector<ScoredMap>& scores);
+
+// Writes metrics.md, metrics.csv and metrics.json into `folder`; `preamble` (markdown) opens
+// metrics.md and goes into the JSON as "about".
+void write_report(const std::filesystem::path& folder, const std::vector<ReportTable>& tables,
+                  const std::string& preamble);
+
+// The sample's input beside, per map, truth | prediction | absolute error (x4, clamped), each
+// tile the map's size, as an 8-bit PNG. Files are written whole or not at all.
+void write_panel(const std::filesystem::path& path, const SamplePredictions& sample);
+
+}  // namespace matlearn

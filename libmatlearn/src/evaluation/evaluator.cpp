@@ -1,0 +1,98 @@
+#include "matlearn/evaluation/evaluator.h"
+
+#include <thread>
+
+#include "matlearn/sample_loader.h"
+#include "matlearn/training/batch.h"
+#include "matlearn/training/loss.h"
+
+namespace matlearn {
+namespace {
+
+// Channels [first, first + count) of a C x H x W tensor as an HWC image.
+Image to_image(const torch::Tensor& chw, int64_t first, int64_t count) {
+  const torch::Tensor hwc = chw.narrow(0, first, count).permute({1, 2, 0}).contiguous();
+  Image image(static_cast<int>(hwc.size(1)), static_cast<int>(hwc.size(0)), static_cast<int>(count));
+  std::copy(hwc.data_ptr<float>(), hwc.data_ptr<float>() + hwc.numel(), image.values.begin());
+  return image;
+}
+
+// The truth of an output group, with a grey map repeated when the group has 3 channels.
+Image truth_of(const MaterialSample& s, const OutputGroup& group) {
+  const Image& map = group.map == MapKind::base_color ? s.albedo
+                     : group.map == MapKind::roughness ? s.roughness
+                                                       : s.metallic;
+  if (map.channels == group.channels) return map;
+  Image repeated(map.width, map.height, static_cast<int>(group.channels));
+  for (size_t p = 0; p < map.pixel_count(); ++p)
+    for (int c = 0; c < repeated.channels; ++c) repeated.values[p * static_cast<size_t>(repeated.channels) + static_cast<size_t>(c)] = map.values[p];
+  return repeated;
+}
+
+int count(const Mask& mask) {
+  int n = 0;
+  for (uint8_t m : mask) n += m != 0;
+  return n;
+}
+
+}  // namespace
+
+EvaluationResult evaluate_samples(RegressorImpl& model, const CheckpointHeader& header, const std::filesystem::path& root,
+                                  const std::vector<SampleId>& samples, const EvaluationSettings& settings,
+                                  const std::function<void(size_t, size_t)>& progress) {
+  const int threads = settings.threads > 0 ? settings.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  torch::set_num_threads(threads);
+  LoaderSettings loader_settings;
+  loader_settings.sample.size = header.image_size;
+  loader_settings.batch_size = settings.batch_size;
+  loader_settings.shuffle = false;
+  loader_settings.threads = threads;
+  const SampleLoader loader(root, samples, loader_settings);
+  const InputNormalization normalization = info(architecture_named(header.network).architecture).input_normalization;
+  const OutputLayout& layout = header.layout;
+
+  EvaluationResult result;
+  model.eval();
+  torch::NoGradGuard no_grad;
+  size_t done = 0;
+  for (size_t b = 0; b < loader.batch_count(); ++b) {
+    const std::vector<MaterialSample> batch_samples = loader.batch(0, b);
+    const Batch batch = make_batch(batch_samples, layout, normalization);
+    const torch::Tensor maps = predicted_maps(model.forward(batch.input), layout);
+    for (size_t i = 0; i < batch_samples.size(); ++i) {
+      const MaterialSample& s = batch_samples[i];
+      const SampleId& id = loader.samples()[done + i];
+      SamplePredictions predictions{id, s.input, s.mask, {}, {}, {}};
+      for (size_t g = 0; g < layout.groups.size(); ++g) {
+        predictions.maps.push_back(map_name(layout.groups[g].map));
+        predictions.truths.push_back(truth_of(s, layout.groups[g]));
+        predictions.predictions.push_back(to_image(maps[static_cast<int64_t>(i)], layout.first_channel(g), layout.groups[g].channels));
+      }
+      // The whole object, then each family present in the label.
+      std::map<int32_t, Mask> regions = {{kWholeObject, s.mask}};
+      if (s.has_label)
+        for (size_t p = 0; p < s.material_id.size(); ++p)
+          if (s.mask[p] && s.material_id[p] > 0) {
+            Mask& region = regions[s.material_id[p]];
+            if (region.empty()) region.assign(s.mask.size(), 0);
+            region[p] = 1;
+          }
+      for (const auto& [material, region] : regions) {
+        const int pixels = count(region);
+        if (material != kWholeObject && pixels < kMinimumMaterialPixels) continue;
+        for (size_t g = 0; g < layout.groups.size(); ++g)
+          result.scores.push_back({id, predictions.maps[g], material, pixels,
+                                   score_map(predictions.truths[g], predictions.predictions[g], region, settings.convention)});
+        if (material != kWholeObject && !result.samples_by_material.count(material))
+          result.samples_by_material.emplace(material, predictions);
+      }
+      if (!s.has_label && !result.samples_by_material.count(kWholeObject))
+        result.samples_by_material.emplace(kWholeObject, predictions);
+    }
+    done += batch_samples.size();
+    if (progress) progress(done, loader.sample_count());
+  }
+  return result;
+}
+
+}  // namespace matlearn

@@ -1,0 +1,105 @@
+// Evaluation (matlearn/evaluation/*): a network whose output is known (its head zeroed, so every
+// map is sigmoid(0) = 0.5) scored on the four-image dataset, against the metrics' closed forms;
+// the tables per material and per object, the report files and the panels.
+// libtorch includes glog, whose CHECK would replace Catch's: Catch's macros go by CATCH_ names.
+#define CATCH_CONFIG_PREFIX_ALL
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <OpenImageIO/imageio.h>
+
+#include "matlearn/evaluation/evaluator.h"
+#include "matlearn/evaluation/report.h"
+#include "matlearn/training/trainer.h"
+#include "training_dataset.h"
+
+using namespace matlearn;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A checkpoint of the quarter-width UNet-no-skip with its head zeroed.
+fs::path half_grey_checkpoint() {
+  TrainingConfig c = training_dataset::quick_config("matpredict_evaluation_test");
+  c.epochs = 1;
+  Trainer trainer(c);
+  CATCH_REQUIRE(trainer.train());
+  CheckpointHeader header = read_checkpoint_header(c.output_dir / "checkpoints" / "last.pt");
+  {
+    torch::NoGradGuard no_grad;
+    for (auto& p : trainer.model().named_parameters())
+      if (p.key().rfind("head.", 0) == 0) p.value().zero_();
+  }
+  torch::optim::Adam unused(trainer.model().parameters());
+  const fs::path path = c.output_dir / "half_grey.pt";
+  save_checkpoint(path, header, trainer.model(), unused);
+  return path;
+}
+
+}  // namespace
+
+CATCH_TEST_CASE("Evaluation scores the sigmoid maps against the truth, whole and per material", "[learn]") {
+  const fs::path checkpoint = half_grey_checkpoint();
+  const CheckpointHeader header = read_checkpoint_header(checkpoint);
+  const auto model = load_checkpoint_model(checkpoint, header);
+  const fs::path root = training_dataset::four_image_dataset();
+  const std::vector<SampleId> samples = index_dataset(root);
+  EvaluationSettings settings;
+  settings.threads = 1;
+  const EvaluationResult result = evaluate_samples(*model, header, root, samples, settings);
+  // 4 samples x 2 maps, whole object and its one family.
+  CATCH_REQUIRE(result.scores.size() == 16);
+  for (const ScoredMap& s : result.scores) {
+    const int k = training_dataset::sample_index(s.sample);
+    if (s.map == "base_color") {
+      // RMSE of 0.5 against the constant albedo, and the angle between it and grey.
+      double squared = 0.0, dot = 0.0, norm = 0.0;
+      for (int c = 0; c < 3; ++c) {
+        const double a = training_dataset::kAlbedo[k][c] / 255.0;
+        squared += (a - 0.5) * (a - 0.5) / 3.0;
+        dot += a * 0.5;
+        norm += a * a;
+      }
+      CATCH_CHECK(s.scores[Metric::rmse] == Catch::Detail::Approx(std::sqrt(squared)).epsilon(1e-5));
+      CATCH_CHECK(s.scores[Metric::sam] ==
+                  Catch::Detail::Approx(std::acos(dot / std::sqrt(norm * 0.75)) * 180.0 / M_PI).epsilon(1e-4));
+    } else {
+      CATCH_CHECK(s.map == "roughness");
+      const double r = training_dataset::kRoughness[k] / 255.0;
+      CATCH_CHECK(s.scores[Metric::rmse] == Catch::Detail::Approx(std::abs(r - 0.5)).epsilon(1e-5));
+      CATCH_CHECK(s.scores[Metric::psnr] == Catch::Detail::Approx(-20.0 * std::log10(std::abs(r - 0.5))).epsilon(1e-5));
+    }
+    CATCH_CHECK(s.pixels > 300);
+    CATCH_CHECK((s.material == kWholeObject || s.material == k % 3 + 1));
+  }
+
+  const std::vector<ReportTable> tables = report_tables(result.scores);
+  CATCH_REQUIRE(tables.size() == 3);
+  CATCH_CHECK(tables[0].rows.size() == 3 * 2);  // families 1, 2, 3 (concrete, fabric, leather) x 2 maps
+  CATCH_CHECK(tables[0].rows[0].group == "concrete");
+  CATCH_CHECK(tables[1].rows.size() == 2 * 2);  // object_0, object_1
+  CATCH_CHECK(tables[2].rows.size() == 2);
+  CATCH_CHECK(tables[2].rows[0].maps_scored == 4);
+
+  const fs::path out = fs::temp_directory_path() / "matpredict_evaluation_report";
+  fs::remove_all(out);
+  write_report(out, tables, "# test");
+  std::ifstream csv(out / "metrics.csv");
+  std::string header_line;
+  std::getline(csv, header_line);
+  CATCH_CHECK(header_line == "table,group,map,maps_scored,RMSE,PSNR,SRE,SSIM,FSIM,UIQ,SAM,ISSM");
+  int rows = 0;
+  for (std::string row; std::getline(csv, row);) ++rows;
+  CATCH_CHECK(rows == 12);
+  CATCH_CHECK(fs::exists(out / "metrics.md"));
+  CATCH_CHECK(fs::exists(out / "metrics.json"));
+
+  write_panel(out / "panels" / "concrete.png", result.samples_by_material.at(1));
+  auto panel = OIIO::ImageInput::open((out / "panels" / "concrete.png").string());
+  CATCH_REQUIRE(panel);
+  CATCH_CHECK(panel->spec().width == 4 * training_dataset::kSize);
+  CATCH_CHECK(panel->spec().height == 2 * training_dataset::kSize);
+}
