@@ -88,7 +88,7 @@ void write_report(const std::filesystem::path& folder, const std::vector<ReportT
   csv << '\n';
   nlohmann::json json = {{"about", preamble}, {"tables", nlohmann::json::array()}};
   for (const ReportTable& table : tables) {
-    md << "\n## " << table.title << "\n\n| " << (table.title == "by object" ? "object" : table.title == "by material" ? "material" : "")
+    md << "\n## " << table.title << "\n\n| " << (table.title == "by object" ? "object" : table.title == "by material" ? "material" : "scope")
        << " | map | n |";
     for (Metric m : kAllMetrics) md << ' ' << metric_name(m) << (higher_is_better(m) ? " ↑" : " ↓") << " |";
     md << "\n|---|---|---:|";
@@ -135,8 +135,12 @@ void write_panel(const std::filesystem::path& path, const SamplePredictions& sam
   for (size_t m = 0; m < sample.maps.size(); ++m) {
     const Image& truth = sample.truths[m];
     const Image& prediction = sample.predictions[m];
+    // The error where it is scored, on the object; black elsewhere.
     Image error(truth.width, truth.height, truth.channels);
-    for (size_t i = 0; i < error.values.size(); ++i) error.values[i] = std::abs(truth.values[i] - prediction.values[i]);
+    for (size_t i = 0; i < error.values.size(); ++i) {
+      const size_t pixel = i / static_cast<size_t>(truth.channels);
+      if (sample.mask.empty() || sample.mask[pixel]) error.values[i] = std::abs(truth.values[i] - prediction.values[i]);
+    }
     const int row = static_cast<int>(m);
     put(1, row, truth, 1.0f);
     put(2, row, prediction, 1.0f);

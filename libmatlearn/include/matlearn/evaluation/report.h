@@ -30,8 +30,9 @@ std::vector<ReportTable> report_tables(const std::vector<ScoredMap>& scores);
 void write_report(const std::filesystem::path& folder, const std::vector<ReportTable>& tables,
                   const std::string& preamble);
 
-// The sample's input beside, per map, truth | prediction | absolute error (x4, clamped), each
-// tile the map's size, as an 8-bit PNG. Files are written whole or not at all.
+// The sample's input beside, per map, truth | prediction | absolute error on the object (x4,
+// clamped, black off it), each tile the map's size, as an 8-bit PNG. Files are written whole or
+// not at all.
 void write_panel(const std::filesystem::path& path, const SamplePredictions& sample);
 
 }  // namespace matlearn
