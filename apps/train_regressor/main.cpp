@@ -9,6 +9,7 @@
 
 #include "common/interrupt.h"
 #include "common/progress_bar.h"
+#include "example_dataset.h"
 #include "matlearn/models/regressor.h"
 #include "matlearn/training/trainer.h"
 #include "training_options.h"
@@ -68,7 +69,26 @@ void write_text(const std::filesystem::path& path, const std::string& text) {
   std::filesystem::rename(temporary, path);
 }
 
-int train(const Options& options) {
+// With no arguments: a tiny dataset rendered here, and a small network trained on it for a few
+// minutes.
+void use_example(Options& options) {
+  const std::filesystem::path root = std::filesystem::path("train_output") / "example_dataset";
+  fmt::print("no dataset given: rendering the example dataset (2 built-in objects x 4 materials x 8 views, 64 px) "
+             "into {}\n",
+             root.string());
+  std::fflush(stdout);
+  app_support::ProgressBar bar("render");
+  render_example_dataset(root, ExampleDatasetSize{}, [&bar](int done, int total) {
+    bar.update(static_cast<double>(done) / static_cast<double>(total));
+  });
+  bar.finish();
+  options.command_line = {{"dataset_root", root.string()}, {"width_divisor", "4"}, {"image_size", "64"},
+                          {"epochs", "40"},                {"batch_size", "8"},    {"lr", "1e-3"},
+                          {"output_dir", "train_output"}};
+}
+
+int train(Options options, bool example) {
+  if (example) use_example(options);
   const std::map<std::string, std::string> settings = resolve_settings(options);
   const matlearn::TrainingConfig config = training_config(settings, !options.describe);
   if (options.describe) {
@@ -135,7 +155,7 @@ int main(int argc, char** argv) {
     return app.exit(e);
   }
   try {
-    return train(options);
+    return train(options, /*example=*/argc == 1);
   } catch (const InputError& e) {
     fmt::print(stderr, "train_regressor: {}\n", e.what());
     return 2;

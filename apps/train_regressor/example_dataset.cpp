@@ -1,0 +1,142 @@
+#include "example_dataset.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "matgeom/bounding_sphere.h"
+#include "matgeom/builtin_objects.h"
+#include "matgeom/camera_grid.h"
+#include "matgeom/light_rig.h"
+#include "matrender/asset.h"
+#include "matrender/camera.h"
+#include "matrender/image_io.h"
+#include "matrender/render.h"
+#include "matrender/rig_lights.h"
+
+namespace train_regressor {
+namespace {
+
+// One material of a variant: a constant Principled material of one of the repository's families
+// (ids as its label maps: 1 concrete ... 7 wood).
+struct ExampleMaterial {
+  const char* name;
+  int family;
+  std::array<float, 3> base_color;  // linear
+  float roughness, metallic;
+};
+
+constexpr std::array<ExampleMaterial, 4> kMaterials = {{
+    {"wood_1", 7, {0.30f, 0.14f, 0.05f}, 0.60f, 0.0f},
+    {"metal_1", 4, {0.80f, 0.80f, 0.82f}, 0.25f, 1.0f},
+    {"plastic_1", 5, {0.60f, 0.05f, 0.04f}, 0.35f, 0.0f},
+    {"fabric_1", 2, {0.10f, 0.25f, 0.55f}, 0.90f, 0.0f},
+}};
+constexpr std::array<const char*, 2> kObjects = {"vase", "chair"};
+constexpr double kTargetIlluminanceLux = 1000.0;  // the paper's rig aim, as render_object
+
+std::string three_digits(int n) { return fmt::format("{:03d}", n); }
+
+void render_variant(const matgeom::ObjectAsset& asset, const ExampleMaterial& m, const std::filesystem::path& folder,
+                    const ExampleDatasetSize& size, uint32_t seed) {
+  matrender::Scene scene;
+  matrender::Material material;
+  material.name = m.name;
+  material.label_id = m.family;
+  material.base_color.value = glm::vec3(m.base_color[0], m.base_color[1], m.base_color[2]);
+  material.roughness.value = m.roughness;
+  material.metallic.value = m.metallic;
+  const uint32_t id = scene.add_material(material);
+  // Every part in the variant's material, whatever the object's own materials.
+  const size_t parts = std::max<size_t>({asset.mesh.part_count(), asset.materials.size(), 1});
+  matrender::add_asset(scene, asset, std::vector<std::optional<uint32_t>>(parts, id));
+  const matgeom::Sphere bounds = matgeom::minimal_enclosing_sphere(asset.mesh.positions);
+  matgeom::LightRigOptions rig_options;
+  rig_options.target_illuminance_lux = kTargetIlluminanceLux;
+  for (const matrender::Light& light : matrender::rig_lights(matgeom::make_light_rig(bounds.center, bounds.radius, rig_options)))
+    scene.add_light(light);
+
+  // Cameras on a ring 30 degrees above the horizon, far enough for the sphere to fill 90 % of
+  // the view.
+  const double fov = 0.691111;
+  matgeom::CameraGridSpec grid;
+  grid.center = bounds.center;
+  grid.radius = bounds.radius / std::sin(0.5 * fov) / 0.9;
+  grid.phi_min = grid.phi_max = 1.0471975511965976;  // 60 degrees from the zenith
+  grid.n_phi = 1;
+  grid.theta_min = -3.141592653589793;
+  grid.theta_max = 3.141592653589793;
+  grid.n_theta = size.views;
+  matrender::RenderSettings settings;
+  settings.samples_per_pixel = size.samples;
+  settings.transparent_background = true;
+  settings.aovs = matrender::AovBaseColor | matrender::AovRoughness | matrender::AovMetallic | matrender::AovLabel |
+                  matrender::AovAlpha;
+  for (int view = 0; view < size.views; ++view) {
+    const matgeom::GridCamera placed = matgeom::grid_camera(grid, 0, view);
+    matrender::Camera camera;
+    camera.camera_to_world = placed.camera_to_world;
+    camera.vertical_fov = fov;
+    camera.width = camera.height = size.resolution;
+    settings.seed = seed + static_cast<uint32_t>(view);
+    matrender::FrameBuffers frame;
+    matrender::render(scene, camera, settings, frame);
+    const std::string stem = three_digits(view) + ".png";
+    const int w = frame.width, h = frame.height;
+    const size_t pixels = static_cast<size_t>(w) * static_cast<size_t>(h);
+    std::filesystem::create_directories(folder / "images");
+    std::filesystem::create_directories(folder / "albedo");
+    std::filesystem::create_directories(folder / "ORM");
+    std::filesystem::create_directories(folder / "label");
+    matrender::write_display_png((folder / "images" / stem).string(), w, h, frame.color.data(), frame.alpha.data());
+    // The albedo display-encoded as the repository stores it, covered pixels only.
+    std::vector<float> albedo(pixels * 3);
+    for (size_t p = 0; p < pixels; ++p)
+      for (int c = 0; c < 3; ++c) albedo[p * 3 + static_cast<size_t>(c)] = frame.base_color[p * 3 + static_cast<size_t>(c)] * frame.alpha[p];
+    matrender::write_display_png((folder / "albedo" / stem).string(), w, h, albedo.data(), frame.alpha.data());
+    // ORM: R ambient occlusion (1: none is modelled), G roughness, B metallic, A 1 where covered.
+    // A full alpha, unlike the repository's coverage, keeps PNG's un-premultiplication from
+    // inflating edge values (its W6).
+    std::vector<float> orm(pixels * 4, 0.0f);
+    for (size_t p = 0; p < pixels; ++p) {
+      const bool covered = frame.alpha[p] > 0.0f;
+      orm[p * 4 + 0] = covered ? 1.0f : 0.0f;
+      orm[p * 4 + 1] = covered ? frame.roughness[p] : 0.0f;
+      orm[p * 4 + 2] = covered ? frame.metallic[p] : 0.0f;
+      orm[p * 4 + 3] = covered ? 1.0f : 0.0f;
+    }
+    matrender::write_data_png((folder / "ORM" / stem).string(), w, h, 4, orm.data(), 255.0, 0.0, false);
+    std::vector<float> label(pixels);
+    for (size_t p = 0; p < pixels; ++p) label[p] = static_cast<float>(frame.label[p]);
+    matrender::write_data_png((folder / "label" / stem).string(), w, h, 1, label.data(), 1.0, 0.0, false);
+  }
+}
+
+}  // namespace
+
+int render_example_dataset(const std::filesystem::path& root, const ExampleDatasetSize& size,
+                           const std::function<void(int, int)>& progress) {
+  const int total = static_cast<int>(kObjects.size() * kMaterials.size()) * size.views;
+  const std::filesystem::path complete = root / "COMPLETE";
+  if (std::filesystem::exists(complete)) return total;
+  int done = 0;
+  for (size_t o = 0; o < kObjects.size(); ++o) {
+    const matgeom::ObjectAsset asset = matgeom::make_builtin_object(kObjects[o]);
+    for (size_t v = 0; v < kMaterials.size(); ++v) {
+      render_variant(asset, kMaterials[v], root / kObjects[o] / ("var" + three_digits(static_cast<int>(v))), size,
+                     static_cast<uint32_t>(100 * o + 10 * v));
+      done += size.views;
+      if (progress) progress(done, total);
+    }
+  }
+  std::ofstream(complete) << "rendered by train_regressor: " << kObjects.size() << " objects x " << kMaterials.size()
+                          << " materials x " << size.views << " views\n";
+  return total;
+}
+
+}  // namespace train_regressor
