@@ -10,9 +10,12 @@
 #include "common/progress_bar.h"
 #include "matlearn/dataset_index.h"
 #include "matlearn/evaluation/evaluator.h"
+#include "matlearn/evaluation/inference.h"
+#include "matlearn/evaluation/panels.h"
 #include "matlearn/evaluation/report.h"
 #include "matlearn/material_families.h"
 #include "matlearn/sample_loader.h"
+#include "matlearn/sample_reader.h"
 #include "matlearn/training/checkpoint.h"
 
 namespace {
@@ -31,6 +34,8 @@ struct Options {
   std::filesystem::path output_dir = "evaluation_output";
   int batch_size = 8;
   int threads = 0;
+  std::filesystem::path image;  // inference on one image instead of a split
+  std::filesystem::path mask;
 };
 
 std::vector<matlearn::SampleId> samples_to_score(const Options& o) {
@@ -51,6 +56,26 @@ std::string file_name(const std::string& text) {
   return name;
 }
 
+// Inference: the image resized to the network's size, its maps and a strip of them.
+int predict(const Options& o, const matlearn::CheckpointHeader& header, matlearn::RegressorImpl& model) {
+  matlearn::InputImage input;
+  try {
+    input = matlearn::read_input_image(o.image, o.mask, header.image_size);
+  } catch (const std::runtime_error& e) {
+    throw InputError(e.what());
+  }
+  const matlearn::PredictedMaps predicted = matlearn::predict_maps(model, header, input.rgb);
+  std::string written;
+  for (size_t m = 0; m < predicted.maps.size(); ++m) {
+    matlearn::write_map_png(o.output_dir / (predicted.names[m] + ".png"), predicted.maps[m], input.mask);
+    written += predicted.names[m] + ".png, ";
+  }
+  matlearn::write_prediction_strip(o.output_dir / "panel.png", input.rgb, input.mask, predicted);
+  fmt::print("wrote {}: {}panel.png (input | maps), {} x {} px; off the object the maps are black\n",
+             o.output_dir.string(), written, header.image_size, header.image_size);
+  return 0;
+}
+
 int run(const Options& o) {
   std::filesystem::path checkpoint = o.checkpoint;
   // train_regressor writes best.pt only when it validated; last.pt always.
@@ -65,7 +90,9 @@ int run(const Options& o) {
   } catch (const std::runtime_error& e) {
     throw InputError(e.what());
   }
-  if (header.layout.regression_channels() == 0) throw InputError(checkpoint.string() + " predicts no maps to score");
+  if (header.layout.regression_channels() == 0) throw InputError(checkpoint.string() + " predicts no maps");
+  if (!o.image.empty()) return predict(o, header, *model);
+  if (o.dataset_root.empty()) throw InputError("give --dataset-root to score a split, or --image to predict one image");
   std::vector<matlearn::SampleId> samples;
   try {
     samples = samples_to_score(o);
@@ -122,12 +149,17 @@ int run(const Options& o) {
 int main(int argc, char** argv) {
   CLI::App app{"Scores a network trained by train_regressor on a dataset split with the paper's eight metrics (RMSE, "
                "PSNR, SRE, SSIM, FSIM, UIQ, SAM, ISSM) and writes tables per material and per object (markdown, CSV, "
-               "JSON) and one PNG panel per material.",
+               "JSON) and one PNG panel per material; or, with --image, predicts one image's maps.",
                "evaluate"};
   Options o;
   app.add_option("--checkpoint", o.checkpoint, "checkpoint train_regressor wrote (falls back to last.pt beside a missing best.pt)")
       ->capture_default_str();
-  app.add_option("--dataset-root", o.dataset_root, "dataset folder in the MatPredict layout")->required();
+  app.add_option("--dataset-root", o.dataset_root, "dataset folder in the MatPredict layout");
+  app.add_option("--image", o.image, "predict the maps of this one image instead (PNG, JPEG, EXR...)")
+      ->check(CLI::ExistingFile);
+  app.add_option("--mask", o.mask, "with --image: the object's mask (any nonzero value; a label map works); "
+                                   "default the image's alpha")
+      ->check(CLI::ExistingFile);
   app.add_option("--split-file", o.split_file, "split YAML; without one, the 80/20 variant split train_regressor used")
       ->check(CLI::ExistingFile);
   app.add_option("--split", o.split, "train, val or test (without a split file: train or the 20 % part)")->capture_default_str();

@@ -204,3 +204,25 @@ TEST_CASE("Loader batches decode the same data on 1 and 2 threads", "[learn]") {
   }
   CHECK(one.batch(1, 1).size() == 1);  // 4 samples in batches of 3
 }
+
+TEST_CASE("One image to predict: its mask from a label map, from alpha, or everything (W17)", "[learn]") {
+  const fs::path root = make_dataset();
+  const fs::path variant = root / "chair_01" / "var000";
+  // A label map of ids 7 is the object: the repository's "> 0.5 after / 255" made it background.
+  const InputImage labelled = read_input_image(variant / "images" / "000.png", variant / "label" / "000.png", 8);
+  CHECK(labelled.rgb.width == 8);
+  CHECK(labelled.rgb.channels == 3);
+  size_t inside = 0;
+  for (uint8_t m : labelled.mask) inside += m;
+  CHECK(inside > 0);
+  CHECK(inside < labelled.mask.size());
+  // The RGBA image's alpha gives the same disc.
+  const InputImage from_alpha = read_input_image(variant / "images" / "000.png", {}, 8);
+  CHECK(from_alpha.mask == labelled.mask);
+  // An RGB-only image (the albedo's colour channels as a grey PNG here) covers everything.
+  write_png(root / "grey.png", 1, [](int x, int, int) -> uint8_t { return static_cast<uint8_t>(x * 10); });
+  const InputImage grey = read_input_image(root / "grey.png", {}, 8);
+  CHECK(std::all_of(grey.mask.begin(), grey.mask.end(), [](uint8_t m) { return m == 1; }));
+  CHECK(grey.rgb.at(3, 3, 0) == grey.rgb.at(3, 3, 2));
+  CHECK_THROWS_WITH(read_input_image(root / "missing.png", {}, 8), Catch::Contains("missing.png"));
+}

@@ -5,6 +5,7 @@
 #define CATCH_CONFIG_PREFIX_ALL
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +13,8 @@
 #include <OpenImageIO/imageio.h>
 
 #include "matlearn/evaluation/evaluator.h"
+#include "matlearn/evaluation/inference.h"
+#include "matlearn/evaluation/panels.h"
 #include "matlearn/evaluation/report.h"
 #include "matlearn/training/trainer.h"
 #include "training_dataset.h"
@@ -102,4 +105,23 @@ CATCH_TEST_CASE("Evaluation scores the sigmoid maps against the truth, whole and
   CATCH_REQUIRE(panel);
   CATCH_CHECK(panel->spec().width == 4 * training_dataset::kSize);
   CATCH_CHECK(panel->spec().height == 2 * training_dataset::kSize);
+}
+
+CATCH_TEST_CASE("Inference predicts every map of one image at the network's size", "[learn]") {
+  const fs::path checkpoint = half_grey_checkpoint();
+  const CheckpointHeader header = read_checkpoint_header(checkpoint);
+  const auto model = load_checkpoint_model(checkpoint, header);
+  const Image rgb(training_dataset::kSize, training_dataset::kSize, 3, 0.3f);
+  const PredictedMaps predicted = predict_maps(*model, header, rgb);
+  CATCH_REQUIRE(predicted.names == std::vector<std::string>{"base_color", "roughness"});
+  CATCH_CHECK(predicted.maps[1].channels == 3);
+  for (const Image& map : predicted.maps) {
+    CATCH_CHECK(map.width == training_dataset::kSize);
+    CATCH_CHECK(std::all_of(map.values.begin(), map.values.end(), [](float v) { return v == 0.5f; }));
+  }
+  const fs::path strip = fs::temp_directory_path() / "matpredict_inference_strip.png";
+  write_prediction_strip(strip, rgb, Mask(rgb.pixel_count(), 1), predicted);
+  auto in = OIIO::ImageInput::open(strip.string());
+  CATCH_REQUIRE(in);
+  CATCH_CHECK(in->spec().width == 3 * training_dataset::kSize);
 }

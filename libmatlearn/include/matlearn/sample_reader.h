@@ -31,4 +31,16 @@ struct MaterialSample {
 // Throws std::runtime_error naming the file when a map cannot be read.
 MaterialSample read_sample(const std::filesystem::path& root, const SampleId& id, const SampleSettings& settings);
 
+// One image to run a network on, outside any dataset.
+struct InputImage {
+  Image rgb;  // size x size x 3 in [0, 1], resized as the samples' inputs are
+  Mask mask;  // the object, nearest-resized
+};
+
+// The object mask comes from `mask_path` when it is not empty (any nonzero value is the object,
+// so a label map of ids 1..7 serves, where the repository's "> 0.5 after / 255" made it all
+// background: its W17), else from the image's alpha channel (> 0), else it is every pixel.
+// Throws std::runtime_error naming the file.
+InputImage read_input_image(const std::filesystem::path& image_path, const std::filesystem::path& mask_path, int size);
+
 }  // namespace matlearn

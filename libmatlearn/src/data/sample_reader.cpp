@@ -92,3 +92,26 @@ MaterialSample read_sample(const fs::path& root, const SampleId& id, const Sampl
 }
 
 }  // namespace matlearn
+
+namespace matlearn {
+
+InputImage read_input_image(const fs::path& image_path, const fs::path& mask_path, int size) {
+  if (size < 1) throw std::invalid_argument("read_input_image: size must be at least 1");
+  const Decoded image = decode(image_path);
+  std::vector<int32_t> object(static_cast<size_t>(image.width) * static_cast<size_t>(image.height), 1);
+  if (!mask_path.empty()) {
+    const Decoded mask = decode(mask_path);
+    check_same_size(mask, image, mask_path);
+    for (size_t p = 0; p < object.size(); ++p) object[p] = mask.values[p * static_cast<size_t>(mask.channels)] > 0.0f;
+  } else if (image.channels == 4 || image.channels == 2) {
+    for (size_t p = 0; p < object.size(); ++p)
+      object[p] = image.values[p * static_cast<size_t>(image.channels) + static_cast<size_t>(image.channels - 1)] > 0.0f;
+  }
+  InputImage input;
+  input.rgb = resize_bilinear(channels_of(image, 0, 3), size, size);
+  const std::vector<int32_t> resized = resize_nearest(object, image.width, image.height, size, size);
+  input.mask.assign(resized.begin(), resized.end());
+  return input;
+}
+
+}  // namespace matlearn

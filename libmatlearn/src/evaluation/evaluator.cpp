@@ -9,14 +9,6 @@
 namespace matlearn {
 namespace {
 
-// Channels [first, first + count) of a C x H x W tensor as an HWC image.
-Image to_image(const torch::Tensor& chw, int64_t first, int64_t count) {
-  const torch::Tensor hwc = chw.narrow(0, first, count).permute({1, 2, 0}).contiguous();
-  Image image(static_cast<int>(hwc.size(1)), static_cast<int>(hwc.size(0)), static_cast<int>(count));
-  std::copy(hwc.data_ptr<float>(), hwc.data_ptr<float>() + hwc.numel(), image.values.begin());
-  return image;
-}
-
 // The truth of an output group, with a grey map repeated when the group has 3 channels.
 Image truth_of(const MaterialSample& s, const OutputGroup& group) {
   const Image& map = group.map == MapKind::base_color ? s.albedo
@@ -66,7 +58,7 @@ EvaluationResult evaluate_samples(RegressorImpl& model, const CheckpointHeader& 
       for (size_t g = 0; g < layout.groups.size(); ++g) {
         predictions.maps.push_back(map_name(layout.groups[g].map));
         predictions.truths.push_back(truth_of(s, layout.groups[g]));
-        predictions.predictions.push_back(to_image(maps[static_cast<int64_t>(i)], layout.first_channel(g), layout.groups[g].channels));
+        predictions.predictions.push_back(to_hwc(maps[static_cast<int64_t>(i)].narrow(0, layout.first_channel(g), layout.groups[g].channels)));
       }
       // The whole object, then each family present in the label.
       std::map<int32_t, Mask> regions = {{kWholeObject, s.mask}};

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <sstream>
 #include <stdexcept>
 
-#include <OpenImageIO/imageio.h>
 #include <nlohmann/json.hpp>
 
 #include "matlearn/material_families.h"
@@ -115,44 +115,6 @@ void write_report(const std::filesystem::path& folder, const std::vector<ReportT
   write_atomically(folder / "metrics.md", md.str());
   write_atomically(folder / "metrics.csv", csv.str());
   write_atomically(folder / "metrics.json", json.dump(2) + "\n");
-}
-
-void write_panel(const std::filesystem::path& path, const SamplePredictions& sample) {
-  const int w = sample.input.width, h = sample.input.height;
-  const int rows = std::max<int>(1, static_cast<int>(sample.maps.size()));
-  const int width = 4 * w, height = rows * h;
-  std::vector<uint8_t> pixels(static_cast<size_t>(width) * static_cast<size_t>(height) * 3, 0);
-  const auto put = [&](int tile_x, int tile_y, const Image& image, float scale) {
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x)
-        for (int c = 0; c < 3; ++c) {
-          const float v = image.at(x, y, std::min(c, image.channels - 1)) * scale;
-          pixels[(static_cast<size_t>(tile_y * h + y) * static_cast<size_t>(width) + static_cast<size_t>(tile_x * w + x)) * 3 +
-                 static_cast<size_t>(c)] = static_cast<uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
-        }
-  };
-  put(0, 0, sample.input, 1.0f);
-  for (size_t m = 0; m < sample.maps.size(); ++m) {
-    const Image& truth = sample.truths[m];
-    const Image& prediction = sample.predictions[m];
-    // The error where it is scored, on the object; black elsewhere.
-    Image error(truth.width, truth.height, truth.channels);
-    for (size_t i = 0; i < error.values.size(); ++i) {
-      const size_t pixel = i / static_cast<size_t>(truth.channels);
-      if (sample.mask.empty() || sample.mask[pixel]) error.values[i] = std::abs(truth.values[i] - prediction.values[i]);
-    }
-    const int row = static_cast<int>(m);
-    put(1, row, truth, 1.0f);
-    put(2, row, prediction, 1.0f);
-    put(3, row, error, 4.0f);
-  }
-  std::filesystem::create_directories(path.parent_path());
-  const std::string temporary = path.string() + ".partial.png";
-  auto out = OIIO::ImageOutput::create(temporary);
-  if (!out || !out->open(temporary, OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::UINT8)) ||
-      !out->write_image(OIIO::TypeDesc::UINT8, pixels.data()) || !out->close())
-    throw std::runtime_error("cannot write " + temporary);
-  std::filesystem::rename(temporary, path);
 }
 
 }  // namespace matlearn

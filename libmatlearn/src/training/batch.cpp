@@ -11,6 +11,13 @@ torch::Tensor to_chw(const Image& image) {
       .clone();
 }
 
+Image to_hwc(const torch::Tensor& chw) {
+  const torch::Tensor hwc = chw.permute({1, 2, 0}).contiguous().to(torch::kFloat32);
+  Image image(static_cast<int>(hwc.size(1)), static_cast<int>(hwc.size(0)), static_cast<int>(hwc.size(2)));
+  std::copy(hwc.data_ptr<float>(), hwc.data_ptr<float>() + hwc.numel(), image.values.begin());
+  return image;
+}
+
 torch::Tensor normalize_input(const torch::Tensor& rgb, InputNormalization normalization) {
   if (normalization == InputNormalization::none) return rgb;
   // torchvision's ImageNet statistics, with which every pretrained trunk was trained.

@@ -1,6 +1,6 @@
 #pragma once
 // Evaluation tables shaped like the paper's (one row per material or object, the eight metrics
-// per predicted map), written as markdown, CSV and JSON, and one PNG panel per material.
+// per predicted map), written as markdown, CSV and JSON.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -29,10 +29,5 @@ std::vector<ReportTable> report_tables(const std::vector<ScoredMap>& scores);
 // metrics.md and goes into the JSON as "about".
 void write_report(const std::filesystem::path& folder, const std::vector<ReportTable>& tables,
                   const std::string& preamble);
-
-// The sample's input beside, per map, truth | prediction | absolute error on the object (x4,
-// clamped, black off it), each tile the map's size, as an 8-bit PNG. Files are written whole or
-// not at all.
-void write_panel(const std::filesystem::path& path, const SamplePredictions& sample);
 
 }  // namespace matlearn

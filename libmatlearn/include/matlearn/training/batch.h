@@ -26,7 +26,8 @@ Batch make_batch(const std::vector<MaterialSample>& samples, const OutputLayout&
 // RGB in [0, 1], N x 3 x H x W, normalised with ImageNet's mean and standard deviation or not.
 torch::Tensor normalize_input(const torch::Tensor& rgb, InputNormalization normalization);
 
-// An HWC image as a C x H x W tensor (a copy).
+// An HWC image as a C x H x W tensor (a copy), and back.
 torch::Tensor to_chw(const Image& image);
+Image to_hwc(const torch::Tensor& chw);
 
 }  // namespace matlearn

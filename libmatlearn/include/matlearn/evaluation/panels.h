@@ -1,0 +1,22 @@
+#pragma once
+// Pictures of predictions as 8-bit PNG files, one tile per map at the map's size, one-channel maps
+// in grey. Files are written whole or not at all.
+#include <filesystem>
+
+#include "matlearn/evaluation/evaluator.h"
+#include "matlearn/evaluation/inference.h"
+
+namespace matlearn {
+
+// The sample's input beside, per map, truth | prediction | absolute error on the object (x4,
+// clamped, black off it): one row per map.
+void write_panel(const std::filesystem::path& path, const SamplePredictions& sample);
+
+// The input, then each predicted map, in one row; map pixels off the mask are black.
+void write_prediction_strip(const std::filesystem::path& path, const Image& input, const Mask& mask,
+                            const PredictedMaps& predicted);
+
+// One map as a PNG (RGB, or grey for one channel), black off the mask.
+void write_map_png(const std::filesystem::path& path, const Image& map, const Mask& mask);
+
+}  // namespace matlearn

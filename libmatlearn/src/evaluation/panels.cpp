@@ -1,0 +1,84 @@
+#include "matlearn/evaluation/panels.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include <OpenImageIO/imageio.h>
+
+namespace matlearn {
+namespace {
+
+// An 8-bit RGB canvas of tiles.
+class Canvas {
+ public:
+  Canvas(int tiles_x, int tiles_y, int tile_width, int tile_height)
+      : tile_width_(tile_width), tile_height_(tile_height), width_(tiles_x * tile_width),
+        pixels_(static_cast<size_t>(width_) * static_cast<size_t>(tiles_y * tile_height) * 3, 0) {}
+
+  // `image` at tile (x, y), values times `scale`, pixels off `mask` (when given) black.
+  void put(int tile_x, int tile_y, const Image& image, float scale, const Mask& mask = {}) {
+    for (int y = 0; y < tile_height_; ++y)
+      for (int x = 0; x < tile_width_; ++x) {
+        const size_t pixel = static_cast<size_t>(y) * static_cast<size_t>(tile_width_) + static_cast<size_t>(x);
+        const bool shown = mask.empty() || mask[pixel];
+        for (int c = 0; c < 3; ++c) {
+          const float v = shown ? image.at(x, y, std::min(c, image.channels - 1)) * scale : 0.0f;
+          pixels_[(static_cast<size_t>(tile_y * tile_height_ + y) * static_cast<size_t>(width_) +
+                   static_cast<size_t>(tile_x * tile_width_ + x)) * 3 + static_cast<size_t>(c)] =
+              static_cast<uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+        }
+      }
+  }
+
+  void write(const std::filesystem::path& path) const {
+    if (!path.parent_path().empty()) std::filesystem::create_directories(path.parent_path());
+    const std::string temporary = path.string() + ".partial.png";
+    const int height = static_cast<int>(pixels_.size() / 3 / static_cast<size_t>(width_));
+    auto out = OIIO::ImageOutput::create(temporary);
+    if (!out || !out->open(temporary, OIIO::ImageSpec(width_, height, 3, OIIO::TypeDesc::UINT8)) ||
+        !out->write_image(OIIO::TypeDesc::UINT8, pixels_.data()) || !out->close())
+      throw std::runtime_error("cannot write " + temporary);
+    std::filesystem::rename(temporary, path);
+  }
+
+ private:
+  int tile_width_, tile_height_, width_;
+  std::vector<uint8_t> pixels_;
+};
+
+}  // namespace
+
+void write_panel(const std::filesystem::path& path, const SamplePredictions& sample) {
+  const int rows = std::max<int>(1, static_cast<int>(sample.maps.size()));
+  Canvas canvas(4, rows, sample.input.width, sample.input.height);
+  canvas.put(0, 0, sample.input, 1.0f);
+  for (size_t m = 0; m < sample.maps.size(); ++m) {
+    const Image& truth = sample.truths[m];
+    const Image& prediction = sample.predictions[m];
+    Image error(truth.width, truth.height, truth.channels);
+    for (size_t i = 0; i < error.values.size(); ++i) error.values[i] = std::abs(truth.values[i] - prediction.values[i]);
+    const int row = static_cast<int>(m);
+    canvas.put(1, row, truth, 1.0f);
+    canvas.put(2, row, prediction, 1.0f);
+    canvas.put(3, row, error, 4.0f, sample.mask);
+  }
+  canvas.write(path);
+}
+
+void write_prediction_strip(const std::filesystem::path& path, const Image& input, const Mask& mask,
+                            const PredictedMaps& predicted) {
+  Canvas canvas(1 + static_cast<int>(predicted.maps.size()), 1, input.width, input.height);
+  canvas.put(0, 0, input, 1.0f);
+  for (size_t m = 0; m < predicted.maps.size(); ++m) canvas.put(1 + static_cast<int>(m), 0, predicted.maps[m], 1.0f, mask);
+  canvas.write(path);
+}
+
+void write_map_png(const std::filesystem::path& path, const Image& map, const Mask& mask) {
+  Canvas canvas(1, 1, map.width, map.height);
+  canvas.put(0, 0, map, 1.0f, mask);
+  canvas.write(path);
+}
+
+}  // namespace matlearn
