@@ -88,6 +88,16 @@ class ResNet50U(nn.Module):
         return self.head(x)
 
 
+def stage_outputs(features, x):
+    """The outputs of torchvision's features.1, 3, 5 and 7 (the stages between the downsamplings)."""
+    stages = []
+    for i, layer in enumerate(features):
+        x = layer(x)
+        if i % 2 == 1:
+            stages.append(x)
+    return stages
+
+
 class SwinStages(nn.Module):
     def __init__(self):
         super().__init__()
@@ -95,11 +105,7 @@ class SwinStages(nn.Module):
         self.features, self.norm = s.features, s.norm
 
     def forward(self, x):
-        stages = []
-        for i, layer in enumerate(self.features):
-            x = layer(x)
-            if i % 2 == 1:
-                stages.append(x)
+        stages = stage_outputs(self.features, x)
         stages[3] = self.norm(stages[3])
         return [t.permute(0, 3, 1, 2) for t in stages]
 
@@ -110,12 +116,7 @@ class ConvNeXtStages(nn.Module):
         self.features = torchvision.models.convnext_tiny().features
 
     def forward(self, x):
-        stages = []
-        for i, layer in enumerate(self.features):
-            x = layer(x)
-            if i % 2 == 1:
-                stages.append(x)
-        return stages
+        return stage_outputs(self.features, x)
 
 
 class LastStageU(nn.Module):
