@@ -10,13 +10,14 @@ UpConvImpl::UpConvImpl(int64_t in_channels, int64_t out_channels) {
   bn_ = register_module("bn", nn::BatchNorm2d(out_channels));
 }
 
-torch::Tensor UpConvImpl::forward(const torch::Tensor& x) { return torch::relu(bn_->forward(up_->forward(x))); }
+// In-place ReLU: BatchNorm's backward does not need its output.
+torch::Tensor UpConvImpl::forward(const torch::Tensor& x) { return bn_->forward(up_->forward(x)).relu_(); }
 
 ConvBnReluImpl::ConvBnReluImpl(int64_t in_channels, int64_t out_channels) {
   conv_ = register_module("conv", nn::Conv2d(nn::Conv2dOptions(in_channels, out_channels, 3).padding(1).bias(false)));
   bn_ = register_module("bn", nn::BatchNorm2d(out_channels));
 }
 
-torch::Tensor ConvBnReluImpl::forward(const torch::Tensor& x) { return torch::relu(bn_->forward(conv_->forward(x))); }
+torch::Tensor ConvBnReluImpl::forward(const torch::Tensor& x) { return bn_->forward(conv_->forward(x)).relu_(); }
 
 }  // namespace matlearn

@@ -35,11 +35,14 @@ BottleneckImpl::BottleneckImpl(int64_t in_channels, int64_t width, int64_t strid
         "downsample", nn::Sequential(convolution(in_channels, out_channels, 1, stride), nn::BatchNorm2d(out_channels)));
 }
 
+// In-place ReLUs and sum, as torchvision's: fewer temporaries (autograd allows it, since neither
+// BatchNorm's nor the sum's backward needs the tensors overwritten).
 torch::Tensor BottleneckImpl::forward(const torch::Tensor& x) {
-  torch::Tensor y = torch::relu(bn1_->forward(conv1_->forward(x)));
-  y = torch::relu(bn2_->forward(conv2_->forward(y)));
+  torch::Tensor y = bn1_->forward(conv1_->forward(x)).relu_();
+  y = bn2_->forward(conv2_->forward(y)).relu_();
   y = bn3_->forward(conv3_->forward(y));
-  return torch::relu(y + (downsample_ ? downsample_->forward(x) : x));
+  y += downsample_ ? downsample_->forward(x) : x;
+  return y.relu_();
 }
 
 ResNet50EncoderImpl::ResNet50EncoderImpl() {
@@ -59,7 +62,7 @@ ResNet50EncoderImpl::ResNet50EncoderImpl() {
 
 ResNetFeatures ResNet50EncoderImpl::forward(const torch::Tensor& image) {
   ResNetFeatures f;
-  f.stem = torch::relu(bn1_->forward(conv1_->forward(image)));
+  f.stem = bn1_->forward(conv1_->forward(image)).relu_();
   f.layer1 = layer1_->forward(torch::max_pool2d(f.stem, 3, 2, 1));
   f.layer2 = layer2_->forward(f.layer1);
   f.layer3 = layer3_->forward(f.layer2);
