@@ -76,7 +76,7 @@ void render_variant(const matgeom::ObjectAsset& asset, const ExampleMaterial& m,
   settings.samples_per_pixel = size.samples;
   settings.transparent_background = true;
   settings.aovs = matrender::AovBaseColor | matrender::AovRoughness | matrender::AovMetallic | matrender::AovLabel |
-                  matrender::AovAlpha;
+                  matrender::AovNormalWorld | matrender::AovAlpha;
   for (int view = 0; view < size.views; ++view) {
     const matgeom::GridCamera placed = matgeom::grid_camera(grid, 0, view);
     matrender::Camera camera;
@@ -93,24 +93,27 @@ void render_variant(const matgeom::ObjectAsset& asset, const ExampleMaterial& m,
     std::filesystem::create_directories(folder / "albedo");
     std::filesystem::create_directories(folder / "ORM");
     std::filesystem::create_directories(folder / "label");
+    std::filesystem::create_directories(folder / "normal_obj");
     matrender::write_display_png((folder / "images" / stem).string(), w, h, frame.color.data(), frame.alpha.data());
     // The albedo display-encoded as the repository stores it, covered pixels only.
     std::vector<float> albedo(pixels * 3);
     for (size_t p = 0; p < pixels; ++p)
       for (int c = 0; c < 3; ++c) albedo[p * 3 + static_cast<size_t>(c)] = frame.base_color[p * 3 + static_cast<size_t>(c)] * frame.alpha[p];
     matrender::write_display_png((folder / "albedo" / stem).string(), w, h, albedo.data(), frame.alpha.data());
-    // ORM: R ambient occlusion (1: none is modelled), G roughness, B metallic, A 1 where covered.
-    // A full alpha, unlike the repository's coverage, keeps PNG's un-premultiplication from
-    // inflating edge values (its W6).
-    std::vector<float> orm(pixels * 4, 0.0f);
+    // ORM: R ambient occlusion (1: none is modelled), G roughness, B metallic; normal_obj:
+    // 0.5 n + 0.5 of the world-space shading normal. Alpha is 1 where covered, unlike the
+    // repository's coverage, so readers that un-premultiply do not inflate edge values (its W6).
+    std::vector<float> orm(pixels * 4, 0.0f), normal(pixels * 4, 0.0f);
     for (size_t p = 0; p < pixels; ++p) {
-      const bool covered = frame.alpha[p] > 0.0f;
-      orm[p * 4 + 0] = covered ? 1.0f : 0.0f;
-      orm[p * 4 + 1] = covered ? frame.roughness[p] : 0.0f;
-      orm[p * 4 + 2] = covered ? frame.metallic[p] : 0.0f;
-      orm[p * 4 + 3] = covered ? 1.0f : 0.0f;
+      if (frame.alpha[p] <= 0.0f) continue;
+      orm[p * 4 + 0] = 1.0f;
+      orm[p * 4 + 1] = frame.roughness[p];
+      orm[p * 4 + 2] = frame.metallic[p];
+      for (int c = 0; c < 3; ++c) normal[p * 4 + static_cast<size_t>(c)] = 0.5f * frame.normal_world[p * 3 + static_cast<size_t>(c)] + 0.5f;
+      orm[p * 4 + 3] = normal[p * 4 + 3] = 1.0f;
     }
     matrender::write_data_png((folder / "ORM" / stem).string(), w, h, 4, orm.data(), 255.0, 0.0, false);
+    matrender::write_data_png((folder / "normal_obj" / stem).string(), w, h, 4, normal.data(), 255.0, 0.0, false);
     std::vector<float> label(pixels);
     for (size_t p = 0; p < pixels; ++p) label[p] = static_cast<float>(frame.label[p]);
     matrender::write_data_png((folder / "label" / stem).string(), w, h, 1, label.data(), 1.0, 0.0, false);
@@ -122,8 +125,12 @@ void render_variant(const matgeom::ObjectAsset& asset, const ExampleMaterial& m,
 int render_example_dataset(const std::filesystem::path& root, const ExampleDatasetSize& size,
                            const std::function<void(int, int)>& progress) {
   const int total = static_cast<int>(kObjects.size() * kMaterials.size()) * size.views;
+  // The marker's first line names the layout; an older one (before normal_obj) is rendered again.
+  const std::string version = "matpredict example dataset 2";
   const std::filesystem::path complete = root / "COMPLETE";
-  if (std::filesystem::exists(complete)) return total;
+  std::string marker;
+  std::getline(std::ifstream(complete), marker);
+  if (marker == version) return total;
   int done = 0;
   for (size_t o = 0; o < kObjects.size(); ++o) {
     const matgeom::ObjectAsset asset = matgeom::make_builtin_object(kObjects[o]);
@@ -134,7 +141,7 @@ int render_example_dataset(const std::filesystem::path& root, const ExampleDatas
       if (progress) progress(done, total);
     }
   }
-  std::ofstream(complete) << "rendered by train_regressor: " << kObjects.size() << " objects x " << kMaterials.size()
+  std::ofstream(complete) << version << "\nrendered by train_regressor: " << kObjects.size() << " objects x " << kMaterials.size()
                           << " materials x " << size.views << " views\n";
   return total;
 }

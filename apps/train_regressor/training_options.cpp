@@ -30,10 +30,12 @@ const std::vector<Setting>& settings_table() {
       {"output_dir", "train_output", "folder for checkpoints/, log.csv and config.yaml"},
       {"task_mode", "pbr", "pbr (material maps), material (segmentation only) or both"},
       {"outputs", "base_color,roughness:3",
-       "predicted maps with channel counts, in order: base_color, roughness[:1|3], metallic[:1|3]"},
+       "predicted maps with channel counts, in order: base_color, roughness[:1|3], metallic[:1|3], normal "
+       "(normal reads the dataset's normal_obj maps)"},
       {"albedo_weight", "1", "loss weight of the base colour"},
       {"roughness_weight", "1", "loss weight of the roughness"},
       {"metallic_weight", "1", "loss weight of the metallic map"},
+      {"normal_weight", "1", "loss weight of the normal map"},
       {"material_num_classes", "8", "segmentation classes (the repository's 8 families, 0 = background)"},
       {"material_ce_weight", "1", "loss weight of the segmentation cross-entropy"},
       {"loss", "mse", "regression loss: mse (the paper's) or l1 (the repository's)"},
@@ -96,27 +98,29 @@ std::string network_name(const std::string& name) {
   return name;
 }
 
-// "base_color,roughness:3,metallic" with the weights of the *_weight keys.
+// "base_color,roughness:3,metallic" with the weights of the *_weight keys (the repository's
+// albedo_weight for the base colour).
 std::vector<matlearn::OutputGroup> output_groups(const std::map<std::string, std::string>& s) {
   std::vector<matlearn::OutputGroup> groups;
   std::istringstream list(s.at("outputs"));
   for (std::string entry; std::getline(list, entry, ',');) {
     const size_t colon = entry.find(':');
     const std::string name = entry.substr(0, colon);
-    int64_t channels = name == "base_color" ? 3 : 1;
+    matlearn::MapKind map;
+    try {
+      map = matlearn::map_kind_named(name);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(std::string("outputs: ") + e.what());
+    }
+    const bool colour = map == matlearn::MapKind::base_color || map == matlearn::MapKind::normal;
+    int64_t channels = colour ? 3 : 1;
     if (colon != std::string::npos) {
       const std::string count = entry.substr(colon + 1);
       if (count != "1" && count != "3") throw InputError("outputs: \"" + entry + "\": channels must be 1 or 3");
       channels = std::stoi(count);
     }
-    if (name == "base_color")
-      groups.push_back({matlearn::MapKind::base_color, channels, parse_value<double>(s, "albedo_weight")});
-    else if (name == "roughness")
-      groups.push_back({matlearn::MapKind::roughness, channels, parse_value<double>(s, "roughness_weight")});
-    else if (name == "metallic")
-      groups.push_back({matlearn::MapKind::metallic, channels, parse_value<double>(s, "metallic_weight")});
-    else
-      throw InputError("outputs: unknown map \"" + name + "\" (base_color, roughness, metallic)");
+    const std::string weight_key = map == matlearn::MapKind::base_color ? "albedo_weight" : name + "_weight";
+    groups.push_back({map, channels, parse_value<double>(s, weight_key)});
   }
   return groups;
 }

@@ -36,14 +36,32 @@ void write_png(const fs::path& path, int channels, Value value) {
 // The object: a disc of radius 5 px centred in the frame.
 bool inside_object(int x, int y) { return (x - 7.5) * (x - 7.5) + (y - 7.5) * (y - 7.5) < 25.0; }
 
+// The normal map's unit normal at column x: (sin t, 0, cos t) with t = 0.1 x radians.
+std::array<double, 3> normal_at(int x) { return {std::sin(0.1 * x), 0.0, std::cos(0.1 * x)}; }
+
+// Stored as 8-bit 0.5 n + 0.5.
+std::array<uint8_t, 3> encoded_normal(int x) {
+  std::array<uint8_t, 3> bytes{};
+  for (int c = 0; c < 3; ++c) bytes[static_cast<size_t>(c)] = static_cast<uint8_t>(std::lround(255.0 * (0.5 * normal_at(x)[static_cast<size_t>(c)] + 0.5)));
+  return bytes;
+}
+
+// The stored alpha: opaque on the object but for its centre pixel (8, 8), a quarter covered.
+uint8_t coverage(int x, int y) { return x == 8 && y == 8 ? 64 : inside_object(x, y) ? 255 : 0; }
+
 // A frame: RGBA image and albedo, ORM with roughness 0.2 (51) and metallic 0.8 (204) on the
-// object, label 7 (wood) on it; background 0 everywhere, as the generator writes it.
+// object, label 7 (wood) on it, and a normal map whose normal tilts with x; background 0
+// everywhere, as the generator writes it.
 void write_frame(const fs::path& variant, const std::string& stem, bool with_label, bool with_orm = true) {
   write_png(variant / "images" / (stem + ".png"), 4, [](int x, int y, int c) -> uint8_t {
-    return inside_object(x, y) ? (c == 3 ? 255 : static_cast<uint8_t>(40 * c + 60)) : 0;
+    return c == 3 ? coverage(x, y) : inside_object(x, y) ? static_cast<uint8_t>(40 * c + 60) : 0;
   });
   write_png(variant / "albedo" / (stem + ".png"), 4, [](int x, int y, int c) -> uint8_t {
-    return inside_object(x, y) ? (c == 3 ? 255 : 200) : 0;
+    return c == 3 ? coverage(x, y) : inside_object(x, y) ? 200 : 0;
+  });
+  write_png(variant / "normal_obj" / (stem + ".png"), 4, [](int x, int y, int c) -> uint8_t {
+    if (c == 3) return coverage(x, y);
+    return inside_object(x, y) ? encoded_normal(x)[c] : 0;
   });
   if (with_orm)
     write_png(variant / "ORM" / (stem + ".png"), 4, [](int x, int y, int c) -> uint8_t {
@@ -116,7 +134,8 @@ TEST_CASE("A sample decodes the maps the loader reads, at the model size", "[lea
   CHECK(s.material_id[corner] == 0);
   CHECK(s.mask[centre] == 1);
   CHECK(s.mask[corner] == 0);
-  // RGB without alpha; roughness from ORM's green, metallic from its blue.
+  // RGB as stored, whatever the alpha (the centre pixel is a quarter covered); roughness from
+  // ORM's green, metallic from its blue.
   CHECK(s.input.at(8, 8, 2) == Approx(140.0 / 255.0));
   CHECK(s.roughness.at(8, 8, 0) == Approx(51.0 / 255.0));
   CHECK(s.metallic.at(8, 8, 0) == Approx(204.0 / 255.0));
@@ -132,6 +151,42 @@ TEST_CASE("A sample decodes the maps the loader reads, at the model size", "[lea
   const MaterialSample linear = read_sample(root, SampleId::parse("chair_01/var000/000"), settings);
   CHECK(linear.albedo.at(8, 8, 0) == Approx(std::pow((200.0 / 255.0 + 0.055) / 1.055, 2.4)).epsilon(1e-5));
   CHECK_THROWS_WITH(read_sample(root, SampleId::parse("chair_01/var001/001"), settings), Catch::Contains("ORM"));
+  CHECK(linear.normal.values.empty());  // not asked for
+}
+
+TEST_CASE("A normal map is read on request and resized as unit vectors", "[learn]") {
+  const fs::path root = make_dataset();
+  SampleSettings settings;
+  settings.size = kSize;
+  settings.read_normal = true;
+  const MaterialSample same = read_sample(root, SampleId::parse("chair_01/var000/000"), settings);
+  REQUIRE(same.normal.channels == 3);
+  // At the stored size the map is the stored one (to the renormalisation of 8-bit values).
+  for (int c = 0; c < 3; ++c) CHECK(same.normal.at(6, 8, c) == Approx(encoded_normal(6)[static_cast<size_t>(c)] / 255.0).margin(4e-3));
+
+  // Halved, each output pixel averages normals of several columns. A plain average of encoded
+  // values is shorter than a unit normal; the reader's is unit length.
+  settings.size = 8;
+  const MaterialSample half = read_sample(root, SampleId::parse("chair_01/var000/000"), settings);
+  int object_pixels = 0;
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x) {
+      if (!half.mask[static_cast<size_t>(y * 8 + x)]) continue;
+      ++object_pixels;
+      double length2 = 0.0;
+      for (int c = 0; c < 3; ++c) length2 += std::pow(2.0 * half.normal.at(x, y, c) - 1.0, 2.0);
+      CHECK(std::sqrt(length2) == Approx(1.0).margin(1e-5));
+      // Its tilt lies within the tilts of the columns it covers (2x to 2x + 1, widened by the filter).
+      const double tilt = std::atan2(2.0 * half.normal.at(x, y, 0) - 1.0, 2.0 * half.normal.at(x, y, 2) - 1.0);
+      CHECK(tilt > 0.1 * (2 * x - 1) - 0.01);
+      CHECK(tilt < 0.1 * (2 * x + 2) + 0.01);
+    }
+  CHECK(object_pixels > 0);
+
+  // Asked for and missing: an error naming the file.
+  fs::remove(root / "table" / "var000" / "normal_obj" / "000.png");
+  CHECK_THROWS_WITH(read_sample(root, SampleId::parse("table/var000/000"), settings),
+                    Catch::Contains("normal_obj") && Catch::Contains("000.png"));
 }
 
 TEST_CASE("Shrunk targets keep their value along the silhouette (W16)", "[learn]") {

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "matlearn/dataset_index.h"
+#include "matlearn/training/batch.h"
 #include "matlearn/training/checkpoint.h"
 #include "matlearn/training/learning_rate_schedule.h"
 #include "matlearn/training/loss.h"
@@ -77,6 +78,35 @@ CATCH_TEST_CASE("Output layouts are checked", "[learn]") {
   layout.groups[0].channels = 3;
   layout.material_classes = 1;
   CATCH_CHECK_THROWS(validate(layout));
+}
+
+CATCH_TEST_CASE("Batches stack each output group's map in the layout's order", "[learn]") {
+  using training_dataset::encoded_normal;
+  using training_dataset::kAlbedo;
+  using training_dataset::kRoughness;
+  using training_dataset::sample_index;
+  OutputLayout layout = OutputLayout::paper();  // base colour 3 + roughness 3
+  layout.groups.push_back({MapKind::normal, 3, 1.0});
+  const fs::path root = training_dataset::four_image_dataset();
+  const std::vector<SampleId> ids = index_dataset(root);
+  const SampleSettings settings = sample_settings(layout, training_dataset::kSize, false);
+  CATCH_CHECK(settings.read_normal);
+  std::vector<MaterialSample> samples;
+  for (const SampleId& id : ids) samples.push_back(read_sample(root, id, settings));
+  const Batch batch = make_batch(samples, layout, InputNormalization::none);
+  CATCH_REQUIRE(batch.target.sizes() == torch::IntArrayRef({4, 9, 32, 32}));
+  for (size_t i = 0; i < ids.size(); ++i) {
+    const int k = sample_index(ids[i]);
+    const torch::Tensor centre = batch.target[static_cast<int64_t>(i)].select(2, 16).select(1, 16);
+    for (int c = 0; c < 3; ++c) {
+      CATCH_CHECK(centre[c].item<float>() == Catch::Detail::Approx(kAlbedo[k][c] / 255.0));
+      CATCH_CHECK(centre[3 + c].item<float>() == Catch::Detail::Approx(kRoughness[k] / 255.0));
+      CATCH_CHECK(centre[6 + c].item<float>() == Catch::Detail::Approx(encoded_normal(k, c) / 255.0).margin(4e-3));
+    }
+  }
+  // Samples read without their normal maps do not make a batch that needs them.
+  std::vector<MaterialSample> without = {read_sample(root, ids[0], sample_settings(OutputLayout::paper(), 32, false))};
+  CATCH_CHECK_THROWS_WITH(make_batch(without, layout, InputNormalization::none), Catch::Contains("normal"));
 }
 
 CATCH_TEST_CASE("Learning-rate schedules follow PyTorch's closed forms", "[learn]") {
@@ -177,14 +207,19 @@ CATCH_TEST_CASE("Checkpoints keep the design and reject other files", "[learn]")
   TrainingConfig c = quick_config("matpredict_checkpoint_test");
   c.epochs = 1;
   c.layout.groups.push_back({MapKind::metallic, 1, 0.25});
+  c.layout.groups.push_back({MapKind::normal, 3, 2.0});
+  c.linear_albedo = true;
   Trainer trainer(c);
   CATCH_REQUIRE(trainer.train());
   const fs::path last = c.output_dir / "checkpoints" / "last.pt";
   const CheckpointHeader header = read_checkpoint_header(last);
   CATCH_CHECK(header.network == "unet_no_skip");
   CATCH_CHECK(header.width_divisor == 4);
-  CATCH_CHECK(header.layout.output_channels() == 7);
+  CATCH_CHECK(header.layout.output_channels() == 10);
   CATCH_CHECK(header.layout.groups[2].weight == 0.25);
+  CATCH_CHECK(header.layout.groups[3].map == MapKind::normal);
+  CATCH_CHECK(header.layout.groups[3].weight == 2.0);
+  CATCH_CHECK(header.linear_albedo);
   CATCH_CHECK(header.epochs_done == 1);
   const auto model = load_checkpoint_model(last, header);
   CATCH_CHECK(torch::equal(model->named_parameters()["head.weight"], trainer.model().named_parameters()["head.weight"]));
@@ -195,5 +230,5 @@ CATCH_TEST_CASE("Checkpoints keep the design and reject other files", "[learn]")
   TrainingConfig other = quick_config("matpredict_checkpoint_other");
   other.epochs = 1;
   Trainer mismatched(other);
-  CATCH_CHECK_THROWS_WITH(mismatched.resume(last), Catch::Contains("7 outputs"));
+  CATCH_CHECK_THROWS_WITH(mismatched.resume(last), Catch::Contains("10 outputs"));
 }

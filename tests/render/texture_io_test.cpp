@@ -24,11 +24,14 @@ fs::path temp_dir() {
   return dir;
 }
 
+// Pixels written as given; a fourth channel is PNG's straight alpha, not divided out.
 template <typename T>
 void write_image(const fs::path& path, int w, int h, int channels, OIIO::TypeDesc type, const std::vector<T>& pixels) {
   auto out = OIIO::ImageOutput::create(path.string());
   REQUIRE(out);
-  REQUIRE(out->open(path.string(), OIIO::ImageSpec(w, h, channels, type)));
+  OIIO::ImageSpec spec(w, h, channels, type);
+  spec.attribute("oiio:UnassociatedAlpha", 1);
+  REQUIRE(out->open(path.string(), spec));
   REQUIRE(out->write_image(type, pixels.data()));
   out->close();
 }
@@ -57,6 +60,35 @@ TEST_CASE("8-bit PNG textures are filtered on encoded values, then decoded", "[r
   // Repeat wraps u = 1.25 to 0.25; alpha defaults to 1 for RGB images.
   CHECK(data->sample({1.25f, 0.25f}).x == Approx(64 / 255.0));
   CHECK(data->sample({0.25f, 0.25f}).w == 1.0f);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("RGBA textures give their stored colour whatever the alpha, as Cycles' straight alpha", "[render]") {
+  const fs::path dir = temp_dir();
+  const std::vector<uint8_t> pixels = {200, 100, 50, 64};  // one texel, a quarter opaque
+  write_image(dir / "a.png", 1, 1, 4, OIIO::TypeDesc::UINT8, pixels);
+  const glm::vec4 texel = Texture::load((dir / "a.png").string(), ColorSpace::NonColor)->sample({0.5f, 0.5f});
+  CHECK(texel.x == Approx(200 / 255.0));
+  CHECK(texel.z == Approx(50 / 255.0));
+  CHECK(texel.w == Approx(64 / 255.0));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("Display PNGs store straight alpha: a partly covered pixel keeps the surface's colour", "[render]") {
+  const fs::path dir = temp_dir();
+  // A surface of linear 0.5 covering a quarter of the pixel, premultiplied as rendered.
+  const std::vector<float> premultiplied = {0.125f, 0.125f, 0.0f}, coverage = {0.25f};
+  write_display_png((dir / "d.png").string(), 1, 1, premultiplied.data(), coverage.data());
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto in = OIIO::ImageInput::open((dir / "d.png").string(), &config);
+  REQUIRE(in);
+  std::vector<uint8_t> stored(4);
+  REQUIRE(in->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, stored.data()));
+  // sRGB OETF of 0.5 (IEC 61966-2-1): 1.055 * 0.5^(1/2.4) - 0.055 = 0.7354, 187.5 -> 188.
+  CHECK(int(stored[0]) == 188);
+  CHECK(int(stored[2]) == 0);
+  CHECK(int(stored[3]) == 64);
   fs::remove_all(dir);
 }
 

@@ -16,6 +16,7 @@ namespace matlearn {
 struct SampleSettings {
   int size = 224;              // maps are resized to size x size
   bool linear_albedo = false;  // sRGB-decode the stored (display-encoded) albedo
+  bool read_normal = false;    // read normal_obj/<stem>.png as well; then it must exist
 };
 
 struct MaterialSample {
@@ -23,11 +24,17 @@ struct MaterialSample {
   Image albedo;                      // size x size x 3
   Image roughness;                   // ORM green; size x size x 1
   Image metallic;                    // ORM blue; size x size x 1
+  Image normal;                      // normal_obj as stored, 0.5 n + 0.5; size x size x 3; empty
+                                     // unless SampleSettings::read_normal
   std::vector<int32_t> material_id;  // label ids, nearest-resized (0 = background)
   Mask mask;                         // material_id > 0; every pixel when there is no label file
   bool has_label = false;
 };
 
+// Colour channels are read as stored, whatever the alpha (PIL's convert("RGB"); OpenImageIO
+// would premultiply PNG colour by alpha). A normal map is resized as unit vectors: decoded,
+// resized with the object mask as weights, renormalised and encoded again, so a resized normal
+// still has length 1 (0.5 where no object pixel reaches).
 // Throws std::runtime_error naming the file when a map cannot be read.
 MaterialSample read_sample(const std::filesystem::path& root, const SampleId& id, const SampleSettings& settings);
 

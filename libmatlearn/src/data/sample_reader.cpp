@@ -17,9 +17,12 @@ struct Decoded {
   std::vector<float> values;
 };
 
-// Every channel of an image file as floats; 8-bit values map to [0, 1].
+// Every channel of an image file as floats, colour as stored (not premultiplied by alpha);
+// 8-bit values map to [0, 1].
 Decoded decode(const fs::path& path) {
-  auto in = OIIO::ImageInput::open(path.string());
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto in = OIIO::ImageInput::open(path.string(), &config);
   if (!in) throw std::runtime_error("cannot read " + path.string() + ": " + OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();
   Decoded d{spec.width, spec.height, spec.nchannels, {}};
@@ -41,6 +44,20 @@ Image channels_of(const Decoded& d, int first, int channels) {
 
 float srgb_to_linear(float v) {
   return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+}
+
+// 0.5 n + 0.5 values resized as unit vectors (see read_sample's comment).
+Image resize_normal_map(const Image& encoded, const std::vector<float>& weights, int size) {
+  Image decoded = encoded;
+  for (float& v : decoded.values) v = 2.0f * v - 1.0f;
+  Image resized = resize_bilinear_weighted(decoded, weights, size, size);
+  for (size_t p = 0; p < resized.pixel_count(); ++p) {
+    float* n = &resized.values[p * 3];
+    const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    const float scale = length > 0.0f ? 1.0f / length : 0.0f;
+    for (int c = 0; c < 3; ++c) n[c] = 0.5f * n[c] * scale + 0.5f;
+  }
+  return resized;
 }
 
 void check_same_size(const Decoded& d, const Decoded& reference, const fs::path& path) {
@@ -85,15 +102,18 @@ MaterialSample read_sample(const fs::path& root, const SampleId& id, const Sampl
   sample.albedo = resize_bilinear_weighted(albedo_rgb, weights, s, s);
   sample.roughness = resize_bilinear_weighted(channels_of(orm, 1, 1), weights, s, s);
   sample.metallic = resize_bilinear_weighted(channels_of(orm, 2, 1), weights, s, s);
+  if (settings.read_normal) {
+    const fs::path normal_path = dir / "normal_obj" / file;
+    const Decoded normal = decode(normal_path);
+    check_same_size(normal, image, normal_path);
+    if (normal.channels < 3) throw std::runtime_error(normal_path.string() + " has fewer than 3 channels");
+    sample.normal = resize_normal_map(channels_of(normal, 0, 3), weights, s);
+  }
   sample.material_id = resize_nearest(ids, image.width, image.height, s, s);
   sample.mask.resize(sample.material_id.size());
   for (size_t p = 0; p < sample.mask.size(); ++p) sample.mask[p] = sample.material_id[p] > 0;
   return sample;
 }
-
-}  // namespace matlearn
-
-namespace matlearn {
 
 InputImage read_input_image(const fs::path& image_path, const fs::path& mask_path, int size) {
   if (size < 1) throw std::invalid_argument("read_input_image: size must be at least 1");

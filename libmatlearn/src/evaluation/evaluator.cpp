@@ -9,18 +9,6 @@
 namespace matlearn {
 namespace {
 
-// The truth of an output group, with a grey map repeated when the group has 3 channels.
-Image truth_of(const MaterialSample& s, const OutputGroup& group) {
-  const Image& map = group.map == MapKind::base_color ? s.albedo
-                     : group.map == MapKind::roughness ? s.roughness
-                                                       : s.metallic;
-  if (map.channels == group.channels) return map;
-  Image repeated(map.width, map.height, static_cast<int>(group.channels));
-  for (size_t p = 0; p < map.pixel_count(); ++p)
-    for (int c = 0; c < repeated.channels; ++c) repeated.values[p * static_cast<size_t>(repeated.channels) + static_cast<size_t>(c)] = map.values[p];
-  return repeated;
-}
-
 int count(const Mask& mask) {
   int n = 0;
   for (uint8_t m : mask) n += m != 0;
@@ -35,7 +23,7 @@ EvaluationResult evaluate_samples(RegressorImpl& model, const CheckpointHeader& 
   const int threads = settings.threads > 0 ? settings.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   torch::set_num_threads(threads);
   LoaderSettings loader_settings;
-  loader_settings.sample.size = header.image_size;
+  loader_settings.sample = sample_settings(header.layout, header.image_size, header.linear_albedo);
   loader_settings.batch_size = settings.batch_size;
   loader_settings.shuffle = false;
   loader_settings.threads = threads;
@@ -57,7 +45,7 @@ EvaluationResult evaluate_samples(RegressorImpl& model, const CheckpointHeader& 
       SamplePredictions predictions{id, s.input, s.mask, {}, {}, {}};
       for (size_t g = 0; g < layout.groups.size(); ++g) {
         predictions.maps.push_back(map_name(layout.groups[g].map));
-        predictions.truths.push_back(truth_of(s, layout.groups[g]));
+        predictions.truths.push_back(target_map(s, layout.groups[g]));
         predictions.predictions.push_back(to_hwc(maps[static_cast<int64_t>(i)].narrow(0, layout.first_channel(g), layout.groups[g].channels)));
       }
       // The whole object, then each family present in the label.

@@ -28,15 +28,37 @@ torch::Tensor normalize_input(const torch::Tensor& rgb, InputNormalization norma
 
 namespace {
 
-torch::Tensor target_of(const MaterialSample& sample, const OutputGroup& group) {
-  const Image& map = group.map == MapKind::base_color ? sample.albedo
-                     : group.map == MapKind::roughness ? sample.roughness
-                                                       : sample.metallic;
-  const torch::Tensor t = to_chw(map);
-  return t.size(0) == group.channels ? t : t.expand({group.channels, t.size(1), t.size(2)});
+const Image& stored_map(const MaterialSample& sample, MapKind map) {
+  switch (map) {
+    case MapKind::base_color: return sample.albedo;
+    case MapKind::roughness: return sample.roughness;
+    case MapKind::metallic: return sample.metallic;
+    case MapKind::normal: return sample.normal;
+  }
+  throw std::logic_error("unknown map kind");
 }
 
 }  // namespace
+
+SampleSettings sample_settings(const OutputLayout& layout, int image_size, bool linear_albedo) {
+  SampleSettings settings;
+  settings.size = image_size;
+  settings.linear_albedo = linear_albedo;
+  settings.read_normal = layout.predicts(MapKind::normal);
+  return settings;
+}
+
+Image target_map(const MaterialSample& sample, const OutputGroup& group) {
+  const Image& map = stored_map(sample, group.map);
+  if (map.channels == group.channels) return map;
+  if (map.channels != 1)
+    throw std::invalid_argument("the sample's " + map_name(group.map) + " map has " + std::to_string(map.channels) +
+                                " channels, not " + std::to_string(group.channels));
+  Image repeated(map.width, map.height, static_cast<int>(group.channels));
+  for (size_t p = 0; p < map.pixel_count(); ++p)
+    for (int c = 0; c < repeated.channels; ++c) repeated.values[p * static_cast<size_t>(repeated.channels) + static_cast<size_t>(c)] = map.values[p];
+  return repeated;
+}
 
 Batch make_batch(const std::vector<MaterialSample>& samples, const OutputLayout& layout,
                  InputNormalization normalization) {
@@ -45,7 +67,7 @@ Batch make_batch(const std::vector<MaterialSample>& samples, const OutputLayout&
   for (const MaterialSample& s : samples) {
     inputs.push_back(to_chw(s.input));
     std::vector<torch::Tensor> maps;
-    for (const OutputGroup& group : layout.groups) maps.push_back(target_of(s, group));
+    for (const OutputGroup& group : layout.groups) maps.push_back(to_chw(target_map(s, group)));
     targets.push_back(maps.empty() ? torch::empty({0, s.input.height, s.input.width}) : torch::cat(maps, 0));
     const int64_t h = s.input.height, w = s.input.width;
     masks.push_back(torch::tensor(std::vector<uint8_t>(s.mask.begin(), s.mask.end())).view({1, h, w}).to(torch::kFloat32));

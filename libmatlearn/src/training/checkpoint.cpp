@@ -12,12 +12,6 @@ using nlohmann::json;
 // Marks the file as ours and its layout version.
 constexpr const char* kFormat = "matpredict-checkpoint-1";
 
-MapKind map_kind_named(const std::string& name) {
-  for (MapKind kind : {MapKind::base_color, MapKind::roughness, MapKind::metallic})
-    if (map_name(kind) == name) return kind;
-  throw std::runtime_error("unknown output map \"" + name + "\"");
-}
-
 json header_json(const CheckpointHeader& h) {
   json groups = json::array();
   for (const OutputGroup& g : h.layout.groups)
@@ -29,6 +23,7 @@ json header_json(const CheckpointHeader& h) {
           {"material_classes", h.layout.material_classes},
           {"material_weight", h.layout.material_weight},
           {"image_size", h.image_size},
+          {"linear_albedo", h.linear_albedo},
           {"epochs_done", h.epochs_done},
           {"schedule",
            {{"epochs", h.schedule.epochs},
@@ -51,6 +46,7 @@ CheckpointHeader header_from_json(const json& j) {
   h.layout.material_classes = j.at("material_classes").get<int64_t>();
   h.layout.material_weight = j.at("material_weight").get<double>();
   h.image_size = j.at("image_size").get<int>();
+  h.linear_albedo = j.at("linear_albedo").get<bool>();
   h.epochs_done = j.at("epochs_done").get<int>();
   const json& s = j.at("schedule");
   h.schedule.epochs = s.at("epochs").get<int>();

@@ -22,13 +22,26 @@ OutputLayout OutputLayout::paper() {
   return layout;
 }
 
+bool OutputLayout::predicts(MapKind map) const {
+  for (const OutputGroup& g : groups)
+    if (g.map == map) return true;
+  return false;
+}
+
 std::string map_name(MapKind map) {
   switch (map) {
     case MapKind::base_color: return "base_color";
     case MapKind::roughness: return "roughness";
     case MapKind::metallic: return "metallic";
+    case MapKind::normal: return "normal";
   }
   throw std::logic_error("unknown map kind");
+}
+
+MapKind map_kind_named(const std::string& name) {
+  for (MapKind kind : {MapKind::base_color, MapKind::roughness, MapKind::metallic, MapKind::normal})
+    if (map_name(kind) == name) return kind;
+  throw std::invalid_argument("unknown map \"" + name + "\" (base_color, roughness, metallic, normal)");
 }
 
 void validate(const OutputLayout& layout) {
@@ -37,9 +50,10 @@ void validate(const OutputLayout& layout) {
     const std::string name = map_name(group.map);
     for (size_t h = 0; h < g; ++h)
       if (layout.groups[h].map == group.map) throw std::invalid_argument("output map " + name + " is listed twice");
-    if (group.map == MapKind::base_color ? group.channels != 3 : group.channels != 1 && group.channels != 3)
+    const bool colour = group.map == MapKind::base_color || group.map == MapKind::normal;
+    if (colour ? group.channels != 3 : group.channels != 1 && group.channels != 3)
       throw std::invalid_argument("output map " + name + " cannot have " + std::to_string(group.channels) +
-                                  " channels (base_color 3, the others 1 or 3)");
+                                  " channels (base_color and normal 3, roughness and metallic 1 or 3)");
     if (!(group.weight >= 0.0)) throw std::invalid_argument("output map " + name + " has a negative loss weight");
   }
   if (layout.material_classes == 1 || layout.material_classes < 0)

@@ -33,8 +33,7 @@ int thread_count(int threads) {
 
 LoaderSettings loader_settings(const TrainingConfig& c, bool shuffle) {
   LoaderSettings s;
-  s.sample.size = c.image_size;
-  s.sample.linear_albedo = c.linear_albedo;
+  s.sample = sample_settings(c.layout, c.image_size, c.linear_albedo);
   s.batch_size = c.batch_size;
   s.shuffle = shuffle;
   s.seed = c.seed;
@@ -196,6 +195,7 @@ bool Trainer::train(const TrainingCallbacks& callbacks) {
     header.width_divisor = config_.width_divisor;
     header.layout = config_.layout;
     header.image_size = config_.image_size;
+    header.linear_albedo = config_.linear_albedo;
     header.epochs_done = epochs_done_;
     header.schedule = schedule_;
     header.config_text = config_.config_text;

@@ -13,12 +13,13 @@ void write_exr(const std::string& path, int width, int height,
                const std::vector<std::string>& channels, const float* data);
 
 // 8-bit PNG from linear RGB(A): exposure in stops, then the sRGB OETF ("Standard" view), clipped.
-// `alpha` may be null. Colour is premultiplied by alpha in the input, as rendered.
+// `alpha` may be null. Colour is premultiplied by alpha in the input, as rendered, and written
+// un-premultiplied (PNG's straight alpha).
 void write_display_png(const std::string& path, int width, int height, const float* rgb,
                        const float* alpha, double exposure_stops = 0.0);
 
 // 8-bit or 16-bit PNG of raw values (no transfer curve), `channels` interleaved, each value
-// mapped by v * scale + offset, rounded and clamped.
+// mapped by v * scale + offset, rounded and clamped. A fourth channel is not treated as alpha.
 void write_data_png(const std::string& path, int width, int height, int channels, const float* data,
                     double scale, double offset, bool sixteen_bit);
 

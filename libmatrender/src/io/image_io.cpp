@@ -66,13 +66,18 @@ void write_display_png(const std::string& path, int width, int height, const flo
   const double gain = std::exp2(exposure_stops);
   std::vector<uint8_t> pixels(static_cast<size_t>(width) * height * channels);
   for (size_t i = 0; i < static_cast<size_t>(width) * height; ++i) {
+    // PNG stores straight alpha: un-premultiply in linear space, then encode, so partly covered
+    // pixels keep the surface's colour instead of a darkened or haloed one.
+    const float coverage = alpha ? alpha[i] : 1.0f;
+    const double unpremultiply = coverage > 0.0f ? gain / coverage : gain;
     for (int c = 0; c < 3; ++c) {
-      const float linear = static_cast<float>(rgb[3 * i + c] * gain);
+      const float linear = static_cast<float>(rgb[3 * i + c] * unpremultiply);
       pixels[i * channels + c] = static_cast<uint8_t>(quantize(linear_to_srgb(std::clamp(linear, 0.0f, 1.0f)), 255.0));
     }
     if (alpha) pixels[i * channels + 3] = static_cast<uint8_t>(quantize(alpha[i], 255.0));
   }
   OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::UINT8);
+  spec.attribute("oiio:UnassociatedAlpha", 1);  // already straight: OpenImageIO must not divide again
   write_image_atomically(path, spec, OIIO::TypeDesc::UINT8, pixels.data());
 }
 
@@ -83,6 +88,7 @@ void write_data_png(const std::string& path, int width, int height, int channels
   const double max_value = sixteen_bit ? 65535.0 : 255.0;
   for (size_t i = 0; i < n; ++i) pixels[i] = quantize((data[i] * scale + offset) / max_value, max_value);
   OIIO::ImageSpec spec(width, height, channels, sixteen_bit ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
+  spec.attribute("oiio:UnassociatedAlpha", 1);  // a fourth channel is data: written verbatim
   if (sixteen_bit) {
     write_image_atomically(path, spec, OIIO::TypeDesc::UINT16, pixels.data());
   } else {

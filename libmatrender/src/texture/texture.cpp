@@ -71,7 +71,10 @@ std::shared_ptr<const Texture> Texture::from_pixels8(int width, int height, int 
 }
 
 std::shared_ptr<const Texture> Texture::load(const std::string& path, ColorSpace space, Wrap wrap) {
-  auto input = OIIO::ImageInput::open(path);
+  // Straight colour as stored (Cycles' default alpha mode); OpenImageIO would premultiply.
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto input = OIIO::ImageInput::open(path, &config);
   if (!input) throw std::runtime_error(path + ": cannot read image: " + OIIO::geterror());
   const OIIO::ImageSpec& spec = input->spec();
   const int channels = std::min(spec.nchannels, 4);

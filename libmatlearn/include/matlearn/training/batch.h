@@ -20,6 +20,13 @@ struct Batch {
 // The label of pixels that carry none (cross-entropy skips them), torch's default ignore index.
 constexpr int64_t kIgnoredLabel = -100;
 
+// How to read samples for a network of this layout: maps at image_size, the albedo linear or
+// as stored, and the normal map when the layout predicts one.
+SampleSettings sample_settings(const OutputLayout& layout, int image_size, bool linear_albedo);
+
+// The sample's map for the group, a grey map repeated to the group's channel count.
+Image target_map(const MaterialSample& sample, const OutputGroup& group);
+
 Batch make_batch(const std::vector<MaterialSample>& samples, const OutputLayout& layout,
                  InputNormalization normalization);
 

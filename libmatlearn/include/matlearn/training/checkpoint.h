@@ -21,6 +21,7 @@ struct CheckpointHeader {
   int64_t width_divisor = 1;
   OutputLayout layout;
   int image_size = 224;
+  bool linear_albedo = false;  // the albedo target was decoded to linear values
   int epochs_done = 0;
   ScheduleState schedule;
   double best_validation_loss = 0.0;  // meaningful when has_best_validation

@@ -2,7 +2,8 @@
 // Which maps a regressor predicts, in which channels, and how much each weighs in the loss (the
 // paper's extensibility section: T = [B | R | M | N], L = sum_c w_c ||T_hat_c - T_c||^2). The
 // paper's default is base colour (3) + roughness (3, the grey map repeated, as it stacks RGB
-// maps) = 6 channels; the segmentation head of the repository's second task adds one channel per
+// maps) = 6 channels. The normal (3) is the dataset's normal_obj map as stored, 0.5 n + 0.5, so
+// that it shares the sigmoid output and the loss of the other maps. The segmentation head of the repository's second task adds one channel per
 // material class after the maps.
 #include <cstdint>
 #include <string>
@@ -10,11 +11,11 @@
 
 namespace matlearn {
 
-enum class MapKind { base_color, roughness, metallic };
+enum class MapKind { base_color, roughness, metallic, normal };
 
 struct OutputGroup {
   MapKind map;
-  int64_t channels;  // 3 for base colour; 1 or 3 for roughness and metallic
+  int64_t channels;  // 3 for base colour and normal; 1 or 3 for roughness and metallic
   double weight = 1.0;
 };
 
@@ -29,11 +30,14 @@ struct OutputLayout {
   int64_t first_channel(size_t group) const;
   // Base colour 3 + roughness 3, both weight 1.
   static OutputLayout paper();
+  bool predicts(MapKind map) const;
 };
 
-std::string map_name(MapKind map);  // "base_color", "roughness", "metallic"
-// Throws std::invalid_argument naming the bad entry: a map twice, base colour not 3 channels,
-// another map not 1 or 3, a negative weight, 1 material class, no output at all.
+std::string map_name(MapKind map);  // "base_color", "roughness", "metallic", "normal"
+// The kind of a map_name; throws std::invalid_argument naming it when there is none.
+MapKind map_kind_named(const std::string& name);
+// Throws std::invalid_argument naming the bad entry: a map twice, base colour or normal not 3
+// channels, roughness or metallic not 1 or 3, a negative weight, 1 material class, no output at all.
 void validate(const OutputLayout& layout);
 
 }  // namespace matlearn
