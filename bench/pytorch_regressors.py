@@ -1,7 +1,7 @@
 """The six regressors in PyTorch 1.13 (Debian's python3-torch and python3-torchvision), built the
 way libmatlearn builds them, timed the way bench/learn_bench.cpp times ours.
 
-Usage: pytorch_regressors.py NETWORK THREADS STEPS SIZE
+Usage: pytorch_regressors.py NETWORK THREADS WARM_UP STEPS SIZE
 Prints one JSON line: network, parameters, step_s (median training step, batch 8, Adam, masked
 MSE on sigmoid maps per map group), images_per_s (eval-mode forward of batch 8), peak_mib (peak resident size).
 """
@@ -198,7 +198,7 @@ NETWORKS = {
 
 
 def main():
-    name, threads, steps, size = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4])
+    name, threads, warm_up, steps, size = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4]), int(sys.argv[5])
     torch.set_num_threads(threads)
     torch.manual_seed(0)
     model = NETWORKS[name]()
@@ -208,7 +208,7 @@ def main():
     mask = torch.ones(BATCH, 1, size, size)
     model.train()
     times = []
-    for step in range(steps + 1):  # the first step warms up
+    for step in range(warm_up + steps):
         start = time.perf_counter()
         optimizer.zero_grad()
         maps = torch.sigmoid(model(image))
@@ -216,15 +216,15 @@ def main():
         loss = sum(((maps[:, a:a + 3] - target[:, a:a + 3]) ** 2 * mask).sum() / (mask.sum() * 3) for a in (0, 3))
         loss.backward()
         optimizer.step()
-        if step:
+        if step >= warm_up:
             times.append(time.perf_counter() - start)
     model.eval()
     forward = []
     with torch.no_grad():
-        for step in range(steps + 1):
+        for step in range(warm_up + steps):
             start = time.perf_counter()
             model(image)
-            if step:
+            if step >= warm_up:
                 forward.append(time.perf_counter() - start)
     print(json.dumps({"network": name, "parameters": sum(p.numel() for p in model.parameters()),
                       "step_s": statistics.median(times), "images_per_s": BATCH / statistics.median(forward),

@@ -5,6 +5,7 @@
 #include "matlearn/sample_loader.h"
 #include "matlearn/training/batch.h"
 #include "matlearn/training/loss.h"
+#include "matlearn/training/tensor_memory_cache.h"
 
 namespace matlearn {
 namespace {
@@ -21,6 +22,7 @@ EvaluationResult evaluate_samples(RegressorImpl& model, const CheckpointHeader& 
                                   const std::vector<SampleId>& samples, const EvaluationSettings& settings,
                                   const std::function<void(size_t, size_t)>& progress) {
   const int threads = settings.threads > 0 ? settings.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  use_tensor_memory_cache();
   torch::set_num_threads(threads);
   LoaderSettings loader_settings;
   loader_settings.sample = sample_settings(header.layout, header.image_size, header.linear_albedo);

@@ -10,6 +10,7 @@
 #include "matlearn/sample_loader.h"
 #include "matlearn/training/batch.h"
 #include "matlearn/training/checkpoint.h"
+#include "matlearn/training/tensor_memory_cache.h"
 
 namespace matlearn {
 namespace {
@@ -84,6 +85,7 @@ std::string csv_header(const OutputLayout& layout) {
 
 Trainer::Trainer(TrainingConfig config) : config_(std::move(config)) {
   validate_config(config_);
+  use_tensor_memory_cache();
   torch::set_num_threads(thread_count(config_.threads));
   torch::manual_seed(config_.seed);
   model_ = make_regressor(architecture_named(config_.network).architecture, config_.layout.output_channels(),

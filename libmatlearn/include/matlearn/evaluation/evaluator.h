@@ -55,7 +55,8 @@ constexpr int kMinimumMaterialPixels = 49;
 
 // Runs `model` (built from `header`) in evaluation mode over `samples` under `root`. The maps
 // are the sigmoid of the regression channels, as in training. Samples without a label file are
-// scored over the whole image. progress(done, total) follows each batch.
+// scored over the whole image. Uses matlearn's tensor memory cache (training/tensor_memory_cache.h).
+// progress(done, total) follows each batch.
 EvaluationResult evaluate_samples(RegressorImpl& model, const CheckpointHeader& header, const std::filesystem::path& root,
                                   const std::vector<SampleId>& samples, const EvaluationSettings& settings,
                                   const std::function<void(size_t, size_t)>& progress = {});

@@ -69,8 +69,9 @@ struct TrainingCallbacks {
 
 class Trainer {
  public:
-  // Builds the network (seeded), loads encoder weights if given, and the optimiser. Throws
-  // std::invalid_argument for a bad configuration.
+  // Builds the network (seeded), loads encoder weights if given, and the optimiser; makes
+  // matlearn's tensor memory cache libtorch's CPU allocator (training/tensor_memory_cache.h).
+  // Throws std::invalid_argument for a bad configuration.
   explicit Trainer(TrainingConfig config);
   // Continues from a checkpoint that train() wrote with the same design.
   void resume(const std::filesystem::path& checkpoint);
