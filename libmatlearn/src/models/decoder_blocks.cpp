@@ -1,5 +1,7 @@
 #include "matlearn/models/decoder_blocks.h"
 
+#include "matlearn/models/transposed_convolution.h"
+
 namespace matlearn {
 
 namespace nn = torch::nn;
@@ -11,7 +13,9 @@ UpConvImpl::UpConvImpl(int64_t in_channels, int64_t out_channels) {
 }
 
 // In-place ReLU: BatchNorm's backward does not need its output.
-torch::Tensor UpConvImpl::forward(const torch::Tensor& x) { return bn_->forward(up_->forward(x)).relu_(); }
+torch::Tensor UpConvImpl::forward(const torch::Tensor& x) {
+  return bn_->forward(transposed_convolution(*up_, x)).relu_();
+}
 
 ConvBnReluImpl::ConvBnReluImpl(int64_t in_channels, int64_t out_channels) {
   conv_ = register_module("conv", nn::Conv2d(nn::Conv2dOptions(in_channels, out_channels, 3).padding(1).bias(false)));

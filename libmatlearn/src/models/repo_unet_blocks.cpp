@@ -1,5 +1,7 @@
 #include "matlearn/models/repo_unet_blocks.h"
 
+#include "matlearn/models/transposed_convolution.h"
+
 namespace matlearn {
 
 namespace nn = torch::nn;
@@ -24,7 +26,7 @@ RepoUpBlockImpl::RepoUpBlockImpl(int64_t in_channels, int64_t skip_channels, int
 }
 
 torch::Tensor RepoUpBlockImpl::forward(const torch::Tensor& x, const torch::Tensor& skip) {
-  torch::Tensor up = up_->forward(x);
+  torch::Tensor up = transposed_convolution(*up_, x);
   if (up.sizes().slice(2) != skip.sizes().slice(2))
     up = nn::functional::interpolate(up, nn::functional::InterpolateFuncOptions()
                                              .size(std::vector<int64_t>{skip.size(2), skip.size(3)})

@@ -1,5 +1,7 @@
 #include "matlearn/models/repo_unets.h"
 
+#include "matlearn/models/transposed_convolution.h"
+
 namespace matlearn {
 
 namespace nn = torch::nn;
@@ -20,7 +22,7 @@ torch::Tensor RepoResNet50UNetImpl::forward(const torch::Tensor& image) {
   const ResNetFeatures f = encoder_->forward(image);
   torch::Tensor x = bottleneck_->forward(f.layer4);
   x = up1_->forward(up2_->forward(up3_->forward(up4_->forward(x, f.layer3), f.layer2), f.layer1), f.stem);
-  return head_->forward(final_conv_->forward(final_up_->forward(x)));
+  return head_->forward(final_conv_->forward(transposed_convolution(*final_up_, x)));
 }
 
 RepoSwinTUNetImpl::RepoSwinTUNetImpl(int64_t output_channels) {
@@ -40,8 +42,8 @@ torch::Tensor RepoSwinTUNetImpl::forward(const torch::Tensor& image) {
   const SwinFeatures f = encoder_->forward(image);
   torch::Tensor x = bottleneck_->forward(f.stages[3]);
   x = up2_->forward(up3_->forward(up4_->forward(x, f.stages[2]), f.stages[1]), f.stages[0]);
-  x = conv1_->forward(up1_->forward(x));
-  return head_->forward(final_conv_->forward(final_up_->forward(x)));
+  x = conv1_->forward(transposed_convolution(*up1_, x));
+  return head_->forward(final_conv_->forward(transposed_convolution(*final_up_, x)));
 }
 
 }  // namespace matlearn
