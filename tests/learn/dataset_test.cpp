@@ -207,6 +207,50 @@ TEST_CASE("Shrunk targets keep their value along the silhouette (W16)", "[learn]
   CHECK(edge_pixels > 0);  // so the test does look at pixels where the background mixes in
 }
 
+TEST_CASE("The paper's texture-target layout: screenshots beside one reference map per material", "[learn]") {
+  const fs::path root = fs::temp_directory_path() / "matpredict_paper_layout_test";
+  fs::remove_all(root);
+  // Two objects in wood, one in metal; metal has no roughness reference, so it is no sample.
+  for (const char* stem : {"000", "001"})
+    write_png(root / "rendered_cropped" / "chair" / "wood" / (std::string(stem) + ".png"), 3,
+              [](int x, int, int c) -> uint8_t { return static_cast<uint8_t>(10 * x + c); });
+  write_png(root / "rendered_cropped" / "table" / "wood" / "000.png", 3, [](int, int, int) -> uint8_t { return 90; });
+  write_png(root / "rendered_cropped" / "table" / "metal" / "000.png", 3, [](int, int, int) -> uint8_t { return 90; });
+  // The wood references are 16 x 16, the screenshots' size, so the targets are exactly them.
+  write_png(root / "ground_truth_basecolour" / "wood.png", 3, [](int x, int y, int c) -> uint8_t {
+    return static_cast<uint8_t>(c == 0 ? 12 * x : c == 1 ? 12 * y : 200);
+  });
+  write_png(root / "ground_truth_roughness" / "wood.png", 1, [](int, int, int) -> uint8_t { return 153; });
+  write_png(root / "ground_truth_basecolour" / "metal.png", 3, [](int, int, int) -> uint8_t { return 128; });
+
+  CHECK(dataset_layout(root) == DatasetLayout::paper_textures);
+  CHECK(dataset_layout(make_dataset()) == DatasetLayout::repository);
+  std::vector<std::string> ids;
+  for (const SampleId& s : index_dataset(root)) ids.push_back(s.str());
+  CHECK(ids == std::vector<std::string>{"chair/wood/000", "chair/wood/001", "table/wood/000"});
+
+  SampleSettings settings;
+  settings.size = kSize;
+  const MaterialSample s = read_sample(root, SampleId::parse("chair/wood/001"), settings);
+  CHECK_FALSE(s.has_label);
+  CHECK(std::all_of(s.mask.begin(), s.mask.end(), [](uint8_t m) { return m == 1; }));
+  CHECK(s.input.at(3, 5, 1) == Approx(31.0 / 255.0));
+  CHECK(s.albedo.at(3, 5, 0) == Approx(36.0 / 255.0));
+  CHECK(s.albedo.at(3, 5, 1) == Approx(60.0 / 255.0));
+  CHECK(s.roughness.at(9, 2, 0) == Approx(0.6));
+  CHECK(s.metallic.values.empty());  // the material has no metallic reference
+  // Shrunk to 8 px the whole reference is resized: a plain average of the uniform roughness.
+  settings.size = 8;
+  CHECK(read_sample(root, SampleId::parse("table/wood/000"), settings).roughness.at(4, 4, 0) == Approx(0.6));
+  // A split file naming the incomplete material is an error naming the sample.
+  SplitFile split;
+  split.train = {"table/metal/000"};
+  CHECK_THROWS_WITH(split_samples(split, "train", root), Catch::Contains("table/metal/000"));
+  // A normal map asked for and missing: an error naming the file.
+  settings.read_normal = true;
+  CHECK_THROWS_WITH(read_sample(root, SampleId::parse("chair/wood/000"), settings), Catch::Contains("ground_truth_normal"));
+}
+
 TEST_CASE("The bilinear resize is Pillow's, to its 8-bit rounding", "[learn]") {
   // Pillow (Debian's python3-pil) resizes 8-bit images in fixed point and rounds to 8 bits, so
   // the two agree within one level.

@@ -1,12 +1,25 @@
 #pragma once
-// The MatPredict repository's dataset layout (../shared/reference/matpredict_repo.md, sections 1
-// and 3.1-3.2): <root>/<object>/<variant>/{images,albedo,ORM,label,...}/<stem>.png, sample ids
-// "<object>/<variant>/<stem>", and the split files its benchmark reads.
+// The two dataset layouts and the split files of the MatPredict benchmark.
+//
+// The repository's (../shared/reference/matpredict_repo.md, sections 1 and 3.1-3.2):
+// <root>/<object>/<variant>/{images,albedo,ORM,label,normal_obj}/<stem>.png, pixel-aligned maps
+// per frame; sample ids "<object>/<variant>/<stem>".
+//
+// The paper's texture targets (its section "Training protocol"): screenshots
+// <root>/rendered_cropped/<object>/<material>/<stem>.png and one reference map per material,
+// <root>/ground_truth_basecolour/<material>.png and ground_truth_roughness/<material>.png
+// (optionally ground_truth_metallic/ and ground_truth_normal/), not aligned with the pixels;
+// sample ids "<object>/<material>/<stem>".
 #include <filesystem>
 #include <string>
 #include <vector>
 
 namespace matlearn {
+
+enum class DatasetLayout { repository, paper_textures };
+
+// paper_textures when root holds rendered_cropped/, else repository.
+DatasetLayout dataset_layout(const std::filesystem::path& root);
 
 struct SampleId {
   std::string object, variant, stem;
@@ -20,8 +33,9 @@ struct SampleId {
 // Every sample under `root` in the repository loader's order: object and variant folders sorted
 // by name, folders whose name starts with "_tmp" skipped, a variant counted when it holds
 // images/, albedo/ and ORM/, and in it a stem when images/<stem>.png, albedo/<stem>.png and
-// ORM/<stem>.png all exist (stems sorted). Throws std::runtime_error naming root when it is not
-// a directory.
+// ORM/<stem>.png all exist (stems sorted). In the paper's layout, likewise under
+// rendered_cropped/, a material counting when both its reference maps exist. Throws
+// std::runtime_error naming root when it is not a directory.
 std::vector<SampleId> index_dataset(const std::filesystem::path& root);
 
 // A split file as the repository's generate_splits.py writes it (keys name, strategy, seed,
@@ -37,7 +51,7 @@ struct SplitFile {
 SplitFile read_split_file(const std::filesystem::path& path);
 
 // The samples of `split` ("train", "val" or "test") in file order, each checked against the
-// files under root: a listed id whose image, albedo or ORM file is missing is an error naming it.
+// files under root: a listed id whose maps are missing is an error naming it.
 std::vector<SampleId> split_samples(const SplitFile& file, const std::string& split, const std::filesystem::path& root);
 
 }  // namespace matlearn

@@ -31,6 +31,9 @@ struct MaterialSample {
   bool has_label = false;
 };
 
+// In the paper's texture-target layout the maps are the material's reference maps, resized whole
+// (data/texture_target_sample.h): every pixel is in the mask, there is no label, and metallic is
+// empty unless the material has a ground_truth_metallic map.
 // Colour channels are read as stored, whatever the alpha (PIL's convert("RGB"); OpenImageIO
 // would premultiply PNG colour by alpha). A normal map is resized as unit vectors: decoded,
 // resized with the object mask as weights, renormalised and encoded again, so a resized normal

@@ -12,6 +12,9 @@ namespace fs = std::filesystem;
 
 // The maps a frame needs to count as a sample (the loader's rule).
 constexpr const char* kRequiredMaps[] = {"images", "albedo", "ORM"};
+// The paper's layout: the screenshots' folder, and the reference maps a material needs.
+constexpr const char* kScreenshots = "rendered_cropped";
+constexpr const char* kRequiredReferences[] = {"ground_truth_basecolour", "ground_truth_roughness"};
 
 std::vector<fs::path> sorted_subdirectories(const fs::path& dir) {
   std::vector<fs::path> dirs;
@@ -26,6 +29,37 @@ bool frame_complete(const fs::path& variant_dir, const std::string& stem) {
                      [&](const char* map) { return fs::is_regular_file(variant_dir / map / (stem + ".png")); });
 }
 
+bool material_complete(const fs::path& root, const std::string& material) {
+  return std::all_of(std::begin(kRequiredReferences), std::end(kRequiredReferences),
+                     [&](const char* map) { return fs::is_regular_file(root / map / (material + ".png")); });
+}
+
+bool sample_complete(const fs::path& root, const SampleId& id) {
+  if (dataset_layout(root) == DatasetLayout::paper_textures)
+    return material_complete(root, id.variant) &&
+           fs::is_regular_file(root / kScreenshots / id.object / id.variant / (id.stem + ".png"));
+  return frame_complete(root / id.object / id.variant, id.stem);
+}
+
+std::vector<std::string> sorted_png_stems(const fs::path& dir) {
+  std::vector<std::string> stems;
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir))
+    if (entry.is_regular_file() && entry.path().extension() == ".png") stems.push_back(entry.path().stem().string());
+  std::sort(stems.begin(), stems.end());
+  return stems;
+}
+
+std::vector<SampleId> index_paper_layout(const fs::path& root) {
+  std::vector<SampleId> samples;
+  for (const fs::path& object : sorted_subdirectories(root / kScreenshots))
+    for (const fs::path& material : sorted_subdirectories(object)) {
+      if (!material_complete(root, material.filename().string())) continue;
+      for (const std::string& stem : sorted_png_stems(material))
+        samples.push_back({object.filename().string(), material.filename().string(), stem});
+    }
+  return samples;
+}
+
 }  // namespace
 
 SampleId SampleId::parse(const std::string& id) {
@@ -36,19 +70,20 @@ SampleId SampleId::parse(const std::string& id) {
   return {id.substr(0, first), id.substr(first + 1, second - first - 1), id.substr(second + 1)};
 }
 
+DatasetLayout dataset_layout(const fs::path& root) {
+  return fs::is_directory(root / kScreenshots) ? DatasetLayout::paper_textures : DatasetLayout::repository;
+}
+
 std::vector<SampleId> index_dataset(const fs::path& root) {
   if (!fs::is_directory(root)) throw std::runtime_error("dataset root " + root.string() + " is not a directory");
+  if (dataset_layout(root) == DatasetLayout::paper_textures) return index_paper_layout(root);
   std::vector<SampleId> samples;
   for (const fs::path& object : sorted_subdirectories(root)) {
     for (const fs::path& variant : sorted_subdirectories(object)) {
       if (!std::all_of(std::begin(kRequiredMaps), std::end(kRequiredMaps),
                        [&](const char* map) { return fs::is_directory(variant / map); }))
         continue;
-      std::vector<std::string> stems;
-      for (const fs::directory_entry& entry : fs::directory_iterator(variant / "images"))
-        if (entry.is_regular_file() && entry.path().extension() == ".png") stems.push_back(entry.path().stem().string());
-      std::sort(stems.begin(), stems.end());
-      for (const std::string& stem : stems)
+      for (const std::string& stem : sorted_png_stems(variant / "images"))
         if (frame_complete(variant, stem))
           samples.push_back({object.filename().string(), variant.filename().string(), stem});
     }
@@ -100,10 +135,9 @@ std::vector<SampleId> split_samples(const SplitFile& file, const std::string& sp
   samples.reserve(ids->size());
   for (const std::string& id : *ids) {
     const SampleId sample = SampleId::parse(id);
-    if (!frame_complete(root / sample.object / sample.variant, sample.stem))
+    if (!sample_complete(root, sample))
       throw std::runtime_error("split '" + split + "' of " + (file.name.empty() ? "the split file" : file.name) +
-                               " lists " + id + ", which has no complete images/albedo/ORM frame under " +
-                               root.string());
+                               " lists " + id + ", whose maps are not all under " + root.string());
     samples.push_back(sample);
   }
   return samples;

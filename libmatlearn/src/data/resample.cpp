@@ -98,4 +98,17 @@ std::vector<int32_t> resize_nearest(const std::vector<int32_t>& ids, int in_widt
   return out;
 }
 
+Image resize_unit_vectors(const Image& encoded, const std::vector<float>& weights, int width, int height) {
+  Image decoded = encoded;
+  for (float& v : decoded.values) v = 2.0f * v - 1.0f;
+  Image resized = resize_bilinear_weighted(decoded, weights, width, height);
+  for (size_t p = 0; p < resized.pixel_count(); ++p) {
+    float* n = &resized.values[p * 3];
+    const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    const float scale = length > 0.0f ? 1.0f / length : 0.0f;
+    for (int c = 0; c < 3; ++c) n[c] = 0.5f * n[c] * scale + 0.5f;
+  }
+  return resized;
+}
+
 }  // namespace matlearn

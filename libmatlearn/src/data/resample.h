@@ -15,6 +15,10 @@ namespace matlearn {
 Image resize_bilinear(const Image& image, int width, int height);
 // weights: one per pixel of `image`. Output pixels whose footprint has no weight get 0.
 Image resize_bilinear_weighted(const Image& image, const std::vector<float>& weights, int width, int height);
+// 0.5 n + 0.5 encoded unit vectors (a normal map), resized as vectors: decoded, resized as
+// resize_bilinear_weighted does, renormalised and encoded again, so a resized normal still has
+// length 1 (0.5 where no weight reaches). `encoded` has 3 channels.
+Image resize_unit_vectors(const Image& encoded, const std::vector<float>& weights, int width, int height);
 std::vector<int32_t> resize_nearest(const std::vector<int32_t>& ids, int in_width, int in_height, int width, int height);
 
 }  // namespace matlearn

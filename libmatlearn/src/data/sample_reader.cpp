@@ -3,74 +3,17 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <OpenImageIO/imageio.h>
-
+#include "data/decoded_image.h"
 #include "data/resample.h"
+#include "data/texture_target_sample.h"
 
 namespace matlearn {
-namespace {
 
 namespace fs = std::filesystem;
 
-struct Decoded {
-  int width = 0, height = 0, channels = 0;
-  std::vector<float> values;
-};
-
-// Every channel of an image file as floats, colour as stored (not premultiplied by alpha);
-// 8-bit values map to [0, 1].
-Decoded decode(const fs::path& path) {
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  auto in = OIIO::ImageInput::open(path.string(), &config);
-  if (!in) throw std::runtime_error("cannot read " + path.string() + ": " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
-  Decoded d{spec.width, spec.height, spec.nchannels, {}};
-  d.values.resize(static_cast<size_t>(d.width) * static_cast<size_t>(d.height) * static_cast<size_t>(d.channels));
-  if (!in->read_image(0, 0, 0, d.channels, OIIO::TypeDesc::FLOAT, d.values.data()))
-    throw std::runtime_error("cannot decode " + path.string() + ": " + in->geterror());
-  return d;
-}
-
-// The first `channels` channels (a grey image repeated), as PIL's convert("RGB") or convert("L").
-Image channels_of(const Decoded& d, int first, int channels) {
-  Image image(d.width, d.height, channels);
-  for (size_t p = 0; p < image.pixel_count(); ++p)
-    for (int c = 0; c < channels; ++c)
-      image.values[p * static_cast<size_t>(channels) + static_cast<size_t>(c)] =
-          d.values[p * static_cast<size_t>(d.channels) + static_cast<size_t>(d.channels >= first + channels ? first + c : 0)];
-  return image;
-}
-
-float srgb_to_linear(float v) {
-  return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
-}
-
-// 0.5 n + 0.5 values resized as unit vectors (see read_sample's comment).
-Image resize_normal_map(const Image& encoded, const std::vector<float>& weights, int size) {
-  Image decoded = encoded;
-  for (float& v : decoded.values) v = 2.0f * v - 1.0f;
-  Image resized = resize_bilinear_weighted(decoded, weights, size, size);
-  for (size_t p = 0; p < resized.pixel_count(); ++p) {
-    float* n = &resized.values[p * 3];
-    const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    const float scale = length > 0.0f ? 1.0f / length : 0.0f;
-    for (int c = 0; c < 3; ++c) n[c] = 0.5f * n[c] * scale + 0.5f;
-  }
-  return resized;
-}
-
-void check_same_size(const Decoded& d, const Decoded& reference, const fs::path& path) {
-  if (d.width != reference.width || d.height != reference.height)
-    throw std::runtime_error(path.string() + " is " + std::to_string(d.width) + "x" + std::to_string(d.height) +
-                             " but the sample's image is " + std::to_string(reference.width) + "x" +
-                             std::to_string(reference.height));
-}
-
-}  // namespace
-
 MaterialSample read_sample(const fs::path& root, const SampleId& id, const SampleSettings& settings) {
   if (settings.size < 1) throw std::invalid_argument("read_sample: size must be at least 1");
+  if (dataset_layout(root) == DatasetLayout::paper_textures) return read_texture_target_sample(root, id, settings);
   const fs::path dir = root / id.object / id.variant;
   const std::string file = id.stem + ".png";
   const Decoded image = decode(dir / "images" / file);
@@ -107,7 +50,7 @@ MaterialSample read_sample(const fs::path& root, const SampleId& id, const Sampl
     const Decoded normal = decode(normal_path);
     check_same_size(normal, image, normal_path);
     if (normal.channels < 3) throw std::runtime_error(normal_path.string() + " has fewer than 3 channels");
-    sample.normal = resize_normal_map(channels_of(normal, 0, 3), weights, s);
+    sample.normal = resize_unit_vectors(channels_of(normal, 0, 3), weights, s, s);
   }
   sample.material_id = resize_nearest(ids, image.width, image.height, s, s);
   sample.mask.resize(sample.material_id.size());

@@ -50,6 +50,7 @@ SampleSettings sample_settings(const OutputLayout& layout, int image_size, bool 
 
 Image target_map(const MaterialSample& sample, const OutputGroup& group) {
   const Image& map = stored_map(sample, group.map);
+  if (map.values.empty()) throw std::invalid_argument("the sample has no " + map_name(group.map) + " map");
   if (map.channels == group.channels) return map;
   if (map.channels != 1)
     throw std::invalid_argument("the sample's " + map_name(group.map) + " map has " + std::to_string(map.channels) +

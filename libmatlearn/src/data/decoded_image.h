@@ -1,0 +1,30 @@
+#pragma once
+// Image files decoded for the dataset readers: every channel as floats, colour as stored.
+#include <filesystem>
+#include <vector>
+
+#include "matlearn/image.h"
+
+namespace matlearn {
+
+struct Decoded {
+  int width = 0, height = 0, channels = 0;
+  std::vector<float> values;
+};
+
+// Every channel of an image file as floats, colour as stored (not premultiplied by alpha, as
+// OpenImageIO would by default); 8-bit values map to [0, 1]. Throws std::runtime_error naming
+// the file.
+Decoded decode(const std::filesystem::path& path);
+
+// The first `channels` channels from `first` on (a grey image repeated), as PIL's
+// convert("RGB") or convert("L").
+Image channels_of(const Decoded& d, int first, int channels);
+
+// The sRGB EOTF (IEC 61966-2-1).
+float srgb_to_linear(float v);
+
+// Throws std::runtime_error naming `path` when d's size differs from the sample image's.
+void check_same_size(const Decoded& d, const Decoded& image, const std::filesystem::path& path);
+
+}  // namespace matlearn

@@ -1,0 +1,58 @@
+#include "data/texture_target_sample.h"
+
+#include <functional>
+#include <map>
+#include <mutex>
+#include <string>
+
+#include "data/decoded_image.h"
+#include "data/resample.h"
+
+namespace matlearn {
+namespace {
+
+namespace fs = std::filesystem;
+
+enum class ReferenceKind { display_colour, linear_colour, grey, unit_vectors };
+
+// The reference map at `path` for `kind`, resized to size x size, decoded once per process.
+Image reference_map(const fs::path& path, ReferenceKind kind, int size) {
+  static std::mutex mutex;
+  static std::map<std::string, Image> cache;
+  const std::string key = path.string() + "|" + std::to_string(static_cast<int>(kind)) + "|" + std::to_string(size);
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    const auto found = cache.find(key);
+    if (found != cache.end()) return found->second;
+  }
+  const Decoded decoded = decode(path);
+  Image map = channels_of(decoded, 0, kind == ReferenceKind::grey ? 1 : 3);
+  if (kind == ReferenceKind::linear_colour)
+    for (float& v : map.values) v = srgb_to_linear(v);
+  const Image resized = kind == ReferenceKind::unit_vectors
+                            ? resize_unit_vectors(map, std::vector<float>(map.pixel_count(), 1.0f), size, size)
+                            : resize_bilinear(map, size, size);
+  std::lock_guard<std::mutex> lock(mutex);
+  return cache.emplace(key, resized).first->second;
+}
+
+}  // namespace
+
+MaterialSample read_texture_target_sample(const fs::path& root, const SampleId& id, const SampleSettings& settings) {
+  const int s = settings.size;
+  const std::string material = id.variant + ".png";
+  MaterialSample sample;
+  sample.input = resize_bilinear(channels_of(decode(root / "rendered_cropped" / id.object / id.variant / (id.stem + ".png")), 0, 3), s, s);
+  sample.albedo = reference_map(root / "ground_truth_basecolour" / material,
+                                settings.linear_albedo ? ReferenceKind::linear_colour : ReferenceKind::display_colour, s);
+  sample.roughness = reference_map(root / "ground_truth_roughness" / material, ReferenceKind::grey, s);
+  const fs::path metallic = root / "ground_truth_metallic" / material;
+  if (fs::is_regular_file(metallic)) sample.metallic = reference_map(metallic, ReferenceKind::grey, s);
+  if (settings.read_normal)
+    sample.normal = reference_map(root / "ground_truth_normal" / material, ReferenceKind::unit_vectors, s);
+  sample.material_id.assign(static_cast<size_t>(s) * static_cast<size_t>(s), 1);
+  sample.mask.assign(sample.material_id.size(), 1);
+  return sample;
+}
+
+}  // namespace matlearn

@@ -1,0 +1,20 @@
+#pragma once
+// One sample of the paper's texture-target layout (matlearn/dataset_index.h): the screenshot
+// resized as the repository's inputs are, and its material's reference maps resized whole to the
+// same size. These are the paper's targets; they are not aligned with the pixels, so every pixel
+// counts in the loss and there is no label.
+#include <filesystem>
+
+#include "matlearn/dataset_index.h"
+#include "matlearn/sample_reader.h"
+
+namespace matlearn {
+
+// Reference maps are decoded and resized once per process and size, then shared by every
+// sample of the material (the paper's loader keeps them in memory too). ground_truth_metallic/
+// is read when present, ground_truth_normal/ when settings.read_normal asks for it. Throws
+// std::runtime_error naming the file when a map cannot be read.
+MaterialSample read_texture_target_sample(const std::filesystem::path& root, const SampleId& id,
+                                          const SampleSettings& settings);
+
+}  // namespace matlearn
