@@ -1,7 +1,7 @@
-# `cmake --install` exports matpredict::matgeom, matpredict::matrender, matpredict::matlearn_metrics
-# and matpredict::matlearn_data for find_package(matpredict).
+# `cmake --install` exports matpredict::matgeom, matpredict::matrender, matpredict::matlearn_metrics,
+# matpredict::matlearn_data and matpredict::matlearn (libtorch) for find_package(matpredict).
 include(CMakePackageConfigHelpers)
-install(TARGETS matgeom matrender matlearn_metrics matlearn_data EXPORT matpredictTargets
+install(TARGETS matgeom matrender matlearn_metrics matlearn_data matlearn EXPORT matpredictTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}

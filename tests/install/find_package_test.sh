@@ -17,3 +17,4 @@ export LD_LIBRARY_PATH="$work/prefix/lib:$work/prefix/lib/x86_64-linux-gnu:${LD_
 mkdir "$work/meshes"
 "$work/build/prepare_mesh" "$work/meshes"
 "$work/build/score_images"
+"$work/build/predict_maps"
