@@ -46,7 +46,8 @@ CheckpointHeader header_from_json(const json& j) {
   h.layout.material_classes = j.at("material_classes").get<int64_t>();
   h.layout.material_weight = j.at("material_weight").get<double>();
   h.image_size = j.at("image_size").get<int>();
-  h.linear_albedo = j.at("linear_albedo").get<bool>();
+  // Written since the normal-map outputs; earlier checkpoints were evaluated on stored albedo.
+  h.linear_albedo = j.value("linear_albedo", false);
   h.epochs_done = j.at("epochs_done").get<int>();
   const json& s = j.at("schedule");
   h.schedule.epochs = s.at("epochs").get<int>();
