@@ -112,8 +112,7 @@ std::vector<matlearn::OutputGroup> output_groups(const std::map<std::string, std
     } catch (const std::invalid_argument& e) {
       throw InputError(std::string("outputs: ") + e.what());
     }
-    const bool colour = map == matlearn::MapKind::base_color || map == matlearn::MapKind::normal;
-    int64_t channels = colour ? 3 : 1;
+    int64_t channels = matlearn::is_colour_map(map) ? 3 : 1;
     if (colon != std::string::npos) {
       const std::string count = entry.substr(colon + 1);
       if (count != "1" && count != "3") throw InputError("outputs: \"" + entry + "\": channels must be 1 or 3");

@@ -34,8 +34,8 @@ bool material_complete(const fs::path& root, const std::string& material) {
                      [&](const char* map) { return fs::is_regular_file(root / map / (material + ".png")); });
 }
 
-bool sample_complete(const fs::path& root, const SampleId& id) {
-  if (dataset_layout(root) == DatasetLayout::paper_textures)
+bool sample_complete(const fs::path& root, DatasetLayout layout, const SampleId& id) {
+  if (layout == DatasetLayout::paper_textures)
     return material_complete(root, id.variant) &&
            fs::is_regular_file(root / kScreenshots / id.object / id.variant / (id.stem + ".png"));
   return frame_complete(root / id.object / id.variant, id.stem);
@@ -133,9 +133,10 @@ std::vector<SampleId> split_samples(const SplitFile& file, const std::string& sp
   if (!ids) throw std::invalid_argument("split '" + split + "' is not train, val or test");
   std::vector<SampleId> samples;
   samples.reserve(ids->size());
+  const DatasetLayout layout = dataset_layout(root);
   for (const std::string& id : *ids) {
     const SampleId sample = SampleId::parse(id);
-    if (!sample_complete(root, sample))
+    if (!sample_complete(root, layout, sample))
       throw std::runtime_error("split '" + split + "' of " + (file.name.empty() ? "the split file" : file.name) +
                                " lists " + id + ", whose maps are not all under " + root.string());
     samples.push_back(sample);

@@ -1,6 +1,5 @@
 #include "data/texture_target_sample.h"
 
-#include <functional>
 #include <map>
 #include <mutex>
 #include <string>

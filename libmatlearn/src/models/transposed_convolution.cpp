@@ -42,12 +42,12 @@ class TransposedConvolution : public torch::autograd::Function<TransposedConvolu
 
 }  // namespace
 
-torch::Tensor transposed_convolution(const torch::Tensor& x, const torch::Tensor& weight,
-                                     const std::optional<torch::Tensor>& bias, int64_t stride, int64_t padding) {
+torch::Tensor transposed_convolution(const torch::Tensor& x, const torch::Tensor& weight, const torch::Tensor& bias,
+                                     int64_t stride, int64_t padding) {
   TORCH_CHECK(x.dim() == 4 && weight.dim() == 4 && x.size(1) == weight.size(0) && weight.size(2) == weight.size(3),
               "transposed_convolution: x is N x C_in x H x W and weight C_in x C_out x k x k");
   torch::Tensor y = TransposedConvolution::apply(x, weight, stride, padding);
-  if (bias && bias->defined()) y = y + bias->view({1, -1, 1, 1});
+  if (bias.defined()) y = y + bias.view({1, -1, 1, 1});
   return y;
 }
 

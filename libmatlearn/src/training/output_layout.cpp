@@ -38,6 +38,8 @@ std::string map_name(MapKind map) {
   throw std::logic_error("unknown map kind");
 }
 
+bool is_colour_map(MapKind map) { return map == MapKind::base_color || map == MapKind::normal; }
+
 MapKind map_kind_named(const std::string& name) {
   for (MapKind kind : {MapKind::base_color, MapKind::roughness, MapKind::metallic, MapKind::normal})
     if (map_name(kind) == name) return kind;
@@ -50,8 +52,7 @@ void validate(const OutputLayout& layout) {
     const std::string name = map_name(group.map);
     for (size_t h = 0; h < g; ++h)
       if (layout.groups[h].map == group.map) throw std::invalid_argument("output map " + name + " is listed twice");
-    const bool colour = group.map == MapKind::base_color || group.map == MapKind::normal;
-    if (colour ? group.channels != 3 : group.channels != 1 && group.channels != 3)
+    if (is_colour_map(group.map) ? group.channels != 3 : group.channels != 1 && group.channels != 3)
       throw std::invalid_argument("output map " + name + " cannot have " + std::to_string(group.channels) +
                                   " channels (base_color and normal 3, roughness and metallic 1 or 3)");
     if (!(group.weight >= 0.0)) throw std::invalid_argument("output map " + name + " has a negative loss weight");

@@ -34,6 +34,8 @@ struct OutputLayout {
 };
 
 std::string map_name(MapKind map);  // "base_color", "roughness", "metallic", "normal"
+// Base colour and normal always have 3 channels; roughness and metallic 1, or 3 repeated.
+bool is_colour_map(MapKind map);
 // The kind of a map_name; throws std::invalid_argument naming it when there is none.
 MapKind map_kind_named(const std::string& name);
 // Throws std::invalid_argument naming the bad entry: a map twice, base colour or normal not 3
