@@ -9,6 +9,7 @@
 #include <random>
 
 #include "reference_params.h"
+#include "principled_lobes.h"
 #include "uniform_floats.h"
 #include "bsdf/principled.h"
 #include "shaders_ref/directional_albedo.h"
@@ -16,7 +17,8 @@
 
 using matrender::BsdfSample;
 using matrender::DiffuseModel;
-using matrender::PrincipledBsdf;
+using matrender::LobeMixture;
+using matrender::principled_bsdf;
 using matrender::PrincipledInputs;
 
 namespace {
@@ -222,10 +224,10 @@ TEST_CASE("Fast BSDF eval agrees with the double-precision reference", "[render]
     const glm::vec3 wo = random_upper_direction(rng);
     const glm::vec3 wi = n % 2 ? direction_near_peak(wo, in.roughness * in.roughness, rng)
                                : random_upper_direction(rng);
-    const PrincipledBsdf bsdf(in, wo);
+    const LobeMixture bsdf = principled_bsdf(in, wo);
     float pdf = 0.0f;
-    const glm::vec3 diffuse = bsdf.eval_diffuse(wi) / wi.z;
-    const glm::vec3 specular = bsdf.eval_specular(wi) / wi.z;
+    const glm::vec3 diffuse = diffuse_value(bsdf, wi) / wi.z;
+    const glm::vec3 specular = specular_value(bsdf, wi) / wi.z;
     const glm::vec3 total = bsdf.eval(wi, &pdf) / wi.z;
 
     const shaders_ref::PrincipledParams p = reference_params(in);
@@ -286,8 +288,8 @@ TEST_CASE("Singular mirror lobe: sample weight is F(cos_o) over its selection pr
     PrincipledInputs in = random_material(rng, 0.0f, 0.0177f);
     if (n % 4 == 0) in.metallic = 1.0f;  // no diffuse lobe: the weight is F itself
     const glm::vec3 wo = random_upper_direction(rng);
-    const PrincipledBsdf bsdf(in, wo);
-    if (!bsdf.has_specular()) continue;
+    const LobeMixture bsdf = principled_bsdf(in, wo);
+    if (!any(bsdf.flags() & (matrender::BxDFFlags::Glossy | matrender::BxDFFlags::Specular))) continue;
 
     const shaders_ref::PrincipledParams p = reference_params(in);
     const glm::dvec3 fresnel = shaders_ref::interpolated_fresnel(p, static_cast<double>(wo.z));
@@ -299,8 +301,8 @@ TEST_CASE("Singular mirror lobe: sample weight is F(cos_o) over its selection pr
     REQUIRE(bsdf.sample(1.0f - 0x1p-24f, {rng.next(), rng.next()}, &s));
     INFO("metallic " << in.metallic << ", specular " << in.specular << ", roughness "
                      << in.roughness << ", cos_o " << wo.z);
-    CHECK(s.delta);
-    CHECK(s.glossy);
+    CHECK(matrender::is_specular(s.flags));
+    CHECK(!matrender::is_diffuse(s.flags));
     CHECK(s.pdf == 0.0f);
     CHECK(s.wi.x == -wo.x);
     CHECK(s.wi.y == -wo.y);
@@ -308,7 +310,7 @@ TEST_CASE("Singular mirror lobe: sample weight is F(cos_o) over its selection pr
     for (int k = 0; k < 3; ++k)
       CHECK(s.weight[k] * specular_probability == Approx(fresnel[k]).epsilon(1e-5).margin(1e-7));
     // A delta lobe has no density to evaluate.
-    CHECK(bsdf.eval_specular(s.wi) == glm::vec3(0.0f));
+    CHECK(specular_value(bsdf, s.wi) == glm::vec3(0.0f));
     ++checked;
   }
   CHECK(checked > 3000);

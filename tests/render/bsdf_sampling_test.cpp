@@ -15,6 +15,7 @@
 
 #include "chi_square.h"
 #include "reference_params.h"
+#include "principled_lobes.h"
 #include "uniform_floats.h"
 #include "bsdf/microfacet_ggx.h"
 #include "bsdf/principled.h"
@@ -24,7 +25,8 @@
 
 using matrender::BsdfSample;
 using matrender::DiffuseModel;
-using matrender::PrincipledBsdf;
+using matrender::LobeMixture;
+using matrender::principled_bsdf;
 using matrender::PrincipledInputs;
 
 namespace {
@@ -365,12 +367,12 @@ TEST_CASE("GGX visible-normal sampling fits ggx_reflection_pdf (chi-square)", "[
   }
 }
 
-TEST_CASE("PrincipledBsdf::sample fits the mixture pdf of eval (chi-square)", "[render]") {
+TEST_CASE("principled_bsdf's sample fits the mixture pdf of eval (chi-square)", "[render]") {
   std::uint64_t seed = 0x5eed0200;
   for (const MixtureCase& c : kMixtureCases) {
     CAPTURE(c.name);
     const glm::vec3 wo = direction_with_cosine(c.cos_o);
-    const PrincipledBsdf bsdf(c.inputs, wo);
+    const LobeMixture bsdf = principled_bsdf(c.inputs, wo);
     const auto sample = [&](UniformFloats& rng) -> std::optional<glm::vec3> {
       const float u_lobe = rng.next();
       BsdfSample s;
@@ -394,13 +396,13 @@ TEST_CASE("PrincipledBsdf::sample fits the mixture pdf of eval (chi-square)", "[
   }
 }
 
-TEST_CASE("PrincipledBsdf::sample weight is eval / pdf at the sampled direction", "[render]") {
+TEST_CASE("principled_bsdf's sample weight is eval / pdf at the sampled direction", "[render]") {
   UniformFloats rng(0x5eed0300);
   int checked = 0;
   for (int n = 0; n < 20000; ++n) {
     const PrincipledInputs in = random_material(rng);
     const glm::vec3 wo = random_upper_direction(rng);
-    const PrincipledBsdf bsdf(in, wo);
+    const LobeMixture bsdf = principled_bsdf(in, wo);
     const float u_lobe = rng.next();
     BsdfSample s;
     if (!bsdf.sample(u_lobe, rng.next2(), &s)) continue;
@@ -427,12 +429,12 @@ TEST_CASE("BSDF values are reciprocal in wo and wi", "[render]") {
     const PrincipledInputs in = random_material(rng);
     const glm::vec3 wo = random_upper_direction(rng);
     const glm::vec3 wi = random_upper_direction(rng);
-    const PrincipledBsdf forward(in, wo);
-    const PrincipledBsdf backward(in, wi);
-    const glm::vec3 spec_forward = forward.eval_specular(wi) / wi.z;
-    const glm::vec3 spec_backward = backward.eval_specular(wo) / wo.z;
-    const glm::vec3 diffuse_forward = forward.eval_diffuse(wi) / wi.z;
-    const glm::vec3 diffuse_backward = backward.eval_diffuse(wo) / wo.z;
+    const LobeMixture forward = principled_bsdf(in, wo);
+    const LobeMixture backward = principled_bsdf(in, wi);
+    const glm::vec3 spec_forward = specular_value(forward, wi) / wi.z;
+    const glm::vec3 spec_backward = specular_value(backward, wo) / wo.z;
+    const glm::vec3 diffuse_forward = diffuse_value(forward, wi) / wi.z;
+    const glm::vec3 diffuse_backward = diffuse_value(backward, wo) / wo.z;
 
     shaders_ref::PrincipledParams fresnel_one = reference_params(in);
     fresnel_one.base_color = glm::dvec3(1.0);
@@ -486,11 +488,11 @@ TEST_CASE("Sampling pdfs integrate to at most 1 over the sphere", "[render]") {
       }
     }
   }
-  SECTION("Mixture pdf of PrincipledBsdf::eval") {
+  SECTION("Mixture pdf of principled_bsdf's eval") {
     for (const MixtureCase& c : kMixtureCases) {
       CAPTURE(c.name);
       const glm::vec3 wo = direction_with_cosine(c.cos_o);
-      const PrincipledBsdf bsdf(c.inputs, wo);
+      const LobeMixture bsdf = principled_bsdf(c.inputs, wo);
       const double alpha = static_cast<double>(c.inputs.roughness) * c.inputs.roughness;
       const double integral = shaders_ref::integrate_over_sphere(
           [&](const glm::dvec3& wi) {
@@ -523,7 +525,7 @@ TEST_CASE("eval and sample stay finite at extreme inputs", "[render]") {
               const PrincipledInputs in =
                   material(base, metallic, roughness, specular, 0.5f, model);
               const glm::vec3 wo = direction_with_cosine(cos_o);
-              const PrincipledBsdf bsdf(in, wo);
+              const LobeMixture bsdf = principled_bsdf(in, wo);
               INFO("roughness " << roughness << ", metallic " << metallic << ", specular "
                                 << specular << ", cos_o " << cos_o);
               std::vector<glm::vec3> directions = {direction_with_cosine(1.0f),
@@ -570,7 +572,7 @@ TEST_CASE("White furnace: mean sample weight equals the reference directional al
   constexpr int kSamples = 100000;
   const auto check_furnace = [](const PrincipledInputs& in, float cos_o, std::uint64_t seed) {
     const glm::vec3 wo = direction_with_cosine(cos_o);
-    const PrincipledBsdf bsdf(in, wo);
+    const LobeMixture bsdf = principled_bsdf(in, wo);
     UniformFloats rng(seed);
     double sum = 0.0;
     double sum_sq = 0.0;

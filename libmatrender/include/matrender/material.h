@@ -34,6 +34,7 @@ struct Material {
   ScalarParam roughness{0.5f, nullptr, 1};
   float specular = 0.5f;
   float specular_tint = 0.0f;
+  float ior = 1.45f;  // Blender's Principled IOR: the relative index a surface point carries
   TexturePtr normal_map;  // tangent space, OpenGL convention (+Y = +v), Non-Color
   float normal_strength = 1.0f;
 };

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "accel/ray_offset.h"
+#include "bsdf/bsdf.h"
 #include "bsdf/principled.h"
 #include "bsdf/shading_frame.h"
 #include "integrator/shadow_terminator.h"
@@ -30,12 +31,15 @@ float max_component(const glm::vec3& v) { return std::max(v.x, std::max(v.y, v.z
 
 // Where a shadow ray toward unit direction wi starts before the usual ray offset: the hit point,
 // lifted toward the smooth surface near the terminator of a smooth-shaded triangle (Cycles'
-// shadow_ray_offset; shadow_terminator.h).
-glm::vec3 shadow_ray_start(const MeshData& mesh, const RayHit& hit, const SurfacePoint& sp, const glm::vec3& wi) {
+// shadow_ray_offset; shadow_terminator.h). ng is the geometric normal on the side the ray
+// leaves. Cycles picks that side from the smooth normal instead; where the two disagree (a light
+// above the bent shading normal but below the smooth one) its lift crosses the triangle, and
+// from inside a closed surface the ray then starts outside it.
+glm::vec3 shadow_ray_start(const MeshData& mesh, const RayHit& hit, const SurfacePoint& sp, const glm::vec3& wi,
+                           const glm::vec3& ng) {
   const float cutoff = mesh.shadow_terminator_geometry_offset;
   if (mesh.normals.empty() || !(cutoff > 0.0f)) return sp.position;
   const float smooth_dot_l = glm::dot(sp.smooth_normal, wi);
-  const glm::vec3 ng = smooth_dot_l < 0.0f ? -sp.geometric_normal : sp.geometric_normal;
   const float amount = shadow_terminator_offset_amount(std::abs(smooth_dot_l), glm::dot(ng, wi), cutoff);
   if (!(amount > 0.0f)) return sp.position;
   const glm::uvec3 tri = mesh.triangles[hit.triangle];
@@ -52,7 +56,8 @@ PathTracer::PathTracer(const SceneData& scene, const LightSampler& lights, const
     : scene_(scene), lights_(lights), settings_(settings) {
   for (const Material& material : scene.materials) {
     const std::optional<PrincipledInputs> inputs = constant_inputs(material);
-    constant_lobes_.push_back(inputs ? std::optional<PrincipledLobes>(PrincipledLobes(*inputs)) : std::nullopt);
+    constant_parameters_.push_back(inputs ? std::optional<PrincipledParameters>(PrincipledParameters(*inputs))
+                                          : std::nullopt);
   }
 }
 
@@ -114,20 +119,23 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     const glm::vec3 wo = frame.to_local(wo_world);
     const glm::vec3 smooth_local =
         sp.smooth_normal == sp.shading_normal ? glm::vec3(0.0f, 0.0f, 1.0f) : frame.to_local(sp.smooth_normal);
-    const std::optional<PrincipledLobes>& constant = constant_lobes_[sp.material];
-    const PrincipledBsdf bsdf(constant ? *constant : PrincipledLobes(sp.inputs), wo, smooth_local);
+    const std::optional<PrincipledParameters>& constant = constant_parameters_[sp.material];
+    const Bsdf bsdf(frame, sp.geometric_normal,
+                    principled_bsdf(constant ? *constant : PrincipledParameters(sp.inputs), wo, smooth_local));
 
     // Next-event estimation: one lamp, one point on it.
-    if (!lights_.empty() && !bsdf.is_delta_only()) {
-      const auto light = lights_.sample(sp.position, sp.shading_normal, sampler.get_2d(dims.light));
+    if (!lights_.empty() && is_non_specular(bsdf.flags())) {
+      const ReceivingDirections receiving{sp.shading_normal, is_transmissive(bsdf.flags())};
+      const auto light = lights_.sample(sp.position, receiving, sampler.get_2d(dims.light));
       if (light) {
         float pdf_bsdf;
-        const glm::vec3 f = bsdf.eval(frame.to_local(light->wi), &pdf_bsdf);
+        const glm::vec3 f = bsdf.eval(light->wi, &pdf_bsdf);
         if (max_component(f) > 0.0f) {
-          const glm::vec3 side = glm::dot(light->wi, sp.geometric_normal) >= 0.0f ? sp.geometric_normal
-                                                                                  : -sp.geometric_normal;
+          // The shadow ray leaves on the side the light arrives from: the viewer's for reflection,
+          // the far side for transmission (bsdf.h), so it never starts beyond the surface it crosses.
+          const glm::vec3 side = is_reflective(bsdf.side_of(light->wi)) ? sp.geometric_normal : -sp.geometric_normal;
           // From a start lifted off the triangle the ray aims again at the same lamp point.
-          const glm::vec3 start = shadow_ray_start(scene_.meshes[hit.mesh], hit, sp, light->wi);
+          const glm::vec3 start = shadow_ray_start(scene_.meshes[hit.mesh], hit, sp, light->wi, side);
           glm::vec3 shadow_dir = light->wi;
           float shadow_distance = light->distance;
           if (start != sp.position) {
@@ -151,11 +159,10 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     throughput *= s.weight;
     if (!(max_component(throughput) > 0.0f)) break;
     bsdf_pdf = s.pdf;
-    bsdf_delta = s.delta;
-    (s.glossy ? glossy_bounces : diffuse_bounces)++;
-    dir = frame.to_world(s.wi);
-    origin = offset_ray_origin(sp.position, glm::dot(dir, sp.geometric_normal) >= 0.0f ? sp.geometric_normal
-                                                                                   : -sp.geometric_normal);
+    bsdf_delta = is_specular(s.flags);
+    (is_diffuse(s.flags) ? diffuse_bounces : glossy_bounces)++;
+    dir = s.wi;
+    origin = offset_ray_origin(sp.position, is_reflective(s.flags) ? sp.geometric_normal : -sp.geometric_normal);
   }
   return result;
 }

@@ -47,8 +47,8 @@ class PathTracer {
   const SceneData& scene_;
   const LightSampler& lights_;
   PathSettings settings_;
-  // Per material: its lobes when no input is textured (computed once, not at every hit).
-  std::vector<std::optional<PrincipledLobes>> constant_lobes_;
+  // Per material: its lobes' parameters when no input is textured (computed once, not at every hit).
+  std::vector<std::optional<PrincipledParameters>> constant_parameters_;
 };
 
 }  // namespace matrender

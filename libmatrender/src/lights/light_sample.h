@@ -3,6 +3,15 @@
 
 namespace matrender {
 
+// The directions a shading point can take light from, as its BSDF's lobes say: the half-space
+// above the plane normal to `normal` (the shading normal) when every lobe reflects, since a
+// reflecting lobe is zero below it; every direction when a lobe transmits. Lamps wholly outside
+// are skipped before any sampling work.
+struct ReceivingDirections {
+  glm::vec3 normal{0.0f, 0.0f, 1.0f};
+  bool every_direction = false;
+};
+
 // One next-event sample toward a lamp, seen from a shading point.
 struct LightSample {
   glm::vec3 wi{0.0f};        // unit direction from the shading point to the lamp

@@ -29,12 +29,13 @@ LightSampler::LightSampler(const std::vector<Light>& lights)
   }
 }
 
-std::optional<LightSample> LightSampler::sample(const glm::vec3& p, const glm::vec3& n, glm::vec2 u) const {
+std::optional<LightSample> LightSampler::sample(const glm::vec3& p, const ReceivingDirections& receiving,
+                                                glm::vec2 u) const {
   if (empty()) return std::nullopt;
   const float scaled = u.x * static_cast<float>(count());
   const size_t index = std::min(static_cast<size_t>(scaled), count() - 1);
   u.x = std::min(scaled - static_cast<float>(index), 0x1.fffffep-1f);
-  std::optional<LightSample> s = index < rects_.size() ? rects_[index].sample(p, n, u)
+  std::optional<LightSample> s = index < rects_.size() ? rects_[index].sample(p, receiving, u)
                                                        : deltas_[index - rects_.size()].sample(p);
   if (s) s->pdf *= selection_pdf();
   return s;

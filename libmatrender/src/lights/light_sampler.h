@@ -26,8 +26,8 @@ class LightSampler {
   // picks the lamp and is then rescaled to [0, 1) within the lamp's interval and reused for the
   // point on it, so each lamp's points keep the 2-D stratification of u (Cycles 3.4,
   // kernel/light/light.h, light_distribution_sample: "rescale to reuse random number").
-  // n is the shading normal: lamps wholly below its plane give no sample (see PreparedRectLight).
-  std::optional<LightSample> sample(const glm::vec3& p, const glm::vec3& n, glm::vec2 u) const;
+  // Lamps wholly outside `receiving` give no sample (see PreparedRectLight).
+  std::optional<LightSample> sample(const glm::vec3& p, const ReceivingDirections& receiving, glm::vec2 u) const;
 
   const std::vector<PreparedRectLight>& rect_lights() const { return rects_; }
   const RectLightHits& rect_light_hits() const { return rect_hits_; }

@@ -38,8 +38,10 @@ bool PreparedRectLight::below_plane(const glm::vec3& p, const glm::vec3& n) cons
   return true;
 }
 
-std::optional<LightSample> PreparedRectLight::sample(const glm::vec3& p, const glm::vec3& n, glm::vec2 u) const {
-  if (!sees_emitting_side(p) || below_plane(p, n)) return std::nullopt;
+std::optional<LightSample> PreparedRectLight::sample(const glm::vec3& p, const ReceivingDirections& receiving,
+                                                     glm::vec2 u) const {
+  if (!sees_emitting_side(p) || (!receiving.every_direction && below_plane(p, receiving.normal)))
+    return std::nullopt;
   const SphericalRectangle spherical(p, rect_);
   glm::vec3 point;
   float pdf;

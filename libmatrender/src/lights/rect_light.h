@@ -18,10 +18,9 @@ class PreparedRectLight {
 
   // Samples a point uniformly in the solid angle the lamp subtends from p (by area when that
   // solid angle is too small to compute accurately). Returns nothing when p does not see the
-  // emitting side, or when the whole lamp lies on or below the plane through p normal to n (the
-  // shading normal): a reflecting BSDF gives every such direction zero, so the sample could only
-  // cost time.
-  std::optional<LightSample> sample(const glm::vec3& p, const glm::vec3& n, glm::vec2 u) const;
+  // emitting side, or when the whole lamp lies outside the directions p receives from (on or
+  // below the plane of a reflecting BSDF's shading normal): the sample could only cost time.
+  std::optional<LightSample> sample(const glm::vec3& p, const ReceivingDirections& receiving, glm::vec2 u) const;
   // Solid-angle pdf of sample() producing direction wi from p, given that the ray hits the lamp
   // at distance t.
   float pdf(const glm::vec3& p, const glm::vec3& wi, float t) const;

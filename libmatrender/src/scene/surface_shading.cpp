@@ -68,6 +68,7 @@ SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm:
   const bool backfacing = glm::dot(ng_front, wo) < 0.0f;
   const float facing_sign = backfacing ? -1.0f : 1.0f;
   sp.geometric_normal = facing_sign * ng_front;
+  sp.front_face = !backfacing;
 
   // The front-side smooth normal; normal mapping happens on the front side, then everything
   // is flipped toward the viewer (surfaces are two-sided).
@@ -79,6 +80,7 @@ SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm:
   sp.part = mesh.triangle_parts.empty() ? 0 : static_cast<int32_t>(mesh.triangle_parts[hit.triangle]);
   sp.material = mesh.part_materials[static_cast<size_t>(sp.part)];
   const Material& material = scene.materials[sp.material];
+  sp.eta = backfacing ? 1.0f / material.ior : material.ior;
 
   // Only textures read the UV.
   const bool textured = has_textured_input(material) || material.normal_map;

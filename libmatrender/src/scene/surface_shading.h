@@ -15,6 +15,11 @@ namespace matrender {
 struct SurfacePoint {
   glm::vec3 position{0.0f};
   glm::vec3 geometric_normal{0.0f, 0.0f, 1.0f};  // flipped to face the incoming ray
+  // The ray met the side the triangle's winding faces (counter-clockwise = front, as Blender).
+  bool front_face = true;
+  // Relative index of refraction across the surface along the ray: the material's IOR entering
+  // through the front, its inverse leaving through the back.
+  float eta = 1.0f;
   glm::vec3 shading_normal{0.0f, 0.0f, 1.0f};    // smooth + normal map, valid for reflection
   // The interpolated vertex normal before normal mapping and ensure_valid_reflection (Cycles'
   // sd->N; the geometric normal without vertex normals), flipped to face the incoming ray.

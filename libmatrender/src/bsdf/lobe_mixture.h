@@ -1,0 +1,80 @@
+#pragma once
+// A BSDF as a weighted set of lobes in the local shading frame, pbrt-v4's BSDF without the frame
+// (bsdf.h adds the frame and the geometric normal). Lobes are picked in proportion to their
+// sample weights, as Cycles picks closures (kernel/integrator/shader_eval.h,
+// shader_bsdf_pick), and the mixture pdf is what one-sample MIS over the lobes needs.
+//
+// The set of lobes is open: a new lobe is a class with the methods listed in lobe_sample.h,
+// added to `Lobe` below. A material without a lobe pays nothing for it: it is not in the list.
+#include <array>
+#include <cstddef>
+#include <variant>
+
+#include <glm/glm.hpp>
+
+#include "bsdf/bxdf_flags.h"
+#include "bsdf/diffuse_lobe.h"
+#include "bsdf/ggx_reflection_lobe.h"
+#include "bsdf/lobe_sample.h"
+
+namespace matrender {
+
+using Lobe = std::variant<DiffuseLobe, GgxReflectionLobe>;
+
+inline BxDFFlags lobe_flags(const Lobe& lobe) {
+  return std::visit([](const auto& l) { return l.flags(); }, lobe);
+}
+
+struct BsdfSample {
+  glm::vec3 wi{0.0f};
+  glm::vec3 weight{0.0f};  // f cos / pdf (for a specular lobe: its weight / selection probability)
+  float pdf = 0.0f;        // solid-angle pdf of the whole mixture; 0 for a specular lobe
+  BxDFFlags flags = BxDFFlags::None;  // of the lobe that made wi
+};
+
+class LobeMixture {
+ public:
+  // Room for every lobe of the Principled BSDF.
+  static constexpr size_t kMaxLobes = 4;
+
+  // Adds a lobe; finish() must follow the last one.
+  void add(const Lobe& lobe);
+  // Turns the sample weights into pick probabilities. A mixture whose weights are all zero
+  // scatters nothing and has no lobes left.
+  void finish();
+
+  size_t size() const { return count_; }
+  const Lobe& lobe(size_t i) const { return lobes_[i]; }
+  float probability(size_t i) const { return probability_[i]; }
+  BxDFFlags flags() const { return flags_; }
+
+  // Sum of f cos over the lobes whose flags share a bit with `selected` (Reflection for the
+  // reflecting lobes, Diffuse for the diffuse ones, ...), and in *pdf the mixture pdf of
+  // sampling wi through those lobes.
+  glm::vec3 eval(const glm::vec3& wi, BxDFFlags selected, float* pdf) const;
+  glm::vec3 eval(const glm::vec3& wi, float* pdf) const {
+    return eval(wi, BxDFFlags::Reflection | BxDFFlags::Transmission, pdf);
+  }
+
+  // Picks a lobe with u_lobe and a direction in it with u; the value and pdf are the mixture's
+  // over the lobes on the picked lobe's side. False when no direction could be made.
+  bool sample(float u_lobe, glm::vec2 u, BsdfSample* out) const;
+  // The same with the lobe picked by u.x, which is then rescaled within the picked lobe's
+  // interval and reused for the direction, so each lobe's directions keep u's 2-D
+  // stratification (Cycles 3.4, shader_bsdf_pick: "rescale to reuse for direction sample").
+  bool sample(glm::vec2 u, BsdfSample* out) const;
+
+ private:
+  // The lobe u_lobe falls in, or kMaxLobes when there is none.
+  size_t pick(float u_lobe) const;
+  bool sample_lobe(size_t i, glm::vec2 u, BsdfSample* out) const;
+
+  std::array<Lobe, kMaxLobes> lobes_{};
+  std::array<float, kMaxLobes> sample_weight_{};
+  std::array<float, kMaxLobes> cdf_{};          // probability of picking a lobe before i + 1
+  std::array<float, kMaxLobes> probability_{};  // cdf_[i] - cdf_[i - 1]
+  size_t count_ = 0;
+  BxDFFlags flags_ = BxDFFlags::None;
+};
+
+}  // namespace matrender
