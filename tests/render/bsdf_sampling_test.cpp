@@ -26,7 +26,6 @@
 using matrender::BsdfSample;
 using matrender::DiffuseModel;
 using matrender::LobeMixture;
-using matrender::principled_bsdf;
 using matrender::PrincipledInputs;
 
 namespace {

@@ -2,7 +2,7 @@
 // The Principled BSDF's two lobes evaluated apart, for tests against the reference shaders.
 #include <glm/glm.hpp>
 
-#include "bsdf/lobe_mixture.h"
+#include "bsdf/principled.h"
 
 // f cos of the diffuse lobe alone.
 inline glm::vec3 diffuse_value(const matrender::LobeMixture& bsdf, const glm::vec3& wi) {
@@ -14,4 +14,11 @@ inline glm::vec3 diffuse_value(const matrender::LobeMixture& bsdf, const glm::ve
 inline glm::vec3 specular_value(const matrender::LobeMixture& bsdf, const glm::vec3& wi) {
   float pdf;
   return bsdf.eval(wi, matrender::BxDFFlags::Glossy | matrender::BxDFFlags::Specular, &pdf);
+}
+
+// The Principled BSDF's lobes seen from wo, in the local shading frame.
+inline matrender::LobeMixture principled_bsdf(const matrender::PrincipledInputs& inputs, const glm::vec3& wo) {
+  matrender::LobeMixture lobes;
+  matrender::add_principled_lobes(matrender::PrincipledParameters(inputs), wo, glm::vec3(0.0f, 0.0f, 1.0f), &lobes);
+  return lobes;
 }

@@ -16,10 +16,12 @@ namespace matrender {
 
 class Bsdf {
  public:
-  // geometric_normal: unit, on the viewer's side; frame.z is the shading normal.
-  Bsdf(const ShadingFrame& frame, const glm::vec3& geometric_normal, const LobeMixture& lobes)
-      : frame_(frame), geometric_normal_(geometric_normal), lobes_(lobes) {}
+  // geometric_normal: unit, on the viewer's side; frame.z is the shading normal. The lobes are
+  // added in place by the material (principled.h), which ends with lobes().finish().
+  Bsdf(const ShadingFrame& frame, const glm::vec3& geometric_normal)
+      : frame_(frame), geometric_normal_(geometric_normal) {}
 
+  LobeMixture& lobes() { return lobes_; }
   BxDFFlags flags() const { return lobes_.flags(); }
 
   // Which lobes a world direction can scatter into: those reflecting when wi is on the viewer's

@@ -34,8 +34,9 @@ struct BsdfSample {
 
 class LobeMixture {
  public:
-  // Room for every lobe of the Principled BSDF.
-  static constexpr size_t kMaxLobes = 4;
+  // Room for every lobe of the Principled BSDF (a mixture lives on the stack of every path
+  // vertex: room for lobes nobody has costs stores).
+  static constexpr size_t kMaxLobes = 2;
 
   // Adds a lobe; finish() must follow the last one.
   void add(const Lobe& lobe);
@@ -45,6 +46,7 @@ class LobeMixture {
 
   size_t size() const { return count_; }
   const Lobe& lobe(size_t i) const { return lobes_[i]; }
+  BxDFFlags lobe_flags(size_t i) const { return lobe_flags_[i]; }
   float probability(size_t i) const { return probability_[i]; }
   BxDFFlags flags() const { return flags_; }
 
@@ -69,10 +71,12 @@ class LobeMixture {
   size_t pick(float u_lobe) const;
   bool sample_lobe(size_t i, glm::vec2 u, BsdfSample* out) const;
 
-  std::array<Lobe, kMaxLobes> lobes_{};
-  std::array<float, kMaxLobes> sample_weight_{};
-  std::array<float, kMaxLobes> cdf_{};          // probability of picking a lobe before i + 1
-  std::array<float, kMaxLobes> probability_{};  // cdf_[i] - cdf_[i - 1]
+  // Entries from count_ on are unused.
+  std::array<Lobe, kMaxLobes> lobes_;
+  std::array<BxDFFlags, kMaxLobes> lobe_flags_;
+  std::array<float, kMaxLobes> sample_weight_;
+  std::array<float, kMaxLobes> cdf_;          // probability of picking one of lobes 0..i
+  std::array<float, kMaxLobes> probability_;  // cdf_[i] - cdf_[i - 1]
   size_t count_ = 0;
   BxDFFlags flags_ = BxDFFlags::None;
 };

@@ -31,13 +31,12 @@ PrincipledParameters::PrincipledParameters(const PrincipledInputs& inputs) : dif
                                 0.08f * specular);
 }
 
-LobeMixture principled_bsdf(const PrincipledParameters& p, const glm::vec3& wo, const glm::vec3& smooth_normal) {
-  LobeMixture lobes;
+void add_principled_lobes(const PrincipledParameters& p, const glm::vec3& wo, const glm::vec3& smooth_normal,
+                          LobeMixture* lobes) {
   const DiffuseLobe diffuse(p.diffuse_weight, p.diffuse_model, p.roughness, wo, smooth_normal);
-  if (diffuse.sample_weight() > 0.0f) lobes.add(diffuse);
-  if (p.specular_enabled) lobes.add(GgxReflectionLobe(p.fresnel, p.alpha, p.singular, wo));
-  lobes.finish();
-  return lobes;
+  if (diffuse.sample_weight() > 0.0f) lobes->add(diffuse);
+  if (p.specular_enabled) lobes->add(GgxReflectionLobe(p.fresnel, p.alpha, p.singular, wo));
+  lobes->finish();
 }
 
 }  // namespace matrender

@@ -35,14 +35,11 @@ struct PrincipledParameters {
   InterpolatedFresnel fresnel;
 };
 
-// The lobes seen from wo (local shading frame, +Z = shading normal). smooth_normal: Cycles' sd->N
-// (the interpolated normal before normal mapping and ensure_valid_reflection) in the local frame;
-// where it differs from +Z the diffuse lobe carries Cycles' bump shadowing term.
-LobeMixture principled_bsdf(const PrincipledParameters& parameters, const glm::vec3& wo,
-                            const glm::vec3& smooth_normal = glm::vec3(0.0f, 0.0f, 1.0f));
-inline LobeMixture principled_bsdf(const PrincipledInputs& inputs, const glm::vec3& wo,
-                                   const glm::vec3& smooth_normal = glm::vec3(0.0f, 0.0f, 1.0f)) {
-  return principled_bsdf(PrincipledParameters(inputs), wo, smooth_normal);
-}
+// Adds the lobes seen from wo (local shading frame, +Z = shading normal) to the empty `lobes`
+// and finishes it. smooth_normal: Cycles' sd->N (the interpolated normal before normal mapping
+// and ensure_valid_reflection) in the local frame; where it differs from +Z the diffuse lobe
+// carries Cycles' bump shadowing term.
+void add_principled_lobes(const PrincipledParameters& parameters, const glm::vec3& wo,
+                          const glm::vec3& smooth_normal, LobeMixture* lobes);
 
 }  // namespace matrender

@@ -120,8 +120,8 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     const glm::vec3 smooth_local =
         sp.smooth_normal == sp.shading_normal ? glm::vec3(0.0f, 0.0f, 1.0f) : frame.to_local(sp.smooth_normal);
     const std::optional<PrincipledParameters>& constant = constant_parameters_[sp.material];
-    const Bsdf bsdf(frame, sp.geometric_normal,
-                    principled_bsdf(constant ? *constant : PrincipledParameters(sp.inputs), wo, smooth_local));
+    Bsdf bsdf(frame, sp.geometric_normal);
+    add_principled_lobes(constant ? *constant : PrincipledParameters(sp.inputs), wo, smooth_local, &bsdf.lobes());
 
     // Next-event estimation: one lamp, one point on it.
     if (!lights_.empty() && is_non_specular(bsdf.flags())) {
