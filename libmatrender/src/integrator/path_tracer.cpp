@@ -64,8 +64,7 @@ PathTracer::PathTracer(const SceneData& scene, const LightSampler& lights, const
 glm::vec3 PathTracer::lamps_hit(const glm::vec3& origin, const glm::vec3& dir, float t_max,
                                 float bsdf_pdf, bool bsdf_delta) const {
   glm::vec3 sum(0.0f);
-  lights_.rect_light_hits().for_each_hit(origin, dir, t_max, [&](size_t index, float t) {
-    const PreparedRectLight& lamp = lights_.rect_lights()[index];
+  lights_.for_each_area_hit(origin, dir, t_max, [&](const PreparedRectLight& lamp, float t) {
     const float weight =
         bsdf_delta ? 1.0f : power_heuristic(bsdf_pdf, lights_.selection_pdf() * lamp.pdf(origin, dir, t));
     sum += weight * lamp.radiance();
@@ -88,10 +87,11 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     const RayHit hit = bounce == 0 ? camera_hit : scene_.accel.intersect(origin, dir, kInfinity);
     ++result.rays;
     // Lamps are invisible to camera rays; later rays see them, weighted against NEE.
-    if (bounce > 0 && !lights_.rect_light_hits().empty())
+    if (bounce > 0 && lights_.has_area_lights())
       result.radiance += throughput * lamps_hit(origin, dir, hit.hit() ? hit.t : kInfinity, bsdf_pdf, bsdf_delta);
     if (!hit.hit()) {
-      if (bounce > 0 || !settings_.transparent_background) result.radiance += throughput * scene_.background;
+      if (bounce > 0 || !settings_.transparent_background)
+        result.radiance += throughput * lights_.escaped_radiance(dir, bsdf_pdf, bsdf_delta);
       break;
     }
 

@@ -4,8 +4,9 @@
 #include <type_traits>
 #include <variant>
 
-namespace matrender {
+#include "sampling/warp.h"
 
+namespace matrender {
 namespace {
 
 std::vector<PreparedRectLight> prepare_rect_lights(const std::vector<Light>& lights) {
@@ -17,28 +18,57 @@ std::vector<PreparedRectLight> prepare_rect_lights(const std::vector<Light>& lig
 
 }  // namespace
 
-LightSampler::LightSampler(const std::vector<Light>& lights)
-    : rects_(prepare_rect_lights(lights)), rect_hits_(rects_) {
+LightSampler::LightSampler(const std::vector<Light>& lights, const glm::vec3& background) {
+  const std::vector<PreparedRectLight> rects = prepare_rect_lights(lights);
+  area_hits_ = RectLightHits(rects);
+  lights_.assign(rects.begin(), rects.end());
   for (const Light& light : lights) {
     std::visit(
         [this](const auto& l) {
           using T = std::decay_t<decltype(l)>;
-          if constexpr (!std::is_same_v<T, RectLight>) deltas_.emplace_back(l);
+          if constexpr (!std::is_same_v<T, RectLight>) lights_.emplace_back(PreparedDeltaLight(l));
         },
         light);
   }
+  sampled_count_ = lights_.size();
+  if (background != glm::vec3(0.0f)) {
+    infinite_.push_back(lights_.size());
+    lights_.emplace_back(UniformBackground(background));
+  }
+}
+
+std::optional<LightSampler::Pick> LightSampler::pick(float* u) const {
+  if (empty()) return std::nullopt;
+  const float scaled = *u * static_cast<float>(sampled_count_);
+  const size_t index = std::min(static_cast<size_t>(scaled), sampled_count_ - 1);
+  *u = std::min(scaled - static_cast<float>(index), 0x1.fffffep-1f);
+  return Pick{index, selection_pdf()};
 }
 
 std::optional<LightSample> LightSampler::sample(const glm::vec3& p, const ReceivingDirections& receiving,
                                                 glm::vec2 u) const {
-  if (empty()) return std::nullopt;
-  const float scaled = u.x * static_cast<float>(count());
-  const size_t index = std::min(static_cast<size_t>(scaled), count() - 1);
-  u.x = std::min(scaled - static_cast<float>(index), 0x1.fffffep-1f);
-  std::optional<LightSample> s = index < rects_.size() ? rects_[index].sample(p, receiving, u)
-                                                       : deltas_[index - rects_.size()].sample(p);
-  if (s) s->pdf *= selection_pdf();
+  const std::optional<Pick> picked = pick(&u.x);
+  if (!picked) return std::nullopt;
+  std::optional<LightSample> s =
+      std::visit([&](const auto& light) { return light.sample(p, receiving, u); }, lights_[picked->index]);
+  if (s) s->pdf *= picked->probability;
   return s;
+}
+
+glm::vec3 LightSampler::escaped_radiance(const glm::vec3& dir, float bsdf_pdf, bool bsdf_specular) const {
+  glm::vec3 sum(0.0f);
+  for (size_t index : infinite_) {
+    std::visit(
+        [&](const auto& light) {
+          if constexpr (std::decay_t<decltype(light)>::type() == LightType::Infinite) {
+            const float light_pdf = light.sampled() ? selection_pdf() * light.pdf(dir) : 0.0f;
+            const float weight = bsdf_specular ? 1.0f : power_heuristic(bsdf_pdf, light_pdf);
+            sum += weight * light.radiance(dir);
+          }
+        },
+        lights_[index]);
+  }
+  return sum;
 }
 
 }  // namespace matrender

@@ -1,41 +1,66 @@
 #pragma once
-// How a lamp is chosen for next-event estimation: uniformly, one lamp per shading point, as
-// Cycles 3.4 does (it has no light tree). Only noise depends on this choice.
+// The scene's lights and how next-event estimation chooses among them: uniformly, one light per
+// shading point, as Cycles 3.4 does (it has no light tree; only noise depends on this choice).
+// Also the two ways a ray finds light without sampling it: the one query for the area lights it
+// hits, and the infinite lights it sees when it leaves the scene.
+#include <cstddef>
 #include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "lights/light_sample.h"
-#include "lights/rect_light.h"
 #include "lights/rect_light_hits.h"
-#include "lights/spot_light.h"
+#include "lights/scene_light.h"
 #include "matrender/light.h"
 
 namespace matrender {
 
 class LightSampler {
  public:
-  explicit LightSampler(const std::vector<Light>& lights);
+  // background: the uniform background radiance; black is no light at all.
+  LightSampler(const std::vector<Light>& lights, const glm::vec3& background);
 
-  bool empty() const { return count() == 0; }
-  size_t count() const { return rects_.size() + deltas_.size(); }
-  float selection_pdf() const { return empty() ? 0.0f : 1.0f / static_cast<float>(count()); }
+  // The lights next-event estimation draws from are lights(0 .. sampled_count() - 1): area
+  // lamps first, then delta lamps, each in scene order.
+  size_t sampled_count() const { return sampled_count_; }
+  bool empty() const { return sampled_count_ == 0; }
+  // The probability of drawing each light of the distribution.
+  float selection_pdf() const { return empty() ? 0.0f : 1.0f / static_cast<float>(sampled_count_); }
+  const SceneLight& light(size_t i) const { return lights_[i]; }
 
-  // A sample of one uniformly chosen lamp; its pdf includes the selection probability. u.x
-  // picks the lamp and is then rescaled to [0, 1) within the lamp's interval and reused for the
-  // point on it, so each lamp's points keep the 2-D stratification of u (Cycles 3.4,
+  struct Pick {
+    size_t index;       // into light()
+    float probability;  // of drawing it
+  };
+  // The light u picks. *u is then rescaled to [0, 1) within the light's interval, so it can be
+  // reused for the point on the light with its 2-D stratification kept (Cycles 3.4,
   // kernel/light/light.h, light_distribution_sample: "rescale to reuse random number").
-  // Lamps wholly outside `receiving` give no sample (see PreparedRectLight).
+  std::optional<Pick> pick(float* u) const;
+
+  // A sample of the light u.x picks, with u.x reused (pick); its pdf includes the probability of
+  // the pick. Lights wholly outside `receiving` give no sample.
   std::optional<LightSample> sample(const glm::vec3& p, const ReceivingDirections& receiving, glm::vec2 u) const;
 
-  const std::vector<PreparedRectLight>& rect_lights() const { return rects_; }
-  const RectLightHits& rect_light_hits() const { return rect_hits_; }
+  bool has_area_lights() const { return !area_hits_.empty(); }
+  // Calls visit(area_light, t) for each area light whose emitting side the ray meets at a
+  // distance t in (0, t_max), in order.
+  template <class Visit>
+  void for_each_area_hit(const glm::vec3& origin, const glm::vec3& dir, float t_max, Visit&& visit) const {
+    area_hits_.for_each_hit(origin, dir, t_max, [&](size_t index, float t) {
+      visit(*std::get_if<PreparedRectLight>(&lights_[index]), t);
+    });
+  }
+
+  // What a ray leaving the scene along dir sees of the infinite lights, each MIS-weighted
+  // against light sampling (power heuristic) unless the ray came from a specular lobe.
+  glm::vec3 escaped_radiance(const glm::vec3& dir, float bsdf_pdf, bool bsdf_specular) const;
 
  private:
-  std::vector<PreparedRectLight> rects_;
-  std::vector<PreparedDeltaLight> deltas_;
-  RectLightHits rect_hits_;
+  std::vector<SceneLight> lights_;
+  size_t sampled_count_ = 0;
+  std::vector<size_t> infinite_;  // indices of the infinite lights
+  RectLightHits area_hits_;       // over lights(0 .. area count - 1)
 };
 
 }  // namespace matrender

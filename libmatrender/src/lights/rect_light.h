@@ -1,12 +1,13 @@
 #pragma once
 // One-sided rectangular area lamp, Cycles 3.4 conventions: radiance L = P c / (4 a b) emitted
-// toward the lamp's local -Z (../shared/reference/cycles.md). Sampled by solid angle.
+// toward the lamp's local -Z (docs/conventions.md, Lamps). Sampled by solid angle.
 #include <array>
 #include <optional>
 
 #include <glm/glm.hpp>
 
 #include "lights/light_sample.h"
+#include "lights/light_type.h"
 #include "lights/spherical_rectangle.h"
 #include "matrender/light.h"
 
@@ -15,6 +16,9 @@ namespace matrender {
 class PreparedRectLight {
  public:
   explicit PreparedRectLight(const RectLight& light);
+
+  static constexpr LightType type() { return LightType::Area; }
+  static constexpr bool sampled() { return true; }
 
   // Samples a point uniformly in the solid angle the lamp subtends from p (by area when that
   // solid angle is too small to compute accurately). Returns nothing when p does not see the

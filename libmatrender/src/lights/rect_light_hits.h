@@ -19,6 +19,7 @@ class RectLightHits {
   // One SSE register of lamps: the paper's rig of nine lamps pads to 12, not 16.
   static constexpr size_t kBlock = 4;
 
+  RectLightHits() = default;
   explicit RectLightHits(const std::vector<PreparedRectLight>& lamps);
 
   bool empty() const { return blocks_.empty(); }

@@ -1,13 +1,14 @@
 #pragma once
 // Radius-0 point and spot lamps, Cycles 3.4 conventions: intensity I = P c / (4 pi) W/sr; a spot
 // multiplies it by cos t * smoothstep((cos t - cos_half) / ((1 - cos_half) blend)) inside its cone
-// (intern/cycles/kernel/light/spot.h, spot_attenuation; ../shared/reference/cycles.md).
+// (intern/cycles/kernel/light/spot.h, spot_attenuation; docs/conventions.md, Lamps).
 #include <cmath>
 #include <optional>
 
 #include <glm/glm.hpp>
 
 #include "lights/light_sample.h"
+#include "lights/light_type.h"
 #include "matrender/light.h"
 #include "sampling/warp.h"
 
@@ -38,7 +39,12 @@ class PreparedDeltaLight {
         blend_(static_cast<float>(light.blend)),
         is_spot_(true) {}
 
-  std::optional<LightSample> sample(const glm::vec3& p) const {
+  static constexpr LightType type() { return LightType::DeltaPosition; }
+  static constexpr bool sampled() { return true; }
+
+  // The one direction toward the lamp; `receiving` and u play no part.
+  std::optional<LightSample> sample(const glm::vec3& p, const ReceivingDirections& /*receiving*/,
+                                    glm::vec2 /*u*/) const {
     const glm::vec3 to_light = position_ - p;
     const float dist2 = glm::dot(to_light, to_light);
     if (!(dist2 > 0.0f)) return std::nullopt;

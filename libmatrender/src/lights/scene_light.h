@@ -1,0 +1,27 @@
+#pragma once
+// The lights of a scene, prepared for rendering, behind one interface. The set is open: a new
+// light is a class with the methods below, added to `SceneLight`.
+//
+// Every light:
+//   static LightType type();   what it is (light_type.h)
+//   static bool sampled();     whether next-event estimation draws it
+//   std::optional<LightSample> sample(p, ReceivingDirections, glm::vec2 u) const;
+// Area lights, which rays hit (found by RectLightHits): pdf(p, wi, t), the solid-angle density
+// of sample() giving wi, and radiance(). Infinite lights, which rays that leave the scene see:
+// pdf(direction) and radiance(direction).
+#include <variant>
+
+#include "lights/light_type.h"
+#include "lights/rect_light.h"
+#include "lights/spot_light.h"
+#include "lights/uniform_background.h"
+
+namespace matrender {
+
+using SceneLight = std::variant<PreparedRectLight, PreparedDeltaLight, UniformBackground>;
+
+inline LightType light_type(const SceneLight& light) {
+  return std::visit([](const auto& l) { return l.type(); }, light);
+}
+
+}  // namespace matrender
