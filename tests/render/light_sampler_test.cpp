@@ -1,0 +1,82 @@
+// The light set: which lights next-event estimation draws and with what probability, which ones
+// rays find by themselves, and what a ray that leaves the scene sees.
+#include <catch2/catch.hpp>
+
+#include <vector>
+
+#include "lights/light_sampler.h"
+
+using namespace matrender;
+
+namespace {
+
+RectLight rect_at(double x) {
+  RectLight lamp;
+  lamp.light_to_world[3] = glm::dvec4(x, 0.0, 1.0, 1.0);
+  lamp.size_x = lamp.size_y = 0.5;
+  return lamp;
+}
+
+}  // namespace
+
+TEST_CASE("The distribution holds area lamps, then delta lamps, and not the uniform background", "[render]") {
+  const std::vector<Light> lights = {PointLight{}, rect_at(0.0), SpotLight{}, rect_at(2.0)};
+  const LightSampler sampler(lights, glm::vec3(0.1f, 0.2f, 0.3f));
+  REQUIRE(sampler.sampled_count() == 4);
+  CHECK(light_type(sampler.light(0)) == LightType::Area);
+  CHECK(light_type(sampler.light(1)) == LightType::Area);
+  CHECK(light_type(sampler.light(2)) == LightType::DeltaPosition);
+  CHECK(light_type(sampler.light(3)) == LightType::DeltaPosition);
+  // The background is a fifth light, outside the distribution.
+  CHECK(light_type(sampler.light(4)) == LightType::Infinite);
+  CHECK(sampler.selection_pdf() == 0.25f);
+  CHECK(sampler.has_area_lights());
+}
+
+TEST_CASE("A pick chooses each light of the distribution over an equal interval and rescales u", "[render]") {
+  const LightSampler sampler({rect_at(0.0), PointLight{}, SpotLight{}}, glm::vec3(0.0f));
+  for (int k = 0; k < 3; ++k)
+    for (double within : {0.0, 0.25, 0.5, 0.75}) {
+      float u = static_cast<float>((k + within) / 3.0);
+      const auto picked = sampler.pick(&u);
+      REQUIRE(picked);
+      CHECK(picked->index == static_cast<size_t>(k));
+      CHECK(picked->probability == Approx(1.0 / 3.0));
+      CHECK(u == Approx(within).margin(1e-6));
+    }
+  float last = 0x1.fffffep-1f;
+  const auto picked = sampler.pick(&last);
+  REQUIRE(picked);
+  CHECK(picked->index == 2);
+  CHECK(last < 1.0f);
+}
+
+TEST_CASE("Without lamps nothing is drawn, and a black background is no light", "[render]") {
+  const LightSampler dark({}, glm::vec3(0.0f));
+  float u = 0.5f;
+  CHECK(dark.empty());
+  CHECK_FALSE(dark.pick(&u));
+  CHECK_FALSE(dark.sample(glm::vec3(0.0f), {}, glm::vec2(0.5f)));
+  CHECK(dark.escaped_radiance(glm::vec3(0, 0, 1), 1.0f, false) == glm::vec3(0.0f));
+  CHECK_FALSE(dark.has_area_lights());
+}
+
+TEST_CASE("A ray leaving the scene sees the uniform background with MIS weight 1", "[render]") {
+  // The background is never drawn by light sampling, so BSDF sampling is its only strategy.
+  const glm::vec3 background(0.1f, 0.2f, 0.3f);
+  const LightSampler sampler({rect_at(0.0)}, background);
+  for (float bsdf_pdf : {0.0f, 1e-30f, 0.3f, 1e30f})
+    for (bool specular : {false, true})
+      CHECK(sampler.escaped_radiance(glm::normalize(glm::vec3(0.3f, -0.2f, 0.9f)), bsdf_pdf, specular) == background);
+}
+
+TEST_CASE("A light sample's pdf includes the probability of picking the light", "[render]") {
+  const LightSampler sampler({PointLight{glm::dvec3(0.0, 0.0, 2.0), 10.0, glm::dvec3(1.0)}, PointLight{}},
+                             glm::vec3(0.0f));
+  const auto s = sampler.sample(glm::vec3(0.0f, 0.0f, 1.0f), {}, glm::vec2(0.25f, 0.5f));
+  REQUIRE(s);
+  CHECK(s->delta);
+  CHECK(s->pdf == 0.5f);
+  CHECK(s->wi == glm::vec3(0.0f, 0.0f, 1.0f));
+  CHECK(s->distance == 1.0f);
+}
