@@ -52,9 +52,9 @@ void add_paper_rig(matrender::Scene& scene, const matgeom::TriangleMesh& mesh) {
 
 matrender::Material bench_material() {
   matrender::Material m;
-  m.base_color.value = glm::vec3(0.7f, 0.5f, 0.3f);
-  m.roughness.value = 0.35f;
-  m.metallic.value = 0.0f;
+  m.set(matrender::MaterialParameter::BaseColor, glm::vec3(0.7f, 0.5f, 0.3f));
+  m.set(matrender::MaterialParameter::Roughness, 0.35f);
+  m.set(matrender::MaterialParameter::Metallic, 0.0f);
   return m;
 }
 

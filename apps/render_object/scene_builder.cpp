@@ -60,9 +60,8 @@ class SceneMaterials {
     if (const auto it = ids_.find(name); it != ids_.end()) return it->second;
     const MaterialDescription& description = described_.at(name);
     matrender::Material material = description.constants;
-    material.base_color.texture = texture(description.base_color_texture);
-    material.roughness.texture = texture(description.roughness_texture);
-    material.metallic.texture = texture(description.metallic_texture);
+    for (size_t k = 0; k < material.parameters.size(); ++k)
+      material.parameters[k].texture = texture(description.textures[k]);
     material.normal_map = texture(description.normal_map);
     return ids_[name] = scene_.add_material(std::move(material));
   }

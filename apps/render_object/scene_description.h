@@ -3,6 +3,7 @@
 // an object with the paper's rig and camera (default_scene.h), adjusted by command-line options,
 // then built into a matrender::Scene (scene_builder.h). Describing first lets every input be
 // checked before anything is loaded or rendered, so a bad input never writes a file.
+#include <array>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -52,9 +53,8 @@ struct MaterialDescription {
   // Every constant (factors, channels, strengths, label, model); the texture pointers stay empty
   // until the files below are loaded.
   matrender::Material constants;
-  std::optional<TextureFile> base_color_texture;
-  std::optional<TextureFile> roughness_texture;
-  std::optional<TextureFile> metallic_texture;
+  // The texture file of each parameter that has one, by matgeom::MaterialParameter.
+  std::array<std::optional<TextureFile>, matgeom::kMaterialParameterCount> textures;
   std::optional<TextureFile> normal_map;
 };
 

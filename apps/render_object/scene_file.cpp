@@ -18,6 +18,7 @@
 
 #include "matgeom/builtin_objects.h"
 #include "matgeom/camera_grid.h"
+#include "matgeom/material_parameters.h"
 #include "matgeom/mesh_io.h"
 
 namespace render_object {
@@ -59,6 +60,9 @@ class Node {
   // This must be an object whose keys are all in `allowed`: a misspelt key is an error rather
   // than a silently ignored setting.
   void expect_keys(std::initializer_list<const char*> allowed) const {
+    expect_keys(std::vector<const char*>(allowed));
+  }
+  void expect_keys(const std::vector<const char*>& allowed) const {
     if (!value_.is_object()) fail("expected an object");
     for (const auto& item : value_.items()) {
       const bool known = std::any_of(allowed.begin(), allowed.end(),
@@ -170,11 +174,6 @@ glm::dvec3 read_vec3(const Node& node) {
 glm::dvec3 read_color(const Node& node) {
   node.expect_array(3, "[r, g, b] with components >= 0");
   return {node.item(0).non_negative(), node.item(1).non_negative(), node.item(2).non_negative()};
-}
-
-glm::dvec3 read_unit_color(const Node& node) {
-  node.expect_array(3, "[r, g, b] with components in [0, 1]");
-  return {node.item(0).unit_interval(), node.item(1).unit_interval(), node.item(2).unit_interval()};
 }
 
 glm::dvec3 read_direction(const Node& node) {
@@ -392,50 +391,52 @@ TextureFile read_texture_file(const Node& node, const fs::path& folder, matrende
   return file;
 }
 
-// [r, g, b], or a texture times an optional factor (colour textures default to sRGB).
-void read_color_input(const Node& node, const fs::path& folder, matrender::ColorParam& param,
-                      std::optional<TextureFile>& texture) {
-  if (node.is_array()) {
-    param.value = glm::vec3(read_unit_color(node));
-    return;
-  }
-  if (!node.is_object()) node.fail("expected [r, g, b] or {\"texture\": ...}");
-  node.expect_keys({"texture", "factor", "color_space", "wrap"});
-  texture = read_texture_file(node, folder, matrender::ColorSpace::SRGB);
-  param.value = node.has("factor") ? glm::vec3(read_unit_color(node.required("factor"))) : glm::vec3(1.0f);
+// A value of `info` within its range: [r, g, b] for a colour, a number for a scalar. `or_else`
+// completes the message when something else would also do.
+glm::vec3 read_parameter_constant(const Node& node, const matgeom::MaterialParameterInfo& info,
+                                  const std::string& or_else = "") {
+  const std::string range = fmt::format("[{}, {}]", info.min, info.max);
+  if (info.kind == matgeom::ParameterKind::Scalar)
+    return glm::vec3(static_cast<float>(node.number_where([&](double v) { return v >= info.min && v <= info.max; },
+                                                          "a number in " + range + or_else)));
+  const auto in_range = [&](const Node& n) {
+    return n.number_where([&](double v) { return v >= info.min && v <= info.max; }, "a number in " + range);
+  };
+  node.expect_array(3, "[r, g, b] with components in " + range + or_else);
+  return glm::vec3(glm::dvec3(in_range(node.item(0)), in_range(node.item(1)), in_range(node.item(2))));
 }
 
-// A number in [0, 1], or one channel of a texture times an optional factor (data textures
-// default to non-color).
-void read_scalar_input(const Node& node, const fs::path& folder, matrender::ScalarParam& param,
-                       std::optional<TextureFile>& texture) {
-  if (node.is_number()) {
-    param.value = static_cast<float>(node.unit_interval());
+// A constant, or (where the table allows it) a texture times an optional factor: a colour takes
+// the texture's RGB, a scalar one channel of it (R unless "channel" says otherwise).
+void read_parameter(const Node& node, const matgeom::MaterialParameterInfo& info, const fs::path& folder,
+                    matrender::ParameterValue& value, std::optional<TextureFile>& texture) {
+  const bool color = info.kind == matgeom::ParameterKind::Color;
+  if (!node.is_object() || !info.texturable) {
+    value.value = read_parameter_constant(node, info, info.texturable ? " or {\"texture\": ...}" : "");
     return;
   }
-  if (!node.is_object()) node.fail("expected a number in [0, 1] or {\"texture\": ...}");
-  node.expect_keys({"texture", "channel", "factor", "color_space", "wrap"});
-  texture = read_texture_file(node, folder, matrender::ColorSpace::NonColor);
-  param.value = node.has("factor") ? static_cast<float>(node.required("factor").unit_interval()) : 1.0f;
-  param.channel = node.has("channel") ? static_cast<int>(node.required("channel").choice({"R", "G", "B", "A"})) : 0;
+  if (color) node.expect_keys({"texture", "factor", "color_space", "wrap"});
+  else node.expect_keys({"texture", "channel", "factor", "color_space", "wrap"});
+  texture = read_texture_file(node, folder, info.texture_space);
+  value.value = node.has("factor") ? read_parameter_constant(node.required("factor"), info) : glm::vec3(1.0f);
+  value.channel = node.has("channel") ? static_cast<int>(node.required("channel").choice({"R", "G", "B", "A"})) : 0;
 }
 
 MaterialDescription read_material(const Node& node, const std::string& name, const fs::path& folder) {
-  node.expect_keys({"base_color", "roughness", "metallic", "normal_map", "specular", "specular_tint", "label_id",
-                    "diffuse_model"});
+  std::vector<const char*> keys = {"normal_map", "label_id", "diffuse_model"};
+  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) keys.push_back(info.name);
+  node.expect_keys(keys);
   MaterialDescription material;
   matrender::Material& m = material.constants;
   m.name = name;
-  if (auto n = node.find("base_color")) read_color_input(*n, folder, m.base_color, material.base_color_texture);
-  if (auto n = node.find("roughness")) read_scalar_input(*n, folder, m.roughness, material.roughness_texture);
-  if (auto n = node.find("metallic")) read_scalar_input(*n, folder, m.metallic, material.metallic_texture);
+  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters)
+    if (auto n = node.find(info.name))
+      read_parameter(*n, info, folder, m[info.id], material.textures[static_cast<size_t>(info.id)]);
   if (auto n = node.find("normal_map")) {
     n->expect_keys({"texture", "strength", "wrap"});
     material.normal_map = read_texture_file(*n, folder, matrender::ColorSpace::NonColor);
     if (auto strength = n->find("strength")) m.normal_strength = static_cast<float>(strength->non_negative());
   }
-  if (auto n = node.find("specular")) m.specular = static_cast<float>(n->non_negative());
-  if (auto n = node.find("specular_tint")) m.specular_tint = static_cast<float>(n->unit_interval());
   if (auto n = node.find("label_id")) m.label_id = n->integer_at_least(0);
   if (auto n = node.find("diffuse_model"))
     m.diffuse_model = n->choice({"principled", "lambert"}) == 0 ? matrender::DiffuseModel::Principled

@@ -48,9 +48,9 @@ void render_variant(const matgeom::ObjectAsset& asset, const ExampleMaterial& m,
   matrender::Material material;
   material.name = m.name;
   material.label_id = m.family;
-  material.base_color.value = glm::vec3(m.base_color[0], m.base_color[1], m.base_color[2]);
-  material.roughness.value = m.roughness;
-  material.metallic.value = m.metallic;
+  material.set(matrender::MaterialParameter::BaseColor, glm::vec3(m.base_color[0], m.base_color[1], m.base_color[2]));
+  material.set(matrender::MaterialParameter::Roughness, m.roughness);
+  material.set(matrender::MaterialParameter::Metallic, m.metallic);
   const uint32_t id = scene.add_material(material);
   // Every part in the variant's material, whatever the object's own materials.
   const size_t parts = std::max<size_t>({asset.mesh.part_count(), asset.materials.size(), 1});

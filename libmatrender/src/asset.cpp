@@ -23,20 +23,20 @@ TexturePtr image_or_null(const std::vector<TexturePtr>& images, int index, const
 
 Material material_from_desc(const matgeom::MaterialDesc& desc, const std::vector<TexturePtr>& images_as_srgb,
                             const std::vector<TexturePtr>& images_as_data) {
+  using P = MaterialParameter;
   Material m;
   m.name = desc.name;
   m.label_id = desc.label_id;
-  m.specular = static_cast<float>(desc.specular);
-  m.specular_tint = static_cast<float>(desc.specular_tint);
-  m.base_color.value = glm::vec3(desc.base_color);
-  m.base_color.texture = image_or_null(images_as_srgb, desc.base_color_image, desc.name);
-  m.roughness.value = static_cast<float>(desc.roughness);
-  m.metallic.value = static_cast<float>(desc.metallic);
-  if (TexturePtr orm = image_or_null(images_as_data, desc.metallic_roughness_image, desc.name)) {
-    m.roughness.texture = orm;
-    m.roughness.channel = 1;  // G
-    m.metallic.texture = orm;
-    m.metallic.channel = 2;   // B
+  m.set(P::Specular, static_cast<float>(desc.specular));
+  m.set(P::SpecularTint, static_cast<float>(desc.specular_tint));
+  m.set(P::BaseColor, glm::vec3(desc.base_color));
+  m[P::BaseColor].texture = image_or_null(images_as_srgb, desc.base_color_image, desc.name);
+  m.set(P::Roughness, static_cast<float>(desc.roughness));
+  m.set(P::Metallic, static_cast<float>(desc.metallic));
+  // Roughness and metallic read their channels of one packed image (glTF: G and B).
+  if (TexturePtr packed = image_or_null(images_as_data, desc.metallic_roughness_image, desc.name)) {
+    m[P::Roughness].texture = packed;
+    m[P::Metallic].texture = packed;
   }
   m.normal_map = image_or_null(images_as_data, desc.normal_image, desc.name);
   m.normal_strength = static_cast<float>(desc.normal_strength);

@@ -33,7 +33,7 @@ json describe(const CyclesScene& scene) {
   for (const glm::vec3& n : scene.mesh.normals) normals.push_back({n.x, n.y, n.z});
   for (const glm::uvec3& t : scene.mesh.triangles) triangles.push_back({t.x, t.y, t.z});
   const matrender::Material& m = scene.material;
-  if (m.base_color.texture || m.metallic.texture || m.roughness.texture || m.normal_map)
+  if (m.textured() || m.normal_map)
     throw std::invalid_argument("render_with_cycles: textured materials are not passed to Blender");
   if (scene.mesh.normals.size() != scene.mesh.positions.size())
     throw std::invalid_argument("render_with_cycles: the mesh needs one normal per vertex");
@@ -51,11 +51,11 @@ json describe(const CyclesScene& scene) {
             {"triangles", triangles},
             {"shadow_terminator_geometry_offset", scene.shadow_terminator_geometry_offset}}},
           {"material",
-           {{"base_color", {m.base_color.value.r, m.base_color.value.g, m.base_color.value.b}},
-            {"metallic", m.metallic.value},
-            {"roughness", m.roughness.value},
-            {"specular", m.specular},
-            {"specular_tint", m.specular_tint}}},
+           {{"base_color", {m.color(matrender::MaterialParameter::BaseColor).r, m.color(matrender::MaterialParameter::BaseColor).g, m.color(matrender::MaterialParameter::BaseColor).b}},
+            {"metallic", m.scalar(matrender::MaterialParameter::Metallic)},
+            {"roughness", m.scalar(matrender::MaterialParameter::Roughness)},
+            {"specular", m.scalar(matrender::MaterialParameter::Specular)},
+            {"specular_tint", m.scalar(matrender::MaterialParameter::SpecularTint)}}},
           {"lamps", lamps},
           {"camera",
            {{"camera_to_world", column_major(c.camera_to_world)},

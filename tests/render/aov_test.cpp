@@ -19,13 +19,13 @@ TEST_CASE("AOVs of a two-part plane equal the materials at the hit", "[render]")
   plane.triangles = {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}};
   plane.triangle_parts = {0, 0, 1, 1};
   Material left, right;
-  left.base_color.value = glm::vec3(0.2f, 0.4f, 0.6f);
-  left.roughness.value = 0.25f;
-  left.metallic.value = 0.0f;
+  left.set(matrender::MaterialParameter::BaseColor, glm::vec3(0.2f, 0.4f, 0.6f));
+  left.set(matrender::MaterialParameter::Roughness, 0.25f);
+  left.set(matrender::MaterialParameter::Metallic, 0.0f);
   left.label_id = 3;
-  right.base_color.value = glm::vec3(0.9f, 0.1f, 0.5f);
-  right.roughness.value = 0.75f;
-  right.metallic.value = 1.0f;
+  right.set(matrender::MaterialParameter::BaseColor, glm::vec3(0.9f, 0.1f, 0.5f));
+  right.set(matrender::MaterialParameter::Roughness, 0.75f);
+  right.set(matrender::MaterialParameter::Metallic, 1.0f);
   right.label_id = 5;
   Scene scene;
   scene.add_mesh(plane, {scene.add_material(left), scene.add_material(right)});
@@ -54,9 +54,9 @@ TEST_CASE("AOVs of a two-part plane equal the materials at the hit", "[render]")
         const Material& m = is_left ? left : right;
         CHECK(frame.part_id[i] == (is_left ? 0 : 1));
         CHECK(frame.label[i] == m.label_id);
-        CHECK(frame.roughness[i] == Approx(m.roughness.value));
-        CHECK(frame.metallic[i] == Approx(m.metallic.value));
-        for (int c = 0; c < 3; ++c) CHECK(frame.base_color[3 * i + c] == Approx(m.base_color.value[c]));
+        CHECK(frame.roughness[i] == Approx(m.scalar(matrender::MaterialParameter::Roughness)));
+        CHECK(frame.metallic[i] == Approx(m.scalar(matrender::MaterialParameter::Metallic)));
+        for (int c = 0; c < 3; ++c) CHECK(frame.base_color[3 * i + c] == Approx(m.color(matrender::MaterialParameter::BaseColor)[c]));
       }
     }
   }

@@ -18,6 +18,7 @@
 using matrender::BsdfSample;
 using matrender::DiffuseModel;
 using matrender::LobeMixture;
+using matrender::MaterialParameter;
 using matrender::PrincipledInputs;
 
 namespace {
@@ -48,12 +49,12 @@ PrincipledInputs random_material(UniformFloats& rng, float min_roughness, float 
     return pick < p_zero ? 0.0f : pick < p_zero + p_one ? 1.0f : value;
   };
   PrincipledInputs in;
-  in.base_color = {rng.next(), rng.next(), rng.next()};
-  if (rng.next() < 0.05f) in.base_color = glm::vec3(0.0f);
-  in.metallic = with_edges(0.25f, 0.25f);
-  in.roughness = min_roughness + (max_roughness - min_roughness) * rng.next();
-  in.specular = with_edges(0.1f, 0.1f);
-  in.specular_tint = with_edges(0.3f, 0.2f);
+  in.set(MaterialParameter::BaseColor, glm::vec3{rng.next(), rng.next(), rng.next()});
+  if (rng.next() < 0.05f) in.set(MaterialParameter::BaseColor, glm::vec3(0.0f));
+  in.set(MaterialParameter::Metallic, with_edges(0.25f, 0.25f));
+  in.set(MaterialParameter::Roughness, min_roughness + (max_roughness - min_roughness) * rng.next());
+  in.set(MaterialParameter::Specular, with_edges(0.1f, 0.1f));
+  in.set(MaterialParameter::SpecularTint, with_edges(0.3f, 0.2f));
   in.diffuse_model = rng.next() < 0.5f ? DiffuseModel::Principled : DiffuseModel::Lambert;
   return in;
 }
@@ -221,7 +222,7 @@ TEST_CASE("Fast BSDF eval agrees with the double-precision reference", "[render]
   for (int n = 0; n < kInputs; ++n) {
     const PrincipledInputs in = random_material(rng, 0.02f, 1.0f);
     const glm::vec3 wo = random_upper_direction(rng);
-    const glm::vec3 wi = n % 2 ? direction_near_peak(wo, in.roughness * in.roughness, rng)
+    const glm::vec3 wi = n % 2 ? direction_near_peak(wo, in.scalar(MaterialParameter::Roughness) * in.scalar(MaterialParameter::Roughness), rng)
                                : random_upper_direction(rng);
     const LobeMixture bsdf = principled_bsdf(in, wo);
     float pdf = 0.0f;
@@ -255,10 +256,10 @@ TEST_CASE("Fast BSDF eval agrees with the double-precision reference", "[render]
       specular_failures += !specular_ok;
       total_failures += !total_ok;
       if (!(diffuse_ok && specular_ok && total_ok)) {
-        INFO("input " << n << " channel " << k << ": base (" << in.base_color.x << ", "
-                      << in.base_color.y << ", " << in.base_color.z << "), metallic " << in.metallic
-                      << ", roughness " << in.roughness << ", specular " << in.specular << ", tint "
-                      << in.specular_tint << ", "
+        INFO("input " << n << " channel " << k << ": base (" << in.color(MaterialParameter::BaseColor).x << ", "
+                      << in.color(MaterialParameter::BaseColor).y << ", " << in.color(MaterialParameter::BaseColor).z << "), metallic " << in.scalar(MaterialParameter::Metallic)
+                      << ", roughness " << in.scalar(MaterialParameter::Roughness) << ", specular " << in.scalar(MaterialParameter::Specular) << ", tint "
+                      << in.scalar(MaterialParameter::SpecularTint) << ", "
                       << (in.diffuse_model == DiffuseModel::Lambert ? "Lambert" : "principled")
                       << "; cos_o " << wo.z << ", cos_i " << wi.z << ", cos_h " << cos_h);
         INFO("diffuse " << diffuse[k] << " vs " << diffuse_ref[k] << "; specular " << specular[k]
@@ -285,7 +286,7 @@ TEST_CASE("Singular mirror lobe: sample weight is F(cos_o) over its selection pr
   int checked = 0;
   for (int n = 0; n < 5000; ++n) {
     PrincipledInputs in = random_material(rng, 0.0f, 0.0177f);
-    if (n % 4 == 0) in.metallic = 1.0f;  // no diffuse lobe: the weight is F itself
+    if (n % 4 == 0) in.set(MaterialParameter::Metallic, 1.0f);  // no diffuse lobe: the weight is F itself
     const glm::vec3 wo = random_upper_direction(rng);
     const LobeMixture bsdf = principled_bsdf(in, wo);
     if (!any(bsdf.flags() & (matrender::BxDFFlags::Glossy | matrender::BxDFFlags::Specular))) continue;
@@ -298,8 +299,8 @@ TEST_CASE("Singular mirror lobe: sample weight is F(cos_o) over its selection pr
 
     BsdfSample s;
     REQUIRE(bsdf.sample(1.0f - 0x1p-24f, {rng.next(), rng.next()}, &s));
-    INFO("metallic " << in.metallic << ", specular " << in.specular << ", roughness "
-                     << in.roughness << ", cos_o " << wo.z);
+    INFO("metallic " << in.scalar(MaterialParameter::Metallic) << ", specular " << in.scalar(MaterialParameter::Specular) << ", roughness "
+                     << in.scalar(MaterialParameter::Roughness) << ", cos_o " << wo.z);
     CHECK(matrender::is_specular(s.flags));
     CHECK(!matrender::is_diffuse(s.flags));
     CHECK(s.pdf == 0.0f);

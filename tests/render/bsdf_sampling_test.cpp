@@ -26,6 +26,7 @@
 using matrender::BsdfSample;
 using matrender::DiffuseModel;
 using matrender::LobeMixture;
+using matrender::MaterialParameter;
 using matrender::PrincipledInputs;
 
 namespace {
@@ -39,22 +40,22 @@ glm::vec3 direction_with_cosine(float cos_theta) {
 PrincipledInputs material(glm::vec3 base, float metallic, float roughness, float specular,
                           float specular_tint, DiffuseModel model = DiffuseModel::Principled) {
   PrincipledInputs in;
-  in.base_color = base;
-  in.metallic = metallic;
-  in.roughness = roughness;
-  in.specular = specular;
-  in.specular_tint = specular_tint;
+  in.set(MaterialParameter::BaseColor, base);
+  in.set(MaterialParameter::Metallic, metallic);
+  in.set(MaterialParameter::Roughness, roughness);
+  in.set(MaterialParameter::Specular, specular);
+  in.set(MaterialParameter::SpecularTint, specular_tint);
   in.diffuse_model = model;
   return in;
 }
 
 PrincipledInputs random_material(UniformFloats& rng) {
   PrincipledInputs in;
-  in.base_color = {rng.next(), rng.next(), rng.next()};
-  in.metallic = rng.next() < 0.3f ? 1.0f : rng.next();
-  in.roughness = 0.02f + 0.98f * rng.next();
-  in.specular = rng.next();
-  in.specular_tint = rng.next();
+  in.set(MaterialParameter::BaseColor, glm::vec3{rng.next(), rng.next(), rng.next()});
+  in.set(MaterialParameter::Metallic, rng.next() < 0.3f ? 1.0f : rng.next());
+  in.set(MaterialParameter::Roughness, 0.02f + 0.98f * rng.next());
+  in.set(MaterialParameter::Specular, rng.next());
+  in.set(MaterialParameter::SpecularTint, rng.next());
   in.diffuse_model = rng.next() < 0.5f ? DiffuseModel::Principled : DiffuseModel::Lambert;
   return in;
 }
@@ -383,7 +384,7 @@ TEST_CASE("principled_bsdf's sample fits the mixture pdf of eval (chi-square)", 
       bsdf.eval(glm::vec3(wi), &p);
       return static_cast<double>(p);
     };
-    const double alpha = static_cast<double>(c.inputs.roughness) * c.inputs.roughness;
+    const double alpha = static_cast<double>(c.inputs.scalar(MaterialParameter::Roughness)) * c.inputs.scalar(MaterialParameter::Roughness);
     {
       INFO("chart: cos theta x azimuth");
       report(chi_square_test(CosineAzimuthChart(), sample, pdf, ++seed));
@@ -444,7 +445,7 @@ TEST_CASE("BSDF values are reciprocal in wo and wi", "[render]") {
     const double cos_h = glm::length(wo_d + wi_d) / 2.0;
     for (int k = 0; k < 3; ++k) {
       INFO("model " << (in.diffuse_model == DiffuseModel::Lambert ? "Lambert" : "principled")
-                    << ", roughness " << in.roughness << ", metallic " << in.metallic << ", cos_o "
+                    << ", roughness " << in.scalar(MaterialParameter::Roughness) << ", metallic " << in.scalar(MaterialParameter::Metallic) << ", cos_o "
                     << wo.z << ", cos_i " << wi.z << ", cos_h " << cos_h);
       const double spec_tolerance =
           (1e-5 + 1e-6 / cos_h) * std::abs(spec_backward[k]) + 1e-6 * f_without_fresnel;
@@ -492,7 +493,7 @@ TEST_CASE("Sampling pdfs integrate to at most 1 over the sphere", "[render]") {
       CAPTURE(c.name);
       const glm::vec3 wo = direction_with_cosine(c.cos_o);
       const LobeMixture bsdf = principled_bsdf(c.inputs, wo);
-      const double alpha = static_cast<double>(c.inputs.roughness) * c.inputs.roughness;
+      const double alpha = static_cast<double>(c.inputs.scalar(MaterialParameter::Roughness)) * c.inputs.scalar(MaterialParameter::Roughness);
       const double integral = shaders_ref::integrate_over_sphere(
           [&](const glm::dvec3& wi) {
             float p = 0.0f;
@@ -589,7 +590,7 @@ TEST_CASE("White furnace: mean sample weight equals the reference directional al
     const double standard_error = std::sqrt(variance / kSamples);
     const double reference =
         shaders_ref::directional_albedo(reference_params(in), glm::normalize(glm::dvec3(wo))).y;
-    INFO("roughness " << in.roughness << ", metallic " << in.metallic << ", cos_o " << cos_o
+    INFO("roughness " << in.scalar(MaterialParameter::Roughness) << ", metallic " << in.scalar(MaterialParameter::Metallic) << ", cos_o " << cos_o
                       << ": mean weight " << mean << " +- " << standard_error
                       << ", reference albedo " << reference);
     CHECK(std::abs(mean - reference) <= 4.0 * standard_error + 3.0 * max_weight / kSamples + 1e-6);

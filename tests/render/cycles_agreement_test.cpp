@@ -49,11 +49,38 @@ matgeom::TriangleMesh bumpy_sphere(int rings = 48) {
   return mesh;
 }
 
-shaders_ref::CyclesScene paper_scene(const matrender::Material& material, int rings, float terminator_offset) {
-  shaders_ref::CyclesScene scene;
-  scene.mesh = bumpy_sphere(rings);
-  scene.shadow_terminator_geometry_offset = terminator_offset;
-  scene.material = material;
+// A thin-walled open vessel, deep and narrow (0.3 m high, 0.06-0.075 m in radius): a surface of
+// revolution with a closed bottom and an open top, zero thickness, its vertex normals averaged
+// over the bottom edge too. No lamp of the rig shines onto the inside bottom; it gets only what
+// the walls pass down. Before the fix of docs/conventions.md ("Light-tight transport") light
+// came through the walls and the bottom was 1.6 times too bright.
+matgeom::TriangleMesh open_vessel() {
+  constexpr int kSegments = 64;
+  // (radius, height) from the bottom centre out and up the wall to the rim.
+  std::vector<glm::dvec2> profile = {{0.0, 0.0}, {0.03, 0.0}, {0.06, 0.0}};
+  for (int k = 1; k <= 12; ++k) {
+    const double z = 0.3 * k / 12.0;
+    profile.push_back({0.06 + 0.015 * std::sin(M_PI * z / 0.3), z});
+  }
+  matgeom::TriangleMesh mesh;
+  for (const glm::dvec2& point : profile)
+    for (int j = 0; j < kSegments; ++j) {
+      const double phi = 2.0 * M_PI * j / kSegments;
+      mesh.positions.emplace_back(point.x * std::cos(phi), point.x * std::sin(phi), point.y);
+    }
+  for (uint32_t ring = 0; ring + 1 < profile.size(); ++ring)
+    for (uint32_t j = 0; j < kSegments; ++j) {
+      const uint32_t a = ring * kSegments + j, b = ring * kSegments + (j + 1) % kSegments;
+      const uint32_t c = a + kSegments, d = b + kSegments;
+      // Outward faces: down at the bottom, away from the axis on the wall.
+      if (ring > 0) mesh.triangles.push_back({a, c, b});
+      mesh.triangles.push_back({b, c, d});
+    }
+  matgeom::compute_vertex_normals(mesh);
+  return mesh;
+}
+
+matgeom::Sphere add_paper_rig(shaders_ref::CyclesScene& scene) {
   const matgeom::Sphere bound = matgeom::minimal_enclosing_sphere(scene.mesh.positions);
   matgeom::LightRigOptions options;
   options.target_illuminance_lux = 1000.0;
@@ -62,6 +89,15 @@ shaders_ref::CyclesScene paper_scene(const matrender::Material& material, int ri
     REQUIRE(rect);  // spots only come for objects under 0.15 m
     scene.lamps.push_back(*rect);
   }
+  return bound;
+}
+
+shaders_ref::CyclesScene paper_scene(const matrender::Material& material, int rings, float terminator_offset) {
+  shaders_ref::CyclesScene scene;
+  scene.mesh = bumpy_sphere(rings);
+  scene.shadow_terminator_geometry_offset = terminator_offset;
+  scene.material = material;
+  const matgeom::Sphere bound = add_paper_rig(scene);
   matgeom::CameraGridSpec grid;
   grid.center = bound.center;
   scene.camera.camera_to_world = matgeom::grid_camera(grid, 5, 16).camera_to_world;
@@ -155,11 +191,11 @@ TEST_CASE("Renders agree with Blender 3.4 Cycles up to noise", "[render][blender
   const std::string work = "cycles_agreement_out";
   for (const Case& c : cases) {
     matrender::Material material;
-    material.base_color.value = c.base_color;
-    material.metallic.value = c.metallic;
-    material.roughness.value = c.roughness;
-    material.specular = c.specular;
-    material.specular_tint = c.specular_tint;
+    material.set(matrender::MaterialParameter::BaseColor, c.base_color);
+    material.set(matrender::MaterialParameter::Metallic, c.metallic);
+    material.set(matrender::MaterialParameter::Roughness, c.roughness);
+    material.set(matrender::MaterialParameter::Specular, c.specular);
+    material.set(matrender::MaterialParameter::SpecularTint, c.specular_tint);
     const shaders_ref::CyclesScene scene = paper_scene(material, c.rings, c.terminator_offset);
     std::vector<shaders_ref::CyclesRender> renders = {{kSamples, 1, "", 0.0}, {kSamples, 2, "", 0.0}};
     shaders_ref::render_with_cycles(scene, renders, 2, work + "/" + c.name);
@@ -177,6 +213,32 @@ TEST_CASE("Renders agree with Blender 3.4 Cycles up to noise", "[render][blender
   }
 }
 
+TEST_CASE("The inside of a thin-walled open vessel agrees with Cycles", "[render][blender]") {
+  REQUIRE(shaders_ref::cycles_available());
+  shaders_ref::CyclesScene scene;
+  scene.mesh = open_vessel();
+  scene.material.set(matrender::MaterialParameter::BaseColor, glm::vec3(0.8f, 0.7f, 0.6f));
+  scene.material.set(matrender::MaterialParameter::Roughness, 0.5f);
+  const matgeom::Sphere bound = add_paper_rig(scene);
+  // From above, the opening filling most of the image: nearly every pixel is the inside.
+  matgeom::CameraGridSpec grid;
+  grid.center = bound.center;
+  grid.radius = 0.8;
+  scene.camera.camera_to_world = matgeom::grid_camera(grid, 0, 16).camera_to_world;
+  scene.camera.vertical_fov = 0.25;
+  scene.camera.width = scene.camera.height = kResolution;
+  std::vector<shaders_ref::CyclesRender> renders = {{kSamples, 1, "", 0.0}, {kSamples, 2, "", 0.0}};
+  shaders_ref::render_with_cycles(scene, renders, 2, "cycles_agreement_out/open_vessel");
+  const Agreement a = compare(render_ours(scene, 1), render_ours(scene, 2),
+                              shaders_ref::read_rgb_exr(renders[0].exr_path, kResolution, kResolution),
+                              shaders_ref::read_rgb_exr(renders[1].exr_path, kResolution, kResolution));
+  INFO("mean pixel ours " << a.mean_ours << ", Cycles " << a.mean_cycles << " (difference +- "
+                          << a.difference.standard_error << "); excess " << a.excess.mean << " +- "
+                          << a.excess.standard_error);
+  CHECK(a.excess.mean <= 4.0 * a.excess.standard_error);
+  CHECK(std::abs(a.difference.mean) <= 4.0 * a.difference.standard_error);
+}
+
 std::vector<float> minus(std::vector<float> a, const std::vector<float>& b) {
   for (size_t i = 0; i < a.size(); ++i) a[i] -= b[i];
   return a;
@@ -190,8 +252,8 @@ std::vector<float> minus(std::vector<float> a, const std::vector<float>& b) {
 TEST_CASE("The shadow terminator geometry offset changes renders as it does in Cycles", "[render][blender]") {
   REQUIRE(shaders_ref::cycles_available());
   matrender::Material material;
-  material.base_color.value = glm::vec3(0.8f);
-  material.roughness.value = 0.5f;
+  material.set(matrender::MaterialParameter::BaseColor, glm::vec3(0.8f));
+  material.set(matrender::MaterialParameter::Roughness, 0.5f);
   const auto render_both = [&](float offset, std::vector<float> ours[2], std::vector<float> cycles[2]) {
     const shaders_ref::CyclesScene scene = paper_scene(material, 6, offset);
     std::vector<shaders_ref::CyclesRender> renders = {{kSamples, 1, "", 0.0}, {kSamples, 2, "", 0.0}};
@@ -214,8 +276,7 @@ TEST_CASE("The shadow terminator geometry offset changes renders as it does in C
     CHECK(a.mean_ours > 0.0);  // the offset brightens the terminator
     // Where and how much, pixel by pixel: within the noise.
     CHECK(a.excess.mean <= 4.0 * a.excess.standard_error);
-    // In total our change is 4 % smaller than Cycles' (6 standard errors; docs/conventions.md,
-    // known differences): held here to within 10 % until that is understood.
-    CHECK(a.mean_ours == Approx(a.mean_cycles).epsilon(0.10));
+    // And in total: within four standard errors of the difference.
+    CHECK(std::abs(a.difference.mean) <= 4.0 * a.difference.standard_error);
   }
 }

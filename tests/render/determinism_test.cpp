@@ -16,20 +16,20 @@ namespace {
 // `white`, when given, multiplies every material input that can be textured.
 Scene glossy_box_scene(const TexturePtr& white = nullptr) {
   const auto texture = [&](Material m) {
-    m.base_color.texture = m.roughness.texture = m.metallic.texture = white;
+    m[matrender::MaterialParameter::BaseColor].texture = m[matrender::MaterialParameter::Roughness].texture = m[matrender::MaterialParameter::Metallic].texture = white;
     return m;
   };
   Scene scene;
   Material floor = test_scenes::lambert(0.7f);
   floor.diffuse_model = DiffuseModel::Principled;
-  floor.specular = 0.5f;
-  floor.roughness.value = 0.3f;
+  floor.set(matrender::MaterialParameter::Specular, 0.5f);
+  floor.set(matrender::MaterialParameter::Roughness, 0.3f);
   matgeom::TriangleMesh mesh = test_scenes::horizontal_square(4.0);
   scene.add_mesh(mesh, {scene.add_material(texture(floor))});
   Material metal;
-  metal.base_color.value = glm::vec3(0.9f, 0.6f, 0.3f);
-  metal.metallic.value = 1.0f;
-  metal.roughness.value = 0.2f;
+  metal.set(matrender::MaterialParameter::BaseColor, glm::vec3(0.9f, 0.6f, 0.3f));
+  metal.set(matrender::MaterialParameter::Metallic, 1.0f);
+  metal.set(matrender::MaterialParameter::Roughness, 0.2f);
   scene.add_mesh(test_scenes::horizontal_square(0.5, 0.4), {scene.add_material(texture(metal))});
   RectLight lamp;
   lamp.light_to_world[3] = glm::dvec4(0.0, 0.0, 2.0, 1.0);

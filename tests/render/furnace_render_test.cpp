@@ -56,9 +56,9 @@ TEST_CASE("Furnace: an albedo-1 Lambertian plane shows exactly 1", "[render]") {
 TEST_CASE("Furnace: principled diffuse, base colour 1, matches the reference albedo", "[render]") {
   for (float roughness : {0.0f, 0.5f, 1.0f}) {
     Material m;
-    m.base_color.value = glm::vec3(1.0f);
-    m.roughness.value = roughness;
-    m.specular = 0.0f;
+    m.set(matrender::MaterialParameter::BaseColor, glm::vec3(1.0f));
+    m.set(matrender::MaterialParameter::Roughness, roughness);
+    m.set(matrender::MaterialParameter::Specular, 0.0f);
     shaders_ref::PrincipledParams p;
     p.base_color = glm::dvec3(1.0);
     p.roughness = roughness;
@@ -70,9 +70,9 @@ TEST_CASE("Furnace: principled diffuse, base colour 1, matches the reference alb
 TEST_CASE("Furnace: metallic 1 over a roughness sweep matches the reference albedo", "[render]") {
   for (float roughness : {0.05f, 0.2f, 0.5f, 1.0f}) {
     Material m;
-    m.base_color.value = glm::vec3(1.0f, 0.8f, 0.5f);
-    m.metallic.value = 1.0f;
-    m.roughness.value = roughness;
+    m.set(matrender::MaterialParameter::BaseColor, glm::vec3(1.0f, 0.8f, 0.5f));
+    m.set(matrender::MaterialParameter::Metallic, 1.0f);
+    m.set(matrender::MaterialParameter::Roughness, roughness);
     shaders_ref::PrincipledParams p;
     p.base_color = glm::dvec3(1.0, 0.8, 0.5);
     p.metallic = 1.0;
@@ -83,10 +83,10 @@ TEST_CASE("Furnace: metallic 1 over a roughness sweep matches the reference albe
 
 TEST_CASE("Furnace: a dielectric with both lobes matches the reference albedo", "[render]") {
   Material m;
-  m.base_color.value = glm::vec3(0.6f, 0.7f, 0.8f);
-  m.roughness.value = 0.3f;
-  m.specular = 0.5f;
-  m.specular_tint = 0.5f;
+  m.set(matrender::MaterialParameter::BaseColor, glm::vec3(0.6f, 0.7f, 0.8f));
+  m.set(matrender::MaterialParameter::Roughness, 0.3f);
+  m.set(matrender::MaterialParameter::Specular, 0.5f);
+  m.set(matrender::MaterialParameter::SpecularTint, 0.5f);
   shaders_ref::PrincipledParams p;
   p.base_color = glm::dvec3(0.6, 0.7, 0.8);
   p.roughness = 0.3;

@@ -97,8 +97,8 @@ matgeom::ObjectAsset through_obj_file(const matgeom::TriangleMesh& mesh, const s
 
 Material grey_material() {
   Material m;
-  m.base_color.value = glm::vec3(0.8f);
-  m.roughness.value = 0.5f;
+  m.set(matrender::MaterialParameter::BaseColor, glm::vec3(0.8f));
+  m.set(matrender::MaterialParameter::Roughness, 0.5f);
   return m;
 }
 

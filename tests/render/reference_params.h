@@ -7,11 +7,11 @@
 
 inline shaders_ref::PrincipledParams reference_params(const matrender::PrincipledInputs& in) {
   shaders_ref::PrincipledParams p;
-  p.base_color = glm::dvec3(in.base_color);
-  p.metallic = in.metallic;
-  p.roughness = in.roughness;
-  p.specular = in.specular;
-  p.specular_tint = in.specular_tint;
+  p.base_color = glm::dvec3(in.color(matrender::MaterialParameter::BaseColor));
+  p.metallic = in.scalar(matrender::MaterialParameter::Metallic);
+  p.roughness = in.scalar(matrender::MaterialParameter::Roughness);
+  p.specular = in.scalar(matrender::MaterialParameter::Specular);
+  p.specular_tint = in.scalar(matrender::MaterialParameter::SpecularTint);
   p.lambert_diffuse = in.diffuse_model == matrender::DiffuseModel::Lambert;
   return p;
 }

@@ -32,9 +32,9 @@ matgeom::TriangleMesh broken_mesh(float scale) {
 
 Material material_with(float roughness, float metallic) {
   Material m;
-  m.base_color.value = glm::vec3(0.9f, 0.8f, 0.7f);
-  m.roughness.value = roughness;
-  m.metallic.value = metallic;
+  m.set(matrender::MaterialParameter::BaseColor, glm::vec3(0.9f, 0.8f, 0.7f));
+  m.set(matrender::MaterialParameter::Roughness, roughness);
+  m.set(matrender::MaterialParameter::Metallic, metallic);
   return m;
 }
 

@@ -25,9 +25,9 @@ inline matgeom::TriangleMesh horizontal_square(double size, double height = 0.0)
 inline matrender::Material lambert(float albedo) {
   matrender::Material m;
   m.diffuse_model = matrender::DiffuseModel::Lambert;
-  m.base_color.value = glm::vec3(albedo);
-  m.specular = 0.0f;
-  m.metallic.value = 0.0f;
+  m.set(matrender::MaterialParameter::BaseColor, glm::vec3(albedo));
+  m.set(matrender::MaterialParameter::Specular, 0.0f);
+  m.set(matrender::MaterialParameter::Metallic, 0.0f);
   return m;
 }
 

@@ -1,23 +1,24 @@
 #pragma once
-// Principled BSDF parameters with Blender 3.4 Cycles semantics (docs/conventions.md).
+// A material: the Principled BSDF's parameters (matgeom/material_parameters.h, the one table of
+// them) with Blender 3.4 Cycles semantics (docs/conventions.md), each a constant or a texture.
+#include <array>
 #include <string>
 
 #include <glm/glm.hpp>
 
+#include "matgeom/material_parameters.h"
 #include "matrender/texture.h"
 
 namespace matrender {
 
-// A parameter is a constant, or a constant factor times a texture (Blender's importer multiplies
+using matgeom::MaterialParameter;
+
+// One parameter: a constant, or a constant factor times a texture (Blender's importer multiplies
 // glTF factors and textures the same way). A constant costs no lookup.
-struct ColorParam {
-  glm::vec3 value{0.8f};
-  TexturePtr texture;  // when set, the result is value * texture RGB
-};
-struct ScalarParam {
-  float value = 0.0f;
-  TexturePtr texture;  // when set, the result is value * texture[channel]
-  int channel = 0;     // which texture channel (0 = R, 1 = G, 2 = B, 3 = A)
+struct ParameterValue {
+  glm::vec3 value{0.0f};  // a colour; a scalar is held in every channel
+  TexturePtr texture;     // when set: value * texture RGB (colour) or value * texture[channel] (scalar)
+  int channel = 0;        // scalars: which texture channel (0 = R, 1 = G, 2 = B, 3 = A)
 };
 
 enum class DiffuseModel {
@@ -26,17 +27,27 @@ enum class DiffuseModel {
 };
 
 struct Material {
+  // Every parameter at Blender's default; scalar texture channels at their place in a packed
+  // metallic-roughness image.
+  Material();
+
   std::string name = "material";
   int label_id = 0;  // material family id written to the label AOV
   DiffuseModel diffuse_model = DiffuseModel::Principled;
-  ColorParam base_color{glm::vec3(0.8f), nullptr};
-  ScalarParam metallic{0.0f, nullptr, 2};
-  ScalarParam roughness{0.5f, nullptr, 1};
-  float specular = 0.5f;
-  float specular_tint = 0.0f;
-  float ior = 1.45f;  // Blender's Principled IOR: the relative index a surface point carries
+  std::array<ParameterValue, matgeom::kMaterialParameterCount> parameters;
   TexturePtr normal_map;  // tangent space, OpenGL convention (+Y = +v), Non-Color
   float normal_strength = 1.0f;
+
+  ParameterValue& operator[](MaterialParameter p) { return parameters[static_cast<size_t>(p)]; }
+  const ParameterValue& operator[](MaterialParameter p) const { return parameters[static_cast<size_t>(p)]; }
+  // A constant value: set(MaterialParameter::Roughness, 0.3f), set(MaterialParameter::BaseColor, rgb).
+  Material& set(MaterialParameter p, float value);
+  Material& set(MaterialParameter p, const glm::vec3& value);
+  // The constant (the factor of a texture); a scalar's is x.
+  glm::vec3 color(MaterialParameter p) const { return (*this)[p].value; }
+  float scalar(MaterialParameter p) const { return (*this)[p].value.x; }
+  // Some parameter comes from a texture.
+  bool textured() const;
 };
 
 }  // namespace matrender

@@ -8,9 +8,11 @@
 
 #include <glm/glm.hpp>
 
+#include "matgeom/material_parameters.h"
+
 namespace matrender {
 
-enum class ColorSpace { SRGB, NonColor };
+using matgeom::ColorSpace;
 enum class Wrap { Repeat, Clamp };
 
 class Texture {

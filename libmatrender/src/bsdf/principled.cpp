@@ -10,12 +10,18 @@ float luminance(const glm::vec3& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0
 
 }  // namespace
 
+PrincipledInputs::PrincipledInputs() : PrincipledInputs(Material()) {}
+
+PrincipledInputs::PrincipledInputs(const Material& material) : diffuse_model(material.diffuse_model) {
+  for (size_t i = 0; i < values.size(); ++i) values[i] = material.parameters[i].value;
+}
+
 PrincipledParameters::PrincipledParameters(const PrincipledInputs& inputs) : diffuse_model(inputs.diffuse_model) {
-  const glm::vec3 base = glm::max(inputs.base_color, glm::vec3(0.0f));
-  const float metallic = glm::clamp(inputs.metallic, 0.0f, 1.0f);
-  const float specular = glm::clamp(inputs.specular, 0.0f, 1.0f);
-  const float tint_amount = glm::clamp(inputs.specular_tint, 0.0f, 1.0f);
-  roughness = glm::clamp(inputs.roughness, 0.0f, 1.0f);
+  const glm::vec3 base = glm::max(inputs.color(MaterialParameter::BaseColor), glm::vec3(0.0f));
+  const float metallic = glm::clamp(inputs.scalar(MaterialParameter::Metallic), 0.0f, 1.0f);
+  const float specular = glm::clamp(inputs.scalar(MaterialParameter::Specular), 0.0f, 1.0f);
+  const float tint_amount = glm::clamp(inputs.scalar(MaterialParameter::SpecularTint), 0.0f, 1.0f);
+  roughness = glm::clamp(inputs.scalar(MaterialParameter::Roughness), 0.0f, 1.0f);
   alpha = roughness * roughness;
   singular = alpha * alpha <= kGgxSingularAlpha2;
 

@@ -3,6 +3,8 @@
 // diffuse lobe weighted (1 - metallic) * base colour plus a GGX specular lobe with the
 // interpolated Fresnel, added on top (svm_closure.h, CLOSURE_BSDF_PRINCIPLED_ID). A material
 // without a lobe pays nothing for it: specular 0 and metallic 0 make no specular lobe at all.
+#include <array>
+
 #include <glm/glm.hpp>
 
 #include "bsdf/fresnel.h"
@@ -11,14 +13,23 @@
 
 namespace matrender {
 
-// Material inputs after texture lookups, for one shading point.
+// A material's parameters after texture lookups, for one shading point.
 struct PrincipledInputs {
-  glm::vec3 base_color{0.8f};
-  float metallic = 0.0f;
-  float roughness = 0.5f;
-  float specular = 0.5f;
-  float specular_tint = 0.0f;
+  // Blender's defaults.
+  PrincipledInputs();
+  // The material's constants, textures left out.
+  explicit PrincipledInputs(const Material& material);
+
+  std::array<glm::vec3, matgeom::kMaterialParameterCount> values;  // by MaterialParameter; scalars in x
   DiffuseModel diffuse_model = DiffuseModel::Principled;
+
+  glm::vec3 color(MaterialParameter p) const { return values[static_cast<size_t>(p)]; }
+  float scalar(MaterialParameter p) const { return values[static_cast<size_t>(p)].x; }
+  PrincipledInputs& set(MaterialParameter p, const glm::vec3& value) {
+    values[static_cast<size_t>(p)] = value;
+    return *this;
+  }
+  PrincipledInputs& set(MaterialParameter p, float value) { return set(p, glm::vec3(value)); }
 };
 
 // What the lobes take from the material inputs alone, before any view direction: computed once

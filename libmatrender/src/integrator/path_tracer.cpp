@@ -31,9 +31,9 @@ float max_component(const glm::vec3& v) { return std::max(v.x, std::max(v.y, v.z
 
 // Where a shadow ray toward unit direction wi starts before the usual ray offset: the hit point,
 // lifted toward the smooth surface near the terminator of a smooth-shaded triangle (Cycles'
-// shadow_ray_offset; shadow_terminator.h). ng is the geometric normal on the side the ray
-// leaves. Cycles picks that side from the smooth normal instead; where the two disagree (a light
-// above the bent shading normal but below the smooth one) its lift crosses the triangle, and
+// shadow_ray_offset; shadow_terminator.h). ng is the geometric normal on the side the ray's lobes
+// scatter to. Cycles picks the side from the smooth normal instead; where the two disagree (a
+// lamp above the bent shading normal but below the smooth one) its lift crosses the triangle, and
 // from inside a closed surface the ray then starts outside it.
 glm::vec3 shadow_ray_start(const MeshData& mesh, const RayHit& hit, const SurfacePoint& sp, const glm::vec3& wi,
                            const glm::vec3& ng) {
@@ -129,11 +129,13 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
       const auto light = lights_.sample(sp.position, receiving, sampler.get_2d(dims.light));
       if (light) {
         float pdf_bsdf;
-        const glm::vec3 f = bsdf.eval(light->wi, &pdf_bsdf);
+        BxDFFlags lobes;
+        const glm::vec3 f = bsdf.eval(light->wi, &pdf_bsdf, &lobes);
         if (max_component(f) > 0.0f) {
-          // The shadow ray leaves on the side the light arrives from: the viewer's for reflection,
-          // the far side for transmission (bsdf.h), so it never starts beyond the surface it crosses.
-          const glm::vec3 side = is_reflective(bsdf.side_of(light->wi)) ? sp.geometric_normal : -sp.geometric_normal;
+          // The shadow ray starts on the side its lobes scatter to: the viewer's for reflection,
+          // the far one for transmission, whichever side of the triangle the lamp is on. A lamp
+          // beyond the triangle's plane is then reached only around the surface, never through it.
+          const glm::vec3 side = is_reflective(lobes) ? sp.geometric_normal : -sp.geometric_normal;
           // From a start lifted off the triangle the ray aims again at the same lamp point.
           const glm::vec3 start = shadow_ray_start(scene_.meshes[hit.mesh], hit, sp, light->wi, side);
           glm::vec3 shadow_dir = light->wi;

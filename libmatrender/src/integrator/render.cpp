@@ -119,9 +119,9 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
         ++acc.hits;
         if (!surface_aovs) continue;
         const SurfacePoint& sp = path.first;
-        acc.base_color += glm::dvec3(glm::clamp(sp.inputs.base_color, 0.0f, 1.0f));
-        acc.roughness += glm::clamp(sp.inputs.roughness, 0.0f, 1.0f);
-        acc.metallic += glm::clamp(sp.inputs.metallic, 0.0f, 1.0f);
+        acc.base_color += glm::dvec3(glm::clamp(sp.inputs.color(MaterialParameter::BaseColor), 0.0f, 1.0f));
+        acc.roughness += glm::clamp(sp.inputs.scalar(MaterialParameter::Roughness), 0.0f, 1.0f);
+        acc.metallic += glm::clamp(sp.inputs.scalar(MaterialParameter::Metallic), 0.0f, 1.0f);
         acc.normal += glm::dvec3(sp.shading_normal);
         const float offset2 = glm::dot(offsets[lane], offsets[lane]);
         if (offset2 < acc.nearest_offset2) {

@@ -15,14 +15,6 @@ glm::vec3 normalize_or(const glm::vec3& v, const glm::vec3& fallback) {
   return v * (1.0f / std::sqrt(len2));
 }
 
-glm::vec3 eval_color(const ColorParam& p, glm::vec2 uv) {
-  return p.texture ? p.value * glm::vec3(p.texture->sample(uv)) : p.value;
-}
-
-float eval_scalar(const ScalarParam& p, glm::vec2 uv) {
-  return p.texture ? p.value * p.texture->sample(uv)[p.channel] : p.value;
-}
-
 // Cycles' Normal Map node in tangent space: n = normalize(x T + y sign (N x T) + z N) from
 // n_ts = 2 rgb - 1, then strength mixes between N and n.
 glm::vec3 apply_normal_map(const Material& material, glm::vec2 uv, const glm::vec3& normal,
@@ -37,20 +29,21 @@ glm::vec3 apply_normal_map(const Material& material, glm::vec2 uv, const glm::ve
   return normalize_or(normal + (mapped - normal) * material.normal_strength, normal);
 }
 
-bool has_textured_input(const Material& material) {
-  return material.base_color.texture || material.metallic.texture || material.roughness.texture;
-}
-
-// The inputs with every texture left out: the constants, and the untexturable parameters.
-PrincipledInputs untextured_inputs(const Material& material) {
-  PrincipledInputs inputs;
-  inputs.base_color = material.base_color.value;
-  inputs.metallic = material.metallic.value;
-  inputs.roughness = material.roughness.value;
-  inputs.specular = material.specular;
-  inputs.specular_tint = material.specular_tint;
-  inputs.diffuse_model = material.diffuse_model;
-  return inputs;
+// The textured parameters at uv, in table order; parameters sharing one image (a packed
+// metallic-roughness texture) take one lookup.
+void look_up_textures(const Material& material, glm::vec2 uv, PrincipledInputs& inputs) {
+  const Texture* looked_up = nullptr;
+  glm::vec4 texel(0.0f);
+  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) {
+    const ParameterValue& p = material[info.id];
+    if (!p.texture) continue;
+    if (p.texture.get() != looked_up) {
+      texel = p.texture->sample(uv);
+      looked_up = p.texture.get();
+    }
+    inputs.set(info.id, info.kind == matgeom::ParameterKind::Color ? p.value * glm::vec3(texel)
+                                                                 : glm::vec3(p.value.x * texel[p.channel]));
+  }
 }
 
 }  // namespace
@@ -80,10 +73,11 @@ SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm:
   sp.part = mesh.triangle_parts.empty() ? 0 : static_cast<int32_t>(mesh.triangle_parts[hit.triangle]);
   sp.material = mesh.part_materials[static_cast<size_t>(sp.part)];
   const Material& material = scene.materials[sp.material];
-  sp.eta = backfacing ? 1.0f / material.ior : material.ior;
+  const float ior = material.scalar(MaterialParameter::Ior);
+  sp.eta = backfacing ? 1.0f / ior : ior;
 
   // Only textures read the UV.
-  const bool textured = has_textured_input(material) || material.normal_map;
+  const bool textured = material.textured() || material.normal_map;
   if (textured && !mesh.uvs.empty()) sp.uv = b0 * mesh.uvs[tri.x] + b1 * mesh.uvs[tri.y] + b2 * mesh.uvs[tri.z];
   if (!std::isfinite(sp.uv.x) || !std::isfinite(sp.uv.y)) sp.uv = glm::vec2(0.0f);
 
@@ -97,23 +91,14 @@ SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm:
   if (!is_finite(n)) n = sp.geometric_normal;
   sp.shading_normal = ensure_valid_reflection(sp.geometric_normal, wo, n);
 
-  sp.inputs = untextured_inputs(material);
-  sp.inputs.base_color = eval_color(material.base_color, sp.uv);
-  if (material.metallic.texture && material.metallic.texture == material.roughness.texture) {
-    // One lookup for a packed metallic-roughness (ORM) image.
-    const glm::vec4 packed = material.metallic.texture->sample(sp.uv);
-    sp.inputs.metallic = material.metallic.value * packed[material.metallic.channel];
-    sp.inputs.roughness = material.roughness.value * packed[material.roughness.channel];
-  } else {
-    sp.inputs.metallic = eval_scalar(material.metallic, sp.uv);
-    sp.inputs.roughness = eval_scalar(material.roughness, sp.uv);
-  }
+  sp.inputs = PrincipledInputs(material);
+  if (material.textured()) look_up_textures(material, sp.uv, sp.inputs);
   return sp;
 }
 
 std::optional<PrincipledInputs> constant_inputs(const Material& material) {
-  if (has_textured_input(material)) return std::nullopt;
-  return untextured_inputs(material);
+  if (material.textured()) return std::nullopt;
+  return PrincipledInputs(material);
 }
 
 }  // namespace matrender

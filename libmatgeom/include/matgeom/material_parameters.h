@@ -1,0 +1,67 @@
+#pragma once
+// The Principled BSDF's parameters, declared once. Scene files, the object readers' material
+// mapping, the renderer's constant-or-textured decision, parameter checks and the scene-format
+// docs all follow this table; adding a parameter is one row here (and its enum value) plus the
+// shading code that uses it.
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string_view>
+
+namespace matgeom {
+
+// How 8-bit texels of an image map to values: sRGB-encoded colour, or plain data.
+enum class ColorSpace { SRGB, NonColor };
+
+// Row order of the table; the values index Material::parameters.
+enum class MaterialParameter : unsigned {
+  BaseColor,
+  Metallic,
+  Roughness,
+  Specular,
+  SpecularTint,
+  Ior,
+};
+constexpr size_t kMaterialParameterCount = 6;
+
+enum class ParameterKind {
+  Color,   // RGB, from the RGB of a texture
+  Scalar,  // one number, from one channel of a texture
+};
+
+struct MaterialParameterInfo {
+  MaterialParameter id;
+  const char* name;           // key in scene files and name in the docs
+  const char* blender_input;  // the Principled BSDF input of Blender 3.4 it mirrors
+  ParameterKind kind;
+  double default_value;       // Blender's default (every channel of a colour)
+  double min, max;            // valid values (every channel of a colour)
+  bool texturable;            // may come from an image
+  ColorSpace texture_space;   // how its images are read unless a file says otherwise
+  int packed_channel;         // its channel in a packed metallic-roughness image (glTF: G, B)
+  const char* description;    // one line for the docs
+};
+
+constexpr std::array<MaterialParameterInfo, kMaterialParameterCount> kMaterialParameters = {{
+    {MaterialParameter::BaseColor, "base_color", "Base Color", ParameterKind::Color, 0.8, 0.0, 1.0, true,
+     ColorSpace::SRGB, 0, "diffuse albedo of dielectrics, specular colour of metals"},
+    {MaterialParameter::Metallic, "metallic", "Metallic", ParameterKind::Scalar, 0.0, 0.0, 1.0, true,
+     ColorSpace::NonColor, 2, "0 dielectric, 1 metal, mixed linearly between"},
+    {MaterialParameter::Roughness, "roughness", "Roughness", ParameterKind::Scalar, 0.5, 0.0, 1.0, true,
+     ColorSpace::NonColor, 1, "GGX alpha = roughness^2; also the principled diffuse retro-reflection"},
+    {MaterialParameter::Specular, "specular", "Specular", ParameterKind::Scalar, 0.5, 0.0, 1.0, true,
+     ColorSpace::NonColor, 0, "dielectric reflectance at normal incidence F0 = 0.08 specular (0.5: 4 %)"},
+    {MaterialParameter::SpecularTint, "specular_tint", "Specular Tint", ParameterKind::Scalar, 0.0, 0.0, 1.0, true,
+     ColorSpace::NonColor, 0, "tints dielectric reflection toward the base colour's hue"},
+    {MaterialParameter::Ior, "ior", "IOR", ParameterKind::Scalar, 1.45, 1.0, 1000.0, false, ColorSpace::NonColor, 0,
+     "index of refraction; the relative index a surface point carries"},
+}};
+
+constexpr const MaterialParameterInfo& material_parameter(MaterialParameter id) {
+  return kMaterialParameters[static_cast<size_t>(id)];
+}
+
+// The parameter a scene-file key names, if any.
+std::optional<MaterialParameter> material_parameter_named(std::string_view name);
+
+}  // namespace matgeom
