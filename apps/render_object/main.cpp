@@ -12,6 +12,7 @@
 
 #include "common/interrupt.h"
 #include "matgeom/builtin_objects.h"
+#include "matgeom/material_parameters.h"
 #include "matrender/image_io.h"
 #include "matrender/render.h"
 #include "options.h"
@@ -101,6 +102,10 @@ int main(int argc, char** argv) {
   try {
     if (options.list_objects) {
       list_objects();
+      return 0;
+    }
+    if (options.list_parameters) {
+      fmt::print("{}", matgeom::material_parameters_markdown());
       return 0;
     }
     return render_and_write(options);

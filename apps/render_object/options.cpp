@@ -103,6 +103,9 @@ void add_scene_options(CLI::App& app, Options& o) {
   scene->excludes(mesh)->excludes(object);
   mesh->excludes(object);
   app.add_flag("--list-objects", o.list_objects, "print the built-in object names and exit")->group(group);
+  app.add_flag("--list-parameters", o.list_parameters,
+               "print the material parameters scene files take (a markdown table) and exit")
+      ->group(group);
 }
 
 void add_camera_options(CLI::App& app, Options& o) {

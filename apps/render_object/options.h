@@ -22,6 +22,7 @@ struct Options {
   std::optional<std::string> mesh_file;
   std::optional<std::string> object;  // NAME[:SEED]
   bool list_objects = false;
+  bool list_parameters = false;
 
   // Each set value overrides the scene's (the scene file's camera and render block).
   std::optional<int> spp;

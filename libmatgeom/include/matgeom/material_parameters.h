@@ -6,6 +6,7 @@
 #include <array>
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace matgeom {
@@ -54,7 +55,7 @@ constexpr std::array<MaterialParameterInfo, kMaterialParameterCount> kMaterialPa
     {MaterialParameter::SpecularTint, "specular_tint", "Specular Tint", ParameterKind::Scalar, 0.0, 0.0, 1.0, true,
      ColorSpace::NonColor, 0, "tints dielectric reflection toward the base colour's hue"},
     {MaterialParameter::Ior, "ior", "IOR", ParameterKind::Scalar, 1.45, 1.0, 1000.0, false, ColorSpace::NonColor, 0,
-     "index of refraction; the relative index a surface point carries"},
+     "index of refraction of transmitted light (no lobe transmits yet: it changes no image)"},
 }};
 
 constexpr const MaterialParameterInfo& material_parameter(MaterialParameter id) {
@@ -63,5 +64,8 @@ constexpr const MaterialParameterInfo& material_parameter(MaterialParameter id) 
 
 // The parameter a scene-file key names, if any.
 std::optional<MaterialParameter> material_parameter_named(std::string_view name);
+
+// The table as the markdown table of docs/scene_format.md (a test holds the docs to it).
+std::string material_parameters_markdown();
 
 }  // namespace matgeom

@@ -1,0 +1,83 @@
+// Every parameter of the table is shaded from its texture when it has one: none is silently
+// taken as its constant, and a material is constant only when no parameter is textured.
+#include <catch2/catch.hpp>
+
+#include <array>
+
+#include "matrender/scene.h"
+#include "scene/scene_data.h"
+#include "scene/surface_shading.h"
+#include "test_scenes.h"
+
+using namespace matrender;
+
+namespace {
+
+// A 1x1 texture: every lookup gives exactly this texel.
+TexturePtr constant_texture(const glm::vec4& texel) {
+  const std::array<float, 4> rgba = {texel.r, texel.g, texel.b, texel.a};
+  return Texture::from_pixelsf(1, 1, 4, rgba.data(), ColorSpace::NonColor);
+}
+
+// The inputs shade_surface gives the middle of a square in `material`, seen from above.
+PrincipledInputs shaded_inputs(const Material& material) {
+  Scene scene;
+  scene.add_mesh(test_scenes::horizontal_square(1.0), {scene.add_material(material)});
+  scene.commit();
+  RayHit hit;
+  hit.t = 1.0f;
+  hit.mesh = 0;
+  hit.triangle = 0;
+  hit.u = hit.v = 0.25f;
+  return shade_surface(scene.data(), hit, glm::vec3(0.0f, 0.0f, 1.0f)).inputs;
+}
+
+}  // namespace
+
+TEST_CASE("Each texturable parameter is read from its texture and makes the material textured", "[render]") {
+  const glm::vec4 texel(0.25f, 0.5f, 0.75f, 0.125f);
+  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) {
+    if (!info.texturable) continue;
+    CAPTURE(info.name);
+    Material material;
+    CHECK(constant_inputs(material));
+    const glm::vec3 factor = info.kind == matgeom::ParameterKind::Color ? glm::vec3(0.5f, 1.0f, 0.8f) : glm::vec3(0.8f);
+    material[info.id].value = factor;
+    material[info.id].texture = constant_texture(texel);
+    material[info.id].channel = 3;
+    CHECK(material.textured());
+    CHECK_FALSE(constant_inputs(material));
+
+    const PrincipledInputs inputs = shaded_inputs(material);
+    if (info.kind == matgeom::ParameterKind::Color) {
+      CHECK(inputs.color(info.id) == factor * glm::vec3(texel));
+    } else {
+      CHECK(inputs.scalar(info.id) == 0.8f * texel.a);
+    }
+    // Every other parameter keeps its constant.
+    for (const matgeom::MaterialParameterInfo& other : matgeom::kMaterialParameters)
+      if (other.id != info.id) CHECK(inputs.color(other.id) == Material().color(other.id));
+  }
+}
+
+TEST_CASE("Parameters sharing one packed image read their own channels of it", "[render]") {
+  Material material;
+  const TexturePtr packed = constant_texture({0.1f, 0.6f, 0.9f, 1.0f});
+  material[MaterialParameter::Roughness].texture = packed;
+  material[MaterialParameter::Metallic].texture = packed;
+  material.set(MaterialParameter::Roughness, 1.0f).set(MaterialParameter::Metallic, 0.5f);
+  const PrincipledInputs inputs = shaded_inputs(material);
+  // A new Material's channels are the glTF packing: roughness G, metallic B.
+  CHECK(inputs.scalar(MaterialParameter::Roughness) == 0.6f);
+  CHECK(inputs.scalar(MaterialParameter::Metallic) == 0.5f * 0.9f);
+}
+
+TEST_CASE("A new material has Blender's defaults from the table", "[render]") {
+  const Material material;
+  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) {
+    CAPTURE(info.name);
+    CHECK(material.color(info.id) == glm::vec3(static_cast<float>(info.default_value)));
+    CHECK_FALSE(material[info.id].texture);
+  }
+  CHECK_FALSE(material.textured());
+}
