@@ -4,11 +4,7 @@
 #include <fstream>
 #include <string>
 
-#include "matgeom/bounding_sphere.h"
-#include "matgeom/camera_grid.h"
-#include "matgeom/light_rig.h"
 #include "matgeom/tangents.h"
-#include "matrender/rig_lights.h"
 
 namespace bench {
 
@@ -37,36 +33,12 @@ matgeom::TriangleMesh displaced_sphere(size_t triangles) {
   return m;
 }
 
-std::vector<matrender::Light> paper_rig_lights(const matgeom::TriangleMesh& mesh) {
-  const matgeom::Sphere sphere = matgeom::minimal_enclosing_sphere(mesh.positions);
-  // The paper's formula gives far more than the 1 klx it aims for (about 8e5 lx for the vase);
-  // normalising keeps pixel values, and so the error table, in a displayable range.
-  matgeom::LightRigOptions options;
-  options.target_illuminance_lux = 1000.0;
-  return matrender::rig_lights(matgeom::make_light_rig(sphere.center, sphere.radius, options));
-}
-
-void add_paper_rig(matrender::Scene& scene, const matgeom::TriangleMesh& mesh) {
-  for (const matrender::Light& light : paper_rig_lights(mesh)) scene.add_light(light);
-}
-
 matrender::Material bench_material() {
   matrender::Material m;
   m.set(matrender::MaterialParameter::BaseColor, glm::vec3(0.7f, 0.5f, 0.3f));
   m.set(matrender::MaterialParameter::Roughness, 0.35f);
   m.set(matrender::MaterialParameter::Metallic, 0.0f);
   return m;
-}
-
-matrender::Camera paper_camera(const matgeom::TriangleMesh& mesh, int width, int height) {
-  matgeom::CameraGridSpec spec;
-  spec.center = matgeom::surface_centroid(mesh);
-  const matgeom::GridCamera cell = matgeom::grid_camera(spec, 5, 16);
-  matrender::Camera camera;
-  camera.camera_to_world = cell.camera_to_world;
-  camera.width = width;
-  camera.height = height;
-  return camera;
 }
 
 namespace {

@@ -15,6 +15,7 @@
 #include "matgeom/camera_grid.h"
 #include "matrender/asset.h"
 #include "matrender/image_io.h"
+#include "matrender/paper_setup.h"
 #include "matrender/render.h"
 
 namespace {
@@ -25,11 +26,7 @@ matrender::Camera framed_camera(const matgeom::TriangleMesh& mesh, int size, dou
   matgeom::CameraGridSpec spec;
   spec.center = sphere.center;
   spec.radius = 1.05 * sphere.radius / std::sin(0.5 * vertical_fov);
-  matrender::Camera camera;
-  camera.camera_to_world = matgeom::grid_camera(spec, 5, 16).camera_to_world;
-  camera.vertical_fov = vertical_fov;
-  camera.width = camera.height = size;
-  return camera;
+  return matrender::grid_view(spec, matrender::kPaperViewRow, matrender::kPaperViewColumn, size, size, vertical_fov);
 }
 
 }  // namespace
@@ -56,7 +53,7 @@ int main(int argc, char** argv) {
     const matgeom::ObjectAsset asset = matgeom::make_builtin_object(names[k], seed);
     matrender::Scene scene;
     matrender::add_asset(scene, asset);
-    bench::add_paper_rig(scene, asset.mesh);
+    matrender::add_rig(scene, matrender::paper_rig(asset.mesh));
     matrender::RenderSettings settings;
     settings.samples_per_pixel = spp;
     settings.aovs = 0;

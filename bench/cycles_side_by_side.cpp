@@ -15,7 +15,9 @@
 #include <fmt/core.h>
 
 #include "bench_scenes.h"
+#include "matrender/paper_setup.h"
 #include "matrender/render.h"
+#include "matrender/rig_lights.h"
 #include "shaders_ref/cycles_reference.h"
 
 namespace {
@@ -71,12 +73,12 @@ int main(int argc, char** argv) {
   shaders_ref::CyclesScene cycles_scene;
   cycles_scene.mesh = bench::displaced_sphere(triangles);
   cycles_scene.material = bench::bench_material();
-  for (const matrender::Light& light : bench::paper_rig_lights(cycles_scene.mesh)) {
+  for (const matrender::Light& light : matrender::rig_lights(matrender::paper_rig(cycles_scene.mesh))) {
     const auto* rect = std::get_if<matrender::RectLight>(&light);
     if (!rect) throw std::runtime_error("cycles_side_by_side: the rig has a spot; only rectangles go to Blender");
     cycles_scene.lamps.push_back(*rect);
   }
-  cycles_scene.camera = bench::paper_camera(cycles_scene.mesh, resolution, resolution);
+  cycles_scene.camera = matrender::paper_view(cycles_scene.mesh, resolution, resolution);
   const matgeom::TriangleMesh& mesh = cycles_scene.mesh;
   const matrender::Camera& camera = cycles_scene.camera;
 

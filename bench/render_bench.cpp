@@ -19,6 +19,7 @@
 #include "bench_scenes.h"
 #include "matgeom/builtin_objects.h"
 #include "matrender/asset.h"
+#include "matrender/paper_setup.h"
 #include "matrender/render.h"
 #include "scene/scene_data.h"
 
@@ -97,10 +98,10 @@ void traversal_table(const std::vector<size_t>& sizes, int resolution, int spp, 
     const matgeom::TriangleMesh mesh = bench::displaced_sphere(target);
     matrender::Scene scene;
     scene.add_mesh(mesh, {scene.add_material(bench::bench_material())});
-    bench::add_paper_rig(scene, mesh);
+    matrender::add_rig(scene, matrender::paper_rig(mesh));
     scene.commit();
     RawEmbree raw = build_raw_embree(mesh);
-    const matrender::Camera camera = bench::paper_camera(mesh, resolution, resolution);
+    const matrender::Camera camera = matrender::paper_view(mesh, resolution, resolution);
     for (int threads : {1, 2}) {
       matrender::RenderSettings settings;
       settings.samples_per_pixel = spp;
@@ -146,8 +147,8 @@ VaseScene textured_vase(int resolution) {
   VaseScene v;
   const matgeom::ObjectAsset vase = matgeom::make_builtin_object("vase", 0);
   matrender::add_asset(v.scene, vase);
-  bench::add_paper_rig(v.scene, vase.mesh);
-  v.camera = bench::paper_camera(vase.mesh, resolution, resolution);
+  matrender::add_rig(v.scene, matrender::paper_rig(vase.mesh));
+  v.camera = matrender::paper_view(vase.mesh, resolution, resolution);
   fmt::print("\n(textured vase: {} triangles, {} lamps)\n", vase.mesh.triangle_count(), v.scene.lights().size());
   return v;
 }

@@ -17,9 +17,12 @@
 #include "matrender/render.h"
 #include "options.h"
 #include "common/progress_bar.h"
-#include "scene_builder.h"
+#include "matrender/scene_builder.h"
 
-using namespace render_object;
+using render_object::Options;
+using matrender::BuiltScene;
+using matrender::InputError;
+using matrender::SceneDescription;
 
 namespace {
 
@@ -57,8 +60,8 @@ void report_summary(const matrender::RenderStats& stats, const BuiltScene& built
 
 int render_and_write(const Options& options) {
   const std::atomic<bool>* cancel = app_support::cancel_on_interrupt();
-  const SceneDescription description = describe_scene(options);
-  BuiltScene built = build_scene(description);
+  const SceneDescription description = render_object::describe_scene(options);
+  BuiltScene built = matrender::build_scene(description);
 
   matrender::RenderSettings settings = description.settings;
   app_support::ProgressBar progress("render");

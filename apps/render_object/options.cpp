@@ -8,13 +8,26 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "default_scene.h"
+#include "matgeom/builtin_objects.h"
 #include "matrender/camera.h"
+#include "matrender/paper_setup.h"
 #include "matrender/render.h"
-#include "scene_file.h"
+#include "matrender/scene_file.h"
 
 namespace render_object {
 namespace {
+
+using matrender::BuiltinObject;
+using matrender::CameraDescription;
+using matrender::GridPlacement;
+using matrender::InputError;
+using matrender::LightRigDescription;
+using matrender::LightsDescription;
+using matrender::LookAtPlacement;
+using matrender::MeshFile;
+using matrender::ObjectDescription;
+using matrender::Origin;
+using matrender::SceneDescription;
 
 // Thrown from an option callback, CLI11 reports it like its own errors ("--spp: expected ...").
 void require(bool ok, const std::string& option, const std::string& expectation) {
@@ -111,7 +124,7 @@ void add_scene_options(CLI::App& app, Options& o) {
 void add_camera_options(CLI::App& app, Options& o) {
   const std::string group = "Camera (override the scene's)";
   const matrender::Camera camera;
-  const GridPlacement grid = paper_grid_placement();
+  const GridPlacement grid = matrender::paper_grid_placement();
   auto* resolution = app.add_option_function<std::string>(
                             "--resolution", [&o](const std::string& text) { set_resolution(text, o); },
                             "image size in pixels")
@@ -254,11 +267,44 @@ void add_run_options(CLI::App& app, Options& o) {
       ->group(group);
 }
 
+ObjectDescription object_from(std::variant<MeshFile, BuiltinObject> source, std::string option) {
+  ObjectDescription object;
+  object.source = std::move(source);
+  object.origin = Origin{std::move(option), std::nullopt};
+  return object;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string list;
+  for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+  return list;
+}
+
+uint32_t parse_seed(const std::string& text) {
+  uint32_t seed = 0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, seed);
+  if (text.empty() || error != std::errc() || stop != end)
+    throw InputError("--object: seed \"" + text + "\" is not an integer in [0, 4294967295]");
+  return seed;
+}
+
+// "NAME" or "NAME:SEED" as given to --object.
+ObjectDescription builtin_object(const std::string& argument) {
+  const size_t colon = argument.find(':');
+  BuiltinObject builtin{argument.substr(0, colon), 0};
+  const std::vector<std::string> names = matgeom::builtin_object_names();
+  if (std::find(names.begin(), names.end(), builtin.name) == names.end())
+    throw InputError("--object: unknown built-in object \"" + builtin.name + "\" (available: " + joined(names) + ")");
+  if (colon != std::string::npos) builtin.seed = parse_seed(argument.substr(colon + 1));
+  return object_from(builtin, "--object");
+}
+
 SceneDescription chosen_scene(const Options& options) {
-  if (options.scene_file) return read_scene_file(*options.scene_file);
-  if (options.mesh_file) return object_scene(mesh_file_object(*options.mesh_file));
-  if (options.object) return object_scene(builtin_object(*options.object));
-  return default_scene();
+  if (options.scene_file) return matrender::read_scene_file(*options.scene_file);
+  if (options.mesh_file) return matrender::paper_object_scene(object_from(MeshFile{*options.mesh_file}, "--mesh"));
+  if (options.object) return matrender::paper_object_scene(builtin_object(*options.object));
+  return matrender::default_scene();
 }
 
 void apply_camera_options(const Options& o, CameraDescription& camera) {
@@ -270,7 +316,7 @@ void apply_camera_options(const Options& o, CameraDescription& camera) {
   // Any grid option makes the camera a grid camera: the scene's own grid if it has one, else the
   // paper's grid around the centroid.
   if (o.cell || o.grid || o.radius) {
-    if (!std::holds_alternative<GridPlacement>(camera.placement)) camera.placement = paper_grid_placement();
+    if (!std::holds_alternative<GridPlacement>(camera.placement)) camera.placement = matrender::paper_grid_placement();
     auto& grid = std::get<GridPlacement>(camera.placement);
     if (o.grid) {
       grid.spec.n_phi = (*o.grid)[0];

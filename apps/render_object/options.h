@@ -8,7 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "matrender/frame.h"
-#include "scene_description.h"
+#include "matrender/scene_description.h"
 
 namespace CLI {
 class App;
@@ -49,7 +49,7 @@ struct Options {
 void add_options(CLI::App& app, Options& options);
 
 // The scene file, --mesh, --object or the built-in default, with the overrides applied.
-// Throws InputError.
-SceneDescription describe_scene(const Options& options);
+// Throws matrender::InputError.
+matrender::SceneDescription describe_scene(const Options& options);
 
 }  // namespace render_object

@@ -12,12 +12,11 @@
 #include "matgeom/bounding_sphere.h"
 #include "matgeom/builtin_objects.h"
 #include "matgeom/camera_grid.h"
-#include "matgeom/light_rig.h"
 #include "matrender/asset.h"
 #include "matrender/camera.h"
 #include "matrender/image_io.h"
+#include "matrender/paper_setup.h"
 #include "matrender/render.h"
-#include "matrender/rig_lights.h"
 
 namespace train_regressor {
 namespace {
@@ -38,7 +37,6 @@ constexpr std::array<ExampleMaterial, 4> kMaterials = {{
     {"fabric_1", 2, {0.10f, 0.25f, 0.55f}, 0.90f, 0.0f},
 }};
 constexpr std::array<const char*, 2> kObjects = {"vase", "chair"};
-constexpr double kTargetIlluminanceLux = 1000.0;  // the paper's rig aim, as render_object
 
 std::string three_digits(int n) { return fmt::format("{:03d}", n); }
 
@@ -56,10 +54,7 @@ void render_variant(const matgeom::ObjectAsset& asset, const ExampleMaterial& m,
   const size_t parts = std::max<size_t>({asset.mesh.part_count(), asset.materials.size(), 1});
   matrender::add_asset(scene, asset, std::vector<std::optional<uint32_t>>(parts, id));
   const matgeom::Sphere bounds = matgeom::minimal_enclosing_sphere(asset.mesh.positions);
-  matgeom::LightRigOptions rig_options;
-  rig_options.target_illuminance_lux = kTargetIlluminanceLux;
-  for (const matrender::Light& light : matrender::rig_lights(matgeom::make_light_rig(bounds.center, bounds.radius, rig_options)))
-    scene.add_light(light);
+  matrender::add_rig(scene, matrender::paper_rig(bounds));
 
   // Cameras on a ring 30 degrees above the horizon, far enough for the sphere to fill 90 % of
   // the view.
@@ -78,11 +73,7 @@ void render_variant(const matgeom::ObjectAsset& asset, const ExampleMaterial& m,
   settings.aovs = matrender::AovBaseColor | matrender::AovRoughness | matrender::AovMetallic | matrender::AovLabel |
                   matrender::AovNormalWorld | matrender::AovAlpha;
   for (int view = 0; view < size.views; ++view) {
-    const matgeom::GridCamera placed = matgeom::grid_camera(grid, 0, view);
-    matrender::Camera camera;
-    camera.camera_to_world = placed.camera_to_world;
-    camera.vertical_fov = fov;
-    camera.width = camera.height = size.resolution;
+    const matrender::Camera camera = matrender::grid_view(grid, 0, view, size.resolution, size.resolution, fov);
     settings.seed = seed + static_cast<uint32_t>(view);
     matrender::FrameBuffers frame;
     matrender::render(scene, camera, settings, frame);

@@ -15,8 +15,8 @@
 
 #include "matgeom/bounding_sphere.h"
 #include "matgeom/camera_grid.h"
-#include "matgeom/light_rig.h"
 #include "matgeom/tangents.h"
+#include "matrender/paper_setup.h"
 #include "matrender/render.h"
 #include "matrender/rig_lights.h"
 #include "shaders_ref/cycles_reference.h"
@@ -82,9 +82,7 @@ matgeom::TriangleMesh open_vessel() {
 
 matgeom::Sphere add_paper_rig(shaders_ref::CyclesScene& scene) {
   const matgeom::Sphere bound = matgeom::minimal_enclosing_sphere(scene.mesh.positions);
-  matgeom::LightRigOptions options;
-  options.target_illuminance_lux = 1000.0;
-  for (const matrender::Light& light : matrender::rig_lights(matgeom::make_light_rig(bound.center, bound.radius, options))) {
+  for (const matrender::Light& light : matrender::rig_lights(matrender::paper_rig(bound))) {
     const auto* rect = std::get_if<matrender::RectLight>(&light);
     REQUIRE(rect);  // spots only come for objects under 0.15 m
     scene.lamps.push_back(*rect);
@@ -100,8 +98,8 @@ shaders_ref::CyclesScene paper_scene(const matrender::Material& material, int ri
   const matgeom::Sphere bound = add_paper_rig(scene);
   matgeom::CameraGridSpec grid;
   grid.center = bound.center;
-  scene.camera.camera_to_world = matgeom::grid_camera(grid, 5, 16).camera_to_world;
-  scene.camera.width = scene.camera.height = kResolution;
+  scene.camera = matrender::grid_view(grid, matrender::kPaperViewRow, matrender::kPaperViewColumn, kResolution,
+                                      kResolution);
   return scene;
 }
 
@@ -224,9 +222,7 @@ TEST_CASE("The inside of a thin-walled open vessel agrees with Cycles", "[render
   matgeom::CameraGridSpec grid;
   grid.center = bound.center;
   grid.radius = 0.8;
-  scene.camera.camera_to_world = matgeom::grid_camera(grid, 0, 16).camera_to_world;
-  scene.camera.vertical_fov = 0.25;
-  scene.camera.width = scene.camera.height = kResolution;
+  scene.camera = matrender::grid_view(grid, 0, 16, kResolution, kResolution, 0.25);
   std::vector<shaders_ref::CyclesRender> renders = {{kSamples, 1, "", 0.0}, {kSamples, 2, "", 0.0}};
   shaders_ref::render_with_cycles(scene, renders, 2, "cycles_agreement_out/open_vessel");
   const Agreement a = compare(render_ours(scene, 1), render_ours(scene, 2),

@@ -1,7 +1,7 @@
 #pragma once
-// What render_object renders, as plain data: read from a scene file (scene_file.h) or made for
-// an object with the paper's rig and camera (default_scene.h), adjusted by command-line options,
-// then built into a matrender::Scene (scene_builder.h). Describing first lets every input be
+// A scene as plain data, the model every tool shares: read from a scene file (scene_file.h) or
+// made for an object under the paper's rig and camera (paper_setup.h), adjusted by a tool's
+// options, then built into a Scene (scene_builder.h). Describing first lets every input be
 // checked before anything is loaded or rendered, so a bad input never writes a file.
 #include <array>
 #include <cstdint>
@@ -21,7 +21,7 @@
 #include "matrender/render.h"
 #include "matrender/texture.h"
 
-namespace render_object {
+namespace matrender {
 
 // A problem with what the user gave (a file or an option), as opposed to a failure while
 // rendering or writing: the two end with different exit codes.
@@ -44,15 +44,15 @@ struct Origin {
 // A texture file to load; the path is already resolved against the scene file's folder.
 struct TextureFile {
   std::string path;
-  matrender::ColorSpace color_space = matrender::ColorSpace::NonColor;
-  matrender::Wrap wrap = matrender::Wrap::Repeat;
+  ColorSpace color_space = ColorSpace::NonColor;
+  Wrap wrap = Wrap::Repeat;
   Origin origin;
 };
 
 struct MaterialDescription {
   // Every constant (factors, channels, strengths, label, model); the texture pointers stay empty
   // until the files below are loaded.
-  matrender::Material constants;
+  Material constants;
   // The texture file of each parameter that has one, by matgeom::MaterialParameter.
   std::array<std::optional<TextureFile>, matgeom::kMaterialParameterCount> textures;
   std::optional<TextureFile> normal_map;
@@ -82,7 +82,7 @@ struct ObjectDescription {
 struct LightRigDescription {
   std::optional<double> target_illuminance_lux;
 };
-using LightsDescription = std::variant<std::vector<matrender::Light>, LightRigDescription>;
+using LightsDescription = std::variant<std::vector<Light>, LightRigDescription>;
 
 struct LookAtPlacement {
   glm::dvec3 position{0.0};
@@ -101,9 +101,9 @@ struct MatrixPlacement {
 
 struct CameraDescription {
   std::variant<LookAtPlacement, GridPlacement, MatrixPlacement> placement;
-  double vertical_fov = matrender::Camera{}.vertical_fov;
-  int width = matrender::Camera{}.width;
-  int height = matrender::Camera{}.height;
+  double vertical_fov = Camera{}.vertical_fov;
+  int width = Camera{}.width;
+  int height = Camera{}.height;
 };
 
 struct SceneDescription {
@@ -114,8 +114,8 @@ struct SceneDescription {
   std::vector<ObjectDescription> objects;
   // Samples, seed, bounces and background transparency; threads, AOVs, progress and
   // cancellation belong to the run, not the scene, and are set by the app.
-  matrender::RenderSettings settings;
+  RenderSettings settings;
   double exposure_stops = 0.0;
 };
 
-}  // namespace render_object
+}  // namespace matrender

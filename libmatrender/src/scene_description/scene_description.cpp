@@ -1,6 +1,6 @@
-#include "scene_description.h"
+#include "matrender/scene_description.h"
 
-namespace render_object {
+namespace matrender {
 
 std::string Origin::describe(const std::string& child) const {
   if (!pointer) return source;
@@ -12,4 +12,4 @@ InputError Origin::error(const std::string& child, const std::string& message) c
   return InputError(describe(child) + ": " + message);
 }
 
-}  // namespace render_object
+}  // namespace matrender

@@ -1,4 +1,4 @@
-#include "scene_builder.h"
+#include "matrender/scene_builder.h"
 
 #include <algorithm>
 #include <exception>
@@ -14,10 +14,10 @@
 #include "matgeom/mesh.h"
 #include "matgeom/mesh_io.h"
 #include "matrender/asset.h"
-#include "matrender/rig_lights.h"
+#include "matrender/paper_setup.h"
 #include "matrender/texture.h"
 
-namespace render_object {
+namespace matrender {
 namespace {
 
 // Any failure to read a user's mesh is a problem with that input, whatever the library throws.
@@ -53,13 +53,13 @@ matgeom::TriangleMesh merged_surface(const std::vector<matgeom::ObjectAsset>& as
 // a texture file shared by several materials is loaded once.
 class SceneMaterials {
  public:
-  SceneMaterials(const std::map<std::string, MaterialDescription>& described, matrender::Scene& scene)
+  SceneMaterials(const std::map<std::string, MaterialDescription>& described, Scene& scene)
       : described_(described), scene_(scene) {}
 
   uint32_t id(const std::string& name) {
     if (const auto it = ids_.find(name); it != ids_.end()) return it->second;
     const MaterialDescription& description = described_.at(name);
-    matrender::Material material = description.constants;
+    Material material = description.constants;
     for (size_t k = 0; k < material.parameters.size(); ++k)
       material.parameters[k].texture = texture(description.textures[k]);
     material.normal_map = texture(description.normal_map);
@@ -67,12 +67,12 @@ class SceneMaterials {
   }
 
  private:
-  matrender::TexturePtr texture(const std::optional<TextureFile>& file) {
+  TexturePtr texture(const std::optional<TextureFile>& file) {
     if (!file) return nullptr;
-    matrender::TexturePtr& loaded = textures_[std::make_tuple(file->path, file->color_space, file->wrap)];
+    TexturePtr& loaded = textures_[std::make_tuple(file->path, file->color_space, file->wrap)];
     if (!loaded) {
       try {
-        loaded = matrender::Texture::load(file->path, file->color_space, file->wrap);
+        loaded = Texture::load(file->path, file->color_space, file->wrap);
       } catch (const std::exception& e) {
         throw file->origin.error("/texture", e.what());
       }
@@ -81,9 +81,9 @@ class SceneMaterials {
   }
 
   const std::map<std::string, MaterialDescription>& described_;
-  matrender::Scene& scene_;
+  Scene& scene_;
   std::map<std::string, uint32_t> ids_;
-  std::map<std::tuple<std::string, matrender::ColorSpace, matrender::Wrap>, matrender::TexturePtr> textures_;
+  std::map<std::tuple<std::string, ColorSpace, Wrap>, TexturePtr> textures_;
 };
 
 size_t part_count(const matgeom::ObjectAsset& asset) {
@@ -117,28 +117,26 @@ std::vector<std::optional<uint32_t>> assigned_materials(const ObjectDescription&
   return assigned;
 }
 
-void add_object(matrender::Scene& scene, const ObjectDescription& object, const matgeom::ObjectAsset& asset,
+void add_object(Scene& scene, const ObjectDescription& object, const matgeom::ObjectAsset& asset,
                 SceneMaterials& materials) {
   const std::vector<std::optional<uint32_t>> assigned = assigned_materials(object, asset, materials);
   // A mesh or slot the renderer rejects (non-finite vertex, bad image index) is a bad input file.
   try {
-    matrender::MeshOptions options;
+    MeshOptions options;
     options.shadow_terminator_geometry_offset = object.shadow_terminator_geometry_offset;
-    matrender::add_asset(scene, asset, assigned, options);
+    add_asset(scene, asset, assigned, options);
   } catch (const std::invalid_argument& e) {
     throw object.origin.error("", e.what());
   }
 }
 
 void add_lights(const LightsDescription& lights, BuiltScene& built) {
-  if (const auto* listed = std::get_if<std::vector<matrender::Light>>(&lights)) {
-    for (const matrender::Light& light : *listed) built.scene.add_light(light);
+  if (const auto* listed = std::get_if<std::vector<Light>>(&lights)) {
+    for (const Light& light : *listed) built.scene.add_light(light);
     return;
   }
-  matgeom::LightRigOptions options;
-  options.target_illuminance_lux = std::get<LightRigDescription>(lights).target_illuminance_lux;
-  built.rig = matgeom::make_light_rig(built.bounds.center, built.bounds.radius, options);
-  for (const matrender::Light& light : matrender::rig_lights(*built.rig)) built.scene.add_light(light);
+  built.rig = paper_rig(built.bounds, std::get<LightRigDescription>(lights).target_illuminance_lux);
+  add_rig(built.scene, *built.rig);
 }
 
 glm::dmat4 camera_to_world(const CameraDescription& camera, const glm::dvec3& centroid) {
@@ -155,8 +153,8 @@ glm::dmat4 camera_to_world(const CameraDescription& camera, const glm::dvec3& ce
   }
 }
 
-matrender::Camera make_camera(const CameraDescription& description, const glm::dvec3& centroid) {
-  matrender::Camera camera;
+Camera make_camera(const CameraDescription& description, const glm::dvec3& centroid) {
+  Camera camera;
   camera.camera_to_world = camera_to_world(description, centroid);
   camera.vertical_fov = description.vertical_fov;
   camera.width = description.width;
@@ -166,7 +164,7 @@ matrender::Camera make_camera(const CameraDescription& description, const glm::d
 
 std::string frame_stem(const CameraDescription& camera) {
   const auto* grid = std::get_if<GridPlacement>(&camera.placement);
-  return grid ? fmt::format("view_{:03d}_{:03d}", grid->i, grid->j) : "view";
+  return grid ? view_name(grid->i, grid->j) : "view";
 }
 
 }  // namespace
@@ -191,4 +189,4 @@ BuiltScene build_scene(const SceneDescription& description) {
   return built;
 }
 
-}  // namespace render_object
+}  // namespace matrender

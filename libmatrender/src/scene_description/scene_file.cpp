@@ -1,4 +1,4 @@
-#include "scene_file.h"
+#include "matrender/scene_file.h"
 
 #include <algorithm>
 #include <cctype>
@@ -21,7 +21,7 @@
 #include "matgeom/material_parameters.h"
 #include "matgeom/mesh_io.h"
 
-namespace render_object {
+namespace matrender {
 namespace {
 
 namespace fs = std::filesystem;
@@ -309,9 +309,9 @@ glm::dvec3 read_target(const Node& node, const glm::dvec3& position) {
   return target;
 }
 
-matrender::Light read_area_light(const Node& node) {
+Light read_area_light(const Node& node) {
   node.expect_keys({"type", "position", "look_at", "up", "size", "power", "color"});
-  matrender::RectLight light;
+  RectLight light;
   const glm::dvec3 position = read_vec3(node.required("position"));
   const glm::dvec3 target = read_target(node, position);
   const glm::dvec3 up = node.has("up") ? read_direction(node.required("up")) : glm::dvec3(0.0, 0.0, 1.0);
@@ -330,18 +330,18 @@ matrender::Light read_area_light(const Node& node) {
   return light;
 }
 
-matrender::Light read_point_light(const Node& node) {
+Light read_point_light(const Node& node) {
   node.expect_keys({"type", "position", "power", "color"});
-  matrender::PointLight light;
+  PointLight light;
   light.position = read_vec3(node.required("position"));
   light.power = node.required("power").non_negative();
   if (auto color = node.find("color")) light.color = read_color(*color);
   return light;
 }
 
-matrender::Light read_spot_light(const Node& node) {
+Light read_spot_light(const Node& node) {
   node.expect_keys({"type", "position", "look_at", "spot_angle_deg", "blend", "power", "color"});
-  matrender::SpotLight light;
+  SpotLight light;
   light.position = read_vec3(node.required("position"));
   light.direction = glm::normalize(read_target(node, light.position) - light.position);
   if (auto angle = node.find("spot_angle_deg"))
@@ -363,7 +363,7 @@ LightsDescription read_lights(const Node& node) {
     if (auto lux = rig_node.find("target_illuminance_lux")) rig.target_illuminance_lux = lux->positive();
     return rig;
   }
-  std::vector<matrender::Light> lights;
+  std::vector<Light> lights;
   for (size_t k = 0; k < node.array_size("an array of lights"); ++k) {
     const Node light = node.item(k);
     switch (light.required("type").choice({"area", "point", "spot"})) {
@@ -378,16 +378,16 @@ LightsDescription read_lights(const Node& node) {
 // ---- materials ------------------------------------------------------------------------------
 
 // {"texture": path, ...}: the keys every texture reference shares.
-TextureFile read_texture_file(const Node& node, const fs::path& folder, matrender::ColorSpace default_space) {
+TextureFile read_texture_file(const Node& node, const fs::path& folder, ColorSpace default_space) {
   TextureFile file;
   file.path = read_existing_file(node.required("texture"), folder);
   file.origin = node.origin();
   file.color_space = default_space;
   if (auto space = node.find("color_space"))
-    file.color_space = space->choice({"sRGB", "non-color"}) == 0 ? matrender::ColorSpace::SRGB
-                                                                  : matrender::ColorSpace::NonColor;
+    file.color_space = space->choice({"sRGB", "non-color"}) == 0 ? ColorSpace::SRGB
+                                                                  : ColorSpace::NonColor;
   if (auto wrap = node.find("wrap"))
-    file.wrap = wrap->choice({"repeat", "clamp"}) == 0 ? matrender::Wrap::Repeat : matrender::Wrap::Clamp;
+    file.wrap = wrap->choice({"repeat", "clamp"}) == 0 ? Wrap::Repeat : Wrap::Clamp;
   return file;
 }
 
@@ -409,7 +409,7 @@ glm::vec3 read_parameter_constant(const Node& node, const matgeom::MaterialParam
 // A constant, or (where the table allows it) a texture times an optional factor: a colour takes
 // the texture's RGB, a scalar one channel of it (R unless "channel" says otherwise).
 void read_parameter(const Node& node, const matgeom::MaterialParameterInfo& info, const fs::path& folder,
-                    matrender::ParameterValue& value, std::optional<TextureFile>& texture) {
+                    ParameterValue& value, std::optional<TextureFile>& texture) {
   const bool color = info.kind == matgeom::ParameterKind::Color;
   if (!node.is_object() || !info.texturable) {
     value.value = read_parameter_constant(node, info, info.texturable ? " or {\"texture\": ...}" : "");
@@ -427,20 +427,20 @@ MaterialDescription read_material(const Node& node, const std::string& name, con
   for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) keys.push_back(info.name);
   node.expect_keys(keys);
   MaterialDescription material;
-  matrender::Material& m = material.constants;
+  Material& m = material.constants;
   m.name = name;
   for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters)
     if (auto n = node.find(info.name))
       read_parameter(*n, info, folder, m[info.id], material.textures[static_cast<size_t>(info.id)]);
   if (auto n = node.find("normal_map")) {
     n->expect_keys({"texture", "strength", "wrap"});
-    material.normal_map = read_texture_file(*n, folder, matrender::ColorSpace::NonColor);
+    material.normal_map = read_texture_file(*n, folder, ColorSpace::NonColor);
     if (auto strength = n->find("strength")) m.normal_strength = static_cast<float>(strength->non_negative());
   }
   if (auto n = node.find("label_id")) m.label_id = n->integer_at_least(0);
   if (auto n = node.find("diffuse_model"))
-    m.diffuse_model = n->choice({"principled", "lambert"}) == 0 ? matrender::DiffuseModel::Principled
-                                                                : matrender::DiffuseModel::Lambert;
+    m.diffuse_model = n->choice({"principled", "lambert"}) == 0 ? DiffuseModel::Principled
+                                                                : DiffuseModel::Lambert;
   return material;
 }
 
@@ -544,7 +544,7 @@ std::vector<ObjectDescription> read_objects(const Node& node, const fs::path& fo
 void read_render(const Node& node, SceneDescription& scene) {
   node.expect_keys({"spp", "seed", "max_bounces", "max_diffuse_bounces", "max_glossy_bounces", "exposure",
                     "transparent_background"});
-  matrender::RenderSettings& s = scene.settings;
+  RenderSettings& s = scene.settings;
   if (auto n = node.find("spp")) s.samples_per_pixel = n->integer_at_least(1);
   if (auto n = node.find("seed")) s.seed = n->uint32();
   if (auto n = node.find("max_bounces")) s.max_bounces = n->integer_at_least(0);
@@ -587,4 +587,4 @@ SceneDescription read_scene_file(const std::string& path) {
   return scene;
 }
 
-}  // namespace render_object
+}  // namespace matrender

@@ -8,13 +8,13 @@
 #include "matgeom/light_rig.h"
 #include "matrender/camera.h"
 #include "matrender/scene.h"
-#include "scene_description.h"
+#include "matrender/scene_description.h"
 
-namespace render_object {
+namespace matrender {
 
 struct BuiltScene {
-  matrender::Scene scene;  // committed
-  matrender::Camera camera;
+  Scene scene;  // committed
+  Camera camera;
   std::string frame_stem;                // output file prefix: "view_005_016" for grid cell (5, 16), else "view"
   matgeom::Sphere bounds;                // minimal enclosing sphere of all objects
   std::optional<matgeom::LightRig> rig;  // when the paper's rig lights the scene
@@ -24,4 +24,4 @@ struct BuiltScene {
 // (unreadable mesh or texture, unknown part name).
 BuiltScene build_scene(const SceneDescription& description);
 
-}  // namespace render_object
+}  // namespace matrender

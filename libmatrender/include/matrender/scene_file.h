@@ -3,12 +3,12 @@
 // and describes: referenced files must exist, but nothing is loaded here.
 #include <string>
 
-#include "scene_description.h"
+#include "matrender/scene_description.h"
 
-namespace render_object {
+namespace matrender {
 
 // Throws InputError naming the file and the JSON pointer of the offending value, e.g.
 // "scene.json: /objects/1/transform/scale: expected a positive number".
 SceneDescription read_scene_file(const std::string& path);
 
-}  // namespace render_object
+}  // namespace matrender
