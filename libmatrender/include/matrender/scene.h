@@ -1,7 +1,9 @@
 #pragma once
 // A renderable scene: triangle meshes with one material per part, lamps and a background.
-// The BVH is built once by commit(); lamps and the background can change afterwards without
-// rebuilding it, and the same scene renders from any number of cameras.
+// The BVH is built once by commit(); materials, which material each part uses, lamps and the
+// background can all change afterwards without rebuilding it (one object, many material
+// variants, one BVH), and the same scene renders from any number of cameras. Nothing may change
+// while a render of the scene runs.
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -40,6 +42,12 @@ class Scene {
   // std::logic_error after commit().
   uint32_t add_mesh(const matgeom::TriangleMesh& mesh, const std::vector<uint32_t>& part_materials,
                     const MeshOptions& options = {});
+
+  // Which material each part of mesh `mesh` (an id add_mesh returned) uses, before or after
+  // commit(). Throws std::invalid_argument for an unknown mesh or material id, or when a part
+  // the mesh uses gets no material.
+  void set_part_materials(uint32_t mesh, const std::vector<uint32_t>& part_materials);
+  const std::vector<uint32_t>& part_materials(uint32_t mesh) const;
 
   void add_light(const Light& light);
   void clear_lights();

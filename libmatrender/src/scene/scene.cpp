@@ -1,5 +1,6 @@
 #include "matrender/scene.h"
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 #include <string>
@@ -22,19 +23,50 @@ uint32_t Scene::add_material(Material material) {
 const Material& Scene::material(uint32_t id) const { return data_->materials.at(id); }
 size_t Scene::material_count() const { return data_->materials.size(); }
 
+namespace {
+
+// Throws std::invalid_argument unless every one of `parts` parts gets an existing material.
+void check_part_materials(const std::string& what, uint32_t parts, const std::vector<uint32_t>& part_materials,
+                          size_t material_count) {
+  if (part_materials.size() < parts)
+    throw std::invalid_argument(what + ": uses " + std::to_string(parts) + " parts but " +
+                                std::to_string(part_materials.size()) + " materials were given");
+  for (uint32_t id : part_materials)
+    if (id >= material_count)
+      throw std::invalid_argument(what + ": material id " + std::to_string(id) + " does not exist");
+}
+
+// Normal maps need tangents; a mesh with UVs but none gets MikkTSpace ones the first time one of
+// its materials has a normal map.
+void add_tangents_if_needed(MeshData& m, const std::vector<Material>& materials) {
+  bool needs_tangents = false;
+  for (uint32_t id : m.part_materials) needs_tangents |= materials[id].normal_map != nullptr;
+  if (!needs_tangents || !m.tangents.empty() || m.uvs.empty()) return;
+  matgeom::TriangleMesh with_tangents;
+  with_tangents.positions = m.positions;
+  with_tangents.normals = m.normals;
+  with_tangents.uvs = m.uvs;
+  with_tangents.triangles = m.triangles;
+  matgeom::compute_tangents(with_tangents);
+  m.tangents = std::move(with_tangents.tangents);
+  if (m.normals.empty()) m.normals = std::move(with_tangents.normals);
+}
+
+uint32_t parts_used(const MeshData& m) {
+  uint32_t parts = 1;
+  for (uint32_t part : m.triangle_parts) parts = std::max(parts, part + 1);
+  return parts;
+}
+
+}  // namespace
+
 uint32_t Scene::add_mesh(const matgeom::TriangleMesh& mesh, const std::vector<uint32_t>& part_materials,
                          const MeshOptions& options) {
   if (data_->committed) throw std::logic_error("Scene::add_mesh: the scene is already committed");
   const std::string what = "mesh " + std::to_string(data_->meshes.size());
   matgeom::validate_mesh(mesh, what);
   if (mesh.triangles.empty()) throw std::invalid_argument(what + ": has no triangles");
-  const uint32_t parts = mesh.part_count();
-  if (part_materials.size() < parts)
-    throw std::invalid_argument(what + ": uses " + std::to_string(parts) + " parts but " +
-                                std::to_string(part_materials.size()) + " materials were given");
-  for (uint32_t id : part_materials)
-    if (id >= data_->materials.size())
-      throw std::invalid_argument(what + ": material id " + std::to_string(id) + " does not exist");
+  check_part_materials(what, mesh.part_count(), part_materials, data_->materials.size());
   if (!(options.shadow_terminator_geometry_offset >= 0.0f && options.shadow_terminator_geometry_offset <= 1.0f))
     throw std::invalid_argument(what + ": shadow terminator geometry offset must be in [0, 1]");
 
@@ -47,18 +79,22 @@ uint32_t Scene::add_mesh(const matgeom::TriangleMesh& mesh, const std::vector<ui
   m.triangle_parts = mesh.triangle_parts;
   m.part_materials = part_materials;
   m.shadow_terminator_geometry_offset = options.shadow_terminator_geometry_offset;
-  bool needs_tangents = false;
-  for (uint32_t id : part_materials) needs_tangents |= data_->materials[id].normal_map != nullptr;
-  if (needs_tangents && m.tangents.empty() && !m.uvs.empty()) {
-    matgeom::TriangleMesh with_tangents = mesh;
-    matgeom::compute_tangents(with_tangents);
-    m.tangents = std::move(with_tangents.tangents);
-    if (m.normals.empty()) m.normals = std::move(with_tangents.normals);
-  }
+  add_tangents_if_needed(m, data_->materials);
   data_->triangle_count += m.triangles.size();
   data_->meshes.push_back(std::move(m));
   return static_cast<uint32_t>(data_->meshes.size() - 1);
 }
+
+void Scene::set_part_materials(uint32_t mesh, const std::vector<uint32_t>& part_materials) {
+  if (mesh >= data_->meshes.size())
+    throw std::invalid_argument("Scene::set_part_materials: mesh " + std::to_string(mesh) + " does not exist");
+  MeshData& m = data_->meshes[mesh];
+  check_part_materials("mesh " + std::to_string(mesh), parts_used(m), part_materials, data_->materials.size());
+  m.part_materials = part_materials;
+  add_tangents_if_needed(m, data_->materials);
+}
+
+const std::vector<uint32_t>& Scene::part_materials(uint32_t mesh) const { return data_->meshes.at(mesh).part_materials; }
 
 void Scene::add_light(const Light& light) { data_->lights.push_back(light); }
 void Scene::clear_lights() { data_->lights.clear(); }
