@@ -14,6 +14,8 @@ cmake -S "$source_dir/consumer" -B "$work/build" -DCMAKE_PREFIX_PATH="$work/pref
 cmake --build "$work/build" > "$work/build.log"
 export LD_LIBRARY_PATH="$work/prefix/lib:$work/prefix/lib/x86_64-linux-gnu:${LD_LIBRARY_PATH:-}"
 "$work/build/consumer"
+mkdir "$work/variants"
+"$work/build/material_variants" "$work/variants"
 mkdir "$work/meshes"
 "$work/build/prepare_mesh" "$work/meshes"
 "$work/build/score_images"

@@ -47,6 +47,7 @@ class Scene {
   // commit(). Throws std::invalid_argument for an unknown mesh or material id, or when a part
   // the mesh uses gets no material.
   void set_part_materials(uint32_t mesh, const std::vector<uint32_t>& part_materials);
+  size_t mesh_count() const;
   const std::vector<uint32_t>& part_materials(uint32_t mesh) const;
 
   void add_light(const Light& light);

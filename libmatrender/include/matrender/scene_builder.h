@@ -3,6 +3,7 @@
 // objects, assigns materials, makes the lights and the camera, and builds the BVH.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "matgeom/bounding_sphere.h"
 #include "matgeom/light_rig.h"
@@ -15,6 +16,7 @@ namespace matrender {
 struct BuiltScene {
   Scene scene;  // committed
   Camera camera;
+  std::vector<uint32_t> object_meshes;   // the scene mesh of each described object, in order
   std::string frame_stem;                // output file prefix: "view_005_016" for grid cell (5, 16), else "view"
   matgeom::Sphere bounds;                // minimal enclosing sphere of all objects
   std::optional<matgeom::LightRig> rig;  // when the paper's rig lights the scene

@@ -94,6 +94,8 @@ void Scene::set_part_materials(uint32_t mesh, const std::vector<uint32_t>& part_
   add_tangents_if_needed(m, data_->materials);
 }
 
+size_t Scene::mesh_count() const { return data_->meshes.size(); }
+
 const std::vector<uint32_t>& Scene::part_materials(uint32_t mesh) const { return data_->meshes.at(mesh).part_materials; }
 
 void Scene::add_light(const Light& light) { data_->lights.push_back(light); }

@@ -180,7 +180,10 @@ BuiltScene build_scene(const SceneDescription& description) {
   BuiltScene built;
   built.bounds = matgeom::minimal_enclosing_sphere(surface.positions);
   SceneMaterials materials(description.materials, built.scene);
-  for (size_t k = 0; k < assets.size(); ++k) add_object(built.scene, description.objects[k], assets[k], materials);
+  for (size_t k = 0; k < assets.size(); ++k) {
+    add_object(built.scene, description.objects[k], assets[k], materials);
+    built.object_meshes.push_back(static_cast<uint32_t>(built.scene.mesh_count() - 1));
+  }
   add_lights(description.lights, built);
   built.scene.set_background(description.background);
   built.camera = make_camera(description.camera, matgeom::surface_centroid(surface));
