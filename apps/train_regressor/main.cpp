@@ -10,6 +10,7 @@
 #include "common/interrupt.h"
 #include "common/progress_bar.h"
 #include "example_dataset.h"
+#include "matgeom/atomic_file.h"
 #include "matlearn/models/regressor.h"
 #include "matlearn/training/trainer.h"
 #include "training_options.h"
@@ -58,17 +59,6 @@ void describe(const matlearn::TrainingConfig& config) {
   fmt::print("The paper's counts are for 6 outputs (base colour 3 + roughness 3).\n");
 }
 
-void write_text(const std::filesystem::path& path, const std::string& text) {
-  std::filesystem::create_directories(path.parent_path());
-  const std::filesystem::path temporary = path.string() + ".partial";
-  {
-    std::ofstream out(temporary);
-    out << text;
-    if (!out) throw InputError("cannot write " + temporary.string());
-  }
-  std::filesystem::rename(temporary, path);
-}
-
 // With no arguments: a tiny dataset rendered here, and a small network trained on it for a few
 // minutes.
 void use_example(Options& options) {
@@ -107,7 +97,8 @@ int train(Options options, bool example) {
     }
     fmt::print("resuming after epoch {} from {}\n", trainer.epochs_done(), from.string());
   }
-  write_text(config.output_dir / "config.yaml", settings_yaml(settings));
+  std::filesystem::create_directories(config.output_dir);
+  matgeom::write_file_atomically(config.output_dir / "config.yaml", settings_yaml(settings));
   fmt::print("training {} ({} parameters) on {} samples, validating on {}; {} epochs of batch {} at {} px\n",
              config.network, matlearn::parameter_count(trainer.model()), config.train_samples.size(),
              config.validation_samples.size(), config.epochs, config.batch_size, config.image_size);

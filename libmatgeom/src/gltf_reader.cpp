@@ -18,7 +18,9 @@
 #include <tiny_gltf.h>
 
 #include "file_error.h"
+#include "image_bytes.h"
 #include "matgeom/tangents.h"
+#include "matgeom/text.h"
 
 // Reading a glTF file is three steps: tinygltf parses the JSON, buffers and images; the node
 // hierarchy gives every mesh a world transform; each primitive instance becomes a piece of
@@ -34,11 +36,6 @@ struct GltfFile {
   tinygltf::Model model;
   bool quantized = false;  // KHR_mesh_quantization allows integer positions, normals, tangents
 };
-
-std::string trim(std::string text) {
-  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
-  return text;
-}
 
 // ---------------------------------------------------------------------------------------------
 // Loading
@@ -603,18 +600,6 @@ std::vector<PrimitivePiece> read_pieces(const GltfFile& file) {
 // ---------------------------------------------------------------------------------------------
 // Materials and images
 
-// 16-bit channels round to the nearest 8-bit code.
-std::vector<uint8_t> to_8_bit(const tinygltf::Image& image) {
-  if (image.bits == 8) return std::vector<uint8_t>(image.image.begin(), image.image.end());
-  std::vector<uint8_t> bytes(image.image.size() / 2);
-  for (size_t i = 0; i < bytes.size(); ++i) {
-    uint16_t value;
-    std::memcpy(&value, image.image.data() + 2 * i, sizeof(value));
-    bytes[i] = static_cast<uint8_t>((static_cast<uint32_t>(value) * 255u + 32767u) / 65535u);
-  }
-  return bytes;
-}
-
 ImagePixels convert_image(const GltfFile& file, size_t index) {
   const tinygltf::Image& image = file.model.images[index];
   const std::string name = concat("image ", index);
@@ -709,7 +694,7 @@ double unit_interval_factor(const GltfFile& file, double value, const std::strin
   return value;
 }
 
-// The Principled BSDF inputs Blender's importer sets (reference/cycles.md): base colour =
+// The Principled BSDF inputs Blender's importer sets (docs/conventions.md): base colour =
 // factor x texture, roughness = factor x texture.G, metallic = factor x texture.B, normal map
 // strength = normalTexture.scale. Emission, occlusion and alpha have no MaterialDesc field.
 MaterialDesc convert_material(const GltfFile& file, ImageTable& images, size_t index) {

@@ -1,6 +1,5 @@
 #include "matgeom/gltf_writer.h"
 
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstring>
@@ -12,6 +11,7 @@
 
 #include <tiny_gltf.h>
 
+#include "matgeom/atomic_file.h"
 #include "matgeom/mesh_parts.h"
 
 namespace matgeom {
@@ -166,7 +166,7 @@ class TextureTable {
   std::map<TextureWrap, int> samplers_;
 };
 
-// The inverse of read_gltf's mapping (reference/cycles.md: Blender's importer).
+// The inverse of read_gltf's mapping (docs/conventions.md: Blender's glTF importer).
 tinygltf::Material make_material(const MaterialDesc& desc, TextureTable& textures) {
   tinygltf::Material material;
   material.name = desc.name;
@@ -217,16 +217,12 @@ void write_gltf(const ObjectAsset& asset, const std::string& path) {
   const bool binary = extension == ".glb" || extension == ".GLB";
   if (!binary && extension != ".gltf" && extension != ".GLTF")
     throw std::invalid_argument("write_gltf: " + path + ": the extension must be .glb or .gltf");
-  const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
-  tinygltf::TinyGLTF writer;
-  const bool written = writer.WriteGltfSceneToFile(&model, temporary, /*embedImages=*/true,
-                                                   /*embedBuffers=*/true, /*prettyPrint=*/!binary, binary);
-  std::error_code error;
-  if (written) std::filesystem::rename(temporary, path, error);
-  if (!written || error) {
-    std::filesystem::remove(temporary, error);
-    throw std::runtime_error(path + ": cannot write the glTF file");
-  }
+  write_atomically(path, [&](const std::filesystem::path& temporary) {
+    tinygltf::TinyGLTF writer;
+    if (!writer.WriteGltfSceneToFile(&model, temporary.string(), /*embedImages=*/true, /*embedBuffers=*/true,
+                                     /*prettyPrint=*/!binary, binary))
+      throw std::runtime_error(path + ": cannot write the glTF file");
+  });
 }
 
 }  // namespace matgeom

@@ -88,7 +88,7 @@ double polygon_irradiance_per_radiance(const std::array<glm::dvec3, 4>& polygon,
 
 // Radiant irradiance (W/m^2 weighted by colour luminance) from an area lamp on a small surface
 // at `point` whose normal points at the lamp's centre. Cycles' area lamp: one-sided (down its
-// -Z), uniform radiance L = P c / (4 a b) (reference/cycles.md).
+// -Z), uniform radiance L = P c / (4 a b) (docs/conventions.md, "Lamps").
 double area_lamp_irradiance(const RigLight& light, const glm::dvec3& point) {
   const glm::dvec3 axis_x(light.light_to_world[0]);
   const glm::dvec3 axis_y(light.light_to_world[1]);
@@ -110,7 +110,7 @@ double area_lamp_irradiance(const RigLight& light, const glm::dvec3& point) {
 // Radiant irradiance from a radius-0 Cycles spot lamp on a small surface at `point` facing it:
 // E = I a(w) / d^2 with on-axis intensity I = P c / (4 pi) (not concentrated into the cone) and
 // a(w) = cos t smoothstep((cos t - cos_half) / ((1 - cos_half) blend)) inside the cone
-// (reference/cycles.md; t is the angle from the spot's axis).
+// (docs/conventions.md, "Lamps"; t is the angle from the spot's axis).
 double spot_lamp_irradiance(const RigLight& light, const glm::dvec3& point) {
   const glm::dvec3 forward = -glm::dvec3(light.light_to_world[2]);
   const glm::dvec3 to_point = point - glm::dvec3(light.light_to_world[3]);

@@ -1,7 +1,5 @@
 #include "matgeom/obj_io.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -23,6 +21,9 @@
 #include <tiny_obj_loader.h>
 
 #include "file_error.h"
+#include "image_bytes.h"
+#include "matgeom/atomic_file.h"
+#include "matgeom/text.h"
 #include "matgeom/tangents.h"
 
 // Reading is four steps: the OBJ text is screened for the inputs tinyobjloader 2.0.0rc10 handles
@@ -39,12 +40,6 @@ namespace matgeom {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string trim(const std::string& text) {
-  const size_t begin = text.find_first_not_of(" \t\r\n");
-  if (begin == std::string::npos) return "";
-  return text.substr(begin, text.find_last_not_of(" \t\r\n") - begin + 1);
-}
 
 // The whole file, or false when it is not a readable regular file.
 bool read_whole_file(const fs::path& file, std::string& bytes) {
@@ -452,18 +447,6 @@ struct TextureSource {
   fs::path file;
   std::string what;  // "<mtl>: material '<name>' map_Kd"
 };
-
-// 16-bit channels round to the nearest 8-bit code.
-std::vector<uint8_t> to_8_bit(const tinygltf::Image& image) {
-  if (image.bits == 8) return std::vector<uint8_t>(image.image.begin(), image.image.end());
-  std::vector<uint8_t> bytes(image.image.size() / 2);
-  for (size_t i = 0; i < bytes.size(); ++i) {
-    const uint32_t value =
-        image.image[2 * i] | (static_cast<uint32_t>(image.image[2 * i + 1]) << 8);
-    bytes[i] = static_cast<uint8_t>((value * 255u + 32767u) / 65535u);
-  }
-  return bytes;
-}
 
 // Decoded with tinygltf's stb_image. Its exported decoder always expands to RGBA (the
 // channel-preserving option is internal to tinygltf's implementation), so every texture read
@@ -1003,61 +986,6 @@ std::string obj_text(const TriangleMesh& mesh, const std::string& library,
   return text.str();
 }
 
-// Files written beside their destinations under temporary names ("<file>.tmp-<pid>") and renamed
-// only once all of them are complete, in staging order -- the .obj last, so that no reader finds
-// an .obj whose .mtl or textures are missing. If a rename fails, the files this commit created
-// are removed again (files it replaced stay replaced) and so are the temporaries.
-class StagedFiles {
- public:
-  explicit StagedFiles(std::string obj_path) : obj_path_(std::move(obj_path)) {}
-  StagedFiles(const StagedFiles&) = delete;
-  StagedFiles& operator=(const StagedFiles&) = delete;
-  ~StagedFiles() {
-    std::error_code ignored;
-    for (size_t i = committed_; i < staged_.size(); ++i) fs::remove(staged_[i].temporary, ignored);
-  }
-
-  void stage(const fs::path& destination, const std::string& bytes) {
-    const fs::path temporary = destination.string() + ".tmp-" + std::to_string(::getpid());
-    staged_.push_back({destination, temporary, false});
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out) fail(obj_path_, "cannot write " + temporary.string());
-  }
-
-  void commit() {
-    for (; committed_ < staged_.size(); ++committed_) {
-      Staged& file = staged_[committed_];
-      std::error_code error;
-      file.replaces = fs::exists(file.destination, error);
-      fs::rename(file.temporary, file.destination, error);
-      if (error) {
-        remove_created();
-        fail(obj_path_, "cannot rename " + file.temporary.string() + " to " +
-                            file.destination.string() + ": " + error.message());
-      }
-    }
-  }
-
- private:
-  struct Staged {
-    fs::path destination;
-    fs::path temporary;
-    bool replaces;  // the destination existed before the commit
-  };
-
-  void remove_created() {
-    std::error_code ignored;
-    for (size_t i = 0; i < committed_; ++i) {
-      if (!staged_[i].replaces) fs::remove(staged_[i].destination, ignored);
-    }
-  }
-
-  std::string obj_path_;
-  std::vector<Staged> staged_;
-  size_t committed_ = 0;
-};
 
 }  // namespace
 
@@ -1112,7 +1040,9 @@ void write_obj(const ObjectAsset& asset, const std::string& path) {
   }
 
   const std::string library = stem + ".mtl";
-  StagedFiles files(path);
+  // Written together, the .obj last, so that no reader finds an .obj whose .mtl or textures are
+  // missing.
+  AtomicFileSet files(path);
   for (const ImageFile& image : images.files()) {
     files.stage(obj_path.parent_path() / image.name, encode_png(image.pixels, path));
   }

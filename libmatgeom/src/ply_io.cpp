@@ -1,6 +1,5 @@
 #include "matgeom/ply_io.h"
 
-#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -21,6 +20,7 @@
 #include <vector>
 
 #include "file_error.h"
+#include "matgeom/atomic_file.h"
 
 // Reading a PLY file is three steps: the whole file is loaded and its header parsed into element
 // and property declarations, which are checked against the file size before anything is
@@ -824,17 +824,9 @@ TriangleMesh read_ply(const std::string& path, const PlyReadOptions& options) {
 void write_ply(const TriangleMesh& mesh, const std::string& path) {
   validate_mesh(mesh, path);
   const std::vector<std::string> part_names = part_names_to_write(mesh, path);
-  const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
-  try {
-    write_ply_file(mesh, part_names, temporary, path);
-    std::error_code error;
-    std::filesystem::rename(temporary, path, error);
-    if (error) fail(path, "cannot rename " + temporary + " to it (" + error.message() + ")");
-  } catch (...) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw;
-  }
+  write_atomically(path, [&](const std::filesystem::path& temporary) {
+    write_ply_file(mesh, part_names, temporary.string(), path);
+  });
 }
 
 }  // namespace matgeom

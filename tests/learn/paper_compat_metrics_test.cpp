@@ -88,7 +88,7 @@ TEST_CASE("Paper-compatible UIQ scores equal flat windows 0", "[learn]") {
 }
 
 TEST_CASE("The paper's signature: 8-bit near-identical images give SAM near 90 degrees", "[learn]") {
-  // ../shared/reference/metrics.md: the package on a smooth 224 x 224 8-bit image against itself
+  // docs/metrics.md: the package on a smooth 224 x 224 8-bit image against itself
   // plus noise of 3 grey levels gives RMSE 0.00074, SSIM 0.9994, SAM 89.2 degrees; the correct
   // metrics on the same pair as floats give RMSE 0.0119, SSIM 0.873 and SAM 1.26 degrees (their
   // image; ours is another smooth image, so the values agree to within the image's influence).

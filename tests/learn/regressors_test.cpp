@@ -23,7 +23,7 @@ void check_paper_count(Architecture architecture, double paper_millions) {
 
 }  // namespace
 
-// Counts from ../shared/reference/networks.md, which reconstructs the designs from the paper.
+// Counts from docs/networks.md, which reconstructs the designs from the paper.
 CATCH_TEST_CASE("UNet-no-skip: count, head and output", "[learn]") {
   check_regressor(Architecture::unet_no_skip, 23730758, 32, 32, 48);
   check_paper_count(Architecture::unet_no_skip, 23.6);
@@ -49,7 +49,7 @@ CATCH_TEST_CASE("ConvNeXt-T-U: count, head and output", "[learn]") {
 }
 
 CATCH_TEST_CASE("The repository's two networks have its parameter counts", "[learn]") {
-  // ../shared/reference/matpredict_repo.md 3.3: ResNet50UNet 67,137,605 with 5 outputs; SwinTUNet
+  // docs/networks.md: the repository's ResNet50UNet 67,137,605 with 5 outputs; SwinTUNet
   // 45,040,448 with 6 on timm's trunk, plus the final LayerNorm (2 x 768) ours keeps.
   CATCH_CHECK(parameter_count(*make_regressor(Architecture::repo_resnet50_unet, 5)) == 67137605);
   check_regressor(Architecture::repo_swin_t_unet, 45040448 + 1536, 32, 64, 96);

@@ -15,7 +15,7 @@ using namespace matlearn;
 namespace fs = std::filesystem;
 
 CATCH_TEST_CASE("The ResNet-50 encoder has torchvision's parameter names, shapes and count", "[learn]") {
-  // ../shared/reference/networks.md: 23,508,032 for conv1 .. layer4.
+  // docs/networks.md: 23,508,032 for conv1 .. layer4.
   torchvision_reference::check_names_and_count(*ResNet50Encoder(), "resnet50", 318, 23508032);
 }
 

@@ -25,7 +25,7 @@ std::vector<std::pair<std::string, torch::Tensor>> named_stages(const Features& 
 }  // namespace
 
 CATCH_TEST_CASE("The Swin-T encoder has torchvision's parameter names, shapes and count", "[learn]") {
-  // ../shared/reference/networks.md: features + norm 27,519,354; 183 tensors without the head.
+  // docs/networks.md: features + norm 27,519,354; 183 tensors without the head.
   torchvision_reference::check_names_and_count(*SwinTEncoder(), "swin_t", 183, 27519354);
 }
 
@@ -37,7 +37,7 @@ CATCH_TEST_CASE("With torchvision's weights the Swin-T encoder computes torchvis
 }
 
 CATCH_TEST_CASE("The ConvNeXt-T encoder has torchvision's parameter names, shapes and count", "[learn]") {
-  // ../shared/reference/networks.md: features 27,818,592; 178 tensors without the classifier.
+  // docs/networks.md: features 27,818,592; 178 tensors without the classifier.
   torchvision_reference::check_names_and_count(*ConvNeXtTEncoder(), "convnext_tiny", 178, 27818592);
 }
 

@@ -23,7 +23,7 @@ struct ImagePixels {
 
 enum class TextureWrap { Repeat, Clamp };
 
-// A material slot as Blender's glTF importer builds it (../shared/reference/cycles.md):
+// A material slot as Blender's glTF importer builds it (docs/conventions.md, glTF importer):
 // base colour = factor x texture (sRGB); roughness = factor x texture.G, metallic = factor x texture.B
 // (Non-Color); normal map with strength = normalTexture.scale.
 struct MaterialDesc {

@@ -1,8 +1,8 @@
 #pragma once
 // The built-in materials: a finish (wood, fabric, ...) becomes a MaterialDesc with seeded,
 // tileable texture images, labelled with the paper's material family ids
-// (../shared/reference/matpredict_repo.md: 1 concrete, 2 fabric, 3 leather, 4 metal,
-// 5 plastic, 6 stone, 7 wood).
+// (docs/matpredict_repository.md, "Material families and label ids": 1 concrete, 2 fabric,
+// 3 leather, 4 metal, 5 plastic, 6 stone, 7 wood).
 #include <string>
 
 #include "builtin/uniform_source.h"

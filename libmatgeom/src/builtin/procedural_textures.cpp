@@ -1,5 +1,7 @@
 #include "builtin/procedural_textures.h"
 
+#include "matgeom/unorm.h"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -16,7 +18,6 @@ double lattice_value(int ix, int iy, int period_x, int period_y, uint32_t salt) 
   return hash_to_unit(hash32(salt ^ static_cast<uint32_t>(wx)) + static_cast<uint32_t>(wy) * 0x9e3779b9u);
 }
 
-uint8_t to_byte(double value) { return static_cast<uint8_t>(std::lround(std::clamp(value, 0.0, 1.0) * 255.0)); }
 
 }  // namespace
 
@@ -76,7 +77,7 @@ ImagePixels rgb_image(std::string name, int size, const std::function<glm::dvec3
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x) {
       const glm::dvec3 rgb = texel((x + 0.5) / size, 1.0 - (y + 0.5) / size);
-      for (int c = 0; c < 3; ++c) image.data.push_back(to_byte(rgb[c]));
+      for (int c = 0; c < 3; ++c) image.data.push_back(unorm8(rgb[c]));
     }
   return image;
 }

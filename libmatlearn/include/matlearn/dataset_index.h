@@ -1,12 +1,13 @@
 #pragma once
 // The two dataset layouts and the split files of the MatPredict benchmark.
 //
-// The repository's (../shared/reference/matpredict_repo.md, sections 1 and 3.1-3.2):
+// The repository's (docs/matpredict_repository.md, sections 1, 2 and 5):
 // <root>/<object>/<variant>/{images,albedo,ORM,label,normal_obj}/<stem>.png, pixel-aligned maps
 // per frame; sample ids "<object>/<variant>/<stem>".
 //
-// The paper's texture targets (its section "Training protocol"): screenshots
-// <root>/rendered_cropped/<object>/<material>/<stem>.png and one reference map per material,
+// The paper's texture targets (its section "Training protocol"; docs/matpredict_repository.md,
+// section 7): screenshots <root>/rendered_cropped/<object>/<material>/<stem>.png and one
+// reference map per material,
 // <root>/ground_truth_basecolour/<material>.png and ground_truth_roughness/<material>.png
 // (optionally ground_truth_metallic/ and ground_truth_normal/), not aligned with the pixels;
 // sample ids "<object>/<material>/<stem>".

@@ -1,6 +1,6 @@
 #pragma once
 // The MatPredict repository's material families, the ids its label maps hold
-// (../shared/reference/matpredict_repo.md, section 1.3): 0 background, 1 concrete, 2 fabric,
+// (docs/matpredict_repository.md, section 3): 0 background, 1 concrete, 2 fabric,
 // 3 leather, 4 metal, 5 plastic, 6 stone, 7 wood. A fixed table, so no tool reads every label
 // file to count classes (the repository's W16).
 #include <array>

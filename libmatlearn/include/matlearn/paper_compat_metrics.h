@@ -1,9 +1,9 @@
 #pragma once
 // The MatPredict paper's numbers, reproduced: the conventions of the Python package
 // image-similarity-measures (its metric functions as of its 0.3 releases, with their defaults)
-// applied to 8-bit images, which is what the paper's table reports (../shared/reference/
-// metrics.md). Use these only to compare with the paper; matlearn/image_metrics.h has the
-// correct metrics. No masks: the package has none.
+// applied to 8-bit images, which is what the paper's table reports (docs/metrics.md). Use
+// these only to compare with the paper; matlearn/image_metrics.h has the correct metrics. No
+// masks: the package has none.
 #include <cstdint>
 #include <vector>
 

@@ -1,6 +1,6 @@
 #pragma once
 // One sample of a MatPredict dataset (matlearn/dataset_index.h), decoded and resized the way the
-// repository's loader does it (../shared/reference/matpredict_repo.md, section 3.1), with its
+// repository's loader does it (docs/matpredict_repository.md, section 2), with its
 // weak points fixed where they touch the data: targets are resized with the object mask as
 // weights, so the background does not bleed into the silhouette (W16), and the albedo can be
 // decoded to linear values for a loss in linear space (W5).

@@ -7,6 +7,9 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include "matgeom/atomic_file.h"
+#include "matgeom/unorm.h"
+
 namespace matlearn {
 namespace {
 
@@ -27,20 +30,20 @@ class Canvas {
           const float v = shown ? image.at(x, y, std::min(c, image.channels - 1)) * scale : 0.0f;
           pixels_[(static_cast<size_t>(tile_y * tile_height_ + y) * static_cast<size_t>(width_) +
                    static_cast<size_t>(tile_x * tile_width_ + x)) * 3 + static_cast<size_t>(c)] =
-              static_cast<uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+              matgeom::unorm8(v);
         }
       }
   }
 
   void write(const std::filesystem::path& path) const {
     if (!path.parent_path().empty()) std::filesystem::create_directories(path.parent_path());
-    const std::string temporary = path.string() + ".partial.png";
     const int height = static_cast<int>(pixels_.size() / 3 / static_cast<size_t>(width_));
-    auto out = OIIO::ImageOutput::create(temporary);
-    if (!out || !out->open(temporary, OIIO::ImageSpec(width_, height, 3, OIIO::TypeDesc::UINT8)) ||
-        !out->write_image(OIIO::TypeDesc::UINT8, pixels_.data()) || !out->close())
-      throw std::runtime_error("cannot write " + temporary);
-    std::filesystem::rename(temporary, path);
+    matgeom::write_atomically(path, [&](const std::filesystem::path& temporary) {
+      auto out = OIIO::ImageOutput::create(temporary.string());
+      if (!out || !out->open(temporary.string(), OIIO::ImageSpec(width_, height, 3, OIIO::TypeDesc::UINT8)) ||
+          !out->write_image(OIIO::TypeDesc::UINT8, pixels_.data()) || !out->close())
+        throw std::runtime_error(path.string() + ": cannot write the panel");
+    });
   }
 
  private:

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "matgeom/atomic_file.h"
 #include "matlearn/material_families.h"
 
 namespace matlearn {
@@ -22,16 +23,6 @@ std::string number(double v) {
   out.precision(5);
   out << v;
   return out.str();
-}
-
-void write_atomically(const std::filesystem::path& path, const std::string& text) {
-  const std::filesystem::path temporary = path.string() + ".partial";
-  {
-    std::ofstream out(temporary);
-    out << text;
-    if (!out) throw std::runtime_error("cannot write " + temporary.string());
-  }
-  std::filesystem::rename(temporary, path);
 }
 
 // Rows keyed by (group, map) in first-seen order of groups, maps in layout order.
@@ -112,9 +103,9 @@ void write_report(const std::filesystem::path& folder, const std::vector<ReportT
     }
     json["tables"].push_back({{"title", table.title}, {"rows", rows}});
   }
-  write_atomically(folder / "metrics.md", md.str());
-  write_atomically(folder / "metrics.csv", csv.str());
-  write_atomically(folder / "metrics.json", json.dump(2) + "\n");
+  matgeom::write_file_atomically(folder / "metrics.md", md.str());
+  matgeom::write_file_atomically(folder / "metrics.csv", csv.str());
+  matgeom::write_file_atomically(folder / "metrics.json", json.dump(2) + "\n");
 }
 
 }  // namespace matlearn

@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "matgeom/atomic_file.h"
+
 namespace matlearn {
 namespace {
 
@@ -67,13 +69,7 @@ void save_state_dict(const torch::nn::Module& module, const std::filesystem::pat
   c10::Dict<std::string, torch::Tensor> dict;
   for (const auto& [name, tensor] : named_state(module)) dict.insert(name, tensor.detach().contiguous());
   const std::vector<char> bytes = torch::pickle_save(dict);
-  const std::filesystem::path temporary = path.string() + ".partial";
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    if (!out) throw std::runtime_error("cannot write " + temporary.string());
-  }
-  std::filesystem::rename(temporary, path);
+  matgeom::write_file_atomically(path, std::string_view(bytes.data(), bytes.size()));
 }
 
 }  // namespace matlearn

@@ -4,6 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "matgeom/atomic_file.h"
+
 namespace matlearn {
 namespace {
 
@@ -83,9 +85,7 @@ void save_checkpoint(const std::filesystem::path& path, const CheckpointHeader& 
   optimizer.save(optimizer_archive);
   archive.write("optimizer", optimizer_archive);
   if (!path.parent_path().empty()) std::filesystem::create_directories(path.parent_path());
-  const std::filesystem::path temporary = path.string() + ".partial";
-  archive.save_to(temporary.string());
-  std::filesystem::rename(temporary, path);
+  matgeom::write_atomically(path, [&](const std::filesystem::path& temporary) { archive.save_to(temporary.string()); });
 }
 
 CheckpointHeader read_checkpoint_header(const std::filesystem::path& path) {

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "matgeom/atomic_file.h"
 #include "matlearn/models/state_dict.h"
 #include "matlearn/sample_loader.h"
 #include "matlearn/training/batch.h"
@@ -140,14 +141,9 @@ double Trainer::validation_loss() {
 void Trainer::append_log(const EpochReport& report) {
   log_rows_.push_back(csv_row(report));
   std::filesystem::create_directories(config_.output_dir);
-  const std::filesystem::path temporary = log_path().string() + ".partial";
-  {
-    std::ofstream out(temporary);
-    out << csv_header(config_.layout) << '\n';
-    for (const std::string& row : log_rows_) out << row << '\n';
-    if (!out) throw std::runtime_error("cannot write " + temporary.string());
-  }
-  std::filesystem::rename(temporary, log_path());
+  std::string text = csv_header(config_.layout) + '\n';
+  for (const std::string& row : log_rows_) text += row + '\n';
+  matgeom::write_file_atomically(log_path(), text);
 }
 
 bool Trainer::train(const TrainingCallbacks& callbacks) {

@@ -1,5 +1,5 @@
 #pragma once
-// Lamps with Blender 3.4 Cycles power conventions (../shared/reference/cycles.md).
+// Lamps with Blender 3.4 Cycles power conventions (docs/conventions.md, "Lamps").
 // All lamps are invisible to camera rays and never occlude.
 #include <variant>
 

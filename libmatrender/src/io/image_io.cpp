@@ -4,10 +4,11 @@
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
-#include <unistd.h>
 
 #include <OpenImageIO/imageio.h>
 
+#include "matgeom/atomic_file.h"
+#include "matgeom/unorm.h"
 #include "texture/color_space.h"
 
 namespace matrender {
@@ -15,36 +16,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Writes through a temporary file in the destination folder, then renames it into place.
 void write_image_atomically(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc type,
                             const void* pixels) {
-  const fs::path target(path);
-  const fs::path temporary =
-      target.parent_path() / (".tmp-" + std::to_string(::getpid()) + "-" + target.filename().string());
-  {
-    auto output = OIIO::ImageOutput::create(target.string());
+  matgeom::write_atomically(path, [&](const fs::path& temporary) {
+    auto output = OIIO::ImageOutput::create(path);
     if (!output) throw std::runtime_error(path + ": no image writer for this extension: " + OIIO::geterror());
     if (!output->open(temporary.string(), spec))
       throw std::runtime_error(path + ": cannot open for writing: " + output->geterror());
-    if (!output->write_image(type, pixels)) {
-      const std::string error = output->geterror();
-      output->close();
-      fs::remove(temporary);
-      throw std::runtime_error(path + ": cannot write image: " + error);
-    }
+    const bool written = output->write_image(type, pixels);
+    const std::string error = written ? "" : output->geterror();
     output->close();
-  }
-  std::error_code ec;
-  fs::rename(temporary, target, ec);
-  if (ec) {
-    fs::remove(temporary);
-    throw std::runtime_error(path + ": cannot move the finished file into place: " + ec.message());
-  }
-}
-
-uint16_t quantize(double v, double max_value) {
-  if (!std::isfinite(v)) v = 0.0;
-  return static_cast<uint16_t>(std::clamp(std::lround(v * max_value), 0L, static_cast<long>(max_value)));
+    if (!written) throw std::runtime_error(path + ": cannot write image: " + error);
+  });
 }
 
 }  // namespace
@@ -72,9 +55,9 @@ void write_display_png(const std::string& path, int width, int height, const flo
     const double unpremultiply = coverage > 0.0f ? gain / coverage : gain;
     for (int c = 0; c < 3; ++c) {
       const float linear = static_cast<float>(rgb[3 * i + c] * unpremultiply);
-      pixels[i * channels + c] = static_cast<uint8_t>(quantize(linear_to_srgb(std::clamp(linear, 0.0f, 1.0f)), 255.0));
+      pixels[i * channels + c] = matgeom::unorm8(linear_to_srgb(std::clamp(linear, 0.0f, 1.0f)));
     }
-    if (alpha) pixels[i * channels + 3] = static_cast<uint8_t>(quantize(alpha[i], 255.0));
+    if (alpha) pixels[i * channels + 3] = matgeom::unorm8(alpha[i]);
   }
   OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::UINT8);
   spec.attribute("oiio:UnassociatedAlpha", 1);  // already straight: OpenImageIO must not divide again
@@ -86,7 +69,7 @@ void write_data_png(const std::string& path, int width, int height, int channels
   const size_t n = static_cast<size_t>(width) * height * channels;
   std::vector<uint16_t> pixels(n);
   const double max_value = sixteen_bit ? 65535.0 : 255.0;
-  for (size_t i = 0; i < n; ++i) pixels[i] = quantize((data[i] * scale + offset) / max_value, max_value);
+  for (size_t i = 0; i < n; ++i) pixels[i] = matgeom::unorm_code((data[i] * scale + offset) / max_value, static_cast<uint16_t>(max_value));
   OIIO::ImageSpec spec(width, height, channels, sixteen_bit ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
   spec.attribute("oiio:UnassociatedAlpha", 1);  // a fourth channel is data: written verbatim
   if (sixteen_bit) {

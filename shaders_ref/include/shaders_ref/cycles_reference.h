@@ -1,7 +1,8 @@
 #pragma once
 // Blender 3.4 Cycles as an outside reference: a scene handed to Blender as a JSON description
 // that shaders_ref/cycles_render.py rebuilds there, rendered into linear EXRs. Blender is needed
-// only at run time, and only by the optional tests and the bench (../shared/reference/cycles.md).
+// only at run time, and only by the optional tests and the bench (docs/conventions.md,
+// "Checked against Blender 3.4.1").
 #include <cstdint>
 #include <string>
 #include <vector>

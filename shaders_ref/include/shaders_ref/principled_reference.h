@@ -2,7 +2,7 @@
 // Reference Principled BSDF v1 of Blender 3.4 Cycles (principled or Lambert diffuse plus a
 // single-scatter GGX specular lobe with the "interpolated" Fresnel), written plainly in double
 // precision from the published equations. It shares no code with libmatrender: it is the
-// independent implementation the fast float code is tested against (docs: cycles.md,
+// independent implementation the fast float code is tested against (docs/conventions.md,
 // "Principled BSDF v1").
 //
 // Local frame: +Z is the shading normal; wo (towards the viewer) and wi (towards the light) are

@@ -1,5 +1,5 @@
 #pragma once
-// The decoders' building blocks (../shared/reference/networks.md): "upconv", a 4x4 transposed
+// The decoders' building blocks (docs/networks.md): "upconv", a 4x4 transposed
 // convolution of stride 2 (doubling the resolution exactly) without bias + BatchNorm + ReLU, and
 // "conv", a 3x3 convolution without bias + BatchNorm + ReLU.
 #include <torch/torch.h>

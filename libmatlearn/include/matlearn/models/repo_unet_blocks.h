@@ -1,8 +1,9 @@
 #pragma once
-// The MatPredict repository's decoder blocks (../shared/reference/matpredict_repo.md, section
-// 3.3), named as there ("block.0" ..., "up", "conv"): ConvBlock is two [3x3 convolution without
-// bias, BatchNorm, ReLU]; UpBlock is a 2x2 stride-2 transposed convolution with bias, a bilinear
-// resize to the skip's size where the sizes differ, concatenation with the skip and a ConvBlock.
+// The MatPredict repository's decoder blocks (docs/networks.md, "The repository's two
+// networks"), named as there ("block.0" ..., "up", "conv"): ConvBlock is two [3x3 convolution
+// without bias, BatchNorm, ReLU]; UpBlock is a 2x2 stride-2 transposed convolution with bias, a
+// bilinear resize to the skip's size where the sizes differ, concatenation with the skip and a
+// ConvBlock.
 #include <cstdint>
 
 #include <torch/torch.h>

@@ -1,6 +1,6 @@
 #pragma once
-// The MatPredict repository's two later networks (../shared/reference/matpredict_repo.md, section
-// 3.3), offered beside the paper's four:
+// The MatPredict repository's two later networks (docs/networks.md, "The repository's two
+// networks"), offered beside the paper's four:
 // - RepoResNet50UNet: the torchvision ResNet-50 trunk, a ConvBlock 2048 -> 1024 bottleneck, four
 //   UpBlocks with the layer3, layer2, layer1 and stem skips (512, 256, 128, 64 channels), a 2x
 //   upsampling to 32 channels, a ConvBlock and the 1x1 head: 67,137,605 parameters for the

@@ -1,5 +1,5 @@
 #pragma once
-// ResNet50-U, the paper's ResNet-50 regressor as ../shared/reference/networks.md reconstructs it
+// ResNet50-U, the paper's ResNet-50 regressor as docs/networks.md reconstructs it
 // (39,642,470 parameters for 6 outputs, the paper's 39.5M within 0.4 %): the torchvision ResNet-50
 // trunk; a conv 2048 -> 512 at 1/32; five stages of [upconv, concatenation with the encoder's
 // skip (layer3, layer2, layer1, stem, none), conv] down to 256, 128, 64, 32, 16 channels at full

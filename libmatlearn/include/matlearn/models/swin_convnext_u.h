@@ -1,5 +1,5 @@
 #pragma once
-// Swin-T-U and ConvNeXt-T-U, the paper's two modern regressors as ../shared/reference/networks.md
+// Swin-T-U and ConvNeXt-T-U, the paper's two modern regressors as docs/networks.md
 // reconstructs them: the torchvision trunk's last stage (768 channels at 1/32) into the skip-free
 // UpConvDecoder. Swin-T-U has 31,742,688 parameters for 6 outputs (paper 31.6M), ConvNeXt-T-U
 // 32,041,926 (paper 32.0M). Input sides must be multiples of 32.

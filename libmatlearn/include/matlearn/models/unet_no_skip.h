@@ -1,5 +1,5 @@
 #pragma once
-// UNet-no-skip, the paper's plain baseline as ../shared/reference/networks.md reconstructs it
+// UNet-no-skip, the paper's plain baseline as docs/networks.md reconstructs it
 // (23,730,758 parameters for 6 outputs, the paper's 23.6M within 0.6 %): a U-Net encoder of
 // double 3x3 convolutions with 64, 128, 256, 512 channels and four 2x2 max-pools to a 1024-channel
 // bottleneck at 1/16, then four upconvs 1024 -> 256 -> 128 -> 64 -> 32 without the U-Net's long

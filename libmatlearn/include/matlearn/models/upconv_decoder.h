@@ -1,5 +1,5 @@
 #pragma once
-// The skip-free decoder of Swin-T-U and ConvNeXt-T-U (../shared/reference/networks.md): a 1x1
+// The skip-free decoder of Swin-T-U and ConvNeXt-T-U (docs/networks.md): a 1x1
 // convolution (no bias) + BatchNorm + ReLU from the encoder's 768 channels at 1/32 to 384, five
 // upconvs to 384, 192, 96, 48 and 24 channels at full resolution, and the 1x1 output convolution
 // (4,223,334 parameters for 6 outputs).

@@ -1,0 +1,58 @@
+#pragma once
+// Writing files so that no reader ever finds one half-written, used by every library and app:
+// each file is written under a temporary name beside its destination (the same folder, so the
+// rename is atomic) and renamed into place only when complete. On any failure the temporary is
+// removed and the destination is left as it was.
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace matgeom {
+
+// The temporary name for `path`: hidden, unique to this process, in the same folder and with the
+// same extension, so writers that pick the format from the extension still see it:
+// "dir/.name.tmp-1234.ext".
+std::filesystem::path temporary_path(const std::filesystem::path& path);
+
+// Calls write(temporary) to write the whole file, then renames the temporary to `path`. The
+// folder must exist: a missing one is an error of the caller's input, not something to make. An
+// exception from `write` is rethrown as it is; a failed rename throws std::runtime_error starting
+// with `path`. Either way the temporary is gone.
+void write_atomically(const std::filesystem::path& path,
+                      const std::function<void(const std::filesystem::path& temporary)>& write);
+
+// `bytes` as the whole of the file `path`; std::runtime_error starting with `path` on failure.
+void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
+
+// Several files that must appear together (an OBJ with its MTL and textures): each staged under
+// its temporary name, then all renamed by commit() in staging order, so the one staged last (the
+// file readers open first) appears last. If a rename fails, the files this commit created are
+// removed again; the destructor removes whatever was staged and not committed.
+class AtomicFileSet {
+ public:
+  // `named`: the path errors start with (the file the set is written for).
+  explicit AtomicFileSet(std::filesystem::path named) : named_(std::move(named)) {}
+  AtomicFileSet(const AtomicFileSet&) = delete;
+  AtomicFileSet& operator=(const AtomicFileSet&) = delete;
+  ~AtomicFileSet();
+
+  // Writes `bytes` to the temporary of `destination`; std::runtime_error on failure.
+  void stage(const std::filesystem::path& destination, std::string_view bytes);
+  // std::runtime_error naming the file that could not be renamed.
+  void commit();
+
+ private:
+  struct Staged {
+    std::filesystem::path destination;
+    std::filesystem::path temporary;
+    bool replaces = false;  // the destination existed before the commit
+  };
+  std::filesystem::path named_;
+  std::vector<Staged> staged_;
+  size_t committed_ = 0;
+};
+
+}  // namespace matgeom

@@ -1,0 +1,102 @@
+// Files appear whole or not at all: a failed write leaves the destination as it was and no
+// temporary behind.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include <unistd.h>
+
+#include "matgeom/atomic_file.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct TemporaryFolder {
+  fs::path path = fs::temp_directory_path() / ("matgeom_atomic_" + std::to_string(::getpid()));
+  TemporaryFolder() { fs::create_directories(path); }
+  ~TemporaryFolder() { fs::remove_all(path); }
+  size_t entries() const { return static_cast<size_t>(std::distance(fs::directory_iterator(path), {})); }
+};
+
+std::string contents(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
+TEST_CASE("The temporary of a file sits beside it, hidden, with its extension", "[geom]") {
+  const fs::path temporary = matgeom::temporary_path("/data/out/mesh.glb");
+  CHECK(temporary.parent_path() == "/data/out");
+  CHECK(temporary.extension() == ".glb");
+  CHECK(temporary.filename().string().rfind(".mesh.tmp-", 0) == 0);
+}
+
+TEST_CASE("write_atomically replaces a file whole, or leaves it as it was", "[geom]") {
+  TemporaryFolder folder;
+  const fs::path file = folder.path / "report.csv";
+  matgeom::write_file_atomically(file, "first");
+  matgeom::write_file_atomically(file, "second");
+  CHECK(contents(file) == "second");
+  CHECK(folder.entries() == 1);
+
+  // A writer that fails half-way: the old file stays, nothing else is left.
+  CHECK_THROWS_WITH(matgeom::write_atomically(file,
+                                              [](const fs::path& temporary) {
+                                                std::ofstream(temporary) << "half";
+                                                throw std::runtime_error("disk full");
+                                              }),
+                    "disk full");
+  CHECK(contents(file) == "second");
+  CHECK(folder.entries() == 1);
+
+  // A missing folder is an error naming the file, and nothing is created.
+  CHECK_THROWS_AS(matgeom::write_file_atomically(folder.path / "missing" / "x.txt", "x"), std::runtime_error);
+  CHECK(folder.entries() == 1);
+  // A destination that is a folder cannot be replaced: named in the error, temporary removed.
+  fs::create_directories(folder.path / "occupied");
+  try {
+    matgeom::write_file_atomically(folder.path / "occupied", "x");
+    FAIL("no exception");
+  } catch (const std::runtime_error& e) {
+    CHECK(std::string(e.what()).rfind((folder.path / "occupied").string(), 0) == 0);
+  }
+  CHECK(folder.entries() == 2);
+}
+
+TEST_CASE("An AtomicFileSet makes its files appear together or not at all", "[geom]") {
+  TemporaryFolder folder;
+  {
+    matgeom::AtomicFileSet files(folder.path / "object.obj");
+    files.stage(folder.path / "object.mtl", "mtl");
+    files.stage(folder.path / "object.obj", "obj");
+    CHECK(!fs::exists(folder.path / "object.obj"));
+    files.commit();
+  }
+  CHECK(contents(folder.path / "object.mtl") == "mtl");
+  CHECK(contents(folder.path / "object.obj") == "obj");
+  {
+    // Staged but never committed: removed, the committed files untouched.
+    matgeom::AtomicFileSet files(folder.path / "object.obj");
+    files.stage(folder.path / "object.obj", "new");
+  }
+  CHECK(contents(folder.path / "object.obj") == "obj");
+  CHECK(folder.entries() == 2);
+  {
+    // The second rename fails: the first file, which this commit created, is removed again.
+    fs::create_directories(folder.path / "blocked.obj");
+    matgeom::AtomicFileSet files(folder.path / "blocked.obj");
+    files.stage(folder.path / "blocked.mtl", "mtl");
+    files.stage(folder.path / "blocked.obj", "obj");
+    CHECK_THROWS_AS(files.commit(), std::runtime_error);
+  }
+  CHECK(!fs::exists(folder.path / "blocked.mtl"));
+  CHECK(folder.entries() == 3);
+}
