@@ -7,14 +7,14 @@
 
 namespace matgeom::builtin {
 
-// furniture.cpp
+// tables.cpp, seating.cpp, storage.cpp, beds.cpp (built from joinery.h and furniture_solids.h)
 ObjectAsset make_table(uint32_t seed);
+ObjectAsset make_desk(uint32_t seed);
 ObjectAsset make_chair(uint32_t seed);
 ObjectAsset make_stool(uint32_t seed);
-ObjectAsset make_desk(uint32_t seed);
+ObjectAsset make_sofa(uint32_t seed);
 ObjectAsset make_cabinet(uint32_t seed);
 ObjectAsset make_shelf(uint32_t seed);
-ObjectAsset make_sofa(uint32_t seed);
 ObjectAsset make_bed(uint32_t seed);
 
 // tableware.cpp
