@@ -1,6 +1,7 @@
 #pragma once
-// Assembling a built-in object: pieces of geometry added part by part, each part with its
-// material, then the paper's UV pass over the whole.
+// Assembling a built-in object, the one way every built-in object is made: pieces of geometry
+// added part by part, each part with its material, then the paper's UV pass over the whole (or,
+// for an object whose pieces carry UVs of their own, those UVs).
 #include <cstdint>
 #include <string>
 
@@ -19,16 +20,27 @@ class ObjectBuilder {
 
   // A new part (material slot) named `name` with a material of `finish`; returns its id.
   uint32_t add_part(const std::string& name, Finish finish);
+  // A new part with a material of its own (images it names come from add_image); returns its id.
+  uint32_t add_part(const std::string& name, const MaterialDesc& material);
+  // An image for materials to name; returns its index.
+  int add_image(ImagePixels image);
+
   // Appends a closed piece of geometry (positions and normals) to part `part`.
   void add(uint32_t part, const TriangleMesh& piece);
+  // Appends a piece with UVs of its own whose triangle parts are ids add_part returned. An object
+  // made of such pieces keeps their UVs: finish() makes no UV pass.
+  void add_uv_mapped(const TriangleMesh& piece);
 
   // Runs the UV pass (charts, LSCM, packing at the paper's texel density into
-  // kBuiltinTileResolution tiles), which also makes tangents, and returns the object.
+  // kBuiltinTileResolution tiles), which also makes tangents, and returns the object; an object
+  // of UV-mapped pieces gets tangents from its own UVs instead.
   ObjectAsset finish();
 
  private:
   UniformSource random_;
   ObjectAsset asset_;
+  size_t uv_mapped_pieces_ = 0;
+  size_t plain_pieces_ = 0;
 };
 
 }  // namespace matgeom::builtin

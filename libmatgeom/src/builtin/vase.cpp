@@ -3,11 +3,11 @@
 #include <functional>
 #include <vector>
 
+#include "builtin/object_builder.h"
 #include "builtin/objects.h"
 #include "builtin/procedural_textures.h"
 #include "builtin/shapes.h"
 #include "builtin/uniform_source.h"
-#include "matgeom/tangents.h"
 
 // The vase keeps UVs of its own rather than the UV pass's: u around, v along the profile, so
 // that its glaze pools in rings and its band follows the wall.
@@ -283,39 +283,27 @@ constexpr int kCeramicLabel = 6;
 }  // namespace
 
 ObjectAsset make_vase(uint32_t seed) {
-  UniformSource random(seed);
+  ObjectBuilder builder(seed);
+  UniformSource& random = builder.random();
   const VaseShape shape = random_vase_shape(random);
   const GlazePalette palette = random_palette(random);
   const uint32_t texture_salt = random.bits();
 
-  const Profile profile = vase_profile(shape);
-  // The glaze band covers the outer wall segments within 3 cm of midway between belly and neck.
-  const double band_centre = 0.5 * (shape.belly_height + shape.neck_height);
-  auto part_of_segment = [&](size_t i) -> uint32_t {
-    if (i < profile.first_outer_wall_segment || i > profile.last_outer_wall_segment) return 0;
-    const double mid_z = 0.5 * (profile.points[i].z + profile.points[i + 1].z);
-    return std::abs(mid_z - band_centre) < 0.03 ? 1 : 0;
-  };
-
-  ObjectAsset asset;
-  asset.mesh = revolve_profile(profile.points, 2.0 * kPi * shape.belly_radius, part_of_segment);
-  asset.mesh.part_names = {"body", "glaze_band"};
-  compute_tangents(asset.mesh);
-
-  asset.images.push_back(glaze_base_color(palette, texture_salt));
-  asset.images.push_back(glaze_metallic_roughness(texture_salt));
-  asset.images.push_back(glaze_normal_map(texture_salt));
+  const int glaze_color = builder.add_image(glaze_base_color(palette, texture_salt));
+  const int glaze_metallic_roughness_image = builder.add_image(glaze_metallic_roughness(texture_salt));
+  const int glaze_normals = builder.add_image(glaze_normal_map(texture_salt));
 
   MaterialDesc body;
   body.name = "body";
   body.base_color = glm::dvec3(1.0);  // factor x texture, as a glTF material would have it
-  body.base_color_image = 0;
+  body.base_color_image = glaze_color;
   body.metallic = 0.0;   // factor x texture.B, both 0
   body.roughness = 1.0;  // factor x texture.G in [0.2, 0.5]
-  body.metallic_roughness_image = 1;
-  body.normal_image = 2;
+  body.metallic_roughness_image = glaze_metallic_roughness_image;
+  body.normal_image = glaze_normals;
   body.normal_strength = 1.0;
   body.label_id = kCeramicLabel;
+  const uint32_t body_part = builder.add_part("body", body);
 
   MaterialDesc band;
   band.name = "glaze_band";
@@ -323,12 +311,22 @@ ObjectAsset make_vase(uint32_t seed) {
                                srgb_to_linear(palette.band.b));
   band.metallic = 0.0;
   band.roughness = 0.12;
-  band.normal_image = 2;
+  band.normal_image = glaze_normals;
   band.normal_strength = 0.5;
   band.label_id = kCeramicLabel;
+  const uint32_t band_part = builder.add_part("glaze_band", band);
 
-  asset.materials = {body, band};
-  return asset;
+  const Profile profile = vase_profile(shape);
+  // The glaze band covers the outer wall segments within 3 cm of midway between belly and neck.
+  const double band_centre = 0.5 * (shape.belly_height + shape.neck_height);
+  auto part_of_segment = [&](size_t i) -> uint32_t {
+    if (i < profile.first_outer_wall_segment || i > profile.last_outer_wall_segment) return body_part;
+    const double mid_z = 0.5 * (profile.points[i].z + profile.points[i + 1].z);
+    return std::abs(mid_z - band_centre) < 0.03 ? band_part : body_part;
+  };
+  // The vase keeps the UVs of its surface of revolution, which the glaze band follows.
+  builder.add_uv_mapped(revolve_profile(profile.points, 2.0 * kPi * shape.belly_radius, part_of_segment));
+  return builder.finish();
 }
 
 }  // namespace matgeom::builtin
