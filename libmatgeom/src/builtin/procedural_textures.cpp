@@ -1,5 +1,6 @@
 #include "builtin/procedural_textures.h"
 
+#include "matgeom/srgb.h"
 #include "matgeom/unorm.h"
 
 #include <algorithm>
@@ -64,9 +65,10 @@ double fractal_noise(double x, double y, int base_period, uint32_t salt) {
   return fractal_noise(x, y, base_period, base_period, salt);
 }
 
-double srgb_to_linear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
 
-glm::dvec3 srgb_to_linear(const glm::dvec3& c) { return {srgb_to_linear(c.r), srgb_to_linear(c.g), srgb_to_linear(c.b)}; }
+glm::dvec3 srgb_to_linear(const glm::dvec3& c) {
+  return {matgeom::srgb_to_linear(c.r), matgeom::srgb_to_linear(c.g), matgeom::srgb_to_linear(c.b)};
+}
 
 ImagePixels rgb_image(std::string name, int size, const std::function<glm::dvec3(double, double)>& texel) {
   ImagePixels image;

@@ -26,7 +26,6 @@ double fractal_noise(double x, double y, int base_period, uint32_t salt);
 double fractal_noise(double x, double y, int base_period_x, int base_period_y, uint32_t salt);
 
 double smoothstep(double t);
-double srgb_to_linear(double c);
 glm::dvec3 srgb_to_linear(const glm::dvec3& c);
 
 // A size x size RGB image; texel(u, v) returns values in [0, 1] (sRGB-encoded for colour maps);

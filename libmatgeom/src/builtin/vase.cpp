@@ -8,6 +8,7 @@
 #include "builtin/procedural_textures.h"
 #include "builtin/shapes.h"
 #include "builtin/uniform_source.h"
+#include "matgeom/srgb.h"
 
 // The vase keeps UVs of its own rather than the UV pass's: u around, v along the profile, so
 // that its glaze pools in rings and its band follows the wall.
@@ -307,8 +308,8 @@ ObjectAsset make_vase(uint32_t seed) {
 
   MaterialDesc band;
   band.name = "glaze_band";
-  band.base_color = glm::dvec3(srgb_to_linear(palette.band.r), srgb_to_linear(palette.band.g),
-                               srgb_to_linear(palette.band.b));
+  band.base_color = glm::dvec3(matgeom::srgb_to_linear(palette.band.r), matgeom::srgb_to_linear(palette.band.g),
+                               matgeom::srgb_to_linear(palette.band.b));
   band.metallic = 0.0;
   band.roughness = 0.12;
   band.normal_image = glaze_normals;

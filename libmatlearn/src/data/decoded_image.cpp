@@ -30,7 +30,6 @@ Image channels_of(const Decoded& d, int first, int channels) {
   return image;
 }
 
-float srgb_to_linear(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); }
 
 void check_same_size(const Decoded& d, const Decoded& image, const std::filesystem::path& path) {
   if (d.width != image.width || d.height != image.height)

@@ -21,9 +21,6 @@ Decoded decode(const std::filesystem::path& path);
 // convert("RGB") or convert("L").
 Image channels_of(const Decoded& d, int first, int channels);
 
-// The sRGB EOTF (IEC 61966-2-1).
-float srgb_to_linear(float v);
-
 // Throws std::runtime_error naming `path` when d's size differs from the sample image's.
 void check_same_size(const Decoded& d, const Decoded& image, const std::filesystem::path& path);
 

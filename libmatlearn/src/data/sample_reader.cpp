@@ -6,6 +6,7 @@
 #include "data/decoded_image.h"
 #include "data/resample.h"
 #include "data/texture_target_sample.h"
+#include "matgeom/srgb.h"
 
 namespace matlearn {
 
@@ -41,7 +42,7 @@ MaterialSample read_sample(const fs::path& root, const SampleId& id, const Sampl
   sample.input = resize_bilinear(channels_of(image, 0, 3), s, s);
   Image albedo_rgb = channels_of(albedo, 0, 3);
   if (settings.linear_albedo)
-    for (float& v : albedo_rgb.values) v = srgb_to_linear(v);
+    for (float& v : albedo_rgb.values) v = matgeom::srgb_to_linear(v);
   sample.albedo = resize_bilinear_weighted(albedo_rgb, weights, s, s);
   sample.roughness = resize_bilinear_weighted(channels_of(orm, 1, 1), weights, s, s);
   sample.metallic = resize_bilinear_weighted(channels_of(orm, 2, 1), weights, s, s);

@@ -8,8 +8,8 @@
 #include <OpenImageIO/imageio.h>
 
 #include "matgeom/atomic_file.h"
+#include "matgeom/srgb.h"
 #include "matgeom/unorm.h"
-#include "texture/color_space.h"
 
 namespace matrender {
 namespace {
@@ -55,7 +55,7 @@ void write_display_png(const std::string& path, int width, int height, const flo
     const double unpremultiply = coverage > 0.0f ? gain / coverage : gain;
     for (int c = 0; c < 3; ++c) {
       const float linear = static_cast<float>(rgb[3 * i + c] * unpremultiply);
-      pixels[i * channels + c] = matgeom::unorm8(linear_to_srgb(std::clamp(linear, 0.0f, 1.0f)));
+      pixels[i * channels + c] = matgeom::unorm8(matgeom::linear_to_srgb(std::clamp(linear, 0.0f, 1.0f)));
     }
     if (alpha) pixels[i * channels + 3] = matgeom::unorm8(alpha[i]);
   }

@@ -1,4 +1,5 @@
 #include "matrender/texture.h"
+#include "matgeom/srgb.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +7,6 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include "texture/color_space.h"
 
 namespace matrender {
 namespace {
@@ -100,7 +100,7 @@ std::shared_ptr<const Texture> Texture::load(const std::string& path, ColorSpace
     // Float images tagged sRGB are decoded once at load time (Cycles converts float images
     // through OCIO when loading).
     for (size_t i = 0; i < pixels.size(); ++i)
-      if (channels < 4 || i % 4 != 3) pixels[i] = srgb_to_linear(pixels[i]);
+      if (channels < 4 || i % 4 != 3) pixels[i] = matgeom::srgb_to_linear(pixels[i]);
   }
   return from_pixelsf(spec.width, spec.height, channels, pixels.data(), space, wrap, path);
 }
@@ -128,9 +128,9 @@ glm::vec4 Texture::sample(glm::vec2 uv) const {
   glm::vec4 value = (1.0f - ty) * ((1.0f - tx) * texel(x0, y0) + tx * texel(x1, y0)) +
                     ty * ((1.0f - tx) * texel(x0, y1) + tx * texel(x1, y1));
   if (convert_srgb_after_filtering_) {
-    value.x = srgb_to_linear(value.x);
-    value.y = srgb_to_linear(value.y);
-    value.z = srgb_to_linear(value.z);
+    value.x = matgeom::srgb_to_linear(value.x);
+    value.y = matgeom::srgb_to_linear(value.y);
+    value.z = matgeom::srgb_to_linear(value.z);
   }
   return value;
 }

@@ -1,0 +1,23 @@
+#pragma once
+// The sRGB transfer function (IEC 61966-2-1), in float and double, for every library: 8-bit
+// colour textures decode through it, display images encode through it. Negative values map to 0.
+#include <cmath>
+
+namespace matgeom {
+
+inline float srgb_to_linear(float c) {
+  if (c <= 0.04045f) return c < 0.0f ? 0.0f : c / 12.92f;
+  return std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+inline double srgb_to_linear(double c) {
+  if (c <= 0.04045) return c < 0.0 ? 0.0 : c / 12.92;
+  return std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+inline float linear_to_srgb(float c) {
+  if (c <= 0.0031308f) return c < 0.0f ? 0.0f : 12.92f * c;
+  return 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+}
+
+}  // namespace matgeom

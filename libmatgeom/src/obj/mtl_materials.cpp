@@ -1,0 +1,184 @@
+#include "obj/mtl_materials.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include <glm/glm.hpp>
+#include <tiny_obj_loader.h>
+
+#include "file_error.h"
+#include "obj/mtl_textures.h"
+
+// Materials: MTL to the Principled BSDF as Blender's OBJ importer builds it
+// (io/wavefront_obj/importer/obj_import_mtl.cc, set_bsdf_socket_values and add_image_textures).
+// Blender 3.4 reads the classic MTL statements; the PBR extension (Pr, Pm, map_Pr, map_Pm) is
+// read as Blender 3.5 added it: its values, when given, replace the ones derived from Ns and Ka.
+// Not representable in MaterialDesc and ignored: Ke/map_Ke, d/map_d, Ni, Kt, map_Ks, map_Ns,
+// refl, disp, sheen, clearcoat, anisotropy, and the texture options -o, -s (Blender adds a
+// Mapping node for them) and -type. Blender ignores -clamp, so textures repeat.
+
+namespace matgeom::obj {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct IllumFlags {
+  bool highlight = false;
+  bool reflection = false;
+};
+
+// Blender: illum 2 turns highlights on, 3 to 8 turn reflection on.
+IllumFlags illum_flags(int illum) { return {illum == 2, illum >= 3 && illum <= 8}; }
+
+// Principled inputs are defined on [0, 1]; Blender passes MTL values through, and a base colour
+// above 1 would reflect more light than arrives.
+double unit_clamp(double value) { return std::clamp(value, 0.0, 1.0); }
+
+double mean3(const tinyobj::real_t* values) {
+  return (static_cast<double>(values[0]) + values[1] + values[2]) / 3.0;
+}
+
+class MaterialConverter {
+ public:
+  MaterialConverter(const ObjFile& file, TextureTable& textures)
+      : file_(file), textures_(textures) {}
+
+  MaterialDesc convert(size_t index) const {
+    const tinyobj::material_t& material = file_.materials[index];
+    const std::string what =
+        concat(file_.material_libraries[index], ": material '", material.name, "'");
+    check_finite_values(material, what);
+    MaterialDesc desc = default_material(material.name);
+    set_scalars(material, desc);
+    set_textures(material, index, what, desc);
+    return desc;
+  }
+
+ private:
+  void check_finite_values(const tinyobj::material_t& material, const std::string& what) const {
+    const auto finite3 = [](const tinyobj::real_t* v) {
+      return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
+    };
+    const bool finite = finite3(material.diffuse) && finite3(material.specular) &&
+                        finite3(material.ambient) && std::isfinite(material.shininess) &&
+                        std::isfinite(material.roughness) && std::isfinite(material.metallic) &&
+                        std::isfinite(material.bump_texopt.bump_multiplier) &&
+                        std::isfinite(material.normal_texopt.bump_multiplier);
+    if (!finite) fail(file_.path, what + ": non-finite value");
+  }
+
+  // The -1 "not given" markers come from kNotGivenMarkers (obj_text_screening.cpp).
+  static void set_scalars(const tinyobj::material_t& material, MaterialDesc& desc) {
+    const IllumFlags illum = illum_flags(material.illum);
+    // Base colour: Kd when no component is negative; otherwise Principled's default grey, which
+    // default_material already holds.
+    const glm::dvec3 kd(material.diffuse[0], material.diffuse[1], material.diffuse[2]);
+    if (kd.r >= 0.0 && kd.g >= 0.0 && kd.b >= 0.0) {
+      desc.base_color = glm::clamp(kd, glm::dvec3(0.0), glm::dvec3(1.0));
+    }
+    // Specular: the mean of Ks; without Ks, 1 with highlights and 0 otherwise.
+    const double ks = mean3(material.specular);
+    desc.specular = ks >= 0.0 ? unit_clamp(ks) : (illum.highlight ? 1.0 : 0.0);
+    // Roughness: Pr; otherwise 1 - sqrt(Ns / 1000) with Ns clamped to [0, 1000]; without Ns,
+    // 0 with highlights and 1 otherwise.
+    if (material.roughness >= 0.0f) {
+      desc.roughness = unit_clamp(material.roughness);
+    } else if (material.shininess >= 0.0f) {
+      desc.roughness =
+          1.0 - std::sqrt(std::clamp<double>(material.shininess, 0.0, 1000.0) / 1000.0);
+    } else {
+      desc.roughness = illum.highlight ? 0.0 : 1.0;
+    }
+    // Metallic: Pm; otherwise for reflecting illum models the mean of Ka (1 without Ka), and 0
+    // for all others -- OBJ materials are dielectric unless they say otherwise, unlike glTF's.
+    const double ka = mean3(material.ambient);
+    if (material.metallic >= 0.0f) {
+      desc.metallic = unit_clamp(material.metallic);
+    } else {
+      desc.metallic = illum.reflection ? (ka >= 0.0 ? unit_clamp(ka) : 1.0) : 0.0;
+    }
+  }
+
+  // A connected Image Texture replaces the socket value in Blender, so an input with a map has
+  // factor 1 (for metallic-roughness only the mapped channel has, see TextureTable).
+  void set_textures(const tinyobj::material_t& material, size_t index, const std::string& what,
+                    MaterialDesc& desc) const {
+    if (!material.diffuse_texname.empty()) {
+      desc.base_color_image =
+          textures_.color_texture(source(material.diffuse_texname, index, what + " map_Kd"));
+      desc.base_color = glm::dvec3(1.0);
+    }
+    set_metallic_roughness_texture(material, index, what, desc);
+    set_normal_texture(material, index, what, desc);
+  }
+
+  void set_metallic_roughness_texture(const tinyobj::material_t& material, size_t index,
+                                      const std::string& what, MaterialDesc& desc) const {
+    const bool has_roughness = !material.roughness_texname.empty();
+    const bool has_metallic = !material.metallic_texname.empty();
+    if (!has_roughness && !has_metallic) return;
+    const TextureSource roughness = source(material.roughness_texname, index, what + " map_Pr");
+    const TextureSource metallic = source(material.metallic_texname, index, what + " map_Pm");
+    desc.metallic_roughness_image = textures_.metallic_roughness_texture(
+        has_roughness ? &roughness : nullptr, has_metallic ? &metallic : nullptr);
+    if (has_roughness) desc.roughness = 1.0;
+    if (has_metallic) desc.metallic = 1.0;
+  }
+
+  // Blender connects map_Bump (or bump) through a Normal Map node: it is a tangent-space normal
+  // map, not a height map, with strength max(0, -bm). Blender ignores "norm", the PBR
+  // extension's normal map, which is read here when map_Bump is absent. Without -bm Blender 3.4
+  // leaves its -1 marker, making the strength 0 and the map invisible; the MTL default -bm 1
+  // (tinyobjloader's) is kept instead.
+  void set_normal_texture(const tinyobj::material_t& material, size_t index,
+                          const std::string& what, MaterialDesc& desc) const {
+    const bool bump = !material.bump_texname.empty();
+    if (!bump && material.normal_texname.empty()) return;
+    const TextureSource normal = bump ? source(material.bump_texname, index, what + " map_Bump")
+                                      : source(material.normal_texname, index, what + " norm");
+    desc.normal_image = textures_.color_texture(normal);
+    const tinyobj::texture_option_t& options = bump ? material.bump_texopt : material.normal_texopt;
+    desc.normal_strength = std::max(0.0, static_cast<double>(options.bump_multiplier));
+  }
+
+  // Texture paths are relative to the .mtl's directory (Blender's first choice; its fallbacks
+  // for broken exports are not tried). Blender drops quotes from them.
+  TextureSource source(std::string name, size_t index, const std::string& what) const {
+    name.erase(std::remove(name.begin(), name.end(), '"'), name.end());
+    const fs::path library(file_.material_libraries[index]);
+    return {name, library.parent_path() / name, what};
+  }
+
+  const ObjFile& file_;
+  TextureTable& textures_;
+};
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// Assembly of the asset
+
+std::vector<MaterialDesc> part_materials(const ObjFile& file, const PartTable& parts,
+                                         std::vector<ImagePixels>& images) {
+  TextureTable textures(file.path);
+  const MaterialConverter converter(file, textures);
+  std::map<int, MaterialDesc> converted;
+  std::vector<MaterialDesc> materials;
+  for (const int material : parts.materials) {
+    auto found = converted.find(material);
+    if (found == converted.end()) {
+      const MaterialDesc desc =
+          material < 0 ? default_material() : converter.convert(static_cast<size_t>(material));
+      found = converted.emplace(material, desc).first;
+    }
+    materials.push_back(found->second);
+  }
+  images = textures.take_images();
+  return materials;
+}
+
+}  // namespace matgeom::obj

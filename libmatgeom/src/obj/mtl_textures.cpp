@@ -1,0 +1,109 @@
+#include "obj/mtl_textures.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+
+#include <tiny_gltf.h>
+
+#include "file_error.h"
+#include "image_bytes.h"
+#include "matgeom/text.h"
+#include "obj/obj_loading.h"
+
+namespace matgeom::obj {
+namespace {
+
+// Decoded with tinygltf's stb_image. Its exported decoder always expands to RGBA (the
+// channel-preserving option is internal to tinygltf's implementation), so every texture read
+// from an OBJ has 4 channels.
+ImagePixels decode_texture(const std::string& obj_path, const TextureSource& source) {
+  std::string bytes;
+  if (!read_whole_file(source.file, bytes)) {
+    fail(obj_path, concat(source.what, ": cannot open texture ", source.file.string()));
+  }
+  if (bytes.size() > static_cast<size_t>(std::numeric_limits<int>::max())) {
+    fail(obj_path, concat(source.what, ": texture ", source.file.string(), " is too large"));
+  }
+  tinygltf::Image image;
+  image.name = source.file.string();
+  std::string errors;
+  std::string warnings;
+  const bool decoded = tinygltf::LoadImageData(&image, 0, &errors, &warnings, 0, 0,
+                                               reinterpret_cast<const unsigned char*>(bytes.data()),
+                                               static_cast<int>(bytes.size()), nullptr);
+  const size_t expected = static_cast<size_t>(image.width) * static_cast<size_t>(image.height) *
+                          static_cast<size_t>(image.component) *
+                          static_cast<size_t>(image.bits / 8);
+  if (!decoded || image.component != 4 || (image.bits != 8 && image.bits != 16) ||
+      image.image.size() != expected) {
+    fail(obj_path, concat(source.what, ": cannot decode texture ", source.file.string(), " (",
+                          trim(errors), ")"));
+  }
+  ImagePixels pixels;
+  pixels.name = source.name;
+  pixels.width = image.width;
+  pixels.height = image.height;
+  pixels.channels = image.component;
+  pixels.data = to_8_bit(image);
+  return pixels;
+}
+
+// Blender feeds a Pr or Pm map's colour to a float socket, which takes its luminance (Rec. 709
+// weights, those of Blender's default colour management).
+uint8_t luminance(const ImagePixels& rgba, size_t pixel) {
+  const uint8_t* p = &rgba.data[4 * pixel];
+  return static_cast<uint8_t>((2126u * p[0] + 7152u * p[1] + 722u * p[2] + 5000u) / 10000u);
+}
+
+}  // namespace
+
+int TextureTable::color_texture(const TextureSource& source) {
+  const auto found = index_of_file_.find(source.file.string());
+  if (found != index_of_file_.end()) return found->second;
+  images_.push_back(decode_texture(obj_path_, source));
+  const int index = static_cast<int>(images_.size()) - 1;
+  index_of_file_.emplace(source.file.string(), index);
+  return index;
+}
+
+int TextureTable::metallic_roughness_texture(const TextureSource* roughness,
+                                             const TextureSource* metallic) {
+  const std::pair<std::string, std::string> key(roughness ? roughness->file.string() : "",
+                                                metallic ? metallic->file.string() : "");
+  const auto found = index_of_packed_.find(key);
+  if (found != index_of_packed_.end()) return found->second;
+  images_.push_back(pack_metallic_roughness(roughness, metallic));
+  const int index = static_cast<int>(images_.size()) - 1;
+  index_of_packed_.emplace(key, index);
+  return index;
+}
+
+ImagePixels TextureTable::pack_metallic_roughness(const TextureSource* roughness_source,
+                                                  const TextureSource* metallic_source) const {
+  ImagePixels roughness, metallic;
+  if (roughness_source) roughness = decode_texture(obj_path_, *roughness_source);
+  if (metallic_source) metallic = decode_texture(obj_path_, *metallic_source);
+  if (roughness_source && metallic_source &&
+      (roughness.width != metallic.width || roughness.height != metallic.height)) {
+    fail(obj_path_, concat(roughness_source->what, " (", roughness.width, "x", roughness.height,
+                           ") and map_Pm (", metallic.width, "x", metallic.height,
+                           ") differ in size; they cannot be packed into one image"));
+  }
+  const ImagePixels& shape = roughness_source ? roughness : metallic;
+  ImagePixels packed;
+  packed.name =
+      (roughness_source ? roughness.name : "") + "+" + (metallic_source ? metallic.name : "");
+  packed.width = shape.width;
+  packed.height = shape.height;
+  packed.channels = 3;
+  const size_t pixel_count = static_cast<size_t>(shape.width) * static_cast<size_t>(shape.height);
+  packed.data.resize(3 * pixel_count);
+  for (size_t i = 0; i < pixel_count; ++i) {
+    packed.data[3 * i + 1] = roughness_source ? luminance(roughness, i) : 255;
+    packed.data[3 * i + 2] = metallic_source ? luminance(metallic, i) : 255;
+  }
+  return packed;
+}
+
+}  // namespace matgeom::obj

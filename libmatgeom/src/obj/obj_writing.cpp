@@ -1,0 +1,200 @@
+#include "obj/obj_writing.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdio>
+#include <sstream>
+#include <stdexcept>
+
+#include <glm/glm.hpp>
+
+#include "file_error.h"
+
+namespace matgeom::obj {
+namespace {
+
+// Nine significant digits identify every float, so positions, normals and UVs read back exactly.
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.9g", value);
+  return text;
+}
+
+std::string triple(const glm::dvec3& v) {
+  return number(v.x) + " " + number(v.y) + " " + number(v.z);
+}
+
+// Blender's +Z up to OBJ's +Y up, the inverse of obj_to_blender (obj_parts.cpp).
+glm::dvec3 blender_to_obj(const glm::vec3& v) { return {v.x, v.z, -v.y}; }
+
+void check_image(const ObjectAsset& asset, int image, const MaterialDesc& material) {
+  if (image < 0) return;
+  if (static_cast<size_t>(image) >= asset.images.size()) {
+    throw std::invalid_argument(concat("write_obj: material '", material.name, "' refers to image ",
+                                       image, " but the asset has ", asset.images.size()));
+  }
+  const ImagePixels& pixels = asset.images[static_cast<size_t>(image)];
+  const size_t expected = static_cast<size_t>(std::max(pixels.width, 0)) *
+                          static_cast<size_t>(std::max(pixels.height, 0)) *
+                          static_cast<size_t>(std::max(pixels.channels, 0));
+  if (pixels.width <= 0 || pixels.height <= 0 || pixels.channels < 1 || pixels.channels > 4 ||
+      pixels.data.size() != expected) {
+    throw std::invalid_argument(concat("write_obj: image ", image, " (", pixels.name,
+                                       ") has inconsistent size or channels"));
+  }
+}
+
+// One channel of every pixel as a grey image; grey and grey-alpha images give their grey.
+ImagePixels channel_image(const ImagePixels& image, int channel) {
+  const size_t source_channel = image.channels < 3 ? 0 : static_cast<size_t>(channel);
+  const size_t channels = static_cast<size_t>(image.channels);
+  ImagePixels grey;
+  grey.width = image.width;
+  grey.height = image.height;
+  grey.channels = 1;
+  grey.data.resize(image.data.size() / channels);
+  for (size_t i = 0; i < grey.data.size(); ++i)
+    grey.data[i] = image.data[i * channels + source_channel];
+  return grey;
+}
+
+// tinyobjloader splits "mtllib" at spaces and takes '\' as an escape.
+std::string escaped_library_name(const std::string& name) {
+  std::string escaped;
+  for (const char c : name) {
+    if (c == ' ' || c == '\\') escaped += '\\';
+    escaped += c;
+  }
+  return escaped;
+}
+
+// Corner reference "v", "v/vt", "v//vn" or "v/vt/vn"; every attribute shares the vertex's index.
+std::string corner_reference(uint32_t vertex, bool uvs, bool normals) {
+  const std::string index = std::to_string(vertex + 1);
+  if (!uvs && !normals) return index;
+  return index + "/" + (uvs ? index : "") + (normals ? "/" + index : "");
+}
+
+}  // namespace
+
+std::string obj_safe_name(const std::string& name, const std::string& fallback) {
+  if (name.empty()) return fallback;
+  std::string safe = name;
+  for (char& c : safe) {
+    const unsigned char byte = static_cast<unsigned char>(c);
+    if (byte <= ' ' || byte == 0x7f) c = '_';
+  }
+  return safe;
+}
+
+std::string UniqueNames::claim(const std::string& wanted) {
+  std::string name = wanted;
+  for (int suffix = 2; taken_.count(name) != 0; ++suffix) name = concat(wanted, "_", suffix);
+  taken_.insert(name);
+  return name;
+}
+
+void check_writable(const ObjectAsset& asset) {
+  validate_mesh(asset.mesh, "write_obj");
+  if (asset.mesh.triangles.empty())
+    throw std::invalid_argument("write_obj: the mesh has no triangles");
+  if (asset.materials.size() < asset.mesh.part_count()) {
+    throw std::invalid_argument(concat("write_obj: ", asset.mesh.part_count(), " parts but ",
+                                       asset.materials.size(), " materials"));
+  }
+  for (const MaterialDesc& material : asset.materials) {
+    const std::vector<double> values = {
+        material.base_color.r, material.base_color.g, material.base_color.b,   material.specular,
+        material.roughness,    material.metallic,     material.normal_strength};
+    if (!std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); })) {
+      throw std::invalid_argument("write_obj: material '" + material.name +
+                                  "' has a non-finite value");
+    }
+    for (const int image :
+         {material.base_color_image, material.metallic_roughness_image, material.normal_image}) {
+      check_image(asset, image, material);
+    }
+  }
+}
+
+MaterialMaps ImageFiles::maps_of(const MaterialDesc& material) {
+  MaterialMaps maps;
+  if (material.base_color_image >= 0) maps.base_color = image_file(material.base_color_image);
+  if (material.normal_image >= 0) maps.normal = image_file(material.normal_image);
+  if (material.metallic_roughness_image >= 0) {
+    maps.roughness = channel_file(material.metallic_roughness_image, 1, "roughness");
+    maps.metallic = channel_file(material.metallic_roughness_image, 2, "metallic");
+  }
+  return maps;
+}
+
+std::string ImageFiles::image_file(int image) {
+  return add(concat(stem_, "_image", image, ".png"), images_[static_cast<size_t>(image)]);
+}
+
+std::string ImageFiles::channel_file(int image, int channel, const char* what) {
+  const std::string name = concat(stem_, "_image", image, "_", what, ".png");
+  if (written_.count(name) != 0) return name;
+  return add(name, channel_image(images_[static_cast<size_t>(image)], channel));
+}
+
+std::string ImageFiles::add(const std::string& name, const ImagePixels& pixels) {
+  if (written_.insert(name).second) files_.push_back({name, pixels});
+  return name;
+}
+
+std::string mtl_text(const std::vector<NamedMaterial>& materials) {
+  std::string text = "# matpredict\n";
+  for (const NamedMaterial& material : materials) {
+    const MaterialDesc& desc = *material.desc;
+    text += "\nnewmtl " + material.name + "\n";
+    text += "Kd " + triple(desc.base_color) + "\n";
+    text += "Ks " + triple(glm::dvec3(desc.specular)) + "\n";
+    // For readers without the PBR extension (Blender before 3.5): Ns inverts Blender's
+    // roughness = 1 - sqrt(Ns / 1000), and under illum 3 Blender's metallic is the mean of Ka.
+    text += "Ns " + number(1000.0 * (1.0 - desc.roughness) * (1.0 - desc.roughness)) + "\n";
+    text += "Ka " + triple(glm::dvec3(desc.metallic)) + "\n";
+    text += desc.metallic > 0.0 ? "illum 3\n" : "illum 2\n";
+    text += "Pr " + number(desc.roughness) + "\n";
+    text += "Pm " + number(desc.metallic) + "\n";
+    const MaterialMaps& maps = material.maps;
+    if (!maps.base_color.empty()) text += "map_Kd " + maps.base_color + "\n";
+    if (!maps.roughness.empty()) text += "map_Pr " + maps.roughness + "\n";
+    if (!maps.metallic.empty()) text += "map_Pm " + maps.metallic + "\n";
+    if (!maps.normal.empty()) {
+      text += "map_Bump -bm " + number(desc.normal_strength) + " " + maps.normal + "\n";
+    }
+  }
+  return text;
+}
+
+std::string obj_text(const TriangleMesh& mesh, const std::string& library,
+                     const std::vector<std::string>& group_names,
+                     const std::vector<NamedMaterial>& materials) {
+  std::ostringstream text;
+  text << "# matpredict\nmtllib " << escaped_library_name(library) << "\n";
+  for (const glm::vec3& p : mesh.positions) text << "v " << triple(blender_to_obj(p)) << "\n";
+  for (const glm::vec2& uv : mesh.uvs) text << "vt " << number(uv.x) << " " << number(uv.y) << "\n";
+  for (const glm::vec3& n : mesh.normals) text << "vn " << triple(blender_to_obj(n)) << "\n";
+
+  std::vector<std::vector<size_t>> triangles_of_part(group_names.size());
+  for (size_t t = 0; t < mesh.triangle_count(); ++t) {
+    triangles_of_part[mesh.triangle_parts.empty() ? 0 : mesh.triangle_parts[t]].push_back(t);
+  }
+  const bool uvs = !mesh.uvs.empty(), normals = !mesh.normals.empty();
+  for (size_t part = 0; part < group_names.size(); ++part) {
+    // A part without triangles would leave only an empty group, which readers drop anyway.
+    if (triangles_of_part[part].empty()) continue;
+    text << "g " << group_names[part] << "\nusemtl " << materials[part].name << "\n";
+    for (const size_t t : triangles_of_part[part]) {
+      const glm::uvec3& triangle = mesh.triangles[t];
+      text << "f " << corner_reference(triangle[0], uvs, normals) << " "
+           << corner_reference(triangle[1], uvs, normals) << " "
+           << corner_reference(triangle[2], uvs, normals) << "\n";
+    }
+  }
+  return text.str();
+}
+
+}  // namespace matgeom::obj
