@@ -1,55 +1,8 @@
 #include "bsdf/lobe_mixture.h"
 
 #include <algorithm>
-#include <stdexcept>
 
 namespace matrender {
-
-void LobeMixture::add(const Lobe& lobe) {
-  if (count_ == kMaxLobes) throw std::logic_error("LobeMixture: more than kMaxLobes lobes");
-  lobes_[count_] = lobe;
-  lobe_flags_[count_] = matrender::lobe_flags(lobe);
-  sample_weight_[count_] = std::visit([](const auto& l) { return l.sample_weight(); }, lobe);
-  ++count_;
-}
-
-void LobeMixture::finish() {
-  float total = 0.0f;
-  for (size_t i = 0; i < count_; ++i) total += sample_weight_[i];
-  if (!(total > 0.0f)) {
-    count_ = 0;
-    flags_ = BxDFFlags::None;
-    return;
-  }
-  float partial = 0.0f;
-  flags_ = BxDFFlags::None;
-  for (size_t i = 0; i < count_; ++i) {
-    partial += sample_weight_[i];
-    // The last bound is exactly 1, so every u in [0, 1) picks a lobe.
-    cdf_[i] = i + 1 == count_ ? 1.0f : partial / total;
-    probability_[i] = cdf_[i] - (i == 0 ? 0.0f : cdf_[i - 1]);
-    flags_ |= lobe_flags_[i];
-  }
-}
-
-glm::vec3 LobeMixture::eval(const glm::vec3& wi, BxDFFlags selected, float* pdf) const {
-  glm::vec3 value(0.0f);
-  float mixture_pdf = 0.0f;
-  for (size_t i = 0; i < count_; ++i) {
-    if (!any(lobe_flags_[i] & selected)) continue;
-    float lobe_pdf;
-    value += std::visit([&](const auto& l) { return l.eval(wi, &lobe_pdf); }, lobes_[i]);
-    mixture_pdf += probability_[i] * lobe_pdf;
-  }
-  *pdf = mixture_pdf;
-  return value;
-}
-
-size_t LobeMixture::pick(float u_lobe) const {
-  for (size_t i = 0; i < count_; ++i)
-    if (u_lobe < cdf_[i]) return i;
-  return kMaxLobes;
-}
 
 bool LobeMixture::sample(glm::vec2 u, BsdfSample* out) const {
   const float u_lobe = u.x;
@@ -67,7 +20,7 @@ bool LobeMixture::sample(float u_lobe, glm::vec2 u, BsdfSample* out) const {
 
 bool LobeMixture::sample_lobe(size_t i, glm::vec2 u, BsdfSample* out) const {
   LobeSample s;
-  if (!std::visit([&](const auto& l) { return l.sample(u, &s); }, lobes_[i])) return false;
+  if (!with_lobe(lobes_[i], [&](const auto& l) { return l.sample(u, &s); })) return false;
   const BxDFFlags flags = lobe_flags_[i];
   out->wi = s.wi;
   out->flags = flags;

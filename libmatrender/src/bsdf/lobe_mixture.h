@@ -8,6 +8,7 @@
 // added to `Lobe` below. A material without a lobe pays nothing for it: it is not in the list.
 #include <array>
 #include <cstddef>
+#include <stdexcept>
 #include <variant>
 
 #include <glm/glm.hpp>
@@ -21,8 +22,19 @@ namespace matrender {
 
 using Lobe = std::variant<DiffuseLobe, GgxReflectionLobe>;
 
+// f(the lobe as its own type). A switch, not std::visit: GCC turns std::visit into a call through
+// a table, which keeps the lobes' small methods from being inlined at every path vertex.
+template <class F>
+decltype(auto) with_lobe(const Lobe& lobe, F&& f) {
+  static_assert(std::variant_size_v<Lobe> == 2, "a new lobe needs its case here");
+  switch (lobe.index()) {
+    case 0: return f(*std::get_if<0>(&lobe));
+    default: return f(*std::get_if<1>(&lobe));
+  }
+}
+
 inline BxDFFlags lobe_flags(const Lobe& lobe) {
-  return std::visit([](const auto& l) { return l.flags(); }, lobe);
+  return with_lobe(lobe, [](const auto& l) { return l.flags(); });
 }
 
 struct BsdfSample {
@@ -38,8 +50,9 @@ class LobeMixture {
   // vertex: room for lobes nobody has costs stores).
   static constexpr size_t kMaxLobes = 2;
 
-  // Adds a lobe; finish() must follow the last one.
-  void add(const Lobe& lobe);
+  // Adds a lobe (one of Lobe's alternatives); finish() must follow the last one.
+  template <class LobeType>
+  void add(const LobeType& lobe);
   // Turns the sample weights into pick probabilities. A mixture whose weights are all zero
   // scatters nothing and has no lobes left.
   void finish();
@@ -80,5 +93,53 @@ class LobeMixture {
   size_t count_ = 0;
   BxDFFlags flags_ = BxDFFlags::None;
 };
+
+// Small and called at every path vertex: defined here so the integrator inlines them.
+template <class LobeType>
+void LobeMixture::add(const LobeType& lobe) {
+  if (count_ == kMaxLobes) throw std::logic_error("LobeMixture: more than kMaxLobes lobes");
+  lobes_[count_].template emplace<LobeType>(lobe);
+  lobe_flags_[count_] = lobe.flags();
+  sample_weight_[count_] = lobe.sample_weight();
+  ++count_;
+}
+
+inline void LobeMixture::finish() {
+  float total = 0.0f;
+  for (size_t i = 0; i < count_; ++i) total += sample_weight_[i];
+  if (!(total > 0.0f)) {
+    count_ = 0;
+    flags_ = BxDFFlags::None;
+    return;
+  }
+  float partial = 0.0f;
+  flags_ = BxDFFlags::None;
+  for (size_t i = 0; i < count_; ++i) {
+    partial += sample_weight_[i];
+    // The last bound is exactly 1, so every u in [0, 1) picks a lobe.
+    cdf_[i] = i + 1 == count_ ? 1.0f : partial / total;
+    probability_[i] = cdf_[i] - (i == 0 ? 0.0f : cdf_[i - 1]);
+    flags_ |= lobe_flags_[i];
+  }
+}
+
+inline glm::vec3 LobeMixture::eval(const glm::vec3& wi, BxDFFlags selected, float* pdf) const {
+  glm::vec3 value(0.0f);
+  float mixture_pdf = 0.0f;
+  for (size_t i = 0; i < count_; ++i) {
+    if (!any(lobe_flags_[i] & selected)) continue;
+    float lobe_pdf;
+    value += with_lobe(lobes_[i], [&](const auto& l) { return l.eval(wi, &lobe_pdf); });
+    mixture_pdf += probability_[i] * lobe_pdf;
+  }
+  *pdf = mixture_pdf;
+  return value;
+}
+
+inline size_t LobeMixture::pick(float u_lobe) const {
+  for (size_t i = 0; i < count_; ++i)
+    if (u_lobe < cdf_[i]) return i;
+  return kMaxLobes;
+}
 
 }  // namespace matrender

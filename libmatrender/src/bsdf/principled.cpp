@@ -10,7 +10,16 @@ float luminance(const glm::vec3& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0
 
 }  // namespace
 
-PrincipledInputs::PrincipledInputs() : PrincipledInputs(Material()) {}
+PrincipledInputs::PrincipledInputs() {
+  // Every SurfacePoint starts with one: computed once, copied after.
+  static const std::array<glm::vec3, matgeom::kMaterialParameterCount> defaults = [] {
+    std::array<glm::vec3, matgeom::kMaterialParameterCount> table{};
+    for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters)
+      table[static_cast<size_t>(info.id)] = glm::vec3(static_cast<float>(info.default_value));
+    return table;
+  }();
+  values = defaults;
+}
 
 PrincipledInputs::PrincipledInputs(const Material& material) : diffuse_model(material.diffuse_model) {
   for (size_t i = 0; i < values.size(); ++i) values[i] = material.parameters[i].value;

@@ -50,7 +50,7 @@ std::optional<LightSample> LightSampler::sample(const glm::vec3& p, const Receiv
   const std::optional<Pick> picked = pick(&u.x);
   if (!picked) return std::nullopt;
   std::optional<LightSample> s =
-      std::visit([&](const auto& light) { return light.sample(p, receiving, u); }, lights_[picked->index]);
+      with_light(lights_[picked->index], [&](const auto& light) { return light.sample(p, receiving, u); });
   if (s) s->pdf *= picked->probability;
   return s;
 }
@@ -58,15 +58,13 @@ std::optional<LightSample> LightSampler::sample(const glm::vec3& p, const Receiv
 glm::vec3 LightSampler::escaped_radiance(const glm::vec3& dir, float bsdf_pdf, bool bsdf_specular) const {
   glm::vec3 sum(0.0f);
   for (size_t index : infinite_) {
-    std::visit(
-        [&](const auto& light) {
-          if constexpr (std::decay_t<decltype(light)>::type() == LightType::Infinite) {
-            const float light_pdf = light.sampled() ? selection_pdf() * light.pdf(dir) : 0.0f;
-            const float weight = bsdf_specular ? 1.0f : power_heuristic(bsdf_pdf, light_pdf);
-            sum += weight * light.radiance(dir);
-          }
-        },
-        lights_[index]);
+    with_light(lights_[index], [&](const auto& light) {
+      if constexpr (std::decay_t<decltype(light)>::type() == LightType::Infinite) {
+        const float light_pdf = light.sampled() ? selection_pdf() * light.pdf(dir) : 0.0f;
+        const float weight = bsdf_specular ? 1.0f : power_heuristic(bsdf_pdf, light_pdf);
+        sum += weight * light.radiance(dir);
+      }
+    });
   }
   return sum;
 }

@@ -20,8 +20,20 @@ namespace matrender {
 
 using SceneLight = std::variant<PreparedRectLight, PreparedDeltaLight, UniformBackground>;
 
+// f(the light as its own type). A switch, not std::visit, so that the lights' methods inline
+// (GCC calls std::visit's alternatives through a table).
+template <class F>
+decltype(auto) with_light(const SceneLight& light, F&& f) {
+  static_assert(std::variant_size_v<SceneLight> == 3, "a new light needs its case here");
+  switch (light.index()) {
+    case 0: return f(*std::get_if<0>(&light));
+    case 1: return f(*std::get_if<1>(&light));
+    default: return f(*std::get_if<2>(&light));
+  }
+}
+
 inline LightType light_type(const SceneLight& light) {
-  return std::visit([](const auto& l) { return l.type(); }, light);
+  return with_light(light, [](const auto& l) { return l.type(); });
 }
 
 }  // namespace matrender

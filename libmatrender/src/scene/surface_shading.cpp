@@ -77,7 +77,8 @@ SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm:
   sp.eta = backfacing ? 1.0f / ior : ior;
 
   // Only textures read the UV.
-  const bool textured = material.textured() || material.normal_map;
+  const bool textured_parameters = material.textured();
+  const bool textured = textured_parameters || material.normal_map;
   if (textured && !mesh.uvs.empty()) sp.uv = b0 * mesh.uvs[tri.x] + b1 * mesh.uvs[tri.y] + b2 * mesh.uvs[tri.z];
   if (!std::isfinite(sp.uv.x) || !std::isfinite(sp.uv.y)) sp.uv = glm::vec2(0.0f);
 
@@ -92,7 +93,7 @@ SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm:
   sp.shading_normal = ensure_valid_reflection(sp.geometric_normal, wo, n);
 
   sp.inputs = PrincipledInputs(material);
-  if (material.textured()) look_up_textures(material, sp.uv, sp.inputs);
+  if (textured_parameters) look_up_textures(material, sp.uv, sp.inputs);
   return sp;
 }
 
