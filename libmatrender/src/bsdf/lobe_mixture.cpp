@@ -20,7 +20,7 @@ bool LobeMixture::sample(float u_lobe, glm::vec2 u, BsdfSample* out) const {
 
 bool LobeMixture::sample_lobe(size_t i, glm::vec2 u, BsdfSample* out) const {
   LobeSample s;
-  if (!with_lobe(lobes_[i], [&](const auto& l) { return l.sample(u, &s); })) return false;
+  if (!with_lobe(slots_[i].lobe, [&](const auto& l) { return l.sample(u, &s); })) return false;
   const BxDFFlags flags = lobe_flags_[i];
   out->wi = s.wi;
   out->flags = flags;

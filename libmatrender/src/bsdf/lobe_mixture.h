@@ -8,6 +8,8 @@
 // added to `Lobe` below. A material without a lobe pays nothing for it: it is not in the list.
 #include <array>
 #include <cstddef>
+#include <new>
+#include <type_traits>
 #include <stdexcept>
 #include <variant>
 
@@ -58,7 +60,7 @@ class LobeMixture {
   void finish();
 
   size_t size() const { return count_; }
-  const Lobe& lobe(size_t i) const { return lobes_[i]; }
+  const Lobe& lobe(size_t i) const { return slots_[i].lobe; }
   BxDFFlags lobe_flags(size_t i) const { return lobe_flags_[i]; }
   float probability(size_t i) const { return probability_[i]; }
   BxDFFlags flags() const { return flags_; }
@@ -84,8 +86,16 @@ class LobeMixture {
   size_t pick(float u_lobe) const;
   bool sample_lobe(size_t i, glm::vec2 u, BsdfSample* out) const;
 
+  // Room for a lobe, left unconstructed until add() puts one there: a mixture is made at every
+  // path vertex, and default-constructing lobes nobody uses costs stores. Lobes are trivially
+  // destructible, so nothing needs to end their lifetime.
+  union LobeSlot {
+    LobeSlot() {}
+    Lobe lobe;
+  };
+  static_assert(std::is_trivially_destructible_v<Lobe> && std::is_trivially_copyable_v<Lobe>);
   // Entries from count_ on are unused.
-  std::array<Lobe, kMaxLobes> lobes_;
+  std::array<LobeSlot, kMaxLobes> slots_;
   std::array<BxDFFlags, kMaxLobes> lobe_flags_;
   std::array<float, kMaxLobes> sample_weight_;
   std::array<float, kMaxLobes> cdf_;          // probability of picking one of lobes 0..i
@@ -98,7 +108,7 @@ class LobeMixture {
 template <class LobeType>
 void LobeMixture::add(const LobeType& lobe) {
   if (count_ == kMaxLobes) throw std::logic_error("LobeMixture: more than kMaxLobes lobes");
-  lobes_[count_].template emplace<LobeType>(lobe);
+  new (&slots_[count_].lobe) Lobe(std::in_place_type<LobeType>, lobe);
   lobe_flags_[count_] = lobe.flags();
   sample_weight_[count_] = lobe.sample_weight();
   ++count_;
@@ -129,7 +139,7 @@ inline glm::vec3 LobeMixture::eval(const glm::vec3& wi, BxDFFlags selected, floa
   for (size_t i = 0; i < count_; ++i) {
     if (!any(lobe_flags_[i] & selected)) continue;
     float lobe_pdf;
-    value += with_lobe(lobes_[i], [&](const auto& l) { return l.eval(wi, &lobe_pdf); });
+    value += with_lobe(slots_[i].lobe, [&](const auto& l) { return l.eval(wi, &lobe_pdf); });
     mixture_pdf += probability_[i] * lobe_pdf;
   }
   *pdf = mixture_pdf;
