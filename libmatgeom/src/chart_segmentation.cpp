@@ -9,6 +9,8 @@
 #include <string>
 #include <utility>
 
+#include "triangle_area.h"
+
 namespace matgeom {
 namespace {
 
@@ -45,11 +47,6 @@ std::vector<glm::uvec3> edge_neighbours(const std::vector<glm::uvec3>& triangles
   return neighbours;
 }
 
-// Unit normal times twice the area (zero for a degenerate triangle).
-glm::dvec3 area_normal(const std::vector<glm::dvec3>& p, const glm::uvec3& t) {
-  return glm::cross(p[t.y] - p[t.x], p[t.z] - p[t.x]);
-}
-
 bool within_angle(const glm::dvec3& a, const glm::dvec3& b, double cos_limit) {
   const double la = glm::length(a), lb = glm::length(b);
   if (!(la > 0.0) || !(lb > 0.0)) return true;  // an undefined normal constrains nothing
@@ -68,7 +65,10 @@ std::vector<uint32_t> segment_charts(const std::vector<glm::dvec3>& positions,
   const double cos_planarity = std::cos(glm::radians(options.planarity_bound_degrees));
   const std::vector<glm::uvec3> neighbours = edge_neighbours(triangles, weld_by_position(positions));
   std::vector<glm::dvec3> normals(triangles.size());
-  for (size_t t = 0; t < triangles.size(); ++t) normals[t] = area_normal(positions, triangles[t]);
+  for (size_t t = 0; t < triangles.size(); ++t) {
+    const glm::uvec3& c = triangles[t];
+    normals[t] = area_vector(positions[c.x], positions[c.y], positions[c.z]);
+  }
 
   std::vector<uint32_t> chart(triangles.size(), kUnassigned);
   uint32_t chart_count = 0;

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "triangle_area.h"
+
 namespace matgeom {
 namespace {
 
@@ -120,7 +122,7 @@ glm::dvec3 surface_centroid(const TriangleMesh& mesh) {
     const glm::dvec3 a = glm::dvec3(mesh.positions[triangle[0]]) - origin;
     const glm::dvec3 b = glm::dvec3(mesh.positions[triangle[1]]) - origin;
     const glm::dvec3 c = glm::dvec3(mesh.positions[triangle[2]]) - origin;
-    const double area = 0.5 * glm::length(glm::cross(b - a, c - a));
+    const double area = triangle_area(a, b, c);
     weighted_sum += area * (a + b + c) / 3.0;
     total_area += area;
   }

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "triangle_area.h"
+
 namespace matgeom {
 namespace {
 
@@ -13,11 +15,6 @@ struct Corner {
   glm::dvec3 position;
   glm::dvec2 uv;
 };
-
-// Twice the area of the triangle, along its counter-clockwise normal.
-glm::dvec3 area_vector(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
-  return glm::cross(b - a, c - a);
-}
 
 // Interior angle at `apex` between the edges to `p` and `q`; 0 for a zero-length edge.
 // atan2 of |cross| and dot stays accurate for angles near 0 and pi, where acos does not.

@@ -13,6 +13,7 @@
 #include "matgeom/conformal_flattening.h"
 #include "matgeom/tangents.h"
 #include "matgeom/uv_packing.h"
+#include "triangle_area.h"
 
 namespace matgeom {
 namespace {
@@ -67,7 +68,7 @@ std::vector<glm::dvec3> source_positions(const TriangleMesh& mesh, const Chart& 
 
 double surface_area(const std::vector<glm::dvec3>& p, const std::vector<glm::uvec3>& triangles) {
   double area = 0.0;
-  for (const glm::uvec3& t : triangles) area += 0.5 * glm::length(glm::cross(p[t.y] - p[t.x], p[t.z] - p[t.x]));
+  for (const glm::uvec3& t : triangles) area += triangle_area(p[t.x], p[t.y], p[t.z]);
   return area;
 }
 
