@@ -7,6 +7,7 @@
 // E[d_i^2] = E[e_i] when both compute the same integral: z_i = d_i^2 - e_i has mean 0, and so
 // has d_i. Both means are tested against their standard errors over the 4096 pixels.
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <variant>
 #include <vector>
@@ -24,6 +25,12 @@
 namespace {
 
 constexpr int kResolution = 64;
+
+// Where Blender's scene description, log and EXRs for one case go: under the system's temporary
+// folder, never the source tree or wherever the test is started.
+std::string cycles_work_folder(const std::string& name) {
+  return (std::filesystem::temp_directory_path() / "matpredict_cycles_agreement" / name).string();
+}
 constexpr int kSamples = 256;
 
 // A sphere of radius 0.3 m with bumps, its vertex normals smooth: curvature, self-shadowing and
@@ -186,7 +193,6 @@ TEST_CASE("Renders agree with Blender 3.4 Cycles up to noise", "[render][blender
       {"half_metal_0.6", {0.5f, 0.8f, 0.5f}, 0.5f, 0.6f, 0.5f, 0.0f},
       {"coarse_sphere_no_terminator_offset", {0.8f, 0.8f, 0.8f}, 0.0f, 0.5f, 0.5f, 0.0f, 6, 0.0f},
   };
-  const std::string work = "cycles_agreement_out";
   for (const Case& c : cases) {
     matrender::Material material;
     material.set(matrender::MaterialParameter::BaseColor, c.base_color);
@@ -196,7 +202,7 @@ TEST_CASE("Renders agree with Blender 3.4 Cycles up to noise", "[render][blender
     material.set(matrender::MaterialParameter::SpecularTint, c.specular_tint);
     const shaders_ref::CyclesScene scene = paper_scene(material, c.rings, c.terminator_offset);
     std::vector<shaders_ref::CyclesRender> renders = {{kSamples, 1, "", 0.0}, {kSamples, 2, "", 0.0}};
-    shaders_ref::render_with_cycles(scene, renders, 2, work + "/" + c.name);
+    shaders_ref::render_with_cycles(scene, renders, 2, cycles_work_folder(c.name));
     const Agreement a =
         compare(render_ours(scene, 1), render_ours(scene, 2),
                 shaders_ref::read_rgb_exr(renders[0].exr_path, kResolution, kResolution),
@@ -224,7 +230,7 @@ TEST_CASE("The inside of a thin-walled open vessel agrees with Cycles", "[render
   grid.radius = 0.8;
   scene.camera = matrender::grid_view(grid, 0, 16, kResolution, kResolution, 0.25);
   std::vector<shaders_ref::CyclesRender> renders = {{kSamples, 1, "", 0.0}, {kSamples, 2, "", 0.0}};
-  shaders_ref::render_with_cycles(scene, renders, 2, "cycles_agreement_out/open_vessel");
+  shaders_ref::render_with_cycles(scene, renders, 2, cycles_work_folder("open_vessel"));
   const Agreement a = compare(render_ours(scene, 1), render_ours(scene, 2),
                               shaders_ref::read_rgb_exr(renders[0].exr_path, kResolution, kResolution),
                               shaders_ref::read_rgb_exr(renders[1].exr_path, kResolution, kResolution));
@@ -253,7 +259,7 @@ TEST_CASE("The shadow terminator geometry offset changes renders as it does in C
   const auto render_both = [&](float offset, std::vector<float> ours[2], std::vector<float> cycles[2]) {
     const shaders_ref::CyclesScene scene = paper_scene(material, 6, offset);
     std::vector<shaders_ref::CyclesRender> renders = {{kSamples, 1, "", 0.0}, {kSamples, 2, "", 0.0}};
-    shaders_ref::render_with_cycles(scene, renders, 2, "cycles_agreement_out/terminator_" + std::to_string(offset));
+    shaders_ref::render_with_cycles(scene, renders, 2, cycles_work_folder("terminator_" + std::to_string(offset)));
     for (int k = 0; k < 2; ++k) {
       ours[k] = render_ours(scene, static_cast<uint32_t>(k + 1));
       cycles[k] = shaders_ref::read_rgb_exr(renders[k].exr_path, kResolution, kResolution);

@@ -19,8 +19,8 @@ TexturePtr constant_texture(const glm::vec4& texel) {
   return Texture::from_pixelsf(1, 1, 4, rgba.data(), ColorSpace::NonColor);
 }
 
-// The inputs shade_surface gives the middle of a square in `material`, seen from above.
-PrincipledInputs shaded_inputs(const Material& material) {
+// What shade_surface gives a point of a square (normal +Z) in `material`, seen along -wo.
+SurfacePoint shaded_point(const Material& material, const glm::vec3& wo = glm::vec3(0.0f, 0.0f, 1.0f)) {
   Scene scene;
   scene.add_mesh(test_scenes::horizontal_square(1.0), {scene.add_material(material)});
   scene.commit();
@@ -29,8 +29,10 @@ PrincipledInputs shaded_inputs(const Material& material) {
   hit.mesh = 0;
   hit.triangle = 0;
   hit.u = hit.v = 0.25f;
-  return shade_surface(scene.data(), hit, glm::vec3(0.0f, 0.0f, 1.0f)).inputs;
+  return shade_surface(scene.data(), hit, wo);
 }
+
+PrincipledInputs shaded_inputs(const Material& material) { return shaded_point(material).inputs; }
 
 }  // namespace
 
@@ -80,4 +82,16 @@ TEST_CASE("A new material has Blender's defaults from the table", "[render]") {
     CHECK_FALSE(material[info.id].texture);
   }
   CHECK_FALSE(material.textured());
+}
+
+TEST_CASE("A surface point knows its side and the relative index of refraction across it", "[render]") {
+  Material glass;
+  glass.set(MaterialParameter::Ior, 1.5f);
+  const SurfacePoint front = shaded_point(glass, glm::vec3(0.0f, 0.0f, 1.0f));
+  CHECK(front.front_face);
+  CHECK(front.eta() == 1.5f);
+  const SurfacePoint back = shaded_point(glass, glm::vec3(0.0f, 0.0f, -1.0f));
+  CHECK_FALSE(back.front_face);
+  CHECK(back.eta() == 1.0f / 1.5f);
+  CHECK(back.geometric_normal == glm::vec3(0.0f, 0.0f, -1.0f));
 }

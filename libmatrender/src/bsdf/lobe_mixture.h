@@ -35,10 +35,6 @@ decltype(auto) with_lobe(const Lobe& lobe, F&& f) {
   }
 }
 
-inline BxDFFlags lobe_flags(const Lobe& lobe) {
-  return with_lobe(lobe, [](const auto& l) { return l.flags(); });
-}
-
 struct BsdfSample {
   glm::vec3 wi{0.0f};
   glm::vec3 weight{0.0f};  // f cos / pdf (for a specular lobe: its weight / selection probability)
@@ -59,10 +55,6 @@ class LobeMixture {
   // scatters nothing and has no lobes left.
   void finish();
 
-  size_t size() const { return count_; }
-  const Lobe& lobe(size_t i) const { return slots_[i].lobe; }
-  BxDFFlags lobe_flags(size_t i) const { return lobe_flags_[i]; }
-  float probability(size_t i) const { return probability_[i]; }
   BxDFFlags flags() const { return flags_; }
 
   // Sum of f cos over the lobes whose flags share a bit with `selected` (Reflection for the
@@ -97,8 +89,9 @@ class LobeMixture {
   // Entries from count_ on are unused.
   std::array<LobeSlot, kMaxLobes> slots_;
   std::array<BxDFFlags, kMaxLobes> lobe_flags_;
-  std::array<float, kMaxLobes> sample_weight_;
-  std::array<float, kMaxLobes> cdf_;          // probability of picking one of lobes 0..i
+  // Until finish(): the sum of the sample weights of lobes 0..i. After: the probability of
+  // picking one of lobes 0..i.
+  std::array<float, kMaxLobes> cdf_;
   std::array<float, kMaxLobes> probability_;  // cdf_[i] - cdf_[i - 1]
   size_t count_ = 0;
   BxDFFlags flags_ = BxDFFlags::None;
@@ -110,26 +103,22 @@ void LobeMixture::add(const LobeType& lobe) {
   if (count_ == kMaxLobes) throw std::logic_error("LobeMixture: more than kMaxLobes lobes");
   new (&slots_[count_].lobe) Lobe(std::in_place_type<LobeType>, lobe);
   lobe_flags_[count_] = lobe.flags();
-  sample_weight_[count_] = lobe.sample_weight();
+  cdf_[count_] = (count_ == 0 ? 0.0f : cdf_[count_ - 1]) + lobe.sample_weight();
+  flags_ |= lobe_flags_[count_];
   ++count_;
 }
 
 inline void LobeMixture::finish() {
-  float total = 0.0f;
-  for (size_t i = 0; i < count_; ++i) total += sample_weight_[i];
+  const float total = count_ == 0 ? 0.0f : cdf_[count_ - 1];
   if (!(total > 0.0f)) {
     count_ = 0;
     flags_ = BxDFFlags::None;
     return;
   }
-  float partial = 0.0f;
-  flags_ = BxDFFlags::None;
   for (size_t i = 0; i < count_; ++i) {
-    partial += sample_weight_[i];
     // The last bound is exactly 1, so every u in [0, 1) picks a lobe.
-    cdf_[i] = i + 1 == count_ ? 1.0f : partial / total;
+    cdf_[i] = i + 1 == count_ ? 1.0f : cdf_[i] / total;
     probability_[i] = cdf_[i] - (i == 0 ? 0.0f : cdf_[i - 1]);
-    flags_ |= lobe_flags_[i];
   }
 }
 

@@ -60,7 +60,7 @@ glm::vec3 LightSampler::escaped_radiance(const glm::vec3& dir, float bsdf_pdf, b
   for (size_t index : infinite_) {
     with_light(lights_[index], [&](const auto& light) {
       if constexpr (std::decay_t<decltype(light)>::type() == LightType::Infinite) {
-        const float light_pdf = light.sampled() ? selection_pdf() * light.pdf(dir) : 0.0f;
+        const float light_pdf = index < sampled_count_ ? selection_pdf() * light.pdf(dir) : 0.0f;
         const float weight = bsdf_specular ? 1.0f : power_heuristic(bsdf_pdf, light_pdf);
         sum += weight * light.radiance(dir);
       }

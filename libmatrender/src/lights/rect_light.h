@@ -18,7 +18,6 @@ class PreparedRectLight {
   explicit PreparedRectLight(const RectLight& light);
 
   static constexpr LightType type() { return LightType::Area; }
-  static constexpr bool sampled() { return true; }
 
   // Samples a point uniformly in the solid angle the lamp subtends from p (by area when that
   // solid angle is too small to compute accurately). Returns nothing when p does not see the

@@ -4,8 +4,8 @@
 //
 // Every light:
 //   static LightType type();   what it is (light_type.h)
-//   static bool sampled();     whether next-event estimation draws it
 //   std::optional<LightSample> sample(p, ReceivingDirections, glm::vec2 u) const;
+// Which lights next-event estimation draws from is LightSampler's choice (light_sampler.h).
 // Area lights, which rays hit (found by RectLightHits): pdf(p, wi, t), the solid-angle density
 // of sample() giving wi, and radiance(). Infinite lights, which rays that leave the scene see:
 // pdf(direction) and radiance(direction).

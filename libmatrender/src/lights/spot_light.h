@@ -40,7 +40,6 @@ class PreparedDeltaLight {
         is_spot_(true) {}
 
   static constexpr LightType type() { return LightType::DeltaPosition; }
-  static constexpr bool sampled() { return true; }
 
   // The one direction toward the lamp; `receiving` and u play no part.
   std::optional<LightSample> sample(const glm::vec3& p, const ReceivingDirections& /*receiving*/,

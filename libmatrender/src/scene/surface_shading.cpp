@@ -73,8 +73,6 @@ SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm:
   sp.part = mesh.triangle_parts.empty() ? 0 : static_cast<int32_t>(mesh.triangle_parts[hit.triangle]);
   sp.material = mesh.part_materials[static_cast<size_t>(sp.part)];
   const Material& material = scene.materials[sp.material];
-  const float ior = material.scalar(MaterialParameter::Ior);
-  sp.eta = backfacing ? 1.0f / ior : ior;
 
   // Only textures read the UV.
   const bool textured_parameters = material.textured();

@@ -17,9 +17,6 @@ struct SurfacePoint {
   glm::vec3 geometric_normal{0.0f, 0.0f, 1.0f};  // flipped to face the incoming ray
   // The ray met the side the triangle's winding faces (counter-clockwise = front, as Blender).
   bool front_face = true;
-  // Relative index of refraction across the surface along the ray: the material's IOR entering
-  // through the front, its inverse leaving through the back.
-  float eta = 1.0f;
   glm::vec3 shading_normal{0.0f, 0.0f, 1.0f};    // smooth + normal map, valid for reflection
   // The interpolated vertex normal before normal mapping and ensure_valid_reflection (Cycles'
   // sd->N; the geometric normal without vertex normals), flipped to face the incoming ray.
@@ -28,6 +25,14 @@ struct SurfacePoint {
   uint32_t material = 0;
   int32_t part = 0;
   PrincipledInputs inputs;
+
+  // Relative index of refraction across the surface along the ray: the material's IOR entering
+  // through the front, its inverse leaving through the back. Computed when a lobe asks, not at
+  // every hit.
+  float eta() const {
+    const float ior = inputs.scalar(MaterialParameter::Ior);
+    return front_face ? ior : 1.0f / ior;
+  }
 };
 
 // wo = unit direction from the hit back toward the ray origin.
