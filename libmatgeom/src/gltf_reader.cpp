@@ -696,21 +696,24 @@ double unit_interval_factor(const GltfFile& file, double value, const std::strin
 
 // The Principled BSDF inputs Blender's importer sets (docs/conventions.md): base colour =
 // factor x texture, roughness = factor x texture.G, metallic = factor x texture.B, normal map
-// strength = normalTexture.scale. Emission, occlusion and alpha have no MaterialDesc field.
+// strength = normalTexture.scale; specular and specular tint keep Blender's defaults. Emission,
+// occlusion and alpha have no MaterialDesc input yet.
 MaterialDesc convert_material(const GltfFile& file, ImageTable& images, size_t index) {
   const tinygltf::Material& material = file.model.materials[index];
   const tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
   const std::string what = concat("material ", index);
 
-  MaterialDesc desc;
-  desc.name = material.name.empty() ? concat("material", index) : material.name;
+  using P = MaterialParameter;
+  MaterialDesc desc(material.name.empty() ? concat("material", index) : material.name);
   if (pbr.baseColorFactor.size() != 4) fail(file.path, what + ": baseColorFactor needs 4 numbers");
+  glm::dvec3 base_color;
   for (int c = 0; c < 3; ++c) {
-    desc.base_color[c] = unit_interval_factor(file, pbr.baseColorFactor[static_cast<size_t>(c)],
-                                              what + " baseColorFactor");
+    base_color[c] = unit_interval_factor(file, pbr.baseColorFactor[static_cast<size_t>(c)],
+                                         what + " baseColorFactor");
   }
-  desc.metallic = unit_interval_factor(file, pbr.metallicFactor, what + " metallicFactor");
-  desc.roughness = unit_interval_factor(file, pbr.roughnessFactor, what + " roughnessFactor");
+  desc.set(P::BaseColor, base_color);
+  desc.set(P::Metallic, unit_interval_factor(file, pbr.metallicFactor, what + " metallicFactor"));
+  desc.set(P::Roughness, unit_interval_factor(file, pbr.roughnessFactor, what + " roughnessFactor"));
   if (!std::isfinite(material.normalTexture.scale))
     fail(file.path, what + ": non-finite normal scale");
   desc.normal_strength = material.normalTexture.scale;
@@ -724,8 +727,8 @@ MaterialDesc convert_material(const GltfFile& file, ImageTable& images, size_t i
   const TextureRef normal =
       resolve_texture(file, images, material.normalTexture.index, material.normalTexture.texCoord,
                       what + " normalTexture");
-  desc.base_color_image = base.image;
-  desc.metallic_roughness_image = metallic_roughness.image;
+  if (base.image >= 0) desc.set_image(P::BaseColor, base.image);
+  if (metallic_roughness.image >= 0) desc.set_metallic_roughness_image(metallic_roughness.image);
   desc.normal_image = normal.image;
   // The wrap mode follows the most visible texture: base colour, else roughness, else normal.
   for (const TextureRef& ref : {base, metallic_roughness, normal}) {
@@ -800,7 +803,7 @@ ObjectAsset read_gltf(const std::string& path) {
   for (const auto& [material, part] : part_of_material) {
     asset.materials[part] = material >= 0
                                 ? convert_material(file, images, static_cast<size_t>(material))
-                                : default_material();  // Blender renders them with its default surface
+                                : MaterialDesc("default");  // Blender renders them with its default surface
     asset.mesh.part_names[part] = asset.materials[part].name;
   }
   asset.images = images.take_images();

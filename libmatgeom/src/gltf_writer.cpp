@@ -7,10 +7,12 @@
 #include <limits>
 #include <map>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 
 #include <tiny_gltf.h>
 
+#include "gltf/metallic_roughness_image.h"
 #include "matgeom/atomic_file.h"
 #include "matgeom/mesh_parts.h"
 
@@ -96,14 +98,33 @@ tinygltf::Primitive make_primitive(tinygltf::Model& model, const TriangleMesh& p
   return primitive;
 }
 
-// Textures are (image, wrap) pairs; each distinct pair is written once.
+// Textures are (image, wrap) pairs; each distinct pair is written once. Images are the asset's,
+// then the ones the writer adds (indices from the asset's image count on).
 class TextureTable {
  public:
   TextureTable(tinygltf::Model& model, const std::vector<ImagePixels>& images) : model_(model), images_(images) {}
 
+  // The texture for glTF's metallicRoughnessTexture (-1 for none); an image packed for it is
+  // added once per distinct pair of inputs.
+  int metallic_roughness_texture(const MaterialDesc& desc, const std::string& what) {
+    const MaterialInput& roughness = desc[MaterialParameter::Roughness];
+    const MaterialInput& metallic = desc[MaterialParameter::Metallic];
+    const auto key = std::make_tuple(roughness.image, roughness.channel, metallic.image, metallic.channel);
+    auto found = packed_images_.find(key);
+    if (found == packed_images_.end()) {
+      gltf::MetallicRoughnessImage image = gltf::metallic_roughness_image(desc, images_, what);
+      if (image.packed) {
+        added_.push_back(std::move(*image.packed));
+        image.image = static_cast<int>(images_.size() + added_.size()) - 1;
+      }
+      found = packed_images_.emplace(key, image.image).first;
+    }
+    return texture(found->second, desc.wrap, what);
+  }
+
   int texture(int image, TextureWrap wrap, const std::string& what) {
     if (image < 0) return -1;
-    if (static_cast<size_t>(image) >= images_.size())
+    if (static_cast<size_t>(image) >= images_.size() + added_.size())
       throw std::invalid_argument("write_gltf: " + what + " refers to image " + std::to_string(image) +
                                   " but the asset has " + std::to_string(images_.size()));
     const auto key = std::make_pair(image, wrap);
@@ -122,7 +143,8 @@ class TextureTable {
   int gltf_image(int image) {
     const auto found = gltf_images_.find(image);
     if (found != gltf_images_.end()) return found->second;
-    const ImagePixels& pixels = images_[static_cast<size_t>(image)];
+    const size_t source = static_cast<size_t>(image);
+    const ImagePixels& pixels = source < images_.size() ? images_[source] : added_[source - images_.size()];
     const size_t expected = static_cast<size_t>(pixels.width) * static_cast<size_t>(pixels.height) *
                             static_cast<size_t>(pixels.channels);
     if (pixels.width <= 0 || pixels.height <= 0 || pixels.channels < 1 || pixels.channels > 4 ||
@@ -161,6 +183,8 @@ class TextureTable {
 
   tinygltf::Model& model_;
   const std::vector<ImagePixels>& images_;
+  std::vector<ImagePixels> added_;
+  std::map<std::tuple<int, int, int, int>, int> packed_images_;
   std::map<std::pair<int, TextureWrap>, int> textures_;
   std::map<int, int> gltf_images_;
   std::map<TextureWrap, int> samplers_;
@@ -171,12 +195,14 @@ tinygltf::Material make_material(const MaterialDesc& desc, TextureTable& texture
   tinygltf::Material material;
   material.name = desc.name;
   tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
-  pbr.baseColorFactor = {desc.base_color.r, desc.base_color.g, desc.base_color.b, 1.0};
-  pbr.metallicFactor = desc.metallic;
-  pbr.roughnessFactor = desc.roughness;
+  using P = MaterialParameter;
+  const glm::dvec3 base_color = desc.color(P::BaseColor);
+  pbr.baseColorFactor = {base_color.r, base_color.g, base_color.b, 1.0};
+  pbr.metallicFactor = desc.scalar(P::Metallic);
+  pbr.roughnessFactor = desc.scalar(P::Roughness);
   const std::string what = "material " + desc.name;
-  pbr.baseColorTexture.index = textures.texture(desc.base_color_image, desc.wrap, what);
-  pbr.metallicRoughnessTexture.index = textures.texture(desc.metallic_roughness_image, desc.wrap, what);
+  pbr.baseColorTexture.index = textures.texture(desc[P::BaseColor].image, desc.wrap, what);
+  pbr.metallicRoughnessTexture.index = textures.metallic_roughness_texture(desc, what);
   material.normalTexture.index = textures.texture(desc.normal_image, desc.wrap, what);
   material.normalTexture.scale = desc.normal_strength;
   return material;

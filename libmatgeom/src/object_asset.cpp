@@ -1,14 +1,42 @@
 #include "matgeom/object_asset.h"
 
+#include <stdexcept>
+#include <string>
+
 namespace matgeom {
 
-MaterialDesc default_material(const std::string& name) {
-  MaterialDesc desc;
-  desc.name = name;
-  desc.base_color = glm::dvec3(0.8);
-  desc.metallic = 0.0;
-  desc.roughness = 0.5;
-  return desc;
+uint8_t texel_channel(const ImagePixels& image, size_t texel, int channel) {
+  const bool grey = image.channels < 3;
+  const bool has_alpha = image.channels == 2 || image.channels == 4;
+  const size_t first = texel * static_cast<size_t>(image.channels);
+  if (channel == 3) return has_alpha ? image.data[first + static_cast<size_t>(image.channels) - 1] : 255;
+  return image.data[first + (grey ? 0 : static_cast<size_t>(channel))];
+}
+
+MaterialDesc::MaterialDesc() {
+  for (const MaterialParameterInfo& info : kMaterialParameters) set(info.id, info.default_value);
+}
+
+MaterialDesc& MaterialDesc::set(MaterialParameter p, double value) { return set(p, glm::dvec3(value)); }
+
+MaterialDesc& MaterialDesc::set(MaterialParameter p, const glm::dvec3& value) {
+  (*this)[p].value = value;
+  return *this;
+}
+
+MaterialDesc& MaterialDesc::set_image(MaterialParameter p, int image, int channel) {
+  const MaterialParameterInfo& info = material_parameter(p);
+  if (!info.texturable) throw std::invalid_argument(std::string("material parameter ") + info.name + " cannot come from an image");
+  if (channel < 0 || channel > 3) throw std::invalid_argument("image channel must be 0..3, got " + std::to_string(channel));
+  (*this)[p].image = image;
+  (*this)[p].channel = channel;
+  return *this;
+}
+
+MaterialDesc& MaterialDesc::set_metallic_roughness_image(int image) {
+  for (const MaterialParameter p : {MaterialParameter::Roughness, MaterialParameter::Metallic})
+    set_image(p, image, material_parameter(p).packed_channel);
+  return *this;
 }
 
 }  // namespace matgeom

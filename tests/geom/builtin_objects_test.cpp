@@ -11,6 +11,7 @@
 
 using matgeom::ObjectAsset;
 using matgeom::TriangleMesh;
+using P = matgeom::MaterialParameter;
 
 namespace {
 
@@ -242,7 +243,7 @@ TEST_CASE("the vase is a closed, outward-facing, textured surface", "[geom]") {
     CHECK(band_triangles < static_cast<long>(mesh.triangle_count() / 4));
     REQUIRE(asset.materials.size() == 2);
     const matgeom::MaterialDesc& body = asset.materials[0];
-    CHECK(body.metallic == 0.0);
+    CHECK(body.scalar(P::Metallic) == 0.0);
     CHECK(body.normal_strength == 1.0);
     REQUIRE(asset.images.size() == 3);
     for (const matgeom::ImagePixels& image : asset.images) {
@@ -252,7 +253,7 @@ TEST_CASE("the vase is a closed, outward-facing, textured surface", "[geom]") {
       CHECK(image.data.size() == 256u * 256u * 3u);
     }
     const matgeom::ImagePixels& metallic_roughness =
-        asset.images.at(static_cast<size_t>(body.metallic_roughness_image));
+        asset.images.at(static_cast<size_t>(body[P::Roughness].image));
     for (size_t i = 0; i < metallic_roughness.data.size(); i += 3) {
       CHECK(metallic_roughness.data[i + 1] >= 51);   // roughness 0.2
       CHECK(metallic_roughness.data[i + 1] <= 128);  // roughness 0.5
@@ -282,7 +283,7 @@ TEST_CASE("the vase is deterministic for a seed and varies with it", "[geom]") {
   CHECK(a.mesh.triangles == b.mesh.triangles);
   CHECK(a.mesh.triangle_parts == b.mesh.triangle_parts);
   CHECK(a.images[0].data == b.images[0].data);
-  CHECK(a.materials[1].base_color == b.materials[1].base_color);
+  CHECK(a.materials[1].color(P::BaseColor) == b.materials[1].color(P::BaseColor));
 
   REQUIRE(a.mesh.vertex_count() == c.mesh.vertex_count());
   CHECK(std::memcmp(a.mesh.positions.data(), c.mesh.positions.data(),

@@ -24,6 +24,7 @@
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
+using P = matgeom::MaterialParameter;
 
 namespace {
 
@@ -325,28 +326,28 @@ TEST_CASE("glTF two-material quad: transforms, axes, uvs, parts, materials, imag
   REQUIRE(asset.materials.size() == 2);
   const matgeom::MaterialDesc& red = asset.materials[0];
   CHECK(red.name == "red_metal");
-  CHECK(red.base_color.r == Approx(0.8));
-  CHECK(red.base_color.g == Approx(0.1));
-  CHECK(red.base_color.b == Approx(0.1));
-  CHECK(red.metallic == Approx(0.9));
-  CHECK(red.roughness == Approx(0.3));
-  CHECK(red.metallic_roughness_image == -1);
+  CHECK(red.color(P::BaseColor).r == Approx(0.8));
+  CHECK(red.color(P::BaseColor).g == Approx(0.1));
+  CHECK(red.color(P::BaseColor).b == Approx(0.1));
+  CHECK(red.scalar(P::Metallic) == Approx(0.9));
+  CHECK(red.scalar(P::Roughness) == Approx(0.3));
+  CHECK(red[P::Roughness].image == -1);
   CHECK(red.normal_strength == Approx(0.7));
   CHECK(red.wrap == matgeom::TextureWrap::Clamp);
   const matgeom::MaterialDesc& blue = asset.materials[1];
   CHECK(blue.name == "blue");
-  CHECK(blue.base_color.b == Approx(0.9));
-  CHECK(blue.metallic == 0.0);
-  CHECK(blue.roughness == Approx(0.6));
-  CHECK(blue.base_color_image == -1);
+  CHECK(blue.color(P::BaseColor).b == Approx(0.9));
+  CHECK(blue.scalar(P::Metallic) == 0.0);
+  CHECK(blue.scalar(P::Roughness) == Approx(0.6));
+  CHECK(blue[P::BaseColor].image == -1);
   CHECK(blue.normal_image == -1);
   CHECK(blue.wrap == matgeom::TextureWrap::Repeat);
   // One image used by two materials is stored once.
-  CHECK(blue.metallic_roughness_image == red.normal_image);
+  CHECK(blue[P::Roughness].image == red.normal_image);
 
   REQUIRE(asset.images.size() == 2);
-  REQUIRE(red.base_color_image >= 0);
-  const matgeom::ImagePixels& base = asset.images[static_cast<size_t>(red.base_color_image)];
+  REQUIRE(red[P::BaseColor].image >= 0);
+  const matgeom::ImagePixels& base = asset.images[static_cast<size_t>(red[P::BaseColor].image)];
   CHECK(base.width == 2);
   CHECK(base.height == 2);
   CHECK(base.channels == 3);
@@ -396,7 +397,7 @@ TEST_CASE("glTF interleaved, normalized and non-indexed data under a mirroring n
   // No material: one default part.
   CHECK(mesh.part_names == std::vector<std::string>{"default"});
   REQUIRE(asset.materials.size() == 1);
-  CHECK(asset.materials[0].metallic == 0.0);
+  CHECK(asset.materials[0].scalar(P::Metallic) == 0.0);
 
   for (size_t v = 0; v < 6; ++v) {
     const Vertex& in = vertices[v];

@@ -17,6 +17,7 @@
 // reads back as the same asset, in both containers.
 
 using namespace matgeom;
+using P = MaterialParameter;
 
 namespace {
 
@@ -48,18 +49,18 @@ ObjectAsset two_part_asset() {
 
   MaterialDesc wood;
   wood.name = "wood";
-  wood.base_color = glm::dvec3(0.5, 0.25, 0.125);
-  wood.base_color_image = 0;
-  wood.metallic = 0.0;
-  wood.roughness = 0.75;
+  wood.set(P::BaseColor, glm::dvec3(0.5, 0.25, 0.125));
+  wood.set_image(P::BaseColor, 0);
+  wood.set(P::Metallic, 0.0);
+  wood.set(P::Roughness, 0.75);
   wood.normal_image = 1;
   wood.normal_strength = 0.5;
   MaterialDesc brass;
   brass.name = "brass handle";
-  brass.base_color = glm::dvec3(1.0, 0.75, 0.25);
-  brass.metallic = 1.0;
-  brass.roughness = 0.25;
-  brass.metallic_roughness_image = 1;
+  brass.set(P::BaseColor, glm::dvec3(1.0, 0.75, 0.25));
+  brass.set(P::Metallic, 1.0);
+  brass.set(P::Roughness, 0.25);
+  brass.set_metallic_roughness_image(1);
   brass.wrap = TextureWrap::Clamp;
   asset.materials = {wood, brass};
   return asset;
@@ -92,13 +93,13 @@ void check_same_asset(const ObjectAsset& written, const ObjectAsset& read) {
     const MaterialDesc& a = written.materials[k];
     const MaterialDesc& b = read.materials[k];
     CHECK(b.name == a.name);
-    CHECK(b.base_color == a.base_color);
-    CHECK(b.metallic == a.metallic);
-    CHECK(b.roughness == a.roughness);
+    CHECK(b.color(P::BaseColor) == a.color(P::BaseColor));
+    CHECK(b.scalar(P::Metallic) == a.scalar(P::Metallic));
+    CHECK(b.scalar(P::Roughness) == a.scalar(P::Roughness));
     CHECK(b.normal_strength == a.normal_strength);
     CHECK(b.wrap == a.wrap);
-    for (const auto& [image_a, image_b] : {std::pair{a.base_color_image, b.base_color_image},
-                                           std::pair{a.metallic_roughness_image, b.metallic_roughness_image},
+    for (const auto& [image_a, image_b] : {std::pair{a[P::BaseColor].image, b[P::BaseColor].image},
+                                           std::pair{a[P::Roughness].image, b[P::Roughness].image},
                                            std::pair{a.normal_image, b.normal_image}}) {
       REQUIRE((image_a < 0) == (image_b < 0));
       if (image_a < 0) continue;
@@ -136,7 +137,7 @@ TEST_CASE("write_gltf rejects what glTF cannot hold and leaves nothing behind", 
   too_few.materials.pop_back();
   CHECK_THROWS_AS(write_gltf(too_few, dir.file("a.glb")), std::invalid_argument);
   ObjectAsset bad_image = asset;
-  bad_image.materials[0].base_color_image = 5;
+  bad_image.materials[0].set_image(P::BaseColor, 5);
   CHECK_THROWS_AS(write_gltf(bad_image, dir.file("b.glb")), std::invalid_argument);
   ObjectAsset empty;
   CHECK_THROWS_AS(write_gltf(empty, dir.file("c.glb")), std::invalid_argument);

@@ -21,6 +21,7 @@
 
 using namespace matgeom;
 using Catch::Matchers::Contains;
+using P = MaterialParameter;
 
 namespace {
 
@@ -133,23 +134,23 @@ TEST_CASE("OBJ reader: quad, triangle, two materials, a group without one, split
   REQUIRE(asset.materials.size() == 3);
   const MaterialDesc& red = asset.materials[0];
   CHECK(red.name == "red");
-  check_color(red.base_color, {0.8, 0.1, 0.1});
-  CHECK(red.roughness == Approx(0.25));
-  CHECK(red.metallic == Approx(0.75));
-  CHECK(red.specular == 0.0);  // no Ks and no highlights (illum 2): Blender's Specular 0
+  check_color(red.color(P::BaseColor), {0.8, 0.1, 0.1});
+  CHECK(red.scalar(P::Roughness) == Approx(0.25));
+  CHECK(red.scalar(P::Metallic) == Approx(0.75));
+  CHECK(red.scalar(P::Specular) == 0.0);  // no Ks and no highlights (illum 2): Blender's Specular 0
   const MaterialDesc& blue = asset.materials[1];
-  check_color(blue.base_color, {0.1, 0.2, 0.9});
-  CHECK(blue.roughness == Approx(0.5));  // 1 - sqrt(250 / 1000)
-  CHECK(blue.metallic == 0.0);
-  CHECK(blue.specular == Approx(0.5));  // mean of Ks
+  check_color(blue.color(P::BaseColor), {0.1, 0.2, 0.9});
+  CHECK(blue.scalar(P::Roughness) == Approx(0.5));  // 1 - sqrt(250 / 1000)
+  CHECK(blue.scalar(P::Metallic) == 0.0);
+  CHECK(blue.scalar(P::Specular) == Approx(0.5));  // mean of Ks
   const MaterialDesc& none = asset.materials[2];
   CHECK(none.name == "default");
-  check_color(none.base_color, glm::dvec3(0.8));
-  CHECK(none.roughness == 0.5);
-  CHECK(none.metallic == 0.0);
+  check_color(none.color(P::BaseColor), glm::dvec3(0.8));
+  CHECK(none.scalar(P::Roughness) == 0.5);
+  CHECK(none.scalar(P::Metallic) == 0.0);
   for (const MaterialDesc& material : asset.materials) {
-    CHECK(material.base_color_image == -1);
-    CHECK(material.metallic_roughness_image == -1);
+    CHECK(material[P::BaseColor].image == -1);
+    CHECK(material[P::Roughness].image == -1);
     CHECK(material.normal_image == -1);
   }
   CHECK(asset.images.empty());
@@ -204,10 +205,10 @@ TEST_CASE("OBJ reader maps MTL statements as Blender's importer does", "[geom]")
     const MaterialDesc& material = asset.materials[k];
     INFO("material " << cases[k].name);
     CHECK(material.name == cases[k].name);
-    check_color(material.base_color, cases[k].base_color);
-    CHECK(material.roughness == Approx(cases[k].roughness).margin(1e-6));
-    CHECK(material.metallic == Approx(cases[k].metallic).margin(1e-6));
-    CHECK(material.specular == Approx(cases[k].specular).margin(1e-6));
+    check_color(material.color(P::BaseColor), cases[k].base_color);
+    CHECK(material.scalar(P::Roughness) == Approx(cases[k].roughness).margin(1e-6));
+    CHECK(material.scalar(P::Metallic) == Approx(cases[k].metallic).margin(1e-6));
+    CHECK(material.scalar(P::Specular) == Approx(cases[k].specular).margin(1e-6));
   }
 }
 
@@ -243,17 +244,17 @@ TEST_CASE("OBJ reader decodes map_Kd, packs map_Pr into G and reads map_Bump and
 
   const MaterialDesc& textured = asset.materials[0];
   // A map replaces its value in Blender: the base colour and roughness factors are 1.
-  CHECK(textured.base_color_image == 0);
-  check_color(textured.base_color, glm::dvec3(1.0));
-  CHECK(textured.metallic_roughness_image == 1);
-  CHECK(textured.roughness == 1.0);
-  CHECK(textured.metallic == Approx(0.4));
+  CHECK(textured[P::BaseColor].image == 0);
+  check_color(textured.color(P::BaseColor), glm::dvec3(1.0));
+  CHECK(textured[P::Roughness].image == 1);
+  CHECK(textured.scalar(P::Roughness) == 1.0);
+  CHECK(textured.scalar(P::Metallic) == Approx(0.4));
   CHECK(textured.normal_image == 2);
   CHECK(textured.normal_strength == Approx(0.7));
   CHECK(textured.wrap == TextureWrap::Repeat);
   const MaterialDesc& shares = asset.materials[1];
-  CHECK(shares.base_color_image == 0);  // the quotes are dropped, as Blender drops them
-  CHECK(shares.metallic_roughness_image == -1);
+  CHECK(shares[P::BaseColor].image == 0);  // the quotes are dropped, as Blender drops them
+  CHECK(shares[P::Roughness].image == -1);
   CHECK(shares.normal_image == 2);
   CHECK(shares.normal_strength == Approx(0.5));
 }
@@ -284,9 +285,9 @@ TEST_CASE("OBJ reader makes parts from material slots or from groups", "[geom]")
   REQUIRE(by_group.materials.size() == 3);
   CHECK(by_group.materials[0].name == "default");
   CHECK(by_group.materials[1].name == "a");
-  check_color(by_group.materials[1].base_color, {1, 0, 0});
+  check_color(by_group.materials[1].color(P::BaseColor), {1, 0, 0});
   CHECK(by_group.materials[2].name == "b");
-  check_color(by_group.materials[2].base_color, {0, 0, 1});
+  check_color(by_group.materials[2].color(P::BaseColor), {0, 0, 1});
   CHECK(by_group.mesh.positions == by_material.mesh.positions);
   CHECK(by_group.mesh.triangles == by_material.mesh.triangles);
 }
@@ -317,18 +318,18 @@ ObjectAsset round_trip_asset() {
   ImagePixels normal{"normal.png", 1, 1, 4, {128, 128, 255, 255}};
   asset.images = {base, metallic_roughness, normal};
 
-  MaterialDesc red = default_material("red_paint");
-  red.base_color_image = 0;
-  red.base_color = glm::dvec3(1.0);
-  red.metallic_roughness_image = 1;
-  red.roughness = 1.0;
-  red.metallic = 1.0;
-  red.specular = 0.25;
-  MaterialDesc blue = default_material("blue");
-  blue.base_color = glm::dvec3(0.1, 0.2, 0.9);
-  blue.roughness = 0.8;
-  blue.metallic = 0.2;
-  blue.specular = 0.5;
+  MaterialDesc red = MaterialDesc("red_paint");
+  red.set_image(P::BaseColor, 0);
+  red.set(P::BaseColor, glm::dvec3(1.0));
+  red.set_metallic_roughness_image(1);
+  red.set(P::Roughness, 1.0);
+  red.set(P::Metallic, 1.0);
+  red.set(P::Specular, 0.25);
+  MaterialDesc blue = MaterialDesc("blue");
+  blue.set(P::BaseColor, glm::dvec3(0.1, 0.2, 0.9));
+  blue.set(P::Roughness, 0.8);
+  blue.set(P::Metallic, 0.2);
+  blue.set(P::Specular, 0.5);
   blue.normal_image = 2;
   blue.normal_strength = 0.75;
   asset.materials = {red, blue};
@@ -369,13 +370,13 @@ TEST_CASE("OBJ written by write_obj reads back as the same asset", "[geom]") {
     const MaterialDesc& actual = read.materials[k];
     INFO("material " << expected.name);
     CHECK(actual.name == expected.name);
-    check_color(actual.base_color, expected.base_color);
-    CHECK(actual.roughness == Approx(expected.roughness));
-    CHECK(actual.metallic == Approx(expected.metallic));
-    CHECK(actual.specular == Approx(expected.specular));
+    check_color(actual.color(P::BaseColor), expected.color(P::BaseColor));
+    CHECK(actual.scalar(P::Roughness) == Approx(expected.scalar(P::Roughness)));
+    CHECK(actual.scalar(P::Metallic) == Approx(expected.scalar(P::Metallic)));
+    CHECK(actual.scalar(P::Specular) == Approx(expected.scalar(P::Specular)));
     CHECK(actual.normal_strength == Approx(expected.normal_strength));
-    CHECK(actual.base_color_image == expected.base_color_image);
-    CHECK(actual.metallic_roughness_image == expected.metallic_roughness_image);
+    CHECK(actual[P::BaseColor].image == expected[P::BaseColor].image);
+    CHECK(actual[P::Roughness].image == expected[P::Roughness].image);
     CHECK(actual.normal_image == expected.normal_image);
   }
   REQUIRE(read.images.size() == 3);
@@ -389,8 +390,8 @@ TEST_CASE("write_obj makes names OBJ-safe and unique and refuses what it cannot 
   TempDir dir;
   ObjectAsset asset = round_trip_asset();
   asset.images.clear();
-  asset.materials[0] = default_material("two words\nand a line");
-  asset.materials[1] = default_material("two_words_and_a_line");
+  asset.materials[0] = MaterialDesc("two words\nand a line");
+  asset.materials[1] = MaterialDesc("two_words_and_a_line");
   asset.mesh.part_names = {"", "group one"};
   write_obj(asset, dir.file("names.obj"));
   const std::string obj = read_bytes(dir.file("names.obj"));

@@ -1,13 +1,16 @@
 #pragma once
-// An object ready to render: its mesh (one part per material slot), the slots' metallic-roughness
-// materials and the 8-bit images they reference. Produced by the glTF reader and the built-in
+// An object ready to render: its mesh (one part per material slot), the slots' Principled
+// materials and the 8-bit images they reference. Produced by the mesh readers and the built-in
 // objects; libmatrender turns it into scene materials (matrender/asset.h).
+#include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "matgeom/material_parameters.h"
 #include "matgeom/mesh.h"
 
 namespace matgeom {
@@ -21,29 +24,50 @@ struct ImagePixels {
   std::vector<uint8_t> data;
 };
 
+// The value channel `channel` (0 R, 1 G, 2 B, 3 A) of texel `texel` reads as, the way the renderer
+// expands images to RGBA: a grey image (1 channel, or 2 with alpha) gives its grey for R, G and
+// B; an image without alpha reads 255 for A.
+uint8_t texel_channel(const ImagePixels& image, size_t texel, int channel);
+
 enum class TextureWrap { Repeat, Clamp };
 
-// A material slot as Blender's glTF importer builds it (docs/conventions.md, glTF importer):
-// base colour = factor x texture (sRGB); roughness = factor x texture.G, metallic = factor x texture.B
-// (Non-Color); normal map with strength = normalTexture.scale.
-struct MaterialDesc {
-  std::string name;
-  glm::dvec3 base_color{1.0};
-  int base_color_image = -1;  // index into ObjectAsset::images, -1 = none
-  double metallic = 1.0;
-  double roughness = 1.0;
-  int metallic_roughness_image = -1;
-  int normal_image = -1;
-  double normal_strength = 1.0;
-  double specular = 0.5;
-  double specular_tint = 0.0;
-  TextureWrap wrap = TextureWrap::Repeat;
-  int label_id = 0;  // material family id written to the label AOV
+// One Principled parameter of a material slot: a constant, or the constant times an image of the
+// asset (a factor, as glTF and Blender's importers multiply them): its RGB for a colour, one
+// channel for a scalar.
+struct MaterialInput {
+  glm::dvec3 value{0.0};  // a scalar is held in every channel
+  int image = -1;         // index into ObjectAsset::images, -1 = constant
+  int channel = 0;        // scalars: the image channel read (0 R, 1 G, 2 B, 3 A)
 };
 
-// The surface Blender gives geometry without a material: the Principled BSDF's defaults (grey
-// 0.8, dielectric, roughness 0.5, specular 0.5).
-MaterialDesc default_material(const std::string& name = "default");
+// A material slot: one input per row of the parameter table (matgeom/material_parameters.h),
+// read in the colour space the table gives, plus a tangent-space normal map. The readers map
+// their formats onto it as Blender's importers do (docs/conventions.md).
+struct MaterialDesc {
+  // Every input at Blender's default (the table's), no images: the surface Blender gives geometry
+  // without a material.
+  MaterialDesc();
+  explicit MaterialDesc(std::string slot_name) : MaterialDesc() { name = std::move(slot_name); }
+
+  std::string name;
+  std::array<MaterialInput, kMaterialParameterCount> inputs;
+  int normal_image = -1;  // tangent space, OpenGL convention, Non-Color
+  double normal_strength = 1.0;
+  TextureWrap wrap = TextureWrap::Repeat;
+  int label_id = 0;  // material family id written to the label AOV
+
+  MaterialInput& operator[](MaterialParameter p) { return inputs[static_cast<size_t>(p)]; }
+  const MaterialInput& operator[](MaterialParameter p) const { return inputs[static_cast<size_t>(p)]; }
+  // A constant (or the factor of an image): set(MaterialParameter::Roughness, 0.3).
+  MaterialDesc& set(MaterialParameter p, double value);
+  MaterialDesc& set(MaterialParameter p, const glm::dvec3& value);
+  // The parameter comes from image `image` (times its value); a scalar reads `channel`.
+  MaterialDesc& set_image(MaterialParameter p, int image, int channel = 0);
+  // Roughness and metallic from glTF's packed image: its G and B (the table's packed channels).
+  MaterialDesc& set_metallic_roughness_image(int image);
+  glm::dvec3 color(MaterialParameter p) const { return (*this)[p].value; }
+  double scalar(MaterialParameter p) const { return (*this)[p].value.x; }
+};
 
 struct ObjectAsset {
   TriangleMesh mesh;                     // part k uses materials[k]

@@ -26,15 +26,13 @@ MaterialDesc textured(ObjectAsset& asset, const std::string& slot, int label,
                       const std::function<glm::dvec3(double, double)>& colour,
                       const std::function<glm::dvec2(double, double)>& roughness_metallic,
                       const std::function<double(double, double)>& height, double bump) {
-  MaterialDesc m;
-  m.name = slot;
+  using P = MaterialParameter;
+  MaterialDesc m(slot);
   m.label_id = label;
-  m.base_color = glm::dvec3(1.0);
-  m.metallic = 1.0;
-  m.roughness = 1.0;
-  m.base_color_image = static_cast<int>(asset.images.size());
+  m.set(P::BaseColor, 1.0).set(P::Metallic, 1.0).set(P::Roughness, 1.0);
+  m.set_image(P::BaseColor, static_cast<int>(asset.images.size()));
   asset.images.push_back(rgb_image(slot + "#base_color", kSize, colour));
-  m.metallic_roughness_image = static_cast<int>(asset.images.size());
+  m.set_metallic_roughness_image(static_cast<int>(asset.images.size()));
   asset.images.push_back(rgb_image(slot + "#metallic_roughness", kSize, [&](double u, double v) {
     const glm::dvec2 rm = roughness_metallic(u, v);
     return glm::dvec3(1.0, rm.x, rm.y);
@@ -45,12 +43,10 @@ MaterialDesc textured(ObjectAsset& asset, const std::string& slot, int label,
 }
 
 MaterialDesc constant(const std::string& slot, int label, const glm::dvec3& srgb, double roughness, double metallic) {
-  MaterialDesc m;
-  m.name = slot;
+  MaterialDesc m(slot);
   m.label_id = label;
-  m.base_color = srgb_to_linear(srgb);
-  m.roughness = roughness;
-  m.metallic = metallic;
+  m.set(MaterialParameter::BaseColor, srgb_to_linear(srgb));
+  m.set(MaterialParameter::Roughness, roughness).set(MaterialParameter::Metallic, metallic);
   return m;
 }
 

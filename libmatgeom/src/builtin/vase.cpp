@@ -294,24 +294,21 @@ ObjectAsset make_vase(uint32_t seed) {
   const int glaze_metallic_roughness_image = builder.add_image(glaze_metallic_roughness(texture_salt));
   const int glaze_normals = builder.add_image(glaze_normal_map(texture_salt));
 
-  MaterialDesc body;
-  body.name = "body";
-  body.base_color = glm::dvec3(1.0);  // factor x texture, as a glTF material would have it
-  body.base_color_image = glaze_color;
-  body.metallic = 0.0;   // factor x texture.B, both 0
-  body.roughness = 1.0;  // factor x texture.G in [0.2, 0.5]
-  body.metallic_roughness_image = glaze_metallic_roughness_image;
+  using P = MaterialParameter;
+  MaterialDesc body("body");
+  body.set(P::BaseColor, 1.0).set_image(P::BaseColor, glaze_color);  // factor x texture, as in glTF
+  body.set(P::Roughness, 1.0);  // factor x texture.G in [0.2, 0.5]
+  body.set(P::Metallic, 0.0);   // factor x texture.B, both 0
+  body.set_metallic_roughness_image(glaze_metallic_roughness_image);
   body.normal_image = glaze_normals;
   body.normal_strength = 1.0;
   body.label_id = kCeramicLabel;
   const uint32_t body_part = builder.add_part("body", body);
 
-  MaterialDesc band;
-  band.name = "glaze_band";
-  band.base_color = glm::dvec3(matgeom::srgb_to_linear(palette.band.r), matgeom::srgb_to_linear(palette.band.g),
-                               matgeom::srgb_to_linear(palette.band.b));
-  band.metallic = 0.0;
-  band.roughness = 0.12;
+  MaterialDesc band("glaze_band");
+  band.set(P::BaseColor, glm::dvec3(matgeom::srgb_to_linear(palette.band.r), matgeom::srgb_to_linear(palette.band.g),
+                                    matgeom::srgb_to_linear(palette.band.b)));
+  band.set(P::Metallic, 0.0).set(P::Roughness, 0.12);
   band.normal_image = glaze_normals;
   band.normal_strength = 0.5;
   band.label_id = kCeramicLabel;

@@ -17,9 +17,10 @@
 // (io/wavefront_obj/importer/obj_import_mtl.cc, set_bsdf_socket_values and add_image_textures).
 // Blender 3.4 reads the classic MTL statements; the PBR extension (Pr, Pm, map_Pr, map_Pm) is
 // read as Blender 3.5 added it: its values, when given, replace the ones derived from Ns and Ka.
-// Not representable in MaterialDesc and ignored: Ke/map_Ke, d/map_d, Ni, Kt, map_Ks, map_Ns,
-// refl, disp, sheen, clearcoat, anisotropy, and the texture options -o, -s (Blender adds a
-// Mapping node for them) and -type. Blender ignores -clamp, so textures repeat.
+// Ignored, their inputs not being in the parameter table yet: Ke/map_Ke, d/map_d, Kt, map_Ns,
+// refl, disp, sheen, clearcoat, anisotropy; also ignored: Ni (IOR changes no image until a lobe
+// transmits), map_Ks, and the texture options -o, -s (Blender adds a Mapping node for them) and
+// -type. Blender ignores -clamp, so textures repeat.
 
 namespace matgeom::obj {
 namespace {
@@ -52,7 +53,7 @@ class MaterialConverter {
     const std::string what =
         concat(file_.material_libraries[index], ": material '", material.name, "'");
     check_finite_values(material, what);
-    MaterialDesc desc = default_material(material.name);
+    MaterialDesc desc(material.name);
     set_scalars(material, desc);
     set_textures(material, index, what, desc);
     return desc;
@@ -73,33 +74,33 @@ class MaterialConverter {
 
   // The -1 "not given" markers come from kNotGivenMarkers (obj_text_screening.cpp).
   static void set_scalars(const tinyobj::material_t& material, MaterialDesc& desc) {
+    using P = MaterialParameter;
     const IllumFlags illum = illum_flags(material.illum);
     // Base colour: Kd when no component is negative; otherwise Principled's default grey, which
-    // default_material already holds.
+    // MaterialDesc already holds.
     const glm::dvec3 kd(material.diffuse[0], material.diffuse[1], material.diffuse[2]);
     if (kd.r >= 0.0 && kd.g >= 0.0 && kd.b >= 0.0) {
-      desc.base_color = glm::clamp(kd, glm::dvec3(0.0), glm::dvec3(1.0));
+      desc.set(P::BaseColor, glm::clamp(kd, glm::dvec3(0.0), glm::dvec3(1.0)));
     }
     // Specular: the mean of Ks; without Ks, 1 with highlights and 0 otherwise.
     const double ks = mean3(material.specular);
-    desc.specular = ks >= 0.0 ? unit_clamp(ks) : (illum.highlight ? 1.0 : 0.0);
+    desc.set(P::Specular, ks >= 0.0 ? unit_clamp(ks) : (illum.highlight ? 1.0 : 0.0));
     // Roughness: Pr; otherwise 1 - sqrt(Ns / 1000) with Ns clamped to [0, 1000]; without Ns,
     // 0 with highlights and 1 otherwise.
     if (material.roughness >= 0.0f) {
-      desc.roughness = unit_clamp(material.roughness);
+      desc.set(P::Roughness, unit_clamp(material.roughness));
     } else if (material.shininess >= 0.0f) {
-      desc.roughness =
-          1.0 - std::sqrt(std::clamp<double>(material.shininess, 0.0, 1000.0) / 1000.0);
+      desc.set(P::Roughness, 1.0 - std::sqrt(std::clamp<double>(material.shininess, 0.0, 1000.0) / 1000.0));
     } else {
-      desc.roughness = illum.highlight ? 0.0 : 1.0;
+      desc.set(P::Roughness, illum.highlight ? 0.0 : 1.0);
     }
     // Metallic: Pm; otherwise for reflecting illum models the mean of Ka (1 without Ka), and 0
     // for all others -- OBJ materials are dielectric unless they say otherwise, unlike glTF's.
     const double ka = mean3(material.ambient);
     if (material.metallic >= 0.0f) {
-      desc.metallic = unit_clamp(material.metallic);
+      desc.set(P::Metallic, unit_clamp(material.metallic));
     } else {
-      desc.metallic = illum.reflection ? (ka >= 0.0 ? unit_clamp(ka) : 1.0) : 0.0;
+      desc.set(P::Metallic, illum.reflection ? (ka >= 0.0 ? unit_clamp(ka) : 1.0) : 0.0);
     }
   }
 
@@ -108,9 +109,9 @@ class MaterialConverter {
   void set_textures(const tinyobj::material_t& material, size_t index, const std::string& what,
                     MaterialDesc& desc) const {
     if (!material.diffuse_texname.empty()) {
-      desc.base_color_image =
-          textures_.color_texture(source(material.diffuse_texname, index, what + " map_Kd"));
-      desc.base_color = glm::dvec3(1.0);
+      desc.set_image(MaterialParameter::BaseColor,
+                     textures_.color_texture(source(material.diffuse_texname, index, what + " map_Kd")));
+      desc.set(MaterialParameter::BaseColor, 1.0);
     }
     set_metallic_roughness_texture(material, index, what, desc);
     set_normal_texture(material, index, what, desc);
@@ -123,10 +124,12 @@ class MaterialConverter {
     if (!has_roughness && !has_metallic) return;
     const TextureSource roughness = source(material.roughness_texname, index, what + " map_Pr");
     const TextureSource metallic = source(material.metallic_texname, index, what + " map_Pm");
-    desc.metallic_roughness_image = textures_.metallic_roughness_texture(
-        has_roughness ? &roughness : nullptr, has_metallic ? &metallic : nullptr);
-    if (has_roughness) desc.roughness = 1.0;
-    if (has_metallic) desc.metallic = 1.0;
+    const int packed = textures_.metallic_roughness_texture(has_roughness ? &roughness : nullptr,
+                                                            has_metallic ? &metallic : nullptr);
+    for (const auto& [mapped, p] : {std::pair{has_roughness, MaterialParameter::Roughness},
+                                    std::pair{has_metallic, MaterialParameter::Metallic}}) {
+      if (mapped) desc.set(p, 1.0).set_image(p, packed, material_parameter(p).packed_channel);
+    }
   }
 
   // Blender connects map_Bump (or bump) through a Normal Map node: it is a tangent-space normal
@@ -172,7 +175,7 @@ std::vector<MaterialDesc> part_materials(const ObjFile& file, const PartTable& p
     auto found = converted.find(material);
     if (found == converted.end()) {
       const MaterialDesc desc =
-          material < 0 ? default_material() : converter.convert(static_cast<size_t>(material));
+          material < 0 ? MaterialDesc("default") : converter.convert(static_cast<size_t>(material));
       found = converted.emplace(material, desc).first;
     }
     materials.push_back(found->second);

@@ -25,8 +25,9 @@ class TextureTable {
 
   int color_texture(const TextureSource& source);
 
-  // MaterialDesc packs roughness into G and metallic into B of one image (R unused, 0). A
-  // channel without a map is 255, so that the material's scalar factor stands for it.
+  // Roughness (the luminance of map_Pr) into G and metallic (of map_Pm) into B of one image, R
+  // unused (0): glTF's layout, so the glTF writer stores it as it is. A channel without a map is
+  // 255 (a factor of 1); materials read only the mapped channels.
   int metallic_roughness_texture(const TextureSource* roughness, const TextureSource* metallic);
 
   std::vector<ImagePixels> take_images() { return std::move(images_); }

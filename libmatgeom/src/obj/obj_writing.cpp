@@ -47,15 +47,12 @@ void check_image(const ObjectAsset& asset, int image, const MaterialDesc& materi
 
 // One channel of every pixel as a grey image; grey and grey-alpha images give their grey.
 ImagePixels channel_image(const ImagePixels& image, int channel) {
-  const size_t source_channel = image.channels < 3 ? 0 : static_cast<size_t>(channel);
-  const size_t channels = static_cast<size_t>(image.channels);
   ImagePixels grey;
   grey.width = image.width;
   grey.height = image.height;
   grey.channels = 1;
-  grey.data.resize(image.data.size() / channels);
-  for (size_t i = 0; i < grey.data.size(); ++i)
-    grey.data[i] = image.data[i * channels + source_channel];
+  grey.data.resize(image.data.size() / static_cast<size_t>(image.channels));
+  for (size_t i = 0; i < grey.data.size(); ++i) grey.data[i] = texel_channel(image, i, channel);
   return grey;
 }
 
@@ -104,28 +101,35 @@ void check_writable(const ObjectAsset& asset) {
                                        asset.materials.size(), " materials"));
   }
   for (const MaterialDesc& material : asset.materials) {
-    const std::vector<double> values = {
-        material.base_color.r, material.base_color.g, material.base_color.b,   material.specular,
-        material.roughness,    material.metallic,     material.normal_strength};
+    std::vector<double> values = {material.normal_strength};
+    for (const MaterialInput& input : material.inputs) values.insert(values.end(), {input.value.r, input.value.g, input.value.b});
     if (!std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); })) {
       throw std::invalid_argument("write_obj: material '" + material.name +
                                   "' has a non-finite value");
     }
-    for (const int image :
-         {material.base_color_image, material.metallic_roughness_image, material.normal_image}) {
-      check_image(asset, image, material);
+    for (const MaterialParameterInfo& info : kMaterialParameters) {
+      const MaterialInput& input = material[info.id];
+      check_image(asset, input.image, material);
+      if (input.channel < 0 || input.channel > 3) {
+        throw std::invalid_argument(concat("write_obj: material '", material.name, "' reads ", info.name,
+                                           " from image channel ", input.channel, "; channels are 0 to 3"));
+      }
     }
+    check_image(asset, material.normal_image, material);
   }
 }
 
 MaterialMaps ImageFiles::maps_of(const MaterialDesc& material) {
+  using P = MaterialParameter;
   MaterialMaps maps;
-  if (material.base_color_image >= 0) maps.base_color = image_file(material.base_color_image);
+  if (material[P::BaseColor].image >= 0) maps.base_color = image_file(material[P::BaseColor].image);
   if (material.normal_image >= 0) maps.normal = image_file(material.normal_image);
-  if (material.metallic_roughness_image >= 0) {
-    maps.roughness = channel_file(material.metallic_roughness_image, 1, "roughness");
-    maps.metallic = channel_file(material.metallic_roughness_image, 2, "metallic");
-  }
+  const auto scalar_map = [&](P p) {
+    const MaterialInput& input = material[p];
+    return input.image < 0 ? std::string() : channel_file(input.image, input.channel, material_parameter(p).name);
+  };
+  maps.roughness = scalar_map(P::Roughness);
+  maps.metallic = scalar_map(P::Metallic);
   return maps;
 }
 
@@ -149,15 +153,17 @@ std::string mtl_text(const std::vector<NamedMaterial>& materials) {
   for (const NamedMaterial& material : materials) {
     const MaterialDesc& desc = *material.desc;
     text += "\nnewmtl " + material.name + "\n";
-    text += "Kd " + triple(desc.base_color) + "\n";
-    text += "Ks " + triple(glm::dvec3(desc.specular)) + "\n";
+    using P = MaterialParameter;
+    const double roughness = desc.scalar(P::Roughness), metallic = desc.scalar(P::Metallic);
+    text += "Kd " + triple(desc.color(P::BaseColor)) + "\n";
+    text += "Ks " + triple(glm::dvec3(desc.scalar(P::Specular))) + "\n";
     // For readers without the PBR extension (Blender before 3.5): Ns inverts Blender's
     // roughness = 1 - sqrt(Ns / 1000), and under illum 3 Blender's metallic is the mean of Ka.
-    text += "Ns " + number(1000.0 * (1.0 - desc.roughness) * (1.0 - desc.roughness)) + "\n";
-    text += "Ka " + triple(glm::dvec3(desc.metallic)) + "\n";
-    text += desc.metallic > 0.0 ? "illum 3\n" : "illum 2\n";
-    text += "Pr " + number(desc.roughness) + "\n";
-    text += "Pm " + number(desc.metallic) + "\n";
+    text += "Ns " + number(1000.0 * (1.0 - roughness) * (1.0 - roughness)) + "\n";
+    text += "Ka " + triple(glm::dvec3(metallic)) + "\n";
+    text += metallic > 0.0 ? "illum 3\n" : "illum 2\n";
+    text += "Pr " + number(roughness) + "\n";
+    text += "Pm " + number(metallic) + "\n";
     const MaterialMaps& maps = material.maps;
     if (!maps.base_color.empty()) text += "map_Kd " + maps.base_color + "\n";
     if (!maps.roughness.empty()) text += "map_Pr " + maps.roughness + "\n";

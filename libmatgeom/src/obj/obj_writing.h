@@ -39,8 +39,8 @@ struct MaterialMaps {
 };
 
 // The PNG files the materials need, each asset image written once: base colour and normal
-// images as they are; a metallic-roughness image split into the grey map_Pr (its G) and map_Pm
-// (its B) that MTL has instead.
+// images as they are; roughness and metallic as the grey map_Pr and map_Pm MTL has, each the
+// channel of its image that the material reads.
 class ImageFiles {
  public:
   ImageFiles(const std::vector<ImagePixels>& images, std::string stem)
@@ -70,8 +70,8 @@ struct NamedMaterial {
 
 // The inverse of MaterialConverter. read_obj, like Blender, lets a map replace its factor, so a
 // factor other than 1 beside a map does not survive a round trip (it is still written, for
-// readers that multiply). MaterialDesc's wrap, specular tint and label id are not written:
-// Blender's importer reads no MTL statement for them.
+// readers that multiply). MaterialDesc's wrap, specular tint, IOR, a specular image and the label
+// id are not written: Blender's importer reads no MTL statement for them.
 std::string mtl_text(const std::vector<NamedMaterial>& materials);
 
 std::string obj_text(const TriangleMesh& mesh, const std::string& library,

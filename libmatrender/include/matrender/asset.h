@@ -10,14 +10,10 @@
 
 namespace matrender {
 
-// The renderer material Blender's importer would build from a glTF metallic-roughness slot.
-Material material_from_desc(const matgeom::MaterialDesc& desc,
-                            const std::vector<TexturePtr>& images_as_srgb,
-                            const std::vector<TexturePtr>& images_as_data);
-
 // Adds the asset's mesh and a material per part; returns the material id of each part. Part k
 // uses material_overrides[k] when that is set (an id already in the scene), else the asset's own
-// slot k, else the default Material. Images are decoded once per colour space they are used in,
+// slot k (each input a constant or its image, in the colour space of the parameter table), else
+// the default Material. Images are decoded once per colour space and wrap they are used with,
 // and only for the slots that are used. `options` go to Scene::add_mesh.
 std::vector<uint32_t> add_asset(Scene& scene, const matgeom::ObjectAsset& asset,
                                 const std::vector<std::optional<uint32_t>>& material_overrides = {},
