@@ -147,6 +147,56 @@ TEST_CASE("write_gltf rejects what glTF cannot hold and leaves nothing behind", 
 
 namespace {
 
+// The value material input `p` of `desc` reads at texel (x, y) of its image, 0..255.
+int input_texel(const ObjectAsset& asset, const MaterialDesc& desc, P p, int x, int y) {
+  const MaterialInput& input = desc[p];
+  const ImagePixels& image = asset.images.at(static_cast<size_t>(input.image));
+  return texel_channel(image, static_cast<size_t>(y) * static_cast<size_t>(image.width) + static_cast<size_t>(x),
+                       input.channel);
+}
+
+}  // namespace
+
+TEST_CASE("write_gltf packs roughness and metallic from any images and channels into glTF's G and B", "[geom]") {
+  const TempDir dir;
+  ObjectAsset asset = two_part_asset();
+  // Roughness from a grey 2x2 image, metallic from the alpha of the 2x2 RGBA image (image 1).
+  asset.images.push_back(ImagePixels{"rough.png", 2, 2, 1, {10, 60, 110, 160}});
+  MaterialDesc& brass = asset.materials[1];
+  brass.set_image(P::Roughness, 2, 0).set_image(P::Metallic, 1, 3);
+  write_gltf(asset, dir.file("packed.glb"));
+  const ObjectAsset read = read_gltf(dir.file("packed.glb"));
+  const MaterialDesc& back = read.materials[1];
+  REQUIRE(back[P::Roughness].image >= 0);
+  CHECK(back[P::Roughness].image == back[P::Metallic].image);
+  CHECK(back.scalar(P::Roughness) == brass.scalar(P::Roughness));
+  CHECK(back.scalar(P::Metallic) == brass.scalar(P::Metallic));
+  for (int y = 0; y < 2; ++y) {
+    for (int x = 0; x < 2; ++x) {
+      CHECK(input_texel(read, back, P::Roughness, x, y) == input_texel(asset, brass, P::Roughness, x, y));
+      CHECK(input_texel(read, back, P::Metallic, x, y) == input_texel(asset, brass, P::Metallic, x, y));
+    }
+  }
+
+  // One input from an image, the other constant: the constant's channel is 255 (a factor of 1).
+  brass.set_image(P::Metallic, -1);
+  write_gltf(asset, dir.file("roughness_only.glb"));
+  const ObjectAsset roughness_only = read_gltf(dir.file("roughness_only.glb"));
+  const MaterialDesc& r = roughness_only.materials[1];
+  CHECK(input_texel(roughness_only, r, P::Roughness, 1, 1) == 160);
+  CHECK(input_texel(roughness_only, r, P::Metallic, 1, 1) == 255);
+  CHECK(r.scalar(P::Metallic) == brass.scalar(P::Metallic));
+}
+
+TEST_CASE("write_gltf uses an image already in glTF's layout as it is", "[geom]") {
+  const TempDir dir;
+  const ObjectAsset asset = two_part_asset();  // brass reads G and B of image 1
+  write_gltf(asset, dir.file("object.glb"));
+  CHECK(read_gltf(dir.file("object.glb")).images.size() == asset.images.size());
+}
+
+namespace {
+
 std::string file_bytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());

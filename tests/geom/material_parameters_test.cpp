@@ -4,9 +4,11 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "matgeom/material_parameters.h"
+#include "matgeom/object_asset.h"
 
 using namespace matgeom;
 
@@ -38,4 +40,41 @@ TEST_CASE("docs/scene_format.md lists the material parameters exactly as the tab
   text << in.rdbuf();
   INFO("regenerate the table with: render_object --list-parameters");
   CHECK(text.str().find(material_parameters_markdown()) != std::string::npos);
+}
+
+TEST_CASE("An asset material starts at the table's defaults and takes images only where the table allows", "[geom]") {
+  const MaterialDesc desc("slot");
+  CHECK(desc.name == "slot");
+  for (const MaterialParameterInfo& info : kMaterialParameters) {
+    CAPTURE(info.name);
+    CHECK(desc.color(info.id) == glm::dvec3(info.default_value));
+    CHECK(desc[info.id].image == -1);
+    MaterialDesc textured;
+    if (info.texturable) {
+      textured.set_image(info.id, 0, 3);
+      CHECK(textured[info.id].image == 0);
+      CHECK(textured[info.id].channel == 3);
+    } else {
+      CHECK_THROWS_AS(textured.set_image(info.id, 0), std::invalid_argument);
+    }
+  }
+  MaterialDesc any;
+  CHECK_THROWS_AS(any.set_image(MaterialParameter::Roughness, 0, 4), std::invalid_argument);
+}
+
+TEST_CASE("Image channels read as the renderer expands images to RGBA", "[geom]") {
+  const ImagePixels grey{"grey", 2, 1, 1, {7, 9}};
+  const ImagePixels grey_alpha{"grey_alpha", 1, 1, 2, {7, 100}};
+  const ImagePixels rgb{"rgb", 2, 1, 3, {1, 2, 3, 4, 5, 6}};
+  const ImagePixels rgba{"rgba", 1, 1, 4, {1, 2, 3, 4}};
+  for (int c = 0; c < 3; ++c) {
+    CHECK(texel_channel(grey, 1, c) == 9);
+    CHECK(texel_channel(grey_alpha, 0, c) == 7);
+    CHECK(texel_channel(rgb, 1, c) == 4 + c);
+    CHECK(texel_channel(rgba, 0, c) == 1 + c);
+  }
+  CHECK(texel_channel(grey, 0, 3) == 255);
+  CHECK(texel_channel(grey_alpha, 0, 3) == 100);
+  CHECK(texel_channel(rgb, 0, 3) == 255);
+  CHECK(texel_channel(rgba, 0, 3) == 4);
 }

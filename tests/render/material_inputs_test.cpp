@@ -4,6 +4,8 @@
 
 #include <array>
 
+#include "matgeom/srgb.h"
+#include "matrender/asset.h"
 #include "matrender/scene.h"
 #include "scene/scene_data.h"
 #include "scene/surface_shading.h"
@@ -57,6 +59,40 @@ TEST_CASE("Each texturable parameter is read from its texture and makes the mate
       CHECK(inputs.scalar(info.id) == 0.8f * texel.a);
     }
     // Every other parameter keeps its constant.
+    for (const matgeom::MaterialParameterInfo& other : matgeom::kMaterialParameters)
+      if (other.id != info.id) CHECK(inputs.color(other.id) == Material().color(other.id));
+  }
+}
+
+TEST_CASE("An asset's image on any texturable parameter reaches the shading, in the table's colour space", "[render]") {
+  const std::array<uint8_t, 4> texel = {64, 128, 192, 32};
+  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) {
+    if (!info.texturable) continue;
+    CAPTURE(info.name);
+    matgeom::ObjectAsset asset;
+    asset.mesh = test_scenes::horizontal_square(1.0);
+    asset.images.push_back({"texel", 1, 1, 4, {texel.begin(), texel.end()}});
+    matgeom::MaterialDesc desc;
+    desc.set(info.id, 0.5).set_image(info.id, 0, 3);
+    asset.materials = {desc};
+    Scene scene;
+    add_asset(scene, asset);
+    scene.commit();
+    RayHit hit;
+    hit.t = 1.0f;
+    hit.mesh = 0;
+    hit.triangle = 0;
+    hit.u = hit.v = 0.25f;
+    const PrincipledInputs inputs = shade_surface(scene.data(), hit, glm::vec3(0.0f, 0.0f, 1.0f)).inputs;
+    if (info.kind == matgeom::ParameterKind::Color) {
+      for (int c = 0; c < 3; ++c) {
+        const float encoded = texel[static_cast<size_t>(c)] / 255.0f;
+        const float expected = info.texture_space == ColorSpace::SRGB ? matgeom::srgb_to_linear(encoded) : encoded;
+        CHECK(inputs.color(info.id)[c] == Approx(0.5f * expected).epsilon(1e-5));
+      }
+    } else {
+      CHECK(inputs.scalar(info.id) == Approx(0.5f * texel[3] / 255.0f).epsilon(1e-5));
+    }
     for (const matgeom::MaterialParameterInfo& other : matgeom::kMaterialParameters)
       if (other.id != info.id) CHECK(inputs.color(other.id) == Material().color(other.id));
   }
