@@ -34,32 +34,32 @@ void require(bool ok, const std::string& option, const std::string& expectation)
   if (!ok) throw CLI::ValidationError(option, "expected " + expectation);
 }
 
-const std::vector<std::pair<std::string, uint32_t>>& aov_names() {
-  static const std::vector<std::pair<std::string, uint32_t>> names = {
-      {"base_color", matrender::AovBaseColor},   {"roughness", matrender::AovRoughness},
-      {"metallic", matrender::AovMetallic},      {"normal_world", matrender::AovNormalWorld},
-      {"normal_camera", matrender::AovNormalCamera}, {"depth", matrender::AovDepth},
-      {"label", matrender::AovLabel},            {"part_id", matrender::AovPartId},
-      {"alpha", matrender::AovAlpha}};
-  return names;
-}
-
 uint32_t parse_aov_list(const std::string& text) {
-  if (text == "all") return matrender::AovAll;
+  if (text == "default") return matrender::default_aovs();
+  if (text == "all") return matrender::all_aovs();
   if (text == "none") return 0;
   uint32_t mask = 0;
   for (const std::string& name : CLI::detail::split(text, ',')) {
-    const auto& names = aov_names();
-    const auto it = std::find_if(names.begin(), names.end(), [&](const auto& entry) { return entry.first == name; });
-    if (it == names.end()) {
-      std::string known = "all, none";
-      for (const auto& entry : names) known += ", " + entry.first;
+    const std::optional<uint32_t> aov = matrender::aov_named(name);
+    if (!aov) {
+      std::string known = "default, all, none";
+      for (const matrender::AovName& entry : matrender::aov_names()) known += ", " + entry.name;
       throw CLI::ValidationError("--aovs", "unknown AOV \"" + name + "\" (expected a comma-separated list of: " +
                                                known + ")");
     }
-    mask |= it->second;
+    mask |= *aov;
   }
   return mask;
+}
+
+// "passes written besides colour: default (base_color, ...), all, none, or a comma-separated list of ..."
+std::string aov_help() {
+  std::string defaults, names;
+  for (const matrender::AovName& aov : matrender::aov_names()) {
+    names += (names.empty() ? "" : ", ") + aov.name;
+    if (aov.bit & matrender::default_aovs()) defaults += (defaults.empty() ? "" : ", ") + aov.name;
+  }
+  return "passes written besides colour: default (" + defaults + "), all, none, or a comma-separated list of " + names;
 }
 
 int parse_positive_int(const std::string& text) {
@@ -256,10 +256,9 @@ void add_run_options(CLI::App& app, Options& o) {
       ->group(group);
   app.add_option_function<std::string>(
          "--aovs", [&o](const std::string& list) { o.aovs = parse_aov_list(list); },
-         "passes written besides colour: all, none, or a comma-separated list of base_color, roughness, "
-         "metallic, normal_world, normal_camera, depth, label, part_id, alpha")
+         aov_help())
       ->type_name("LIST")
-      ->default_str("all")
+      ->default_str("default")
       ->group(group);
   app.add_option("--output", o.output_folder, "folder the images are written to (created if needed)")
       ->capture_default_str()

@@ -42,7 +42,7 @@ struct Options {
 
   // The run itself.
   int threads = 0;  // 0 = all hardware threads
-  uint32_t aovs = matrender::AovAll;
+  uint32_t aovs = matrender::default_aovs();
   std::string output_folder = "./render_out";
 };
 

@@ -70,7 +70,9 @@ void render_variant(const matgeom::ObjectAsset& asset, const ExampleMaterial& m,
   matrender::RenderSettings settings;
   settings.samples_per_pixel = size.samples;
   settings.transparent_background = true;
-  settings.aovs = matrender::AovBaseColor | matrender::AovRoughness | matrender::AovMetallic | matrender::AovLabel |
+  using P = matrender::MaterialParameter;
+  settings.aovs = matrender::parameter_aov(P::BaseColor) | matrender::parameter_aov(P::Roughness) |
+                  matrender::parameter_aov(P::Metallic) | matrender::AovLabel |
                   matrender::AovNormalWorld | matrender::AovAlpha;
   for (int view = 0; view < size.views; ++view) {
     const matrender::Camera camera = matrender::grid_view(grid, 0, view, size.resolution, size.resolution, fov);
@@ -89,7 +91,7 @@ void render_variant(const matgeom::ObjectAsset& asset, const ExampleMaterial& m,
     // The albedo display-encoded as the repository stores it, covered pixels only.
     std::vector<float> albedo(pixels * 3);
     for (size_t p = 0; p < pixels; ++p)
-      for (int c = 0; c < 3; ++c) albedo[p * 3 + static_cast<size_t>(c)] = frame.base_color[p * 3 + static_cast<size_t>(c)] * frame.alpha[p];
+      for (int c = 0; c < 3; ++c) albedo[p * 3 + static_cast<size_t>(c)] = frame.parameter(P::BaseColor)[p * 3 + static_cast<size_t>(c)] * frame.alpha[p];
     matrender::write_display_png((folder / "albedo" / stem).string(), w, h, albedo.data(), frame.alpha.data());
     // ORM: R ambient occlusion (1: none is modelled), G roughness, B metallic; normal_obj:
     // 0.5 n + 0.5 of the world-space shading normal. Alpha is 1 where covered, unlike the
@@ -98,8 +100,8 @@ void render_variant(const matgeom::ObjectAsset& asset, const ExampleMaterial& m,
     for (size_t p = 0; p < pixels; ++p) {
       if (frame.alpha[p] <= 0.0f) continue;
       orm[p * 4 + 0] = 1.0f;
-      orm[p * 4 + 1] = frame.roughness[p];
-      orm[p * 4 + 2] = frame.metallic[p];
+      orm[p * 4 + 1] = frame.parameter(P::Roughness)[p];
+      orm[p * 4 + 2] = frame.parameter(P::Metallic)[p];
       for (int c = 0; c < 3; ++c) normal[p * 4 + static_cast<size_t>(c)] = 0.5f * frame.normal_world[p * 3 + static_cast<size_t>(c)] + 0.5f;
       orm[p * 4 + 3] = normal[p * 4 + 3] = 1.0f;
     }

@@ -19,13 +19,17 @@ TEST_CASE("AOVs of a two-part plane equal the materials at the hit", "[render]")
   plane.triangles = {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}};
   plane.triangle_parts = {0, 0, 1, 1};
   Material left, right;
-  left.set(matrender::MaterialParameter::BaseColor, glm::vec3(0.2f, 0.4f, 0.6f));
-  left.set(matrender::MaterialParameter::Roughness, 0.25f);
-  left.set(matrender::MaterialParameter::Metallic, 0.0f);
+  left.set(MaterialParameter::BaseColor, glm::vec3(0.2f, 0.4f, 0.6f));
+  left.set(MaterialParameter::Roughness, 0.25f);
+  left.set(MaterialParameter::Metallic, 0.0f);
+  left.set(MaterialParameter::Specular, 0.3f).set(MaterialParameter::SpecularTint, 0.6f);
+  left.set(MaterialParameter::Ior, 1.3f);
   left.label_id = 3;
-  right.set(matrender::MaterialParameter::BaseColor, glm::vec3(0.9f, 0.1f, 0.5f));
-  right.set(matrender::MaterialParameter::Roughness, 0.75f);
-  right.set(matrender::MaterialParameter::Metallic, 1.0f);
+  right.set(MaterialParameter::BaseColor, glm::vec3(0.9f, 0.1f, 0.5f));
+  right.set(MaterialParameter::Roughness, 0.75f);
+  right.set(MaterialParameter::Metallic, 1.0f);
+  right.set(MaterialParameter::Specular, 0.7f).set(MaterialParameter::SpecularTint, 0.1f);
+  right.set(MaterialParameter::Ior, 1.8f);
   right.label_id = 5;
   Scene scene;
   scene.add_mesh(plane, {scene.add_material(left), scene.add_material(right)});
@@ -35,6 +39,7 @@ TEST_CASE("AOVs of a two-part plane equal the materials at the hit", "[render]")
   const Camera camera = Camera::look_at({0, 0, 2}, {0, 0, 0}, {0, 1, 0}, 2.0 * std::atan(0.3), 40, 40);
   RenderSettings settings;
   settings.samples_per_pixel = 8;
+  settings.aovs = all_aovs();
   FrameBuffers frame;
   render(scene, camera, settings, frame);
 
@@ -54,9 +59,16 @@ TEST_CASE("AOVs of a two-part plane equal the materials at the hit", "[render]")
         const Material& m = is_left ? left : right;
         CHECK(frame.part_id[i] == (is_left ? 0 : 1));
         CHECK(frame.label[i] == m.label_id);
-        CHECK(frame.roughness[i] == Approx(m.scalar(matrender::MaterialParameter::Roughness)));
-        CHECK(frame.metallic[i] == Approx(m.scalar(matrender::MaterialParameter::Metallic)));
-        for (int c = 0; c < 3; ++c) CHECK(frame.base_color[3 * i + c] == Approx(m.color(matrender::MaterialParameter::BaseColor)[c]));
+        // Every parameter of the table has its AOV.
+        for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) {
+          CAPTURE(info.name);
+          const std::vector<float>& aov = frame.parameter(info.id);
+          if (info.kind == matgeom::ParameterKind::Color) {
+            for (int c = 0; c < 3; ++c) CHECK(aov[3 * i + c] == Approx(m.color(info.id)[c]));
+          } else {
+            CHECK(aov[i] == Approx(m.scalar(info.id)));
+          }
+        }
       }
     }
   }

@@ -31,7 +31,7 @@ TEST_CASE("Every built-in object renders with finite pixels", "[render]") {
   camera.width = camera.height = 40;
   matrender::RenderSettings settings;
   settings.samples_per_pixel = 4;
-  settings.aovs = matrender::AovAll;
+  settings.aovs = matrender::all_aovs();
   matrender::FrameBuffers frame;
   const matrender::RenderStats stats = matrender::render(scene, camera, settings, frame);
   CHECK(stats.discarded_samples == 0);

@@ -140,15 +140,20 @@ TEST_CASE("A missing or corrupt texture is an error naming the file", "[render]"
 TEST_CASE("write_frame writes EXR values exactly and leaves no temporary files", "[render]") {
   const fs::path dir = temp_dir();
   FrameBuffers frame;
-  frame.resize(3, 2, AovAll);
+  frame.resize(3, 2, all_aovs());
   frame.transparent_background = true;
   for (size_t i = 0; i < frame.alpha.size(); ++i) frame.alpha[i] = 0.25f * static_cast<float>(i % 4);
   for (size_t i = 0; i < frame.color.size(); ++i) frame.color[i] = 0.1f * static_cast<float>(i);
   for (size_t i = 0; i < frame.depth.size(); ++i) frame.depth[i] = 1.5f + static_cast<float>(i);
   frame.label[4] = 7;
   const auto written = write_frame(frame, (dir / "out").string(), "v");
-  CHECK(written.size() == 19);
+  // Colour, then an EXR and a PNG per material parameter (named as in the table) and per
+  // geometric AOV, and the alpha PNG.
+  CHECK(written.size() == 2 + 2 * matgeom::kMaterialParameterCount + 2 * 5 + 1);
   for (const auto& path : written) CHECK(fs::exists(path));
+  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters)
+    for (const char* extension : {".exr", ".png"})
+      CHECK(fs::exists(dir / "out" / (std::string("v_") + info.name + extension)));
   for (const auto& entry : fs::directory_iterator(dir / "out"))
     CHECK(entry.path().filename().string().rfind(".tmp", 0) != 0);
 

@@ -1,7 +1,7 @@
 #pragma once
 // The Principled BSDF's parameters, declared once. Scene files, the object readers' material
-// mapping, the renderer's constant-or-textured decision, parameter checks and the scene-format
-// docs all follow this table; adding a parameter is one row here (and its enum value) plus the
+// mapping, the renderer's constant-or-textured decision, the material AOVs, parameter checks and
+// the scene-format docs all follow this table; adding a parameter is one row here (and its enum value) plus the
 // shading code that uses it.
 #include <array>
 #include <cstddef>
@@ -40,21 +40,22 @@ struct MaterialParameterInfo {
   bool texturable;            // may come from an image
   ColorSpace texture_space;   // how its images are read unless a file says otherwise
   int packed_channel;         // its channel in a packed metallic-roughness image (glTF: G, B)
+  bool default_aov;           // its AOV is among the ones written unless others are asked for
   const char* description;    // one line for the docs
 };
 
 constexpr std::array<MaterialParameterInfo, kMaterialParameterCount> kMaterialParameters = {{
     {MaterialParameter::BaseColor, "base_color", "Base Color", ParameterKind::Color, 0.8, 0.0, 1.0, true,
-     ColorSpace::SRGB, 0, "diffuse albedo of dielectrics, specular colour of metals"},
+     ColorSpace::SRGB, 0, true, "diffuse albedo of dielectrics, specular colour of metals"},
     {MaterialParameter::Metallic, "metallic", "Metallic", ParameterKind::Scalar, 0.0, 0.0, 1.0, true,
-     ColorSpace::NonColor, 2, "0 dielectric, 1 metal, mixed linearly between"},
+     ColorSpace::NonColor, 2, true, "0 dielectric, 1 metal, mixed linearly between"},
     {MaterialParameter::Roughness, "roughness", "Roughness", ParameterKind::Scalar, 0.5, 0.0, 1.0, true,
-     ColorSpace::NonColor, 1, "GGX alpha = roughness^2; also the principled diffuse retro-reflection"},
+     ColorSpace::NonColor, 1, true, "GGX alpha = roughness^2; also the principled diffuse retro-reflection"},
     {MaterialParameter::Specular, "specular", "Specular", ParameterKind::Scalar, 0.5, 0.0, 1.0, true,
-     ColorSpace::NonColor, 0, "dielectric reflectance at normal incidence F0 = 0.08 specular (0.5: 4 %)"},
+     ColorSpace::NonColor, 0, false, "dielectric reflectance at normal incidence F0 = 0.08 specular (0.5: 4 %)"},
     {MaterialParameter::SpecularTint, "specular_tint", "Specular Tint", ParameterKind::Scalar, 0.0, 0.0, 1.0, true,
-     ColorSpace::NonColor, 0, "tints dielectric reflection toward the base colour's hue"},
-    {MaterialParameter::Ior, "ior", "IOR", ParameterKind::Scalar, 1.45, 1.0, 1000.0, false, ColorSpace::NonColor, 0,
+     ColorSpace::NonColor, 0, false, "tints dielectric reflection toward the base colour's hue"},
+    {MaterialParameter::Ior, "ior", "IOR", ParameterKind::Scalar, 1.45, 1.0, 1000.0, false, ColorSpace::NonColor, 0, false,
      "index of refraction of transmitted light (no lobe transmits yet: it changes no image)"},
 }};
 

@@ -4,27 +4,65 @@
 //
 // How AOVs are filtered (docs/conventions.md): colour is the plain mean of all filter-sampled
 // camera samples (Cycles' Blackman-Harris 1.5 px, importance sampled, weight 1). alpha is the
-// fraction of samples that hit a surface. base colour, roughness, metallic and the normals are
-// the mean over the samples that hit (not premultiplied by alpha; normals renormalised). Depth,
-// label and part id come from the single hit sample nearest the pixel centre and are never
-// blended. Pixels no sample hit hold 0 (label 0, part id -1, depth 0).
+// fraction of samples that hit a surface. The material parameters and the normals are the mean
+// over the samples that hit (not premultiplied by alpha; each parameter clamped to its range in
+// the table, normals renormalised). Depth, label and part id come from the single hit sample
+// nearest the pixel centre and are never blended. Pixels no sample hit hold 0 (label 0, part id
+// -1, depth 0).
+#include <array>
 #include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
 #include <vector>
+
+#include "matgeom/material_parameters.h"
 
 namespace matrender {
 
+using matgeom::MaterialParameter;
+
+// AOV bits: the geometric ones here, then one per material parameter (parameter_aov).
 enum Aov : uint32_t {
-  AovBaseColor = 1u << 0,
-  AovRoughness = 1u << 1,
-  AovMetallic = 1u << 2,
-  AovNormalWorld = 1u << 3,
-  AovNormalCamera = 1u << 4,
-  AovDepth = 1u << 5,
-  AovLabel = 1u << 6,
-  AovPartId = 1u << 7,
-  AovAlpha = 1u << 8,
-  AovAll = (1u << 9) - 1,
+  AovNormalWorld = 1u << 0,
+  AovNormalCamera = 1u << 1,
+  AovDepth = 1u << 2,
+  AovLabel = 1u << 3,
+  AovPartId = 1u << 4,
+  AovAlpha = 1u << 5,
 };
+constexpr uint32_t kFirstParameterAovBit = 8;
+static_assert(kFirstParameterAovBit + matgeom::kMaterialParameterCount <= 32, "AOV bits fit in 32");
+
+// The AOV of a material parameter: its value at the first hit, named as in the table.
+constexpr uint32_t parameter_aov(MaterialParameter p) { return 1u << (kFirstParameterAovBit + static_cast<uint32_t>(p)); }
+
+constexpr uint32_t kGeometricAovs = AovNormalWorld | AovNormalCamera | AovDepth | AovLabel | AovPartId | AovAlpha;
+
+// Every AOV.
+constexpr uint32_t all_aovs() {
+  uint32_t mask = kGeometricAovs;
+  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) mask |= parameter_aov(info.id);
+  return mask;
+}
+
+// The AOVs written unless others are asked for: the geometric ones and the parameters the table
+// marks default_aov.
+constexpr uint32_t default_aovs() {
+  uint32_t mask = kGeometricAovs;
+  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters)
+    if (info.default_aov) mask |= parameter_aov(info.id);
+  return mask;
+}
+
+// An AOV's name (the pass name of its files and of render_object --aovs) and bit, in the order
+// files are written.
+struct AovName {
+  std::string name;
+  uint32_t bit;
+};
+const std::vector<AovName>& aov_names();
+std::optional<uint32_t> aov_named(std::string_view name);
 
 struct FrameBuffers {
   int width = 0;
@@ -33,14 +71,16 @@ struct FrameBuffers {
   bool transparent_background = false;  // colour is premultiplied by coverage, 0 where nothing hit
   std::vector<float> color;          // RGB, scene-linear
   std::vector<float> alpha;          // coverage
-  std::vector<float> base_color;     // RGB, linear
-  std::vector<float> roughness;
-  std::vector<float> metallic;
+  // By MaterialParameter: RGB for a colour (linear), one channel for a scalar.
+  std::array<std::vector<float>, matgeom::kMaterialParameterCount> parameters;
   std::vector<float> normal_world;   // XYZ in [-1, 1]
   std::vector<float> normal_camera;  // XYZ, camera frame (+X right, +Y up, +Z toward viewer)
   std::vector<float> depth;          // metres along the camera axis
   std::vector<int32_t> label;        // material label id
   std::vector<int32_t> part_id;      // part id, -1 for background
+
+  std::vector<float>& parameter(MaterialParameter p) { return parameters[static_cast<size_t>(p)]; }
+  const std::vector<float>& parameter(MaterialParameter p) const { return parameters[static_cast<size_t>(p)]; }
 
   // Sizes every requested array for width x height and zeroes it.
   void resize(int w, int h, uint32_t aov_mask);

@@ -19,7 +19,7 @@ struct RenderSettings {
   int max_diffuse_bounces = 4;
   int max_glossy_bounces = 4;
   bool transparent_background = false;  // camera rays that miss give 0 instead of the background
-  uint32_t aovs = AovAll;
+  uint32_t aovs = default_aovs();
   // Called with the finished fraction in [0, 1] after each tile, from a render thread; calls are
   // serialised and the fraction never decreases.
   std::function<void(double)> progress;

@@ -1,5 +1,6 @@
 #include "matrender/render.h"
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -42,9 +43,7 @@ std::vector<Tile> make_tiles(int width, int height) {
 struct PixelAccumulator {
   glm::dvec3 color{0.0};
   int hits = 0;
-  glm::dvec3 base_color{0.0};
-  double roughness = 0.0;
-  double metallic = 0.0;
+  std::array<glm::dvec3, matgeom::kMaterialParameterCount> parameters{};  // by MaterialParameter; scalars in x
   glm::dvec3 normal{0.0};
   float nearest_offset2 = std::numeric_limits<float>::infinity();
   float depth = 0.0f;
@@ -89,6 +88,9 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
   const uint32_t spp = static_cast<uint32_t>(settings.samples_per_pixel);
   // Without AOVs beyond alpha a pixel only counts its hits.
   const bool surface_aovs = (settings.aovs & ~static_cast<uint32_t>(AovAlpha)) != 0;
+  std::vector<const matgeom::MaterialParameterInfo*> parameter_aovs;
+  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters)
+    if (settings.aovs & parameter_aov(info.id)) parameter_aovs.push_back(&info);
 
   auto render_pixel = [&](int x, int y, uint64_t& tile_rays, uint64_t& tile_discarded) {
     const uint32_t pixel_index = static_cast<uint32_t>(y) * static_cast<uint32_t>(camera.width) + static_cast<uint32_t>(x);
@@ -119,9 +121,15 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
         ++acc.hits;
         if (!surface_aovs) continue;
         const SurfacePoint& sp = path.first;
-        acc.base_color += glm::dvec3(glm::clamp(sp.inputs.color(MaterialParameter::BaseColor), 0.0f, 1.0f));
-        acc.roughness += glm::clamp(sp.inputs.scalar(MaterialParameter::Roughness), 0.0f, 1.0f);
-        acc.metallic += glm::clamp(sp.inputs.scalar(MaterialParameter::Metallic), 0.0f, 1.0f);
+        for (const matgeom::MaterialParameterInfo* info : parameter_aovs) {
+          const float low = static_cast<float>(info->min), high = static_cast<float>(info->max);
+          glm::dvec3& sum = acc.parameters[static_cast<size_t>(info->id)];
+          if (info->kind == matgeom::ParameterKind::Color) {
+            sum += glm::dvec3(glm::clamp(sp.inputs.color(info->id), low, high));
+          } else {
+            sum.x += glm::clamp(sp.inputs.scalar(info->id), low, high);
+          }
+        }
         acc.normal += glm::dvec3(sp.shading_normal);
         const float offset2 = glm::dot(offsets[lane], offsets[lane]);
         if (offset2 < acc.nearest_offset2) {
@@ -141,13 +149,19 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
     const double normal_len = glm::length(acc.normal);
     const glm::vec3 normal = normal_len > 0.0 ? glm::vec3(acc.normal / normal_len) : glm::vec3(0.0f);
     const glm::vec3 normal_camera = world_to_camera * normal;
+    for (const matgeom::MaterialParameterInfo* info : parameter_aovs) {
+      const glm::dvec3& sum = acc.parameters[static_cast<size_t>(info->id)];
+      std::vector<float>& buffer = frame.parameter(info->id);
+      if (info->kind == matgeom::ParameterKind::Color) {
+        for (int c = 0; c < 3; ++c) buffer[3 * i + c] = static_cast<float>(sum[c] * inv_hits);
+      } else {
+        buffer[i] = static_cast<float>(sum.x * inv_hits);
+      }
+    }
     for (int c = 0; c < 3; ++c) {
-      if (!frame.base_color.empty()) frame.base_color[3 * i + c] = static_cast<float>(acc.base_color[c] * inv_hits);
       if (!frame.normal_world.empty()) frame.normal_world[3 * i + c] = normal[c];
       if (!frame.normal_camera.empty()) frame.normal_camera[3 * i + c] = normal_camera[c];
     }
-    if (!frame.roughness.empty()) frame.roughness[i] = static_cast<float>(acc.roughness * inv_hits);
-    if (!frame.metallic.empty()) frame.metallic[i] = static_cast<float>(acc.metallic * inv_hits);
     if (!frame.depth.empty()) frame.depth[i] = acc.depth;
     if (!frame.label.empty()) frame.label[i] = acc.label;
     if (!frame.part_id.empty()) frame.part_id[i] = acc.part;

@@ -114,15 +114,21 @@ std::vector<std::string> write_frame(const FrameBuffers& frame, const std::strin
     written.push_back(file(pass, "png"));
     write_data_png(written.back(), w, h, channels, data.data(), png_scale, png_offset, false);
   };
-  // Base colour is linear like the renderer's inputs; its PNG stores sRGB-encoded values for viewing.
-  if (!frame.base_color.empty()) {
-    written.push_back(file("base_color", "exr"));
-    write_exr(written.back(), w, h, {"R", "G", "B"}, frame.base_color.data());
-    written.push_back(file("base_color", "png"));
-    write_display_png(written.back(), w, h, frame.base_color.data(), nullptr, 0.0);
+  // Material parameters, named as in the table. Colours are linear like the renderer's inputs;
+  // their PNG stores sRGB-encoded values for viewing. A scalar's PNG maps its range to 0..255.
+  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) {
+    const std::vector<float>& values = frame.parameter(info.id);
+    if (values.empty()) continue;
+    if (info.kind == matgeom::ParameterKind::Color) {
+      written.push_back(file(info.name, "exr"));
+      write_exr(written.back(), w, h, {"R", "G", "B"}, values.data());
+      written.push_back(file(info.name, "png"));
+      write_display_png(written.back(), w, h, values.data(), nullptr, 0.0);
+    } else {
+      const double scale = 255.0 / (info.max - info.min);
+      write_float_pass(info.name, values, 1, {"Y"}, scale, -info.min * scale);
+    }
   }
-  write_float_pass("roughness", frame.roughness, 1, {"Y"}, 255.0, 0.0);
-  write_float_pass("metallic", frame.metallic, 1, {"Y"}, 255.0, 0.0);
   write_float_pass("normal_world", frame.normal_world, 3, {"X", "Y", "Z"}, 127.5, 127.5);
   write_float_pass("normal_camera", frame.normal_camera, 3, {"X", "Y", "Z"}, 127.5, 127.5);
   if (!frame.depth.empty()) {
