@@ -688,9 +688,11 @@ TextureRef resolve_texture(const GltfFile& file, ImageTable& images, int texture
   return ref;
 }
 
-double unit_interval_factor(const GltfFile& file, double value, const std::string& what) {
-  if (!(value >= 0.0 && value <= 1.0))
-    fail(file.path, concat(what, " ", value, " is outside [0, 1]"));
+// A factor must lie in its parameter's range (the parameter table's).
+double checked_factor(const GltfFile& file, MaterialParameter p, double value, const std::string& what) {
+  const MaterialParameterInfo& info = material_parameter(p);
+  if (!(value >= info.min && value <= info.max))
+    fail(file.path, concat(what, " ", value, " is outside [", info.min, ", ", info.max, "]"));
   return value;
 }
 
@@ -708,12 +710,12 @@ MaterialDesc convert_material(const GltfFile& file, ImageTable& images, size_t i
   if (pbr.baseColorFactor.size() != 4) fail(file.path, what + ": baseColorFactor needs 4 numbers");
   glm::dvec3 base_color;
   for (int c = 0; c < 3; ++c) {
-    base_color[c] = unit_interval_factor(file, pbr.baseColorFactor[static_cast<size_t>(c)],
-                                         what + " baseColorFactor");
+    base_color[c] = checked_factor(file, P::BaseColor, pbr.baseColorFactor[static_cast<size_t>(c)],
+                                   what + " baseColorFactor");
   }
   desc.set(P::BaseColor, base_color);
-  desc.set(P::Metallic, unit_interval_factor(file, pbr.metallicFactor, what + " metallicFactor"));
-  desc.set(P::Roughness, unit_interval_factor(file, pbr.roughnessFactor, what + " roughnessFactor"));
+  desc.set(P::Metallic, checked_factor(file, P::Metallic, pbr.metallicFactor, what + " metallicFactor"));
+  desc.set(P::Roughness, checked_factor(file, P::Roughness, pbr.roughnessFactor, what + " roughnessFactor"));
   if (!std::isfinite(material.normalTexture.scale))
     fail(file.path, what + ": non-finite normal scale");
   desc.normal_strength = material.normalTexture.scale;

@@ -63,6 +63,12 @@ constexpr const MaterialParameterInfo& material_parameter(MaterialParameter id) 
   return kMaterialParameters[static_cast<size_t>(id)];
 }
 
+// `value` clamped to the parameter's valid range.
+constexpr double clamp_to_range(MaterialParameter id, double value) {
+  const MaterialParameterInfo& info = material_parameter(id);
+  return value < info.min ? info.min : (value > info.max ? info.max : value);
+}
+
 // The parameter a scene-file key names, if any.
 std::optional<MaterialParameter> material_parameter_named(std::string_view name);
 

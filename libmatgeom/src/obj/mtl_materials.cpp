@@ -35,9 +35,9 @@ struct IllumFlags {
 // Blender: illum 2 turns highlights on, 3 to 8 turn reflection on.
 IllumFlags illum_flags(int illum) { return {illum == 2, illum >= 3 && illum <= 8}; }
 
-// Principled inputs are defined on [0, 1]; Blender passes MTL values through, and a base colour
-// above 1 would reflect more light than arrives.
-double unit_clamp(double value) { return std::clamp(value, 0.0, 1.0); }
+// Blender passes MTL values through; here they are clamped to the parameter's range (a base
+// colour above 1 would reflect more light than arrives).
+double clamped(MaterialParameter p, double value) { return clamp_to_range(p, value); }
 
 double mean3(const tinyobj::real_t* values) {
   return (static_cast<double>(values[0]) + values[1] + values[2]) / 3.0;
@@ -80,15 +80,15 @@ class MaterialConverter {
     // MaterialDesc already holds.
     const glm::dvec3 kd(material.diffuse[0], material.diffuse[1], material.diffuse[2]);
     if (kd.r >= 0.0 && kd.g >= 0.0 && kd.b >= 0.0) {
-      desc.set(P::BaseColor, glm::clamp(kd, glm::dvec3(0.0), glm::dvec3(1.0)));
+      desc.set(P::BaseColor, glm::dvec3(clamped(P::BaseColor, kd.r), clamped(P::BaseColor, kd.g), clamped(P::BaseColor, kd.b)));
     }
     // Specular: the mean of Ks; without Ks, 1 with highlights and 0 otherwise.
     const double ks = mean3(material.specular);
-    desc.set(P::Specular, ks >= 0.0 ? unit_clamp(ks) : (illum.highlight ? 1.0 : 0.0));
+    desc.set(P::Specular, ks >= 0.0 ? clamped(P::Specular, ks) : (illum.highlight ? 1.0 : 0.0));
     // Roughness: Pr; otherwise 1 - sqrt(Ns / 1000) with Ns clamped to [0, 1000]; without Ns,
     // 0 with highlights and 1 otherwise.
     if (material.roughness >= 0.0f) {
-      desc.set(P::Roughness, unit_clamp(material.roughness));
+      desc.set(P::Roughness, clamped(P::Roughness, material.roughness));
     } else if (material.shininess >= 0.0f) {
       desc.set(P::Roughness, 1.0 - std::sqrt(std::clamp<double>(material.shininess, 0.0, 1000.0) / 1000.0));
     } else {
@@ -98,9 +98,9 @@ class MaterialConverter {
     // for all others -- OBJ materials are dielectric unless they say otherwise, unlike glTF's.
     const double ka = mean3(material.ambient);
     if (material.metallic >= 0.0f) {
-      desc.set(P::Metallic, unit_clamp(material.metallic));
+      desc.set(P::Metallic, clamped(P::Metallic, material.metallic));
     } else {
-      desc.set(P::Metallic, illum.reflection ? (ka >= 0.0 ? unit_clamp(ka) : 1.0) : 0.0);
+      desc.set(P::Metallic, illum.reflection ? (ka >= 0.0 ? clamped(P::Metallic, ka) : 1.0) : 0.0);
     }
   }
 
