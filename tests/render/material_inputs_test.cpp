@@ -21,10 +21,8 @@ TexturePtr constant_texture(const glm::vec4& texel) {
   return Texture::from_pixelsf(1, 1, 4, rgba.data(), ColorSpace::NonColor);
 }
 
-// What shade_surface gives a point of a square (normal +Z) in `material`, seen along -wo.
-SurfacePoint shaded_point(const Material& material, const glm::vec3& wo = glm::vec3(0.0f, 0.0f, 1.0f)) {
-  Scene scene;
-  scene.add_mesh(test_scenes::horizontal_square(1.0), {scene.add_material(material)});
+// What shade_surface gives a point of the first triangle of the scene's first mesh, seen along -wo.
+SurfacePoint shaded_point(Scene& scene, const glm::vec3& wo) {
   scene.commit();
   RayHit hit;
   hit.t = 1.0f;
@@ -32,6 +30,13 @@ SurfacePoint shaded_point(const Material& material, const glm::vec3& wo = glm::v
   hit.triangle = 0;
   hit.u = hit.v = 0.25f;
   return shade_surface(scene.data(), hit, wo);
+}
+
+// The same for a square (normal +Z) in `material`.
+SurfacePoint shaded_point(const Material& material, const glm::vec3& wo = glm::vec3(0.0f, 0.0f, 1.0f)) {
+  Scene scene;
+  scene.add_mesh(test_scenes::horizontal_square(1.0), {scene.add_material(material)});
+  return shaded_point(scene, wo);
 }
 
 PrincipledInputs shaded_inputs(const Material& material) { return shaded_point(material).inputs; }
@@ -77,13 +82,7 @@ TEST_CASE("An asset's image on any texturable parameter reaches the shading, in 
     asset.materials = {desc};
     Scene scene;
     add_asset(scene, asset);
-    scene.commit();
-    RayHit hit;
-    hit.t = 1.0f;
-    hit.mesh = 0;
-    hit.triangle = 0;
-    hit.u = hit.v = 0.25f;
-    const PrincipledInputs inputs = shade_surface(scene.data(), hit, glm::vec3(0.0f, 0.0f, 1.0f)).inputs;
+    const PrincipledInputs inputs = shaded_point(scene, glm::vec3(0.0f, 0.0f, 1.0f)).inputs;
     if (info.kind == matgeom::ParameterKind::Color) {
       for (int c = 0; c < 3; ++c) {
         const float encoded = texel[static_cast<size_t>(c)] / 255.0f;
