@@ -121,15 +121,10 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
         ++acc.hits;
         if (!surface_aovs) continue;
         const SurfacePoint& sp = path.first;
-        for (const matgeom::MaterialParameterInfo* info : parameter_aovs) {
-          const float low = static_cast<float>(info->min), high = static_cast<float>(info->max);
-          glm::dvec3& sum = acc.parameters[static_cast<size_t>(info->id)];
-          if (info->kind == matgeom::ParameterKind::Color) {
-            sum += glm::dvec3(glm::clamp(sp.inputs.color(info->id), low, high));
-          } else {
-            sum.x += glm::clamp(sp.inputs.scalar(info->id), low, high);
-          }
-        }
+        // Colours and scalars sum alike; a scalar's AOV reads x.
+        for (const matgeom::MaterialParameterInfo* info : parameter_aovs)
+          acc.parameters[static_cast<size_t>(info->id)] += glm::dvec3(
+              glm::clamp(sp.inputs.color(info->id), static_cast<float>(info->min), static_cast<float>(info->max)));
         acc.normal += glm::dvec3(sp.shading_normal);
         const float offset2 = glm::dot(offsets[lane], offsets[lane]);
         if (offset2 < acc.nearest_offset2) {
