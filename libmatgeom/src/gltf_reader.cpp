@@ -346,34 +346,41 @@ std::vector<int> scene_roots(const GltfFile& file) {
   return roots;
 }
 
-void collect_instances(const GltfFile& file, int node_index, const glm::dmat4& parent,
-                       std::vector<bool>& visited, std::vector<MeshInstance>& instances) {
-  const tinygltf::Model& model = file.model;
-  if (node_index < 0 || static_cast<size_t>(node_index) >= model.nodes.size()) {
-    fail(file.path, concat("node ", node_index, " does not exist"));
-  }
-  const size_t n = static_cast<size_t>(node_index);
-  // glTF node graphs are forests; a second visit means a cycle or a shared child.
-  if (visited[n])
-    fail(file.path, concat("node ", n, " is reached twice (the hierarchy must be a tree)"));
-  visited[n] = true;
-
-  const glm::dmat4 world = parent * node_local_transform(file, n);
-  const tinygltf::Node& node = model.nodes[n];
-  if (node.mesh >= 0) {
-    if (static_cast<size_t>(node.mesh) >= model.meshes.size()) {
-      fail(file.path, concat("node ", n, ": mesh ", node.mesh, " does not exist"));
-    }
-    instances.push_back({static_cast<size_t>(node.mesh), world});
-  }
-  for (int child : node.children) collect_instances(file, child, world, visited, instances);
-}
-
+// Depth first, children in order, with an explicit stack: a hierarchy thousands of levels deep
+// (a hostile file, or a long chain of bones) must not overflow the call stack.
 std::vector<MeshInstance> collect_mesh_instances(const GltfFile& file) {
-  std::vector<bool> visited(file.model.nodes.size(), false);
+  const tinygltf::Model& model = file.model;
+  struct Pending {
+    int node;
+    glm::dmat4 parent;
+  };
+  std::vector<bool> visited(model.nodes.size(), false);
   std::vector<MeshInstance> instances;
-  for (int root : scene_roots(file))
-    collect_instances(file, root, glm::dmat4(1.0), visited, instances);
+  std::vector<Pending> stack;
+  const std::vector<int> roots = scene_roots(file);
+  for (auto root = roots.rbegin(); root != roots.rend(); ++root) stack.push_back({*root, glm::dmat4(1.0)});
+  while (!stack.empty()) {
+    const Pending pending = stack.back();
+    stack.pop_back();
+    if (pending.node < 0 || static_cast<size_t>(pending.node) >= model.nodes.size()) {
+      fail(file.path, concat("node ", pending.node, " does not exist"));
+    }
+    const size_t n = static_cast<size_t>(pending.node);
+    // glTF node graphs are forests; a second visit means a cycle or a shared child.
+    if (visited[n])
+      fail(file.path, concat("node ", n, " is reached twice (the hierarchy must be a tree)"));
+    visited[n] = true;
+
+    const glm::dmat4 world = pending.parent * node_local_transform(file, n);
+    const tinygltf::Node& node = model.nodes[n];
+    if (node.mesh >= 0) {
+      if (static_cast<size_t>(node.mesh) >= model.meshes.size()) {
+        fail(file.path, concat("node ", n, ": mesh ", node.mesh, " does not exist"));
+      }
+      instances.push_back({static_cast<size_t>(node.mesh), world});
+    }
+    for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) stack.push_back({*child, world});
+  }
   return instances;
 }
 

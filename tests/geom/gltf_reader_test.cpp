@@ -582,3 +582,27 @@ TEST_CASE("glTF reader errors name the file and the problem", "[geom]") {
     CHECK_THAT(read_error(path), Contains(path));
   }
 }
+
+TEST_CASE("glTF reader walks a node hierarchy 100,000 levels deep without recursion", "[geom]") {
+  TempDir dir;
+  GltfWriter writer(dir, "deep", Container::EmbeddedDataUri);
+  const int positions = writer.add_vec3(kTriangle);
+  writer.doc()["meshes"] =
+      json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", positions}}}}})}}});
+  // A chain of nodes, each 1/1024 m along glTF's +X from its parent (exact in binary), the
+  // triangle at the end.
+  constexpr int kLevels = 100000;
+  json nodes = json::array();
+  for (int level = 0; level < kLevels; ++level) {
+    json node = {{"translation", {1.0 / 1024.0, 0.0, 0.0}}};
+    if (level + 1 < kLevels) node["children"] = json::array({level + 1});
+    else node["mesh"] = 0;
+    nodes.push_back(node);
+  }
+  writer.doc()["nodes"] = nodes;
+  writer.doc()["scenes"] = json::array({{{"nodes", json::array({0})}}});
+  writer.doc()["scene"] = 0;
+  const matgeom::ObjectAsset asset = matgeom::read_gltf(writer.write());
+  REQUIRE(asset.mesh.triangle_count() == 1);
+  CHECK(asset.mesh.positions[0].x == Approx(kLevels / 1024.0));
+}
