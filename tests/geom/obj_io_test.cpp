@@ -457,6 +457,17 @@ TEST_CASE("OBJ reader errors name the file and the problem", "[geom]") {
       CHECK_THAT(read_error(path), Contains(path + ": ") && Contains("non-finite"));
     }
   }
+  SECTION("words tinyobjloader would silently read as 0") {
+    // nan, inf, a decimal comma and a stray word: each used to give a vertex coordinate of 0.
+    for (const char* vertex : {"v 1 nan 0\n", "v inf 0 0\n", "vt 0,5 1\n", "vn 0 0 up\n", "v 1 2 3e\n"}) {
+      write_text(path, triangle + vertex + "f 1 2 3\n");
+      INFO(vertex);
+      CHECK_THAT(read_error(path), Contains(path + ": line 4: ") && Contains("is not a finite number"));
+    }
+    // Signs, exponents, leading dots and trailing comments are numbers (OBJ's +Y up becomes +Z).
+    write_text(path, "v -1 +0.5 .25e+1\nv 1E-3 0 0 # comment\nv 0 1. 0\nf 1 2 3\n");
+    CHECK(read_obj(path).mesh.positions[0] == glm::vec3(-1.0f, -2.5f, 0.5f));
+  }
   SECTION("zero faces") {
     for (const std::string& text : {triangle, triangle + "f 1 1 2\nl 1 2\n"}) {
       write_text(path, text);

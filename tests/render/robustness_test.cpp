@@ -9,6 +9,7 @@
 #include "matrender/camera.h"
 #include "matrender/render.h"
 #include "matrender/scene.h"
+#include "matrender/scene_limits.h"
 #include "test_scenes.h"
 
 using namespace matrender;
@@ -118,4 +119,67 @@ TEST_CASE("Grazing views of a smooth normal-mapped sphere stay finite", "[render
   const RenderStats stats = render(scene, Camera::look_at({0, -4, 0}, {0, 0, 0}, {0, 0, 1}, 0.6, 32, 32), settings, frame);
   CHECK(test_scenes::all_finite(frame.color));
   CHECK(stats.discarded_samples == 0);
+}
+
+TEST_CASE("What single precision cannot render is refused with the reason, never traced", "[render]") {
+  using Catch::Matchers::Contains;
+  Scene scene;
+  const uint32_t grey = scene.add_material(test_scenes::lambert(0.5f));
+
+  // Geometry beyond the scene limit, or not finite.
+  matgeom::TriangleMesh far = test_scenes::horizontal_square(1.0);
+  far.positions[2].x = static_cast<float>(2.0 * kMaxSceneCoordinate);
+  CHECK_THROWS_WITH(scene.add_mesh(far, {grey}), Contains("mesh 0: vertex 2") && Contains("beyond 65536 m"));
+  CHECK(scene.mesh_count() == 0);
+
+  // A mesh of triangles that all have zero area would render nothing: refused. One with area
+  // among them is enough.
+  matgeom::TriangleMesh zero_area;
+  zero_area.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0.5f, 0, 0}};
+  zero_area.triangles = {{0, 1, 2}, {0, 0, 3}};
+  CHECK_THROWS_WITH(scene.add_mesh(zero_area, {grey}), Contains("mesh 0: every one of its 2 triangles has zero area"));
+  zero_area.positions.push_back({0, 1, 0});
+  zero_area.triangles.push_back({0, 1, 4});
+  const uint32_t mixed = scene.add_mesh(zero_area, {grey});
+
+  // Lamps whose values are each valid but whose emission or size a float cannot hold.
+  RectLight tiny;
+  tiny.size_x = 1e-300;
+  RectLight bright;
+  bright.power = 1e300;
+  RectLight flat;
+  flat.light_to_world[1] = flat.light_to_world[0];  // X and Y axes parallel
+  PointLight far_point;
+  far_point.position = glm::dvec3(0.0, 1e7, 0.0);
+  PointLight nan_colour;
+  nan_colour.color = glm::dvec3(std::numeric_limits<double>::quiet_NaN());
+  SpotLight no_direction;
+  no_direction.direction = glm::dvec3(0.0);
+  SpotLight wide;
+  wide.spot_angle = 4.0;
+  const std::vector<std::pair<Light, const char*>> refused = {
+      {tiny, "area"},          {bright, "radiance"},           {flat, "parallel"},       {far_point, "beyond 65536 m"},
+      {nan_colour, "colour"},  {no_direction, "direction"},     {wide, "spot angle"}};
+  for (const auto& [light, reason] : refused) {
+    CAPTURE(reason);
+    CHECK_THROWS_WITH(scene.add_light(light), Contains("light 0: ") && Contains(reason));
+  }
+  CHECK(scene.lights().empty());
+  scene.add_light(PointLight{glm::dvec3(0.0, 0.0, 1.0), 10.0, glm::dvec3(1.0)});
+
+  // A camera beyond the limit (Embree asserted on its rays at 1e20 m) or at NaN.
+  CHECK(mixed == 0);
+  scene.add_mesh(test_scenes::horizontal_square(1.0), {grey});
+  RenderSettings settings;
+  settings.samples_per_pixel = 1;
+  FrameBuffers frame;
+  for (const double x : {1e20, 1e5, std::numeric_limits<double>::quiet_NaN()}) {
+    CAPTURE(x);
+    Camera camera = Camera::look_at({0.0, -1.0, 1.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 0.5, 4, 4);
+    camera.camera_to_world[3].x = x;
+    CHECK_THROWS_AS(render(scene, camera, settings, frame), std::invalid_argument);
+  }
+  // Within the limit it renders.
+  const Camera near = Camera::look_at({0.0, -1.0, 1.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 0.5, 4, 4);
+  CHECK_NOTHROW(render(scene, near, settings, frame));
 }

@@ -48,6 +48,46 @@ size_t count_arguments(std::string_view line) {
   }
 }
 
+// A decimal number as C's strtod reads it without "nan", "inf" or hex: tinyobjloader reads
+// anything else as 0 without a word, so "v 1 nan 0" would put the vertex at y = 0.
+bool is_decimal_number(std::string_view word) {
+  size_t i = 0;
+  if (i < word.size() && (word[i] == '+' || word[i] == '-')) ++i;
+  const auto digits = [&] {
+    const size_t start = i;
+    while (i < word.size() && word[i] >= '0' && word[i] <= '9') ++i;
+    return i - start;
+  };
+  size_t mantissa_digits = digits();
+  if (i < word.size() && word[i] == '.') {
+    ++i;
+    mantissa_digits += digits();
+  }
+  if (mantissa_digits == 0) return false;
+  if (i < word.size() && (word[i] == 'e' || word[i] == 'E')) {
+    ++i;
+    if (i < word.size() && (word[i] == '+' || word[i] == '-')) ++i;
+    if (digits() == 0) return false;
+  }
+  return i == word.size();
+}
+
+// The first argument of a line that is not a decimal number, if any.
+std::string_view first_non_number(std::string_view line) {
+  line = line.substr(0, line.find('\0'));
+  size_t position = line.find_first_not_of(" \t");
+  position = line.find_first_of(" \t", position);
+  while (true) {
+    position = line.find_first_not_of(" \t", position);
+    if (position == std::string_view::npos) return {};
+    const size_t end = std::min(line.find_first_of(" \t", position), line.size());
+    const std::string_view word = line.substr(position, end - position);
+    if (word.front() == '#') return {};  // a comment ends the line
+    if (!is_decimal_number(word)) return word;
+    position = end;
+  }
+}
+
 // tinyobjloader's ear clipping takes time quadratic in a polygon's corners (about 0.2 s for
 // 8000 on a star-shaped polygon), so a hostile file could stall the reader for minutes with one
 // face; real polygons stay far below this.
@@ -64,9 +104,16 @@ constexpr const char* kNotGivenMarkers =
 }  // namespace
 
 void screen_obj_text(const std::string& path, std::string& text) {
+  size_t line_number = 0;
   for_each_line(text, [&](size_t begin, size_t end) {
+    ++line_number;
     const std::string_view line(text.data() + begin, end - begin);
     const std::string_view keyword = line_keyword(line);
+    if (keyword == "v" || keyword == "vt" || keyword == "vn") {
+      const std::string_view word = first_non_number(line);
+      if (!word.empty())
+        fail(path, concat("line ", line_number, ": \"", word, "\" in a '", keyword, "' line is not a finite number"));
+    }
     if (keyword == "t" || keyword == "vw") {
       std::fill(text.begin() + static_cast<std::ptrdiff_t>(begin),
                 text.begin() + static_cast<std::ptrdiff_t>(end), ' ');

@@ -38,8 +38,9 @@ class Scene {
   size_t material_count() const;
 
   // Adds a copy of `mesh`. part_materials[k] is the material id of part k and must cover every
-  // part id the mesh uses. Throws std::invalid_argument for an invalid mesh or material id, and
-  // std::logic_error after commit().
+  // part id the mesh uses. Throws std::invalid_argument for an invalid mesh or material id or a
+  // vertex beyond kMaxSceneCoordinate (matrender/scene_limits.h), and std::logic_error after
+  // commit().
   uint32_t add_mesh(const matgeom::TriangleMesh& mesh, const std::vector<uint32_t>& part_materials,
                     const MeshOptions& options = {});
 
@@ -50,6 +51,9 @@ class Scene {
   size_t mesh_count() const;
   const std::vector<uint32_t>& part_materials(uint32_t mesh) const;
 
+  // Throws std::invalid_argument, naming the light and the reason, for one single precision
+  // cannot render as given (non-finite or negative values, a position beyond the scene limit, an
+  // area or emission that does not fit a float).
   void add_light(const Light& light);
   void clear_lights();
   const std::vector<Light>& lights() const;

@@ -5,7 +5,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "lights/light_checks.h"
 #include "matgeom/tangents.h"
+#include "matrender/scene_limits.h"
 #include "scene/scene_data.h"
 
 namespace matrender {
@@ -52,6 +54,15 @@ void add_tangents_if_needed(MeshData& m, const std::vector<Material>& materials)
   if (m.normals.empty()) m.normals = std::move(with_tangents.normals);
 }
 
+// Some triangle spans an area (in the float positions rays will meet).
+bool has_area(const matgeom::TriangleMesh& mesh) {
+  for (const glm::uvec3& t : mesh.triangles) {
+    const glm::vec3 p0 = mesh.positions[t.x];
+    if (glm::cross(mesh.positions[t.y] - p0, mesh.positions[t.z] - p0) != glm::vec3(0.0f)) return true;
+  }
+  return false;
+}
+
 uint32_t parts_used(const MeshData& m) {
   uint32_t parts = 1;
   for (uint32_t part : m.triangle_parts) parts = std::max(parts, part + 1);
@@ -66,6 +77,10 @@ uint32_t Scene::add_mesh(const matgeom::TriangleMesh& mesh, const std::vector<ui
   const std::string what = "mesh " + std::to_string(data_->meshes.size());
   matgeom::validate_mesh(mesh, what);
   if (mesh.triangles.empty()) throw std::invalid_argument(what + ": has no triangles");
+  for (size_t v = 0; v < mesh.positions.size(); ++v) check_scene_point(mesh.positions[v], what + ": vertex " + std::to_string(v));
+  if (!has_area(mesh))
+    throw std::invalid_argument(what + ": every one of its " + std::to_string(mesh.triangles.size()) +
+                                " triangles has zero area (its vertices are collinear or coincide), so nothing would render");
   check_part_materials(what, mesh.part_count(), part_materials, data_->materials.size());
   if (!(options.shadow_terminator_geometry_offset >= 0.0f && options.shadow_terminator_geometry_offset <= 1.0f))
     throw std::invalid_argument(what + ": shadow terminator geometry offset must be in [0, 1]");
@@ -98,7 +113,11 @@ size_t Scene::mesh_count() const { return data_->meshes.size(); }
 
 const std::vector<uint32_t>& Scene::part_materials(uint32_t mesh) const { return data_->meshes.at(mesh).part_materials; }
 
-void Scene::add_light(const Light& light) { data_->lights.push_back(light); }
+void Scene::add_light(const Light& light) {
+  if (const std::optional<std::string> problem = light_problem(light))
+    throw std::invalid_argument("light " + std::to_string(data_->lights.size()) + ": " + *problem);
+  data_->lights.push_back(light);
+}
 void Scene::clear_lights() { data_->lights.clear(); }
 const std::vector<Light>& Scene::lights() const { return data_->lights; }
 

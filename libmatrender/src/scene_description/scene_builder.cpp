@@ -15,6 +15,7 @@
 #include "matgeom/mesh_io.h"
 #include "matrender/asset.h"
 #include "matrender/paper_setup.h"
+#include "matrender/scene_limits.h"
 #include "matrender/texture.h"
 
 namespace matrender {
@@ -130,13 +131,38 @@ void add_object(Scene& scene, const ObjectDescription& object, const matgeom::Ob
   }
 }
 
+// The lamps, listed or the paper's rig around the objects (whose lamps an object too large for
+// the scene limit would put beyond it).
 void add_lights(const LightsDescription& lights, BuiltScene& built) {
-  if (const auto* listed = std::get_if<std::vector<Light>>(&lights)) {
-    for (const Light& light : *listed) built.scene.add_light(light);
-    return;
+  const auto* listed = std::get_if<std::vector<Light>>(&lights);
+  try {
+    if (listed) {
+      for (const Light& light : *listed) built.scene.add_light(light);
+      return;
+    }
+    built.rig = paper_rig(built.bounds, std::get<LightRigDescription>(lights).target_illuminance_lux);
+    add_rig(built.scene, *built.rig);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(std::string(listed ? "lights: " : "light rig: ") + e.what());
   }
-  built.rig = paper_rig(built.bounds, std::get<LightRigDescription>(lights).target_illuminance_lux);
-  add_rig(built.scene, *built.rig);
+}
+
+// The object's mesh in world space, refused when the transform flattens it or moves it beyond
+// what single precision resolves.
+void place_object(const ObjectDescription& object, matgeom::TriangleMesh& mesh) {
+  // Checked in double precision first: a huge scale would overflow the float positions.
+  try {
+    for (size_t v = 0; v < mesh.positions.size(); ++v)
+      check_scene_point(glm::dvec3(object.object_to_world * glm::dvec4(glm::dvec3(mesh.positions[v]), 1.0)),
+                        "after its transform, vertex " + std::to_string(v));
+  } catch (const std::invalid_argument& e) {
+    throw object.origin.error("", e.what());
+  }
+  try {
+    matgeom::transform_mesh(mesh, object.object_to_world);
+  } catch (const std::invalid_argument&) {
+    throw object.origin.error("", "the transform flattens the object onto a plane, a line or a point (a zero scale?)");
+  }
 }
 
 glm::dmat4 camera_to_world(const CameraDescription& camera, const glm::dvec3& centroid) {
@@ -173,7 +199,7 @@ BuiltScene build_scene(const SceneDescription& description) {
   std::vector<matgeom::ObjectAsset> assets;
   for (const ObjectDescription& object : description.objects) {
     assets.push_back(load_object(object));
-    matgeom::transform_mesh(assets.back().mesh, object.object_to_world);
+    place_object(object, assets.back().mesh);
   }
   const matgeom::TriangleMesh surface = merged_surface(assets);
 
@@ -187,6 +213,11 @@ BuiltScene build_scene(const SceneDescription& description) {
   add_lights(description.lights, built);
   built.scene.set_background(description.background);
   built.camera = make_camera(description.camera, matgeom::surface_centroid(surface));
+  try {
+    check_scene_point(glm::dvec3(built.camera.camera_to_world[3]), "the camera");
+  } catch (const std::invalid_argument& e) {
+    throw InputError(std::string("camera: ") + e.what());
+  }
   built.frame_stem = frame_stem(description.camera);
   built.scene.commit();
   return built;

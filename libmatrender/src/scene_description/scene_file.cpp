@@ -20,6 +20,7 @@
 #include "matgeom/camera_grid.h"
 #include "matgeom/material_parameters.h"
 #include "matgeom/mesh_io.h"
+#include "lights/light_checks.h"
 
 namespace matrender {
 namespace {
@@ -371,6 +372,8 @@ LightsDescription read_lights(const Node& node) {
       case 1: lights.push_back(read_point_light(light)); break;
       default: lights.push_back(read_spot_light(light)); break;
     }
+    // Values each valid alone may still not render: a lamp 1e-300 m wide, a power of 1e308 W.
+    if (const std::optional<std::string> problem = light_problem(lights.back())) light.fail(*problem);
   }
   return lights;
 }
