@@ -19,6 +19,7 @@
 
 #include "file_error.h"
 #include "image_bytes.h"
+#include "matgeom/input_file.h"
 #include "matgeom/tangents.h"
 #include "matgeom/text.h"
 
@@ -63,8 +64,7 @@ void check_required_extensions(const GltfFile& file) {
 }
 
 GltfFile load_gltf(const std::string& path) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) fail(path, "no such file");
+  if (const std::optional<std::string> problem = input_file_problem(path)) fail(path, *problem);
 
   // The GLB magic decides the container; a .glb without it is not worth handing to the JSON
   // parser, whose error would be misleading.

@@ -7,6 +7,7 @@
 
 #include "matgeom/gltf_reader.h"
 #include "matgeom/gltf_writer.h"
+#include "matgeom/input_file.h"
 #include "matgeom/obj_io.h"
 #include "matgeom/ply_io.h"
 
@@ -32,6 +33,7 @@ const std::vector<std::string>& object_file_extensions() {
 }
 
 ObjectAsset read_object(const std::string& path) {
+  require_input_file(path);
   const std::string extension = lowercase_extension(path);
   if (extension == ".glb" || extension == ".gltf") return read_gltf(path);
   if (extension == ".obj") return read_obj(path);

@@ -21,6 +21,7 @@
 
 #include "file_error.h"
 #include "matgeom/atomic_file.h"
+#include "matgeom/input_file.h"
 
 // Reading a PLY file is three steps: the whole file is loaded and its header parsed into element
 // and property declarations, which are checked against the file size before anything is
@@ -41,6 +42,7 @@ std::string excerpt(std::string_view text) {
 }
 
 std::string load_file(const std::string& path) {
+  if (const std::optional<std::string> problem = input_file_problem(path)) fail(path, *problem);
   std::error_code error;
   const uintmax_t size = std::filesystem::file_size(path, error);
   if (error) fail(path, "cannot open the file (" + error.message() + ")");

@@ -3,11 +3,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 
 #include <tiny_gltf.h>
 
 #include "file_error.h"
 #include "image_bytes.h"
+#include "matgeom/input_file.h"
 #include "matgeom/text.h"
 #include "obj/obj_loading.h"
 
@@ -19,6 +21,8 @@ namespace {
 // from an OBJ has 4 channels.
 ImagePixels decode_texture(const std::string& obj_path, const TextureSource& source) {
   std::string bytes;
+  if (const std::optional<std::string> problem = input_file_problem(source.file.string()))
+    fail(obj_path, concat(source.what, ": cannot open texture ", source.file.string(), ": ", *problem));
   if (!read_whole_file(source.file, bytes)) {
     fail(obj_path, concat(source.what, ": cannot open texture ", source.file.string()));
   }

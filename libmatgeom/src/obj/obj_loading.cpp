@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "file_error.h"
+#include "matgeom/input_file.h"
 #include "matgeom/text.h"
 #include "obj/obj_text_screening.h"
 
@@ -66,7 +67,8 @@ class MaterialLibraries : public tinyobj::MaterialReader {
 
 ObjFile load_obj(const std::string& path) {
   std::string text;
-  if (!read_whole_file(path, text)) fail(path, "no such file");
+  if (const std::optional<std::string> problem = input_file_problem(path)) fail(path, *problem);
+  if (!read_whole_file(path, text)) fail(path, "cannot read the file");
   screen_obj_text(path, text);
 
   ObjFile file;

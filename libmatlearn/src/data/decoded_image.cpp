@@ -6,9 +6,12 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include "matgeom/input_file.h"
+
 namespace matlearn {
 
 Decoded decode(const std::filesystem::path& path) {
+  matgeom::require_input_file(path.string());
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
   auto in = OIIO::ImageInput::open(path.string(), &config);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "matgeom/atomic_file.h"
+#include "matgeom/input_file.h"
 
 namespace matlearn {
 namespace {
@@ -28,6 +29,7 @@ std::string shape_of(const torch::Tensor& t) {
 }  // namespace
 
 void load_state_dict(torch::nn::Module& module, const std::filesystem::path& path) {
+  matgeom::require_input_file(path.string());
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error("cannot open " + path.string());
   const std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

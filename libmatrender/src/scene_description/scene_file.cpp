@@ -16,11 +16,12 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
+#include "lights/light_checks.h"
 #include "matgeom/builtin_objects.h"
 #include "matgeom/camera_grid.h"
+#include "matgeom/input_file.h"
 #include "matgeom/material_parameters.h"
 #include "matgeom/mesh_io.h"
-#include "lights/light_checks.h"
 
 namespace matrender {
 namespace {
@@ -558,6 +559,7 @@ void read_render(const Node& node, SceneDescription& scene) {
 }
 
 json parse_json_file(const std::string& path) {
+  if (const std::optional<std::string> problem = matgeom::input_file_problem(path)) throw InputError(path + ": " + *problem);
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open: " + std::strerror(errno));
   try {

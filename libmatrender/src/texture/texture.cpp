@@ -1,5 +1,4 @@
 #include "matrender/texture.h"
-#include "matgeom/srgb.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,6 +6,8 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include "matgeom/input_file.h"
+#include "matgeom/srgb.h"
 
 namespace matrender {
 namespace {
@@ -71,6 +72,7 @@ std::shared_ptr<const Texture> Texture::from_pixels8(int width, int height, int 
 }
 
 std::shared_ptr<const Texture> Texture::load(const std::string& path, ColorSpace space, Wrap wrap) {
+  matgeom::require_input_file(path);
   // Straight colour as stored (Cycles' default alpha mode); OpenImageIO would premultiply.
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);

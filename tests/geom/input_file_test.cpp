@@ -1,0 +1,46 @@
+// Readers refuse paths that are not regular files before opening them: a device or a FIFO can
+// block a reader or feed it forever.
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <stdexcept>
+
+#include <sys/stat.h>
+
+#include "matgeom/input_file.h"
+#include "matgeom/gltf_reader.h"
+#include "matgeom/mesh_io.h"
+#include "matgeom/obj_io.h"
+#include "matgeom/ply_io.h"
+#include "temp_dir.h"
+
+using Catch::Matchers::Contains;
+
+TEST_CASE("Only regular files are input files", "[geom]") {
+  const TempDir dir;
+  const std::string file = dir.file("mesh.obj");
+  std::ofstream(file) << "v 0 0 0\n";
+  CHECK_FALSE(matgeom::input_file_problem(file));
+  CHECK(matgeom::input_file_problem(dir.file("missing.obj")) == std::string("no such file"));
+  CHECK(matgeom::input_file_problem(dir.path().string()) == std::string("is a directory, not a file"));
+  CHECK_THAT(*matgeom::input_file_problem("/dev/zero"), Contains("not a regular file"));
+  const std::string fifo = dir.file("fifo.obj");
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  CHECK_THAT(*matgeom::input_file_problem(fifo), Contains("not a regular file"));
+}
+
+TEST_CASE("Every mesh reader refuses a FIFO or a device without opening it", "[geom]") {
+  // Opening a FIFO for reading blocks until a writer comes: reaching the check at all shows the
+  // reader did not open it.
+  const TempDir dir;
+  const std::string fifo = dir.file("fifo");
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  for (const std::string& path : {fifo, std::string("/dev/zero")}) {
+    CAPTURE(path);
+    // (Catch2's combined matchers hold references to their parts: each is written out.)
+    CHECK_THROWS_WITH(matgeom::read_object(path), Contains(path + ": ") && Contains("not a regular file"));
+    CHECK_THROWS_WITH(matgeom::read_obj(path), Contains(path + ": ") && Contains("not a regular file"));
+    CHECK_THROWS_WITH(matgeom::read_gltf(path), Contains(path + ": ") && Contains("not a regular file"));
+    CHECK_THROWS_WITH(matgeom::read_ply(path), Contains(path + ": ") && Contains("not a regular file"));
+  }
+}
