@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "common/progress_bar.h"
+#include "common/thread_count.h"
 #include "matlearn/dataset_index.h"
 #include "matlearn/evaluation/evaluator.h"
 #include "matlearn/evaluation/inference.h"
@@ -108,7 +109,7 @@ int run(const Options& o) {
   matlearn::EvaluationSettings settings;
   settings.convention = o.paper_compat ? matlearn::MetricConvention::paper_compat : matlearn::MetricConvention::correct;
   settings.batch_size = o.batch_size;
-  settings.threads = o.threads;
+  settings.threads = app_support::announced_worker_threads("evaluate", "--threads", o.threads);
   app_support::ProgressBar bar("evaluate");
   const matlearn::EvaluationResult result = matlearn::evaluate_samples(
       *model, header, o.dataset_root, samples, settings,
@@ -167,7 +168,9 @@ int main(int argc, char** argv) {
   app.add_flag("--paper-compat", o.paper_compat, "image-similarity-measures' conventions (8-bit, max_p 4095, its SAM), to compare with the paper");
   app.add_option("--output-dir", o.output_dir, "folder for the tables and panels")->capture_default_str();
   app.add_option("--batch-size", o.batch_size, "samples per forward pass")->check(CLI::PositiveNumber)->capture_default_str();
-  app.add_option("--threads", o.threads, "torch and decoding threads (0: all cores)")->capture_default_str();
+  app.add_option("--threads", o.threads, "torch and decoding threads (0: all cores; more than the machine has are capped)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

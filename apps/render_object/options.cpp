@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "common/thread_count.h"
 #include "matgeom/builtin_objects.h"
 #include "matrender/camera.h"
 #include "matrender/paper_setup.h"
@@ -251,7 +252,7 @@ void add_run_options(CLI::App& app, Options& o) {
            require(threads >= 0, "--threads", "an integer >= 0");
            o.threads = threads;
          },
-         "render threads, 0 = all hardware threads (the image does not depend on it)")
+         "render threads, 0 = all hardware threads, more are capped to them (the image does not depend on it)")
       ->default_str("0")
       ->group(group);
   app.add_option_function<std::string>(
@@ -341,7 +342,7 @@ void apply_render_options(const Options& o, SceneDescription& scene) {
   if (o.seed) s.seed = *o.seed;
   if (o.transparent) s.transparent_background = true;
   if (o.exposure) scene.exposure_stops = *o.exposure;
-  s.threads = o.threads;
+  s.threads = app_support::announced_worker_threads("render_object", "--threads", o.threads);
   s.aovs = o.aovs;
 }
 

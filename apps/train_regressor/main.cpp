@@ -9,6 +9,7 @@
 
 #include "common/interrupt.h"
 #include "common/progress_bar.h"
+#include "common/thread_count.h"
 #include "example_dataset.h"
 #include "matgeom/atomic_file.h"
 #include "matlearn/models/regressor.h"
@@ -86,6 +87,8 @@ int train(Options options, bool example) {
     return 0;
   }
   matlearn::Trainer trainer(config);
+  // Says so when the request is more than the machine has; the trainer caps it the same way.
+  app_support::announced_worker_threads("train_regressor", "--threads", config.threads);
   const std::filesystem::path last = config.output_dir / "checkpoints" / "last.pt";
   const std::string pretrained = settings.at("pretrained_model");
   if (options.resume || !pretrained.empty()) {

@@ -51,7 +51,7 @@ const std::vector<Setting>& settings_table() {
       {"epochs", "50", "epochs to train"},
       {"batch_size", "8", "samples per step"},
       {"image_size", "224", "side the samples are resized to"},
-      {"threads", "0", "torch and decoding threads (0: all cores; libtorch alone would use 1)"},
+      {"threads", "0", "torch and decoding threads (0: all cores, more are capped to them; libtorch alone would use 1)"},
       {"seed", "42", "seed of the initial weights, the split and the sample order"},
       {"validate_every", "1", "epochs between validations (the last epoch is always validated)"},
       {"pretrained_model", "", "checkpoint to continue from (as the repository's option)"},

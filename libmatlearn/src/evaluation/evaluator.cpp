@@ -1,7 +1,6 @@
 #include "matlearn/evaluation/evaluator.h"
 
-#include <thread>
-
+#include "matgeom/threads.h"
 #include "matlearn/sample_loader.h"
 #include "matlearn/training/batch.h"
 #include "matlearn/training/loss.h"
@@ -21,7 +20,7 @@ int count(const Mask& mask) {
 EvaluationResult evaluate_samples(RegressorImpl& model, const CheckpointHeader& header, const std::filesystem::path& root,
                                   const std::vector<SampleId>& samples, const EvaluationSettings& settings,
                                   const std::function<void(size_t, size_t)>& progress) {
-  const int threads = settings.threads > 0 ? settings.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads = matgeom::worker_threads(settings.threads);
   use_tensor_memory_cache();
   torch::set_num_threads(threads);
   LoaderSettings loader_settings;

@@ -4,9 +4,9 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
-#include <thread>
 
 #include "matgeom/atomic_file.h"
+#include "matgeom/threads.h"
 #include "matlearn/models/state_dict.h"
 #include "matlearn/sample_loader.h"
 #include "matlearn/training/batch.h"
@@ -29,17 +29,13 @@ uint64_t step_seed(uint64_t seed, int epoch, size_t step) {
   return mix(mix(seed ^ mix(static_cast<uint64_t>(epoch))) ^ static_cast<uint64_t>(step));
 }
 
-int thread_count(int threads) {
-  return threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-}
-
 LoaderSettings loader_settings(const TrainingConfig& c, bool shuffle) {
   LoaderSettings s;
   s.sample = sample_settings(c.layout, c.image_size, c.linear_albedo);
   s.batch_size = c.batch_size;
   s.shuffle = shuffle;
   s.seed = c.seed;
-  s.threads = thread_count(c.threads);
+  s.threads = matgeom::worker_threads(c.threads);
   return s;
 }
 
@@ -57,6 +53,7 @@ void validate_config(const TrainingConfig& c) {
   if (c.train_samples.empty()) throw std::invalid_argument("no training samples");
   if (c.epochs < 1 || c.batch_size < 1 || c.validate_every < 1)
     throw std::invalid_argument("epochs, batch size and validation interval must be at least 1");
+  if (c.threads < 0) throw std::invalid_argument("threads must be >= 0 (0: every hardware thread)");
   if (c.image_size < network.side_multiple || c.image_size % network.side_multiple != 0)
     throw std::invalid_argument(network.name + " needs an image size that is a multiple of " +
                                 std::to_string(network.side_multiple) + " (got " + std::to_string(c.image_size) + ")");
@@ -87,7 +84,7 @@ std::string csv_header(const OutputLayout& layout) {
 Trainer::Trainer(TrainingConfig config) : config_(std::move(config)) {
   validate_config(config_);
   use_tensor_memory_cache();
-  torch::set_num_threads(thread_count(config_.threads));
+  torch::set_num_threads(matgeom::worker_threads(config_.threads));
   torch::manual_seed(config_.seed);
   model_ = make_regressor(architecture_named(config_.network).architecture, config_.layout.output_channels(),
                           config_.width_divisor);

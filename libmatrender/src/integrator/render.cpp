@@ -17,8 +17,9 @@
 #include "film/camera_rays.h"
 #include "film/pixel_filter.h"
 #include "integrator/path_tracer.h"
-#include "matrender/scene_limits.h"
 #include "lights/light_sampler.h"
+#include "matgeom/threads.h"
+#include "matrender/scene_limits.h"
 #include "sampling/pixel_sampler.h"
 #include "scene/scene_data.h"
 #include "util/finite.h"
@@ -182,7 +183,7 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
     }
   };
 
-  tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
+  tbb::task_arena arena(matgeom::worker_threads(settings.threads));
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles.size(), 1), [&](const tbb::blocked_range<size_t>& range) {
       for (size_t t = range.begin(); t != range.end(); ++t) {

@@ -1,5 +1,5 @@
-// Readers refuse paths that are not regular files before opening them: a device or a FIFO can
-// block a reader or feed it forever.
+// Inputs the shared helpers guard against: paths that are not regular files (a device or a FIFO
+// can block a reader or feed it forever) and thread counts beyond the machine.
 #include <catch2/catch.hpp>
 
 #include <fstream>
@@ -12,6 +12,7 @@
 #include "matgeom/mesh_io.h"
 #include "matgeom/obj_io.h"
 #include "matgeom/ply_io.h"
+#include "matgeom/threads.h"
 #include "temp_dir.h"
 
 using Catch::Matchers::Contains;
@@ -43,4 +44,13 @@ TEST_CASE("Every mesh reader refuses a FIFO or a device without opening it", "[g
     CHECK_THROWS_WITH(matgeom::read_gltf(path), Contains(path + ": ") && Contains("not a regular file"));
     CHECK_THROWS_WITH(matgeom::read_ply(path), Contains(path + ": ") && Contains("not a regular file"));
   }
+}
+
+TEST_CASE("Thread requests beyond the machine are capped to it", "[geom]") {
+  const int hardware = matgeom::hardware_threads();
+  CHECK(hardware >= 1);
+  CHECK(matgeom::worker_threads(0) == hardware);
+  CHECK(matgeom::worker_threads(1) == 1);
+  CHECK(matgeom::worker_threads(1000000) == hardware);
+  CHECK_THROWS_AS(matgeom::worker_threads(-1), std::invalid_argument);
 }
