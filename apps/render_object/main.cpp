@@ -28,7 +28,6 @@ namespace {
 
 constexpr int kRuntimeFailure = 1;
 constexpr int kInputError = 2;
-constexpr int kInterrupted = 130;  // 128 + SIGINT, what shells report for a Ctrl-C
 
 int report_error(const std::string& message, int exit_code) {
   std::fprintf(stderr, "render_object: %s\n", message.c_str());
@@ -70,7 +69,7 @@ int render_and_write(const Options& options) {
   matrender::FrameBuffers frame;
   const matrender::RenderStats stats = matrender::render(built.scene, built.camera, settings, frame);
   progress.finish();
-  if (stats.cancelled) return report_error("interrupted; nothing written", kInterrupted);
+  if (stats.cancelled) return report_error("interrupted; nothing written", app_support::interrupted_exit_code());
 
   const std::vector<std::string> files =
       matrender::write_frame(frame, options.output_folder, built.frame_stem, description.exposure_stops);
@@ -92,7 +91,7 @@ int main(int argc, char** argv) {
                "built-in vase under the paper's light rig into ./render_out/.",
                "render_object"};
   app.footer("Command-line camera and render options override the scene file's values. Exit codes: 0 done, "
-             "1 render or write failure, 2 bad option or input, 130 interrupted (Ctrl-C; nothing is written).");
+             "1 render or write failure, 2 bad option or input, 130 or 143 interrupted by Ctrl-C or SIGTERM (nothing is written).");
   Options options;
   add_options(app, options);
   try {

@@ -125,7 +125,7 @@ int train(Options options, bool example) {
     if (bar) bar->finish();
     fmt::print(stderr, "train_regressor: interrupted; {} holds epoch {} (continue with --resume)\n", last.string(),
                trainer.epochs_done());
-    return 130;
+    return app_support::interrupted_exit_code();
   }
   fmt::print("wrote {}: checkpoints/last.pt{}, log.csv (one row per epoch), config.yaml (the settings)\n",
              config.output_dir.string(),

@@ -143,3 +143,29 @@ TEST_CASE("Changing lamps re-renders without a BVH rebuild; progress and cancel 
   FrameBuffers cancelled;
   CHECK(render(scene, camera, settings, cancelled).cancelled);
 }
+
+TEST_CASE("At millions of samples per pixel, progress comes within a pixel and a cancel stops it at once", "[render]") {
+  Scene scene;
+  scene.add_mesh(test_scenes::horizontal_square(1.0), {scene.add_material(test_scenes::lambert(0.5f))});
+  scene.add_light(PointLight{glm::dvec3(0, 0, 1), 10.0, glm::dvec3(1.0)});
+  const Camera camera = Camera::look_at({0, 0, 2}, {0, 0, 0}, {0, 1, 0}, 0.5, 4, 4);
+  RenderSettings settings;
+  settings.samples_per_pixel = 1 << 24;  // 268 M samples in all: minutes of work
+  settings.threads = 2;
+  std::atomic<bool> cancel{false};
+  double first_progress = 0.0;
+  settings.cancel = &cancel;
+  // The first report cancels: it must come long before any pixel, let alone a tile, is done.
+  settings.progress = [&](double fraction) {
+    if (first_progress == 0.0) first_progress = fraction;
+    cancel = true;
+  };
+  FrameBuffers frame;
+  const RenderStats stats = render(scene, camera, settings, frame);
+  CHECK(stats.cancelled);
+  CHECK(first_progress > 0.0);
+  CHECK(first_progress < 1e-3);
+  // Each thread stops at its next packet of 16 samples after the flag is set: at most a progress
+  // interval (65,536 samples) per thread, plus a packet, are taken.
+  CHECK(stats.camera_samples <= 2u * (65536u + 16u) + 65536u);
+}

@@ -20,10 +20,11 @@ struct RenderSettings {
   int max_glossy_bounces = 4;
   bool transparent_background = false;  // camera rays that miss give 0 instead of the background
   uint32_t aovs = default_aovs();
-  // Called with the finished fraction in [0, 1] after each tile, from a render thread; calls are
-  // serialised and the fraction never decreases.
+  // Called with the finished fraction of all samples in [0, 1], from a render thread, every 65,536
+  // samples a thread takes and when a tile ends; calls are serialised and the fraction increases.
   std::function<void(double)> progress;
-  // Checked between tiles; when it becomes true the render stops and reports cancelled.
+  // Checked at every packet of 16 samples; when it becomes true the render stops within
+  // milliseconds and reports cancelled (the frame is then incomplete).
   const std::atomic<bool>* cancel = nullptr;
 };
 

@@ -89,17 +89,37 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
   frame.transparent_background = settings.transparent_background;
   const std::vector<Tile> tiles = make_tiles(camera.width, camera.height);
   std::atomic<uint64_t> ray_count{0}, discarded{0}, samples{0};
-  std::atomic<size_t> tiles_done{0};
   std::atomic<bool> cancelled{false};
-  std::mutex progress_mutex;
   const uint32_t spp = static_cast<uint32_t>(settings.samples_per_pixel);
+  const uint64_t total_samples = static_cast<uint64_t>(camera.width) * static_cast<uint64_t>(camera.height) * spp;
+  // Samples are counted, and progress reported, every kProgressSamples samples a thread takes,
+  // not per tile: at millions of samples per pixel one tile takes minutes.
+  constexpr uint64_t kProgressSamples = 1u << 16;
+  std::mutex progress_mutex;
+  double reported_fraction = 0.0;
+  auto count_samples = [&](uint64_t new_samples) {
+    const uint64_t done = samples.fetch_add(new_samples) + new_samples;
+    if (!settings.progress) return;
+    std::lock_guard<std::mutex> lock(progress_mutex);
+    const double fraction = static_cast<double>(done) / static_cast<double>(total_samples);
+    if (fraction <= reported_fraction) return;
+    reported_fraction = fraction;
+    settings.progress(fraction);
+  };
+  // Checked at every packet of samples, so that a cancel takes effect within milliseconds.
+  auto cancel_requested = [&] {
+    if (cancelled.load(std::memory_order_relaxed)) return true;
+    if (!settings.cancel || !settings.cancel->load(std::memory_order_relaxed)) return false;
+    cancelled = true;
+    return true;
+  };
   // Without AOVs beyond alpha a pixel only counts its hits.
   const bool surface_aovs = (settings.aovs & ~static_cast<uint32_t>(AovAlpha)) != 0;
   std::vector<const matgeom::MaterialParameterInfo*> parameter_aovs;
   for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters)
     if (settings.aovs & parameter_aov(info.id)) parameter_aovs.push_back(&info);
 
-  auto render_pixel = [&](int x, int y, uint64_t& tile_rays, uint64_t& tile_discarded) {
+  auto render_pixel = [&](int x, int y, uint64_t& tile_rays, uint64_t& tile_discarded, uint64_t& uncounted_samples) {
     const uint32_t pixel_index = static_cast<uint32_t>(y) * static_cast<uint32_t>(camera.width) + static_cast<uint32_t>(x);
     PixelAccumulator acc;
     const PixelSeeds seeds(pixel_index, settings.seed);
@@ -108,7 +128,13 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
     glm::vec3 dirs[kPacketSamples];
     RayHit camera_hits[kPacketSamples];
     for (uint32_t first = 0; first < spp; first += kPacketSamples) {
+      if (cancel_requested()) return;
       const int count = static_cast<int>(std::min<uint32_t>(kPacketSamples, spp - first));
+      uncounted_samples += static_cast<uint64_t>(count);
+      if (uncounted_samples >= kProgressSamples) {
+        count_samples(uncounted_samples);
+        uncounted_samples = 0;
+      }
       const SamplePacket packet(seeds, first);
       for (int lane = 0; lane < count; ++lane) {
         offsets[lane] = filter.sample(packet.point(0, lane));
@@ -170,27 +196,19 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
   };
 
   auto render_tile = [&](const Tile& tile) {
-    uint64_t tile_rays = 0, tile_discarded = 0;
+    uint64_t tile_rays = 0, tile_discarded = 0, uncounted_samples = 0;
     for (int y = tile.y0; y < tile.y1; ++y)
-      for (int x = tile.x0; x < tile.x1; ++x) render_pixel(x, y, tile_rays, tile_discarded);
+      for (int x = tile.x0; x < tile.x1; ++x) render_pixel(x, y, tile_rays, tile_discarded, uncounted_samples);
     ray_count += tile_rays;
     discarded += tile_discarded;
-    samples += static_cast<uint64_t>(tile.x1 - tile.x0) * static_cast<uint64_t>(tile.y1 - tile.y0) * spp;
-    ++tiles_done;
-    if (settings.progress) {
-      std::lock_guard<std::mutex> lock(progress_mutex);
-      settings.progress(static_cast<double>(tiles_done.load()) / static_cast<double>(tiles.size()));
-    }
+    count_samples(uncounted_samples);
   };
 
   tbb::task_arena arena(matgeom::worker_threads(settings.threads));
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles.size(), 1), [&](const tbb::blocked_range<size_t>& range) {
       for (size_t t = range.begin(); t != range.end(); ++t) {
-        if (settings.cancel && settings.cancel->load()) {
-          cancelled = true;
-          return;
-        }
+        if (cancel_requested()) return;
         render_tile(tiles[t]);
       }
     });
