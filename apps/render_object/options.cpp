@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <variant>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include "common/thread_count.h"
 #include "matgeom/builtin_objects.h"
 #include "matrender/camera.h"
+#include "matrender/image_io.h"
 #include "matrender/paper_setup.h"
 #include "matrender/render.h"
 #include "matrender/scene_file.h"
@@ -223,7 +225,13 @@ void add_render_options(CLI::App& app, Options& o) {
       ->default_str(std::to_string(settings.seed))
       ->group(group);
   app.add_option_function<double>(
-         "--exposure", [&o](const double& stops) { o.exposure = stops; }, "display PNG exposure in stops")
+         "--exposure",
+         [&o](const double& stops) {
+           require(std::abs(stops) <= matrender::kMaxExposureStops, "--exposure",
+                   fmt::format("a number of stops in [{}, {}]", -matrender::kMaxExposureStops, matrender::kMaxExposureStops));
+           o.exposure = stops;
+         },
+         "display PNG exposure in stops")
       ->default_str("0")
       ->group(group);
   app.add_option_function<double>(

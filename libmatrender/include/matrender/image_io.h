@@ -12,6 +12,10 @@ namespace matrender {
 void write_exr(const std::string& path, int width, int height,
                const std::vector<std::string>& channels, const float* data);
 
+// The exposure a display image takes, in stops: 2^exposure scales floats, and beyond 2^+-126 the
+// image would be all black or all white.
+constexpr double kMaxExposureStops = 126.0;
+
 // 8-bit PNG from linear RGB(A): exposure in stops, then the sRGB OETF ("Standard" view), clipped.
 // `alpha` may be null. Colour is premultiplied by alpha in the input, as rendered, and written
 // un-premultiplied (PNG's straight alpha).

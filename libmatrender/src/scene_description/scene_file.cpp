@@ -11,6 +11,7 @@
 #include <initializer_list>
 #include <limits>
 #include <optional>
+#include <set>
 
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -22,6 +23,7 @@
 #include "matgeom/input_file.h"
 #include "matgeom/material_parameters.h"
 #include "matgeom/mesh_io.h"
+#include "matrender/image_io.h"
 
 namespace matrender {
 namespace {
@@ -441,7 +443,8 @@ MaterialDescription read_material(const Node& node, const std::string& name, con
     material.normal_map = read_texture_file(*n, folder, ColorSpace::NonColor);
     if (auto strength = n->find("strength")) m.normal_strength = static_cast<float>(strength->non_negative());
   }
-  if (auto n = node.find("label_id")) m.label_id = n->integer_at_least(0);
+  // Label AOVs are 16-bit PNGs.
+  if (auto n = node.find("label_id")) m.label_id = n->integer_in(0, 65535);
   if (auto n = node.find("diffuse_model"))
     m.diffuse_model = n->choice({"principled", "lambert"}) == 0 ? DiffuseModel::Principled
                                                                 : DiffuseModel::Lambert;
@@ -554,7 +557,9 @@ void read_render(const Node& node, SceneDescription& scene) {
   if (auto n = node.find("max_bounces")) s.max_bounces = n->integer_at_least(0);
   if (auto n = node.find("max_diffuse_bounces")) s.max_diffuse_bounces = n->integer_at_least(0);
   if (auto n = node.find("max_glossy_bounces")) s.max_glossy_bounces = n->integer_at_least(0);
-  if (auto n = node.find("exposure")) scene.exposure_stops = n->number();
+  if (auto n = node.find("exposure"))
+    scene.exposure_stops = n->number_where([](double v) { return std::abs(v) <= kMaxExposureStops; },
+                                           fmt::format("a number of stops in [{}, {}]", -kMaxExposureStops, kMaxExposureStops));
   if (auto n = node.find("transparent_background")) s.transparent_background = n->boolean();
 }
 
@@ -562,8 +567,55 @@ json parse_json_file(const std::string& path) {
   if (const std::optional<std::string> problem = matgeom::input_file_problem(path)) throw InputError(path + ": " + *problem);
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open: " + std::strerror(errno));
+  // nlohmann keeps the last of two equal keys in an object; a scene file that says a value twice
+  // is a mistake to report, not to resolve. The parser's events are followed with one frame per
+  // open object or array, enough to name the repeated key's JSON pointer.
+  struct OpenContainer {
+    bool array = false;
+    size_t index = 0;  // arrays: the element being read
+    std::string key;   // objects: the member being read
+    std::set<std::string> keys;
+  };
+  std::vector<OpenContainer> open;
+  std::string duplicate_pointer;
+  const auto pointer_to_member = [&](const std::string& key) {
+    std::string pointer;
+    for (size_t k = 0; k + 1 < open.size(); ++k)
+      pointer += "/" + (open[k].array ? std::to_string(open[k].index) : pointer_token(open[k].key));
+    return pointer + "/" + pointer_token(key);
+  };
+  const auto element_done = [&] {
+    if (!open.empty() && open.back().array) ++open.back().index;
+  };
+  const json::parser_callback_t find_duplicates = [&](int /*depth*/, json::parse_event_t event, json& parsed) {
+    switch (event) {
+      case json::parse_event_t::object_start: open.push_back({false, 0, "", {}}); break;
+      case json::parse_event_t::array_start: open.push_back({true, 0, "", {}}); break;
+      case json::parse_event_t::object_end:
+      case json::parse_event_t::array_end:
+        open.pop_back();
+        element_done();
+        break;
+      case json::parse_event_t::key:
+        open.back().key = parsed.get<std::string>();
+        if (!open.back().keys.insert(open.back().key).second && duplicate_pointer.empty())
+          duplicate_pointer = pointer_to_member(open.back().key);
+        break;
+      case json::parse_event_t::value: element_done(); break;
+    }
+    return true;
+  };
   try {
-    return json::parse(in);
+    json document = json::parse(in, find_duplicates);
+    if (!duplicate_pointer.empty()) throw InputError(path + ": " + duplicate_pointer + ": this key appears twice in its object");
+    return document;
+  } catch (const json::out_of_range& e) {
+    // A number beyond a double ("1e309"): nlohmann says "number overflow parsing '1e309'".
+    const std::string what = e.what();
+    const size_t quote = what.find('\'');
+    throw InputError(path + ": not valid JSON: the number " +
+                     (quote == std::string::npos ? std::string("") : what.substr(quote) + " ") +
+                     "is too large for a double");
   } catch (const json::parse_error& e) {
     // Drop nlohmann's "[json.exception.parse_error.101] " prefix; the rest names line and column.
     const std::string what = e.what();
