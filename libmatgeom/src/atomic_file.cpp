@@ -56,11 +56,23 @@ AtomicFileSet::~AtomicFileSet() {
 }
 
 void AtomicFileSet::stage(const fs::path& destination, std::string_view bytes) {
+  stage_with(destination, [&](const fs::path& temporary) { write_bytes(temporary, named_, bytes); });
+}
+
+void AtomicFileSet::stage_with(const fs::path& destination, const std::function<void(const fs::path& temporary)>& write) {
+  // Recorded first, so that the destructor removes the temporary whatever `write` leaves.
   staged_.push_back({destination, temporary_path(destination), false});
-  write_bytes(staged_.back().temporary, named_, bytes);
+  write(staged_.back().temporary);
 }
 
 void AtomicFileSet::commit() {
+  // A directory in the way would stop the renames halfway: refuse before the first.
+  for (size_t i = committed_; i < staged_.size(); ++i) {
+    std::error_code error;
+    if (fs::is_directory(staged_[i].destination, error))
+      throw std::runtime_error(named_.string() + ": cannot write " + staged_[i].destination.string() +
+                               ": a directory of that name is in the way");
+  }
   for (; committed_ < staged_.size(); ++committed_) {
     Staged& file = staged_[committed_];
     std::error_code error;

@@ -27,10 +27,11 @@ void write_atomically(const std::filesystem::path& path,
 // `bytes` as the whole of the file `path`; std::runtime_error starting with `path` on failure.
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
 
-// Several files that must appear together (an OBJ with its MTL and textures): each staged under
-// its temporary name, then all renamed by commit() in staging order, so the one staged last (the
-// file readers open first) appears last. If a rename fails, the files this commit created are
-// removed again; the destructor removes whatever was staged and not committed.
+// Several files that must appear together (an OBJ with its MTL and textures, a view's images):
+// each staged under its temporary name, then all renamed by commit() in staging order, so the one
+// staged last (the file readers open first) appears last. commit() first checks that no
+// destination is a directory; if a rename fails, the files this commit created are removed
+// again; the destructor removes whatever was staged and not committed.
 class AtomicFileSet {
  public:
   // `named`: the path errors start with (the file the set is written for).
@@ -41,6 +42,10 @@ class AtomicFileSet {
 
   // Writes `bytes` to the temporary of `destination`; std::runtime_error on failure.
   void stage(const std::filesystem::path& destination, std::string_view bytes);
+  // Calls write(temporary) to write the temporary of `destination` (for writers that open files
+  // themselves, such as image libraries); its exceptions pass through, the temporary removed.
+  void stage_with(const std::filesystem::path& destination,
+                  const std::function<void(const std::filesystem::path& temporary)>& write);
   // std::runtime_error naming the file that could not be renamed.
   void commit();
 

@@ -16,35 +16,43 @@ namespace {
 
 namespace fs = std::filesystem;
 
-void write_image_atomically(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc type,
-                            const void* pixels) {
-  matgeom::write_atomically(path, [&](const fs::path& temporary) {
+// Writes the image to a temporary beside `path`, then renames it, or stages it into `set`.
+void write_image(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc type, const void* pixels,
+                 matgeom::AtomicFileSet* set) {
+  const auto write = [&](const fs::path& temporary) {
     auto output = OIIO::ImageOutput::create(path);
     if (!output) throw std::runtime_error(path + ": no image writer for this extension: " + OIIO::geterror());
     if (!output->open(temporary.string(), spec))
       throw std::runtime_error(path + ": cannot open for writing: " + output->geterror());
     const bool written = output->write_image(type, pixels);
-    const std::string error = written ? "" : output->geterror();
-    output->close();
-    if (!written) throw std::runtime_error(path + ": cannot write image: " + error);
-  });
+    const std::string write_error = written ? "" : output->geterror();
+    // close() flushes: a full disk may show only here.
+    const bool closed = output->close();
+    if (!written) throw std::runtime_error(path + ": cannot write image: " + write_error);
+    if (!closed) throw std::runtime_error(path + ": cannot finish writing the image: " + output->geterror());
+  };
+  if (set) {
+    set->stage_with(path, write);
+  } else {
+    matgeom::write_atomically(path, write);
+  }
 }
 
 }  // namespace
 
 void write_exr(const std::string& path, int width, int height, const std::vector<std::string>& channels,
-               const float* data) {
+               const float* data, matgeom::AtomicFileSet* set) {
   OIIO::ImageSpec spec(width, height, static_cast<int>(channels.size()), OIIO::TypeDesc::FLOAT);
   spec.channelnames = channels;
   spec.alpha_channel = -1;
   for (size_t c = 0; c < channels.size(); ++c)
     if (channels[c] == "A") spec.alpha_channel = static_cast<int>(c);
   spec.attribute("compression", "zip");
-  write_image_atomically(path, spec, OIIO::TypeDesc::FLOAT, data);
+  write_image(path, spec, OIIO::TypeDesc::FLOAT, data, set);
 }
 
 void write_display_png(const std::string& path, int width, int height, const float* rgb, const float* alpha,
-                       double exposure_stops) {
+                       double exposure_stops, matgeom::AtomicFileSet* set) {
   const int channels = alpha ? 4 : 3;
   const double gain = std::exp2(exposure_stops);
   std::vector<uint8_t> pixels(static_cast<size_t>(width) * height * channels);
@@ -61,11 +69,11 @@ void write_display_png(const std::string& path, int width, int height, const flo
   }
   OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::UINT8);
   spec.attribute("oiio:UnassociatedAlpha", 1);  // already straight: OpenImageIO must not divide again
-  write_image_atomically(path, spec, OIIO::TypeDesc::UINT8, pixels.data());
+  write_image(path, spec, OIIO::TypeDesc::UINT8, pixels.data(), set);
 }
 
 void write_data_png(const std::string& path, int width, int height, int channels, const float* data, double scale,
-                    double offset, bool sixteen_bit) {
+                    double offset, bool sixteen_bit, matgeom::AtomicFileSet* set) {
   const size_t n = static_cast<size_t>(width) * height * channels;
   std::vector<uint16_t> pixels(n);
   const double max_value = sixteen_bit ? 65535.0 : 255.0;
@@ -73,24 +81,25 @@ void write_data_png(const std::string& path, int width, int height, int channels
   OIIO::ImageSpec spec(width, height, channels, sixteen_bit ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
   spec.attribute("oiio:UnassociatedAlpha", 1);  // a fourth channel is data: written verbatim
   if (sixteen_bit) {
-    write_image_atomically(path, spec, OIIO::TypeDesc::UINT16, pixels.data());
+    write_image(path, spec, OIIO::TypeDesc::UINT16, pixels.data(), set);
   } else {
     std::vector<uint8_t> narrow(pixels.begin(), pixels.end());
-    write_image_atomically(path, spec, OIIO::TypeDesc::UINT8, narrow.data());
+    write_image(path, spec, OIIO::TypeDesc::UINT8, narrow.data(), set);
   }
 }
 
-std::vector<std::string> write_frame(const FrameBuffers& frame, const std::string& folder, const std::string& stem,
-                                     double exposure_stops) {
-  std::error_code ec;
-  fs::create_directories(folder, ec);
-  if (ec) throw std::runtime_error(folder + ": cannot create the output folder: " + ec.message());
+namespace {
+
+std::vector<std::string> write_frame_files(const FrameBuffers& frame, const std::string& folder,
+                                           const std::string& stem, double exposure_stops) {
   const int w = frame.width, h = frame.height;
   const size_t n = static_cast<size_t>(w) * h;
   std::vector<std::string> written;
   auto file = [&](const std::string& pass, const std::string& ext) {
     return (fs::path(folder) / (stem + "_" + pass + "." + ext)).string();
   };
+  // A view's files appear together or not at all.
+  matgeom::AtomicFileSet set(fs::path(folder) / stem);
 
   // Colour: RGBA EXR and display PNG. As with Cycles' film, alpha is the coverage only for a
   // transparent background; over an opaque background every pixel is opaque (A = 1).
@@ -101,18 +110,18 @@ std::vector<std::string> write_frame(const FrameBuffers& frame, const std::strin
     rgba[4 * i + 3] = with_alpha ? frame.alpha[i] : 1.0f;
   }
   written.push_back(file("color", "exr"));
-  write_exr(written.back(), w, h, {"R", "G", "B", "A"}, rgba.data());
+  write_exr(written.back(), w, h, {"R", "G", "B", "A"}, rgba.data(), &set);
   written.push_back(file("color", "png"));
   write_display_png(written.back(), w, h, frame.color.data(), with_alpha ? frame.alpha.data() : nullptr,
-                    exposure_stops);
+                    exposure_stops, &set);
 
   auto write_float_pass = [&](const std::string& pass, const std::vector<float>& data, int channels,
                               const std::vector<std::string>& names, double png_scale, double png_offset) {
     if (data.empty()) return;
     written.push_back(file(pass, "exr"));
-    write_exr(written.back(), w, h, names, data.data());
+    write_exr(written.back(), w, h, names, data.data(), &set);
     written.push_back(file(pass, "png"));
-    write_data_png(written.back(), w, h, channels, data.data(), png_scale, png_offset, false);
+    write_data_png(written.back(), w, h, channels, data.data(), png_scale, png_offset, false, &set);
   };
   // Material parameters, named as in the table. Colours are linear like the renderer's inputs;
   // their PNG stores sRGB-encoded values for viewing. A scalar's PNG maps its range to 0..255.
@@ -121,9 +130,9 @@ std::vector<std::string> write_frame(const FrameBuffers& frame, const std::strin
     if (values.empty()) continue;
     if (info.kind == matgeom::ParameterKind::Color) {
       written.push_back(file(info.name, "exr"));
-      write_exr(written.back(), w, h, {"R", "G", "B"}, values.data());
+      write_exr(written.back(), w, h, {"R", "G", "B"}, values.data(), &set);
       written.push_back(file(info.name, "png"));
-      write_display_png(written.back(), w, h, values.data(), nullptr, 0.0);
+      write_display_png(written.back(), w, h, values.data(), nullptr, 0.0, &set);
     } else {
       const double scale = 255.0 / (info.max - info.min);
       write_float_pass(info.name, values, 1, {"Y"}, scale, -info.min * scale);
@@ -133,26 +142,43 @@ std::vector<std::string> write_frame(const FrameBuffers& frame, const std::strin
   write_float_pass("normal_camera", frame.normal_camera, 3, {"X", "Y", "Z"}, 127.5, 127.5);
   if (!frame.depth.empty()) {
     written.push_back(file("depth", "exr"));
-    write_exr(written.back(), w, h, {"Z"}, frame.depth.data());
+    write_exr(written.back(), w, h, {"Z"}, frame.depth.data(), &set);
     // 16-bit PNG in millimetres (0 = background), as depth cameras write.
     written.push_back(file("depth", "png"));
-    write_data_png(written.back(), w, h, 1, frame.depth.data(), 1000.0, 0.0, true);
+    write_data_png(written.back(), w, h, 1, frame.depth.data(), 1000.0, 0.0, true, &set);
   }
   auto write_id_pass = [&](const std::string& pass, const std::vector<int32_t>& ids, double offset) {
     if (ids.empty()) return;
     std::vector<float> values(ids.begin(), ids.end());
     written.push_back(file(pass, "exr"));
-    write_exr(written.back(), w, h, {"Y"}, values.data());
+    write_exr(written.back(), w, h, {"Y"}, values.data(), &set);
     written.push_back(file(pass, "png"));
-    write_data_png(written.back(), w, h, 1, values.data(), 1.0, offset, true);
+    write_data_png(written.back(), w, h, 1, values.data(), 1.0, offset, true, &set);
   };
   write_id_pass("label", frame.label, 0.0);
   write_id_pass("part_id", frame.part_id, 1.0);  // PNG value = part id + 1, 0 = background
   if (!frame.alpha.empty()) {
     written.push_back(file("alpha", "png"));
-    write_data_png(written.back(), w, h, 1, frame.alpha.data(), 255.0, 0.0, false);
+    write_data_png(written.back(), w, h, 1, frame.alpha.data(), 255.0, 0.0, false, &set);
   }
+  set.commit();
   return written;
+}
+
+}  // namespace
+
+std::vector<std::string> write_frame(const FrameBuffers& frame, const std::string& folder, const std::string& stem,
+                                     double exposure_stops) {
+  std::error_code ec;
+  const bool folder_existed = fs::exists(folder, ec);
+  fs::create_directories(folder, ec);
+  if (ec) throw std::runtime_error(folder + ": cannot create the output folder: " + ec.message());
+  try {
+    return write_frame_files(frame, folder, stem, exposure_stops);
+  } catch (...) {
+    if (!folder_existed) fs::remove(folder, ec);  // only if still empty: nothing of ours is left in it
+    throw;
+  }
 }
 
 }  // namespace matrender
