@@ -7,8 +7,10 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "common/output_folder.h"
 #include "common/progress_bar.h"
 #include "common/thread_count.h"
+#include "matgeom/atomic_file.h"
 #include "matlearn/dataset_index.h"
 #include "matlearn/evaluation/evaluator.h"
 #include "matlearn/evaluation/inference.h"
@@ -67,11 +69,15 @@ int predict(const Options& o, const matlearn::CheckpointHeader& header, matlearn
   }
   const matlearn::PredictedMaps predicted = matlearn::predict_maps(model, header, input.rgb);
   std::string written;
+  app_support::OutputFolder folder(o.output_dir);
+  matgeom::AtomicFileSet files(o.output_dir / "panel.png");
   for (size_t m = 0; m < predicted.maps.size(); ++m) {
-    matlearn::write_map_png(o.output_dir / (predicted.names[m] + ".png"), predicted.maps[m], input.mask);
+    matlearn::write_map_png(o.output_dir / (predicted.names[m] + ".png"), predicted.maps[m], input.mask, &files);
     written += predicted.names[m] + ".png, ";
   }
-  matlearn::write_prediction_strip(o.output_dir / "panel.png", input.rgb, input.mask, predicted);
+  matlearn::write_prediction_strip(o.output_dir / "panel.png", input.rgb, input.mask, predicted, &files);
+  files.commit();
+  folder.keep();
   fmt::print("wrote {}: {}panel.png (input | maps), {} x {} px; off the object the maps are black\n",
              o.output_dir.string(), written, header.image_size, header.image_size);
   return 0;
@@ -128,12 +134,18 @@ int run(const Options& o) {
       header.network, checkpoint.string(), header.network, header.epochs_done, header.image_size, o.split,
       o.dataset_root.string(), samples.size(), convention);
   const std::vector<matlearn::ReportTable> tables = matlearn::report_tables(result.scores);
-  matlearn::write_report(o.output_dir, tables, preamble);
+  // The tables and panels appear together or not at all; the tables last, as readers open them.
+  app_support::OutputFolder folder(o.output_dir), panels(o.output_dir / "panels");
+  matgeom::AtomicFileSet files(o.output_dir / "metrics.json");
   for (const auto& [material, sample] : result.samples_by_material)
     matlearn::write_panel(o.output_dir / "panels" /
                               (file_name(material == matlearn::kWholeObject ? "object" : matlearn::material_family_name(material)) +
                                ".png"),
-                          sample);
+                          sample, &files);
+  matlearn::write_report(o.output_dir, tables, preamble, &files);
+  files.commit();
+  panels.keep();
+  folder.keep();
 
   for (const matlearn::ReportRow& row : tables.back().rows)
     fmt::print("{:<12} RMSE {:.4f}  PSNR {:.2f}  SSIM {:.4f}  FSIM {:.4f}  SAM {:.2f}\n", row.map,

@@ -1,21 +1,36 @@
 #include "matgeom/atomic_file.h"
 
-#include <fstream>
+#include <cerrno>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <system_error>
 
+#include <fcntl.h>
 #include <unistd.h>
 
 namespace matgeom {
 namespace fs = std::filesystem;
 namespace {
 
-void write_bytes(const fs::path& file, const fs::path& named, std::string_view bytes) {
-  std::ofstream out(file, std::ios::binary | std::ios::trunc);
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  out.close();
-  if (!out) throw std::runtime_error(named.string() + ": cannot write " + file.string());
+// POSIX calls rather than a stream, so that the error says why: "<failure>: No space left on
+// device".
+void write_bytes(const fs::path& file, const std::string& failure, std::string_view bytes) {
+  const auto fail = [&](int error) { throw std::runtime_error(failure + ": " + std::strerror(error)); };
+  const int descriptor = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (descriptor < 0) fail(errno);
+  size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t written = ::write(descriptor, bytes.data() + done, bytes.size() - done);
+    if (written < 0 && errno == EINTR) continue;
+    if (written <= 0) {
+      const int error = written < 0 ? errno : ENOSPC;
+      ::close(descriptor);
+      fail(error);
+    }
+    done += static_cast<size_t>(written);
+  }
+  if (::close(descriptor) != 0) fail(errno);
 }
 
 void remove_quietly(const fs::path& file) {
@@ -48,7 +63,7 @@ void write_atomically(const fs::path& path, const std::function<void(const fs::p
 }
 
 void write_file_atomically(const fs::path& path, std::string_view bytes) {
-  write_atomically(path, [&](const fs::path& temporary) { write_bytes(temporary, path, bytes); });
+  write_atomically(path, [&](const fs::path& temporary) { write_bytes(temporary, path.string() + ": cannot write", bytes); });
 }
 
 AtomicFileSet::~AtomicFileSet() {
@@ -56,7 +71,9 @@ AtomicFileSet::~AtomicFileSet() {
 }
 
 void AtomicFileSet::stage(const fs::path& destination, std::string_view bytes) {
-  stage_with(destination, [&](const fs::path& temporary) { write_bytes(temporary, named_, bytes); });
+  stage_with(destination, [&](const fs::path& temporary) {
+    write_bytes(temporary, named_.string() + ": cannot write " + destination.string(), bytes);
+  });
 }
 
 void AtomicFileSet::stage_with(const fs::path& destination, const std::function<void(const fs::path& temporary)>& write) {

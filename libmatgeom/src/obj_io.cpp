@@ -9,12 +9,12 @@
 
 #include "file_error.h"
 #include "matgeom/atomic_file.h"
+#include "matgeom/png_encoding.h"
 #include "matgeom/tangents.h"
 #include "obj/mtl_materials.h"
 #include "obj/obj_loading.h"
 #include "obj/obj_parts.h"
 #include "obj/obj_writing.h"
-#include "obj/png_encoding.h"
 
 // Reading is four steps: the OBJ text is screened for the inputs tinyobjloader 2.0.0rc10 handles
 // badly; tinyobjloader parses and triangulates it, reading every "mtllib" through
@@ -85,7 +85,7 @@ void write_obj(const ObjectAsset& asset, const std::string& path) {
   // missing.
   AtomicFileSet files(path);
   for (const obj::ImageFile& image : images.files()) {
-    files.stage(obj_path.parent_path() / image.name, obj::encode_png(image.pixels, path));
+    files.stage(obj_path.parent_path() / image.name, encode_png(image.pixels, path));
   }
   files.stage(obj_path.parent_path() / library, obj::mtl_text(materials));
   files.stage(obj_path, obj::obj_text(mesh, library, groups, materials));

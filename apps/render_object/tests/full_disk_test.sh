@@ -28,7 +28,8 @@ else
   umount_later=0
 fi
 [ "$code" -eq 1 ] || fail "$how: exit code $code, expected 1"
-grep -q "render_object: $small/out/view_005_016_[a-z_]*\.\(exr\|png\): " "$log" || fail "$how: the error names no file"
+grep -q "render_object: .*: cannot write $small/out/view_005_016_[a-z_]*\.\(exr\|png\): " "$log" ||
+  fail "$how: the error names no file"
 [ ! -e "$small/out" ] || fail "$how: $(ls -a "$small/out" | tr '\n' ' ') left in $small/out"
 [ "$umount_later" -eq 0 ] || umount "$small"
 

@@ -2,12 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <vector>
 
-#include <OpenImageIO/imageio.h>
-
 #include "matgeom/atomic_file.h"
+#include "matgeom/png_encoding.h"
 #include "matgeom/unorm.h"
 
 namespace matlearn {
@@ -35,15 +33,22 @@ class Canvas {
       }
   }
 
-  void write(const std::filesystem::path& path) const {
+  // Encoded in memory and written by the checked helper: a full disk is an error, not a
+  // truncated panel (OpenImageIO's PNG writer reports no failed write).
+  void write(const std::filesystem::path& path, matgeom::AtomicFileSet* set) const {
     if (!path.parent_path().empty()) std::filesystem::create_directories(path.parent_path());
-    const int height = static_cast<int>(pixels_.size() / 3 / static_cast<size_t>(width_));
-    matgeom::write_atomically(path, [&](const std::filesystem::path& temporary) {
-      auto out = OIIO::ImageOutput::create(temporary.string());
-      if (!out || !out->open(temporary.string(), OIIO::ImageSpec(width_, height, 3, OIIO::TypeDesc::UINT8)) ||
-          !out->write_image(OIIO::TypeDesc::UINT8, pixels_.data()) || !out->close())
-        throw std::runtime_error(path.string() + ": cannot write the panel");
-    });
+    matgeom::ImagePixels image;
+    image.name = path.string();
+    image.width = width_;
+    image.height = static_cast<int>(pixels_.size() / 3 / static_cast<size_t>(width_));
+    image.channels = 3;
+    image.data = pixels_;
+    const std::string bytes = matgeom::encode_png(image, path.string());
+    if (set) {
+      set->stage(path, bytes);
+    } else {
+      matgeom::write_file_atomically(path, bytes);
+    }
   }
 
  private:
@@ -53,7 +58,7 @@ class Canvas {
 
 }  // namespace
 
-void write_panel(const std::filesystem::path& path, const SamplePredictions& sample) {
+void write_panel(const std::filesystem::path& path, const SamplePredictions& sample, matgeom::AtomicFileSet* set) {
   const int rows = std::max<int>(1, static_cast<int>(sample.maps.size()));
   Canvas canvas(4, rows, sample.input.width, sample.input.height);
   canvas.put(0, 0, sample.input, 1.0f);
@@ -67,21 +72,22 @@ void write_panel(const std::filesystem::path& path, const SamplePredictions& sam
     canvas.put(2, row, prediction, 1.0f);
     canvas.put(3, row, error, 4.0f, sample.mask);
   }
-  canvas.write(path);
+  canvas.write(path, set);
 }
 
 void write_prediction_strip(const std::filesystem::path& path, const Image& input, const Mask& mask,
-                            const PredictedMaps& predicted) {
+                            const PredictedMaps& predicted, matgeom::AtomicFileSet* set) {
   Canvas canvas(1 + static_cast<int>(predicted.maps.size()), 1, input.width, input.height);
   canvas.put(0, 0, input, 1.0f);
   for (size_t m = 0; m < predicted.maps.size(); ++m) canvas.put(1 + static_cast<int>(m), 0, predicted.maps[m], 1.0f, mask);
-  canvas.write(path);
+  canvas.write(path, set);
 }
 
-void write_map_png(const std::filesystem::path& path, const Image& map, const Mask& mask) {
+void write_map_png(const std::filesystem::path& path, const Image& map, const Mask& mask,
+                   matgeom::AtomicFileSet* set) {
   Canvas canvas(1, 1, map.width, map.height);
   canvas.put(0, 0, map, 1.0f, mask);
-  canvas.write(path);
+  canvas.write(path, set);
 }
 
 }  // namespace matlearn

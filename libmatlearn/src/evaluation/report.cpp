@@ -70,7 +70,7 @@ std::vector<ReportTable> report_tables(const std::vector<ScoredMap>& scores) {
 }
 
 void write_report(const std::filesystem::path& folder, const std::vector<ReportTable>& tables,
-                  const std::string& preamble) {
+                  const std::string& preamble, matgeom::AtomicFileSet* set) {
   std::filesystem::create_directories(folder);
   std::ostringstream md, csv;
   md << preamble << "\n";
@@ -103,9 +103,12 @@ void write_report(const std::filesystem::path& folder, const std::vector<ReportT
     }
     json["tables"].push_back({{"title", table.title}, {"rows", rows}});
   }
-  matgeom::write_file_atomically(folder / "metrics.md", md.str());
-  matgeom::write_file_atomically(folder / "metrics.csv", csv.str());
-  matgeom::write_file_atomically(folder / "metrics.json", json.dump(2) + "\n");
+  matgeom::AtomicFileSet own(folder / "metrics.json");
+  matgeom::AtomicFileSet& files = set ? *set : own;
+  files.stage(folder / "metrics.md", md.str());
+  files.stage(folder / "metrics.csv", csv.str());
+  files.stage(folder / "metrics.json", json.dump(2) + "\n");
+  if (!set) own.commit();
 }
 
 }  // namespace matlearn

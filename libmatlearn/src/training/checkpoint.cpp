@@ -1,5 +1,6 @@
 #include "matlearn/training/checkpoint.h"
 
+#include <sstream>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -85,7 +86,11 @@ void save_checkpoint(const std::filesystem::path& path, const CheckpointHeader& 
   optimizer.save(optimizer_archive);
   archive.write("optimizer", optimizer_archive);
   if (!path.parent_path().empty()) std::filesystem::create_directories(path.parent_path());
-  matgeom::write_atomically(path, [&](const std::filesystem::path& temporary) { archive.save_to(temporary.string()); });
+  // Serialised in memory, then written by the checked helper: libtorch's file writer finishes the
+  // zip in its destructor, so a full disk there ended the process (std::terminate on a c10::Error).
+  std::ostringstream bytes;
+  archive.save_to(bytes);
+  matgeom::write_file_atomically(path, bytes.str());
 }
 
 CheckpointHeader read_checkpoint_header(const std::filesystem::path& path) {

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include "matgeom/atomic_file.h"
@@ -16,25 +17,33 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The image encoded in memory, in the format of `path`'s extension. Encoding to memory and then
+// writing the bytes with the checked helpers is what makes a full disk an error: OpenImageIO's PNG
+// writer reports no failed write and leaves a truncated file.
+std::string encode_image(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc type,
+                         const void* pixels) {
+  std::vector<unsigned char> bytes;
+  OIIO::Filesystem::IOVecOutput memory(bytes);
+  auto output = OIIO::ImageOutput::create(path, &memory);
+  if (!output) throw std::runtime_error(path + ": no image writer for this extension: " + OIIO::geterror());
+  if (!output->supports("ioproxy")) throw std::runtime_error(path + ": the image writer cannot encode to memory");
+  if (!output->open(path, spec)) throw std::runtime_error(path + ": cannot encode: " + output->geterror());
+  const bool written = output->write_image(type, pixels);
+  const std::string write_error = written ? "" : output->geterror();
+  const bool closed = output->close();
+  if (!written) throw std::runtime_error(path + ": cannot encode the image: " + write_error);
+  if (!closed) throw std::runtime_error(path + ": cannot finish encoding the image: " + output->geterror());
+  return std::string(bytes.begin(), bytes.end());
+}
+
 // Writes the image to a temporary beside `path`, then renames it, or stages it into `set`.
 void write_image(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc type, const void* pixels,
                  matgeom::AtomicFileSet* set) {
-  const auto write = [&](const fs::path& temporary) {
-    auto output = OIIO::ImageOutput::create(path);
-    if (!output) throw std::runtime_error(path + ": no image writer for this extension: " + OIIO::geterror());
-    if (!output->open(temporary.string(), spec))
-      throw std::runtime_error(path + ": cannot open for writing: " + output->geterror());
-    const bool written = output->write_image(type, pixels);
-    const std::string write_error = written ? "" : output->geterror();
-    // close() flushes: a full disk may show only here.
-    const bool closed = output->close();
-    if (!written) throw std::runtime_error(path + ": cannot write image: " + write_error);
-    if (!closed) throw std::runtime_error(path + ": cannot finish writing the image: " + output->geterror());
-  };
+  const std::string bytes = encode_image(path, spec, type, pixels);
   if (set) {
-    set->stage_with(path, write);
+    set->stage(path, bytes);
   } else {
-    matgeom::write_atomically(path, write);
+    matgeom::write_file_atomically(path, bytes);
   }
 }
 

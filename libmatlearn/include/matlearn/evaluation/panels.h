@@ -1,8 +1,10 @@
 #pragma once
 // Pictures of predictions as 8-bit PNG files, one tile per map at the map's size, one-channel maps
-// in grey. Files are written whole or not at all.
+// in grey. Files are written whole or not at all; given an AtomicFileSet, each is staged there to
+// appear with the set's other files.
 #include <filesystem>
 
+#include "matgeom/atomic_file.h"
 #include "matlearn/evaluation/evaluator.h"
 #include "matlearn/evaluation/inference.h"
 
@@ -10,13 +12,15 @@ namespace matlearn {
 
 // The sample's input beside, per map, truth | prediction | absolute error on the object (x4,
 // clamped, black off it): one row per map.
-void write_panel(const std::filesystem::path& path, const SamplePredictions& sample);
+void write_panel(const std::filesystem::path& path, const SamplePredictions& sample,
+                 matgeom::AtomicFileSet* set = nullptr);
 
 // The input, then each predicted map, in one row; map pixels off the mask are black.
 void write_prediction_strip(const std::filesystem::path& path, const Image& input, const Mask& mask,
-                            const PredictedMaps& predicted);
+                            const PredictedMaps& predicted, matgeom::AtomicFileSet* set = nullptr);
 
 // One map as a PNG (RGB, or grey for one channel), black off the mask.
-void write_map_png(const std::filesystem::path& path, const Image& map, const Mask& mask);
+void write_map_png(const std::filesystem::path& path, const Image& map, const Mask& mask,
+                   matgeom::AtomicFileSet* set = nullptr);
 
 }  // namespace matlearn

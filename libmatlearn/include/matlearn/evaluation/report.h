@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "matgeom/atomic_file.h"
 #include "matlearn/evaluation/evaluator.h"
 
 namespace matlearn {
@@ -25,9 +26,10 @@ struct ReportTable {
 // everything (whole objects).
 std::vector<ReportTable> report_tables(const std::vector<ScoredMap>& scores);
 
-// Writes metrics.md, metrics.csv and metrics.json into `folder`; `preamble` (markdown) opens
+// Writes metrics.md, metrics.csv and metrics.json into `folder`, all three or none (staged into
+// `set` when one is given, to appear with its other files); `preamble` (markdown) opens
 // metrics.md and goes into the JSON as "about".
 void write_report(const std::filesystem::path& folder, const std::vector<ReportTable>& tables,
-                  const std::string& preamble);
+                  const std::string& preamble, matgeom::AtomicFileSet* set = nullptr);
 
 }  // namespace matlearn

@@ -1,4 +1,4 @@
-#include "obj/png_encoding.h"
+#include "matgeom/png_encoding.h"
 
 #include <vector>
 
@@ -6,7 +6,7 @@
 
 #include "file_error.h"
 
-namespace matgeom::obj {
+namespace matgeom {
 namespace {
 
 bool capture_file(std::string*, const std::string&, const std::vector<unsigned char>& contents,
@@ -40,4 +40,4 @@ std::string encode_png(const ImagePixels& pixels, const std::string& path) {
   return std::string(png.begin(), png.end());
 }
 
-}  // namespace matgeom::obj
+}  // namespace matgeom
