@@ -1,11 +1,13 @@
 #include "matlearn/training/checkpoint.h"
 
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
 #include "matgeom/atomic_file.h"
+#include "matgeom/input_file.h"
 
 namespace matlearn {
 namespace {
@@ -65,7 +67,8 @@ CheckpointHeader header_from_json(const json& j) {
 }
 
 torch::serialize::InputArchive open_archive(const std::filesystem::path& path) {
-  if (!std::filesystem::is_regular_file(path)) throw std::runtime_error(path.string() + ": no such checkpoint file");
+  if (const std::optional<std::string> problem = matgeom::input_file_problem(path.string()))
+    throw std::runtime_error(path.string() + (*problem == "no such file" ? ": no such checkpoint file" : ": " + *problem));
   torch::serialize::InputArchive archive;
   try {
     archive.load_from(path.string());
