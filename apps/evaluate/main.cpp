@@ -43,8 +43,6 @@ struct Options {
 
 std::vector<matlearn::SampleId> samples_to_score(const Options& o) {
   if (!o.split_file.empty()) {
-    if (o.split != "train" && o.split != "val" && o.split != "test")
-      throw InputError("--split: expected train, val or test, got \"" + o.split + "\"");
     return matlearn::split_samples(matlearn::read_split_file(o.split_file), o.split, o.dataset_root);
   }
   // train_regressor's split without a split file: whole variant folders, 80/20 by the seed.
@@ -175,7 +173,9 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   app.add_option("--split-file", o.split_file, "split YAML; without one, the 80/20 variant split train_regressor used")
       ->check(CLI::ExistingFile);
-  app.add_option("--split", o.split, "train, val or test (without a split file: train or the 20 % part)")->capture_default_str();
+  app.add_option("--split", o.split, "train, val or test (without a split file: train, or val and test alike for the 20 % part)")
+      ->check(CLI::IsMember({"train", "val", "test"}))
+      ->capture_default_str();
   app.add_option("--seed", o.seed, "seed of the split without a split file")->capture_default_str();
   app.add_flag("--paper-compat", o.paper_compat, "image-similarity-measures' conventions (8-bit, max_p 4095, its SAM), to compare with the paper");
   app.add_option("--output-dir", o.output_dir, "folder for the tables and panels")->capture_default_str();
@@ -186,7 +186,9 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help exits 0; a bad option is a bad input, exit 2 (CLI11's own codes run past 100).
+    const int help = app.exit(e);
+    return e.get_exit_code() == 0 ? help : 2;
   }
   try {
     return run(o);

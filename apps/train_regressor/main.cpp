@@ -146,7 +146,9 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help exits 0; a bad option is a bad input, exit 2 (CLI11's own codes run past 100).
+    const int help = app.exit(e);
+    return e.get_exit_code() == 0 ? help : 2;
   }
   try {
     return train(options, /*example=*/argc == 1);

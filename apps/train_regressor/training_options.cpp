@@ -185,6 +185,10 @@ matlearn::TrainingConfig training_config(const std::map<std::string, std::string
     else c.layout.groups.clear();
     if (task != "pbr") {
       c.layout.material_classes = parse_value<int64_t>(s, "material_num_classes");
+      // A segmentation task needs a background and one class at least; 0 would train nothing.
+      if (c.layout.material_classes < 2)
+        throw InputError("material_num_classes: task_mode " + task + " needs at least 2 classes (0 is the background), got " +
+                         std::to_string(c.layout.material_classes));
       c.layout.material_weight = parse_value<double>(s, "material_ce_weight");
     }
     matlearn::validate(c.layout);
