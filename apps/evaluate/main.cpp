@@ -7,7 +7,6 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "common/output_folder.h"
 #include "common/progress_bar.h"
 #include "common/thread_count.h"
 #include "matgeom/atomic_file.h"
@@ -67,7 +66,7 @@ int predict(const Options& o, const matlearn::CheckpointHeader& header, matlearn
   }
   const matlearn::PredictedMaps predicted = matlearn::predict_maps(model, header, input.rgb);
   std::string written;
-  app_support::OutputFolder folder(o.output_dir);
+  matgeom::OutputFolder folder(o.output_dir);
   matgeom::AtomicFileSet files(o.output_dir / "panel.png");
   for (size_t m = 0; m < predicted.maps.size(); ++m) {
     matlearn::write_map_png(o.output_dir / (predicted.names[m] + ".png"), predicted.maps[m], input.mask, &files);
@@ -133,7 +132,7 @@ int run(const Options& o) {
       o.dataset_root.string(), samples.size(), convention);
   const std::vector<matlearn::ReportTable> tables = matlearn::report_tables(result.scores);
   // The tables and panels appear together or not at all; the tables last, as readers open them.
-  app_support::OutputFolder folder(o.output_dir), panels(o.output_dir / "panels");
+  matgeom::OutputFolder folder(o.output_dir), panels(o.output_dir / "panels");
   matgeom::AtomicFileSet files(o.output_dir / "metrics.json");
   for (const auto& [material, sample] : result.samples_by_material)
     matlearn::write_panel(o.output_dir / "panels" /

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <utility>
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -62,7 +63,8 @@ void write_atomically(const fs::path& path, const std::function<void(const fs::p
   }
 }
 
-void write_file_atomically(const fs::path& path, std::string_view bytes) {
+void write_file_atomically(const fs::path& path, std::string_view bytes, AtomicFileSet* set) {
+  if (set) return set->stage(path, bytes);
   write_atomically(path, [&](const fs::path& temporary) { write_bytes(temporary, path.string() + ": cannot write", bytes); });
 }
 
@@ -71,15 +73,9 @@ AtomicFileSet::~AtomicFileSet() {
 }
 
 void AtomicFileSet::stage(const fs::path& destination, std::string_view bytes) {
-  stage_with(destination, [&](const fs::path& temporary) {
-    write_bytes(temporary, named_.string() + ": cannot write " + destination.string(), bytes);
-  });
-}
-
-void AtomicFileSet::stage_with(const fs::path& destination, const std::function<void(const fs::path& temporary)>& write) {
-  // Recorded first, so that the destructor removes the temporary whatever `write` leaves.
+  // Recorded first, so that the destructor removes the temporary whatever a failed write leaves.
   staged_.push_back({destination, temporary_path(destination), false});
-  write(staged_.back().temporary);
+  write_bytes(staged_.back().temporary, named_.string() + ": cannot write " + destination.string(), bytes);
 }
 
 void AtomicFileSet::commit() {
@@ -102,6 +98,17 @@ void AtomicFileSet::commit() {
                                file.destination.string() + ": " + error.message());
     }
   }
+}
+
+OutputFolder::OutputFolder(fs::path path) : path_(std::move(path)) {
+  std::error_code error;
+  made_ = fs::create_directories(path_, error);
+  if (error) throw std::runtime_error(path_.string() + ": cannot create the folder: " + error.message());
+}
+
+OutputFolder::~OutputFolder() {
+  std::error_code ignored;
+  if (made_) fs::remove(path_, ignored);  // fails, as it should, unless empty
 }
 
 }  // namespace matgeom

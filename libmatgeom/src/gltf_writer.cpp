@@ -145,10 +145,7 @@ class TextureTable {
     if (found != gltf_images_.end()) return found->second;
     const size_t source = static_cast<size_t>(image);
     const ImagePixels& pixels = source < images_.size() ? images_[source] : added_[source - images_.size()];
-    const size_t expected = static_cast<size_t>(pixels.width) * static_cast<size_t>(pixels.height) *
-                            static_cast<size_t>(pixels.channels);
-    if (pixels.width <= 0 || pixels.height <= 0 || pixels.channels < 1 || pixels.channels > 4 ||
-        pixels.data.size() != expected)
+    if (!is_well_formed(pixels))
       throw std::invalid_argument("write_gltf: image " + std::to_string(image) + " (" + pixels.name +
                                   ") has inconsistent size or channels");
     tinygltf::Image out;

@@ -5,6 +5,12 @@
 
 namespace matgeom {
 
+bool is_well_formed(const ImagePixels& image) {
+  return image.width > 0 && image.height > 0 && image.channels >= 1 && image.channels <= 4 &&
+         image.data.size() == static_cast<size_t>(image.width) * static_cast<size_t>(image.height) *
+                                  static_cast<size_t>(image.channels);
+}
+
 uint8_t texel_channel(const ImagePixels& image, size_t texel, int channel) {
   const bool grey = image.channels < 3;
   const bool has_alpha = image.channels == 2 || image.channels == 4;

@@ -24,8 +24,11 @@ std::filesystem::path temporary_path(const std::filesystem::path& path);
 void write_atomically(const std::filesystem::path& path,
                       const std::function<void(const std::filesystem::path& temporary)>& write);
 
+class AtomicFileSet;
+
 // `bytes` as the whole of the file `path`; std::runtime_error starting with `path` on failure.
-void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
+// Given a set, the file is staged there instead, to appear with the set's others.
+void write_file_atomically(const std::filesystem::path& path, std::string_view bytes, AtomicFileSet* set = nullptr);
 
 // Several files that must appear together (an OBJ with its MTL and textures, a view's images):
 // each staged under its temporary name, then all renamed by commit() in staging order, so the one
@@ -42,10 +45,6 @@ class AtomicFileSet {
 
   // Writes `bytes` to the temporary of `destination`; std::runtime_error on failure.
   void stage(const std::filesystem::path& destination, std::string_view bytes);
-  // Calls write(temporary) to write the temporary of `destination` (for writers that open files
-  // themselves, such as image libraries); its exceptions pass through, the temporary removed.
-  void stage_with(const std::filesystem::path& destination,
-                  const std::function<void(const std::filesystem::path& temporary)>& write);
   // std::runtime_error naming the file that could not be renamed.
   void commit();
 
@@ -58,6 +57,24 @@ class AtomicFileSet {
   std::filesystem::path named_;
   std::vector<Staged> staged_;
   size_t committed_ = 0;
+};
+
+// A folder made for outputs, removed again (if still empty) unless keep() is called: a run whose
+// writes failed leaves no trace, not even an empty folder.
+class OutputFolder {
+ public:
+  // Creates `path` and any missing parents; std::runtime_error naming it on failure.
+  explicit OutputFolder(std::filesystem::path path);
+  OutputFolder(const OutputFolder&) = delete;
+  OutputFolder& operator=(const OutputFolder&) = delete;
+  ~OutputFolder();
+
+  // The outputs are in place: the folder stays.
+  void keep() { made_ = false; }
+
+ private:
+  std::filesystem::path path_;
+  bool made_ = false;  // this object created the folder
 };
 
 }  // namespace matgeom

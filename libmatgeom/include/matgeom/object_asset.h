@@ -24,6 +24,9 @@ struct ImagePixels {
   std::vector<uint8_t> data;
 };
 
+// Positive size, 1 to 4 channels, and exactly width x height x channels bytes.
+bool is_well_formed(const ImagePixels& image);
+
 // The value channel `channel` (0 R, 1 G, 2 B, 3 A) of texel `texel` reads as, the way the renderer
 // expands images to RGBA: a grey image (1 channel, or 2 with alpha) gives its grey for R, G and
 // B; an image without alpha reads 255 for A.

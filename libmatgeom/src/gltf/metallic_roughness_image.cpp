@@ -23,9 +23,7 @@ const ImagePixels* image_of(const MaterialInput& input, const std::vector<ImageP
   if (input.channel < 0 || input.channel > 3)
     throw std::invalid_argument("write_gltf: " + what + " " + name + " reads image channel " +
                                 std::to_string(input.channel) + "; channels are 0 to 3");
-  if (pixels.width <= 0 || pixels.height <= 0 || pixels.channels < 1 || pixels.channels > 4 ||
-      pixels.data.size() != static_cast<size_t>(pixels.width) * static_cast<size_t>(pixels.height) *
-                                static_cast<size_t>(pixels.channels))
+  if (!is_well_formed(pixels))
     throw std::invalid_argument("write_gltf: image " + std::to_string(input.image) + " (" + pixels.name +
                                 ") has inconsistent size or channels");
   return &pixels;

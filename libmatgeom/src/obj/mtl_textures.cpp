@@ -9,7 +9,6 @@
 
 #include "file_error.h"
 #include "image_bytes.h"
-#include "matgeom/input_file.h"
 #include "matgeom/text.h"
 #include "obj/obj_loading.h"
 
@@ -21,11 +20,8 @@ namespace {
 // from an OBJ has 4 channels.
 ImagePixels decode_texture(const std::string& obj_path, const TextureSource& source) {
   std::string bytes;
-  if (const std::optional<std::string> problem = input_file_problem(source.file.string()))
+  if (const std::optional<std::string> problem = read_whole_file(source.file, bytes))
     fail(obj_path, concat(source.what, ": cannot open texture ", source.file.string(), ": ", *problem));
-  if (!read_whole_file(source.file, bytes)) {
-    fail(obj_path, concat(source.what, ": cannot open texture ", source.file.string()));
-  }
   if (bytes.size() > static_cast<size_t>(std::numeric_limits<int>::max())) {
     fail(obj_path, concat(source.what, ": texture ", source.file.string(), " is too large"));
   }

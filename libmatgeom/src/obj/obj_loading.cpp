@@ -6,7 +6,6 @@
 #include <iterator>
 #include <map>
 #include <sstream>
-#include <system_error>
 #include <utility>
 
 #include "file_error.h"
@@ -18,13 +17,13 @@ namespace matgeom::obj {
 
 namespace fs = std::filesystem;
 
-bool read_whole_file(const fs::path& file, std::string& bytes) {
-  std::error_code error;
-  if (!fs::is_regular_file(file, error)) return false;
+std::optional<std::string> read_whole_file(const fs::path& file, std::string& bytes) {
+  if (std::optional<std::string> problem = input_file_problem(file.string())) return problem;
   std::ifstream in(file, std::ios::binary);
-  if (!in) return false;
+  if (!in) return std::string("cannot open the file");
   bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  return !in.bad();
+  if (in.bad()) return std::string("cannot read the file");
+  return std::nullopt;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -44,7 +43,7 @@ class MaterialLibraries : public tinyobj::MaterialReader {
                   std::string* errors) override {
     const fs::path file = obj_directory_ / library;
     std::string text;
-    if (!read_whole_file(file, text)) {
+    if (read_whole_file(file, text)) {
       missing_.push_back(file.string());
       return false;
     }
@@ -67,8 +66,7 @@ class MaterialLibraries : public tinyobj::MaterialReader {
 
 ObjFile load_obj(const std::string& path) {
   std::string text;
-  if (const std::optional<std::string> problem = input_file_problem(path)) fail(path, *problem);
-  if (!read_whole_file(path, text)) fail(path, "cannot read the file");
+  if (const std::optional<std::string> problem = read_whole_file(path, text)) fail(path, *problem);
   screen_obj_text(path, text);
 
   ObjFile file;

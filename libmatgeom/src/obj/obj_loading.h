@@ -2,6 +2,7 @@
 // Loading: an OBJ file and its .mtl files parsed and triangulated by tinyobjloader, and the
 // checks on what tinyobjloader returns (finite values, indices in range, triangles).
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,8 +19,9 @@ struct ObjFile {
   std::string warnings;
 };
 
-// The whole file, or false when it is not a readable regular file.
-bool read_whole_file(const std::filesystem::path& file, std::string& bytes);
+// Reads the whole file into `bytes`; returns why it could not (matgeom/input_file.h's problems,
+// or a failed read), or nothing.
+std::optional<std::string> read_whole_file(const std::filesystem::path& file, std::string& bytes);
 
 ObjFile load_obj(const std::string& path);
 

@@ -35,11 +35,7 @@ void check_image(const ObjectAsset& asset, int image, const MaterialDesc& materi
                                        image, " but the asset has ", asset.images.size()));
   }
   const ImagePixels& pixels = asset.images[static_cast<size_t>(image)];
-  const size_t expected = static_cast<size_t>(std::max(pixels.width, 0)) *
-                          static_cast<size_t>(std::max(pixels.height, 0)) *
-                          static_cast<size_t>(std::max(pixels.channels, 0));
-  if (pixels.width <= 0 || pixels.height <= 0 || pixels.channels < 1 || pixels.channels > 4 ||
-      pixels.data.size() != expected) {
+  if (!is_well_formed(pixels)) {
     throw std::invalid_argument(concat("write_obj: image ", image, " (", pixels.name,
                                        ") has inconsistent size or channels"));
   }

@@ -43,12 +43,7 @@ class Canvas {
     image.height = static_cast<int>(pixels_.size() / 3 / static_cast<size_t>(width_));
     image.channels = 3;
     image.data = pixels_;
-    const std::string bytes = matgeom::encode_png(image, path.string());
-    if (set) {
-      set->stage(path, bytes);
-    } else {
-      matgeom::write_file_atomically(path, bytes);
-    }
+    matgeom::write_file_atomically(path, matgeom::encode_png(image, path.string()), set);
   }
 
  private:

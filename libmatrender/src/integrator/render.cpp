@@ -57,10 +57,8 @@ void validate(const Camera& camera, const RenderSettings& settings) {
   if (camera.width < 1 || camera.height < 1)
     throw std::invalid_argument("render: image size must be at least 1 x 1, got " +
                                 std::to_string(camera.width) + " x " + std::to_string(camera.height));
-  for (int column = 0; column < 4; ++column)
-    for (int row = 0; row < 4; ++row)
-      if (!std::isfinite(camera.camera_to_world[column][row]))
-        throw std::invalid_argument("render: the camera's camera-to-world matrix has a non-finite entry");
+  if (!is_finite(camera.camera_to_world))
+    throw std::invalid_argument("render: the camera's camera-to-world matrix has a non-finite entry");
   check_scene_point(glm::dvec3(camera.camera_to_world[3]), "render: the camera");
   if (!(camera.vertical_fov > 0.0 && camera.vertical_fov < M_PI))
     throw std::invalid_argument("render: vertical field of view must be in (0, pi) radians");

@@ -36,17 +36,6 @@ std::string encode_image(const std::string& path, const OIIO::ImageSpec& spec, O
   return std::string(bytes.begin(), bytes.end());
 }
 
-// Writes the image to a temporary beside `path`, then renames it, or stages it into `set`.
-void write_image(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc type, const void* pixels,
-                 matgeom::AtomicFileSet* set) {
-  const std::string bytes = encode_image(path, spec, type, pixels);
-  if (set) {
-    set->stage(path, bytes);
-  } else {
-    matgeom::write_file_atomically(path, bytes);
-  }
-}
-
 }  // namespace
 
 void write_exr(const std::string& path, int width, int height, const std::vector<std::string>& channels,
@@ -57,7 +46,7 @@ void write_exr(const std::string& path, int width, int height, const std::vector
   for (size_t c = 0; c < channels.size(); ++c)
     if (channels[c] == "A") spec.alpha_channel = static_cast<int>(c);
   spec.attribute("compression", "zip");
-  write_image(path, spec, OIIO::TypeDesc::FLOAT, data, set);
+  matgeom::write_file_atomically(path, encode_image(path, spec, OIIO::TypeDesc::FLOAT, data), set);
 }
 
 void write_display_png(const std::string& path, int width, int height, const float* rgb, const float* alpha,
@@ -78,7 +67,7 @@ void write_display_png(const std::string& path, int width, int height, const flo
   }
   OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::UINT8);
   spec.attribute("oiio:UnassociatedAlpha", 1);  // already straight: OpenImageIO must not divide again
-  write_image(path, spec, OIIO::TypeDesc::UINT8, pixels.data(), set);
+  matgeom::write_file_atomically(path, encode_image(path, spec, OIIO::TypeDesc::UINT8, pixels.data()), set);
 }
 
 void write_data_png(const std::string& path, int width, int height, int channels, const float* data, double scale,
@@ -90,17 +79,16 @@ void write_data_png(const std::string& path, int width, int height, int channels
   OIIO::ImageSpec spec(width, height, channels, sixteen_bit ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
   spec.attribute("oiio:UnassociatedAlpha", 1);  // a fourth channel is data: written verbatim
   if (sixteen_bit) {
-    write_image(path, spec, OIIO::TypeDesc::UINT16, pixels.data(), set);
+    matgeom::write_file_atomically(path, encode_image(path, spec, OIIO::TypeDesc::UINT16, pixels.data()), set);
   } else {
     std::vector<uint8_t> narrow(pixels.begin(), pixels.end());
-    write_image(path, spec, OIIO::TypeDesc::UINT8, narrow.data(), set);
+    matgeom::write_file_atomically(path, encode_image(path, spec, OIIO::TypeDesc::UINT8, narrow.data()), set);
   }
 }
 
-namespace {
-
-std::vector<std::string> write_frame_files(const FrameBuffers& frame, const std::string& folder,
-                                           const std::string& stem, double exposure_stops) {
+std::vector<std::string> write_frame(const FrameBuffers& frame, const std::string& folder, const std::string& stem,
+                                     double exposure_stops) {
+  matgeom::OutputFolder output(folder);
   const int w = frame.width, h = frame.height;
   const size_t n = static_cast<size_t>(w) * h;
   std::vector<std::string> written;
@@ -171,23 +159,8 @@ std::vector<std::string> write_frame_files(const FrameBuffers& frame, const std:
     write_data_png(written.back(), w, h, 1, frame.alpha.data(), 255.0, 0.0, false, &set);
   }
   set.commit();
+  output.keep();
   return written;
-}
-
-}  // namespace
-
-std::vector<std::string> write_frame(const FrameBuffers& frame, const std::string& folder, const std::string& stem,
-                                     double exposure_stops) {
-  std::error_code ec;
-  const bool folder_existed = fs::exists(folder, ec);
-  fs::create_directories(folder, ec);
-  if (ec) throw std::runtime_error(folder + ": cannot create the output folder: " + ec.message());
-  try {
-    return write_frame_files(frame, folder, stem, exposure_stops);
-  } catch (...) {
-    if (!folder_existed) fs::remove(folder, ec);  // only if still empty: nothing of ours is left in it
-    throw;
-  }
 }
 
 }  // namespace matrender

@@ -2,11 +2,11 @@
 
 #include <cmath>
 #include <limits>
-#include <stdexcept>
 
 #include <fmt/format.h>
 
 #include "matrender/scene_limits.h"
+#include "util/finite.h"
 
 namespace matrender {
 namespace {
@@ -22,11 +22,7 @@ struct Refusal {
 [[noreturn]] void refuse(const std::string& reason) { throw Refusal{reason}; }
 
 void check_point_within_limit(const glm::dvec3& point, const char* name) {
-  try {
-    check_scene_point(point, name);
-  } catch (const std::invalid_argument& e) {
-    refuse(e.what());
-  }
+  if (const std::optional<std::string> problem = scene_point_problem(point, name)) refuse(*problem);
 }
 
 void check_color(const glm::dvec3& color) {
@@ -47,9 +43,7 @@ void check_emission(const glm::dvec3& emission, const char* name, const char* re
 }
 
 void check_rect(const RectLight& light) {
-  for (int column = 0; column < 4; ++column)
-    for (int row = 0; row < 4; ++row)
-      if (!std::isfinite(light.light_to_world[column][row])) refuse("its transform has a non-finite entry");
+  if (!is_finite(light.light_to_world)) refuse("its transform has a non-finite entry");
   check_point_within_limit(glm::dvec3(light.light_to_world[3]), "centre");
   const glm::dvec3 axis_x(light.light_to_world[0]), axis_y(light.light_to_world[1]);
   if (!(glm::length(glm::cross(axis_x, axis_y)) > 0.0))

@@ -77,7 +77,8 @@ uint32_t Scene::add_mesh(const matgeom::TriangleMesh& mesh, const std::vector<ui
   const std::string what = "mesh " + std::to_string(data_->meshes.size());
   matgeom::validate_mesh(mesh, what);
   if (mesh.triangles.empty()) throw std::invalid_argument(what + ": has no triangles");
-  for (size_t v = 0; v < mesh.positions.size(); ++v) check_scene_point(mesh.positions[v], what + ": vertex " + std::to_string(v));
+  for (size_t v = 0; v < mesh.positions.size(); ++v)
+    if (!within_scene_limit(mesh.positions[v])) check_scene_point(mesh.positions[v], what + ": vertex " + std::to_string(v));
   if (!has_area(mesh))
     throw std::invalid_argument(what + ": every one of its " + std::to_string(mesh.triangles.size()) +
                                 " triangles has zero area (its vertices are collinear or coincide), so nothing would render");

@@ -151,12 +151,10 @@ void add_lights(const LightsDescription& lights, BuiltScene& built) {
 // what single precision resolves.
 void place_object(const ObjectDescription& object, matgeom::TriangleMesh& mesh) {
   // Checked in double precision first: a huge scale would overflow the float positions.
-  try {
-    for (size_t v = 0; v < mesh.positions.size(); ++v)
-      check_scene_point(glm::dvec3(object.object_to_world * glm::dvec4(glm::dvec3(mesh.positions[v]), 1.0)),
-                        "after its transform, vertex " + std::to_string(v));
-  } catch (const std::invalid_argument& e) {
-    throw object.origin.error("", e.what());
+  for (size_t v = 0; v < mesh.positions.size(); ++v) {
+    const glm::dvec3 world(object.object_to_world * glm::dvec4(glm::dvec3(mesh.positions[v]), 1.0));
+    if (!within_scene_limit(world))
+      throw object.origin.error("", *scene_point_problem(world, "after its transform, vertex " + std::to_string(v)));
   }
   try {
     matgeom::transform_mesh(mesh, object.object_to_world);
@@ -213,11 +211,8 @@ BuiltScene build_scene(const SceneDescription& description) {
   add_lights(description.lights, built);
   built.scene.set_background(description.background);
   built.camera = make_camera(description.camera, matgeom::surface_centroid(surface));
-  try {
-    check_scene_point(glm::dvec3(built.camera.camera_to_world[3]), "the camera");
-  } catch (const std::invalid_argument& e) {
-    throw InputError(std::string("camera: ") + e.what());
-  }
+  if (const std::optional<std::string> problem = scene_point_problem(glm::dvec3(built.camera.camera_to_world[3]), "the camera"))
+    throw InputError("camera: " + *problem);
   built.frame_stem = frame_stem(description.camera);
   built.scene.commit();
   return built;
