@@ -10,6 +10,7 @@ find_package(fmt REQUIRED CONFIG)
 find_package(CLI11 REQUIRED CONFIG)
 find_package(yaml-cpp REQUIRED CONFIG)
 find_package(Torch REQUIRED CONFIG)
+find_package(ZLIB REQUIRED)
 
 # OpenImageIO's CMake config references /usr/bin/iconvert and /usr/include/opencv4 on Debian 12,
 # so it is found through pkg-config, which has no such quirks.

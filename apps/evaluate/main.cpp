@@ -89,8 +89,9 @@ int run(const Options& o) {
   matlearn::CheckpointHeader header;
   std::shared_ptr<matlearn::RegressorImpl> model;
   try {
-    header = matlearn::read_checkpoint_header(checkpoint);
-    model = matlearn::load_checkpoint_model(checkpoint, header);
+    const matlearn::Checkpoint file = matlearn::read_checkpoint(checkpoint);
+    header = file.header;
+    model = matlearn::load_model(file);
   } catch (const std::runtime_error& e) {
     throw InputError(e.what());
   }

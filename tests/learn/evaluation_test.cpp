@@ -30,7 +30,7 @@ fs::path half_grey_checkpoint() {
   c.epochs = 1;
   Trainer trainer(c);
   CATCH_REQUIRE(trainer.train());
-  CheckpointHeader header = read_checkpoint_header(c.output_dir / "checkpoints" / "last.pt");
+  const CheckpointHeader header = read_checkpoint(c.output_dir / "checkpoints" / "last.pt").header;
   {
     torch::NoGradGuard no_grad;
     for (auto& p : trainer.model().named_parameters())
@@ -46,8 +46,9 @@ fs::path half_grey_checkpoint() {
 
 CATCH_TEST_CASE("Evaluation scores the sigmoid maps against the truth, whole and per material", "[learn]") {
   const fs::path checkpoint = half_grey_checkpoint();
-  const CheckpointHeader header = read_checkpoint_header(checkpoint);
-  const auto model = load_checkpoint_model(checkpoint, header);
+  const Checkpoint file = read_checkpoint(checkpoint);
+  const CheckpointHeader& header = file.header;
+  const auto model = load_model(file);
   const fs::path root = training_dataset::four_image_dataset();
   const std::vector<SampleId> samples = index_dataset(root);
   EvaluationSettings settings;
@@ -109,8 +110,9 @@ CATCH_TEST_CASE("Evaluation scores the sigmoid maps against the truth, whole and
 
 CATCH_TEST_CASE("Inference predicts every map of one image at the network's size", "[learn]") {
   const fs::path checkpoint = half_grey_checkpoint();
-  const CheckpointHeader header = read_checkpoint_header(checkpoint);
-  const auto model = load_checkpoint_model(checkpoint, header);
+  const Checkpoint file = read_checkpoint(checkpoint);
+  const CheckpointHeader& header = file.header;
+  const auto model = load_model(file);
   const Image rgb(training_dataset::kSize, training_dataset::kSize, 3, 0.3f);
   const PredictedMaps predicted = predict_maps(*model, header, rgb);
   CATCH_REQUIRE(predicted.names == std::vector<std::string>{"base_color", "roughness"});

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <string>
 
 #include "matlearn/dataset_index.h"
@@ -240,7 +241,8 @@ CATCH_TEST_CASE("Checkpoints keep the design and reject other files", "[learn]")
   Trainer trainer(c);
   CATCH_REQUIRE(trainer.train());
   const fs::path last = c.output_dir / "checkpoints" / "last.pt";
-  const CheckpointHeader header = read_checkpoint_header(last);
+  const Checkpoint checkpoint = read_checkpoint(last);
+  const CheckpointHeader& header = checkpoint.header;
   CATCH_CHECK(header.network == "unet_no_skip");
   CATCH_CHECK(header.width_divisor == 4);
   CATCH_CHECK(header.layout.output_channels() == 10);
@@ -249,14 +251,67 @@ CATCH_TEST_CASE("Checkpoints keep the design and reject other files", "[learn]")
   CATCH_CHECK(header.layout.groups[3].weight == 2.0);
   CATCH_CHECK(header.linear_albedo);
   CATCH_CHECK(header.epochs_done == 1);
-  const auto model = load_checkpoint_model(last, header);
+  const auto model = load_model(checkpoint);
   CATCH_CHECK(torch::equal(model->named_parameters()["head.weight"], trainer.model().named_parameters()["head.weight"]));
   std::ofstream(c.output_dir / "not_a_checkpoint.pt") << "hello";
-  CATCH_CHECK_THROWS_WITH(read_checkpoint_header(c.output_dir / "not_a_checkpoint.pt"),
-                          Catch::Contains("not_a_checkpoint.pt"));
+  CATCH_CHECK_THROWS_WITH(read_checkpoint(c.output_dir / "not_a_checkpoint.pt"), Catch::Contains("not_a_checkpoint.pt"));
   // A checkpoint of another design does not resume this one.
   TrainingConfig other = quick_config("matpredict_checkpoint_other");
   other.epochs = 1;
   Trainer mismatched(other);
-  CATCH_CHECK_THROWS_WITH(mismatched.resume(last), Catch::Contains("10 outputs"));
+  CATCH_CHECK_THROWS_WITH(mismatched.resume(last), Catch::Contains("trained to predict base_color,roughness:3,"
+                                                                   "metallic:1,normal (linear albedo), not the "
+                                                                   "configured base_color,roughness:3"));
+}
+
+namespace {
+
+// The file's bytes with `count` of them flipped (every bit), at positions drawn with a fixed seed
+// from the middle half of the file, where the weights are.
+void flip_bytes(const fs::path& from, const fs::path& to, int count) {
+  std::ifstream in(from, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::mt19937 random(7);
+  std::uniform_int_distribution<size_t> position(bytes.size() / 4, 3 * bytes.size() / 4);
+  for (int i = 0; i < count; ++i) bytes[position(random)] ^= static_cast<char>(0xff);
+  std::ofstream(to, std::ios::binary) << bytes;
+}
+
+}  // namespace
+
+CATCH_TEST_CASE("A damaged checkpoint and one of another layout are refused", "[learn]") {
+  TrainingConfig c = quick_config("matpredict_checkpoint_damage");
+  c.epochs = 1;
+  Trainer trainer(c);
+  CATCH_REQUIRE(trainer.train());
+  const fs::path last = c.output_dir / "checkpoints" / "last.pt";
+  // Flipped bytes in the weights: torch's own reader loads such a file without complaint.
+  const fs::path flipped = c.output_dir / "flipped.pt";
+  flip_bytes(last, flipped, 200);
+  CATCH_CHECK_THROWS_WITH(read_checkpoint(flipped), Catch::Contains("flipped.pt is damaged"));
+  // One flipped byte is enough.
+  flip_bytes(last, flipped, 1);
+  CATCH_CHECK_THROWS_WITH(read_checkpoint(flipped), Catch::Contains("flipped.pt is damaged"));
+  // Cut short, as by a copy that stopped.
+  const fs::path cut = c.output_dir / "cut.pt";
+  fs::copy_file(last, cut, fs::copy_options::overwrite_existing);
+  fs::resize_file(cut, fs::file_size(last) / 2);
+  CATCH_CHECK_THROWS_WITH(read_checkpoint(cut), Catch::Contains("cut.pt is not a checkpoint"));
+
+  // base_color + normal has the same 6 channels as the paper's base_color + roughness:3.
+  TrainingConfig normal = quick_config("matpredict_checkpoint_normal");
+  normal.epochs = 1;
+  normal.layout.groups = {{MapKind::base_color, 3, 1.0}, {MapKind::normal, 3, 1.0}};
+  Trainer normal_trainer(normal);
+  CATCH_REQUIRE(normal_trainer.train());
+  Trainer paper(c);
+  CATCH_CHECK_THROWS_WITH(paper.resume(normal.output_dir / "checkpoints" / "last.pt"),
+                          Catch::Contains("trained to predict base_color,normal, not the configured "
+                                          "base_color,roughness:3"));
+  // Loss weights are not part of what a channel means: fine-tuning with other weights resumes.
+  TrainingConfig reweighted = c;
+  reweighted.layout.groups[1].weight = 3.0;
+  Trainer fine_tuned(reweighted);
+  CATCH_CHECK_NOTHROW(fine_tuned.resume(last));
+  CATCH_CHECK(fine_tuned.epochs_done() == 1);
 }

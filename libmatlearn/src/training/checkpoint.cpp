@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
+#include <zlib.h>
 
 #include "matgeom/atomic_file.h"
 #include "matgeom/input_file.h"
@@ -14,8 +15,9 @@ namespace {
 
 using nlohmann::json;
 
-// Marks the file as ours and its layout version.
-constexpr const char* kFormat = "matpredict-checkpoint-1";
+// Marks the file as ours and its layout version. Version 2 added the checksum and stores the
+// network's and the optimiser's archives as bytes, so that the checksum covers exactly what loads.
+constexpr const char* kFormat = "matpredict-checkpoint-2";
 
 json header_json(const CheckpointHeader& h) {
   json groups = json::array();
@@ -41,18 +43,24 @@ json header_json(const CheckpointHeader& h) {
           {"config", h.config_text}};
 }
 
+// Throws (json or std::invalid_argument) when a field is missing or describes no network this
+// build can make.
 CheckpointHeader header_from_json(const json& j) {
   CheckpointHeader h;
   h.network = j.at("network").get<std::string>();
+  const ArchitectureInfo& network = architecture_named(h.network);
   h.width_divisor = j.at("width_divisor").get<int64_t>();
+  if (h.width_divisor < 1) throw std::invalid_argument("width divisor below 1");
   for (const json& g : j.at("outputs"))
     h.layout.groups.push_back({map_kind_named(g.at("map").get<std::string>()), g.at("channels").get<int64_t>(),
                                g.at("weight").get<double>()});
   h.layout.material_classes = j.at("material_classes").get<int64_t>();
   h.layout.material_weight = j.at("material_weight").get<double>();
+  validate(h.layout);
   h.image_size = j.at("image_size").get<int>();
-  // Written since the normal-map outputs; earlier checkpoints were evaluated on stored albedo.
-  h.linear_albedo = j.value("linear_albedo", false);
+  if (h.image_size < network.side_multiple || h.image_size % network.side_multiple != 0)
+    throw std::invalid_argument("image size " + std::to_string(h.image_size) + " does not suit " + h.network);
+  h.linear_albedo = j.at("linear_albedo").get<bool>();
   h.epochs_done = j.at("epochs_done").get<int>();
   const json& s = j.at("schedule");
   h.schedule.epochs = s.at("epochs").get<int>();
@@ -66,28 +74,51 @@ CheckpointHeader header_from_json(const json& j) {
   return h;
 }
 
-torch::serialize::InputArchive open_archive(const std::filesystem::path& path) {
-  if (const std::optional<std::string> problem = matgeom::input_file_problem(path.string()))
-    throw std::runtime_error(path.string() + (*problem == "no such file" ? ": no such checkpoint file" : ": " + *problem));
+// A torch archive's bytes as a uint8 tensor that owns them.
+torch::Tensor serialised(torch::serialize::OutputArchive& archive) {
+  std::ostringstream stream;
+  archive.save_to(stream);
+  const std::string bytes = stream.str();
+  return torch::from_blob(const_cast<char*>(bytes.data()), {static_cast<int64_t>(bytes.size())}, torch::kUInt8).clone();
+}
+
+// A torch archive read back from the bytes serialised() made.
+torch::serialize::InputArchive open_state(const torch::Tensor& state) {
   torch::serialize::InputArchive archive;
-  try {
-    archive.load_from(path.string());
-  } catch (const c10::Error& e) {
-    throw std::runtime_error(path.string() + " is not a checkpoint: " + e.what_without_backtrace());
-  }
+  archive.load_from(reinterpret_cast<const char*>(state.data_ptr<uint8_t>()), static_cast<size_t>(state.numel()));
   return archive;
+}
+
+// zlib's CRC-32 (the one zip and PNG use) of the header text and both states, in that order.
+int64_t checksum(const std::string& header_text, const torch::Tensor& model_state,
+                 const torch::Tensor& optimizer_state) {
+  uLong crc = crc32_z(0L, Z_NULL, 0);
+  crc = crc32_z(crc, reinterpret_cast<const Bytef*>(header_text.data()), header_text.size());
+  for (const torch::Tensor* state : {&model_state, &optimizer_state})
+    crc = crc32_z(crc, state->data_ptr<uint8_t>(), static_cast<size_t>(state->numel()));
+  return static_cast<int64_t>(crc);
+}
+
+std::runtime_error not_ours(const std::filesystem::path& path, const std::string& why) {
+  return std::runtime_error(path.string() + " is not a matpredict checkpoint (" + why + ")");
 }
 
 }  // namespace
 
 void save_checkpoint(const std::filesystem::path& path, const CheckpointHeader& header, RegressorImpl& model,
                      torch::optim::Optimizer& optimizer) {
-  torch::serialize::OutputArchive archive, model_archive, optimizer_archive;
-  archive.write("header", c10::IValue(header_json(header).dump()));
+  torch::serialize::OutputArchive model_archive, optimizer_archive;
   model.save(model_archive);
-  archive.write("model", model_archive);
   optimizer.save(optimizer_archive);
-  archive.write("optimizer", optimizer_archive);
+  const torch::Tensor model_state = serialised(model_archive);
+  const torch::Tensor optimizer_state = serialised(optimizer_archive);
+  const std::string header_text = header_json(header).dump();
+
+  torch::serialize::OutputArchive archive;
+  archive.write("header", c10::IValue(header_text));
+  archive.write("model", model_state);
+  archive.write("optimizer", optimizer_state);
+  archive.write("crc32", c10::IValue(checksum(header_text, model_state, optimizer_state)));
   if (!path.parent_path().empty()) std::filesystem::create_directories(path.parent_path());
   // Serialised in memory, then written by the checked helper: libtorch's file writer finishes the
   // zip in its destructor, so a full disk there ended the process (std::terminate on a c10::Error).
@@ -96,32 +127,75 @@ void save_checkpoint(const std::filesystem::path& path, const CheckpointHeader& 
   matgeom::write_file_atomically(path, bytes.str());
 }
 
-CheckpointHeader read_checkpoint_header(const std::filesystem::path& path) {
-  torch::serialize::InputArchive archive = open_archive(path);
-  c10::IValue text;
+Checkpoint read_checkpoint(const std::filesystem::path& path) {
+  if (const std::optional<std::string> problem = matgeom::input_file_problem(path.string()))
+    throw std::runtime_error(path.string() + (*problem == "no such file" ? ": no such checkpoint file" : ": " + *problem));
+  torch::serialize::InputArchive archive;
   try {
-    archive.read("header", text);
-    const json j = json::parse(text.toStringRef());
-    if (j.value("format", "") != kFormat) throw std::runtime_error("unknown format");
-    return header_from_json(j);
-  } catch (const std::exception& e) {
-    throw std::runtime_error(path.string() + " is not a matpredict checkpoint (" + e.what() + ")");
+    archive.load_from(path.string());
+  } catch (const c10::Error& e) {
+    throw std::runtime_error(path.string() + " is not a checkpoint: " + e.what_without_backtrace());
   }
+  Checkpoint checkpoint;
+  checkpoint.path = path;
+  c10::IValue header_text, stored_checksum;
+  json header;
+  try {
+    archive.read("header", header_text);
+    header = json::parse(header_text.toStringRef());
+  } catch (const std::exception& e) {
+    throw not_ours(path, e.what());
+  }
+  const std::string format = header.is_object() ? header.value("format", "") : "";
+  if (format == "matpredict-checkpoint-1")
+    throw not_ours(path, "written by an earlier matpredict, without a checksum: train it again");
+  if (format != kFormat) throw not_ours(path, "unknown format \"" + format + "\"");
+  try {
+    archive.read("model", checkpoint.model_state);
+    archive.read("optimizer", checkpoint.optimizer_state);
+    archive.read("crc32", stored_checksum);
+  } catch (const c10::Error& e) {
+    throw not_ours(path, e.what_without_backtrace());
+  }
+  for (const torch::Tensor* state : {&checkpoint.model_state, &checkpoint.optimizer_state})
+    if (state->scalar_type() != torch::kUInt8 || state->dim() != 1 || !state->is_contiguous())
+      throw not_ours(path, "its states are not byte arrays");
+  if (!stored_checksum.isInt() ||
+      stored_checksum.toInt() != checksum(header_text.toStringRef(), checkpoint.model_state, checkpoint.optimizer_state))
+    throw std::runtime_error(path.string() +
+                             " is damaged: its contents do not match the checksum written with them (a copy cut "
+                             "short or changed on disk); use another checkpoint or train again");
+  try {
+    checkpoint.header = header_from_json(header);
+  } catch (const std::exception& e) {
+    throw not_ours(path, e.what());
+  }
+  return checkpoint;
 }
 
-std::shared_ptr<RegressorImpl> load_checkpoint_model(const std::filesystem::path& path, const CheckpointHeader& header) {
-  std::shared_ptr<RegressorImpl> model = make_regressor(architecture_named(header.network).architecture,
-                                                        header.layout.output_channels(), header.width_divisor);
-  torch::serialize::InputArchive archive = open_archive(path), model_archive;
-  archive.read("model", model_archive);
-  model->load(model_archive);
+std::shared_ptr<RegressorImpl> load_model(const Checkpoint& checkpoint) {
+  const CheckpointHeader& h = checkpoint.header;
+  std::shared_ptr<RegressorImpl> model =
+      make_regressor(architecture_named(h.network).architecture, h.layout.output_channels(), h.width_divisor);
+  try {
+    torch::serialize::InputArchive archive = open_state(checkpoint.model_state);
+    model->load(archive);
+  } catch (const c10::Error& e) {
+    throw std::runtime_error(checkpoint.path.string() + ": its weights do not fit " + h.network + " with " +
+                             std::to_string(h.layout.output_channels()) + " outputs (" +
+                             e.what_without_backtrace() + ")");
+  }
   return model;
 }
 
-void load_checkpoint_optimizer(const std::filesystem::path& path, torch::optim::Optimizer& optimizer) {
-  torch::serialize::InputArchive archive = open_archive(path), optimizer_archive;
-  archive.read("optimizer", optimizer_archive);
-  optimizer.load(optimizer_archive);
+void load_optimizer(const Checkpoint& checkpoint, torch::optim::Optimizer& optimizer) {
+  try {
+    torch::serialize::InputArchive archive = open_state(checkpoint.optimizer_state);
+    optimizer.load(archive);
+  } catch (const c10::Error& e) {
+    throw std::runtime_error(checkpoint.path.string() + ": its optimiser state does not fit this optimiser (" +
+                             e.what_without_backtrace() + ")");
+  }
 }
 
 }  // namespace matlearn

@@ -63,4 +63,23 @@ void validate(const OutputLayout& layout) {
   if (layout.output_channels() == 0) throw std::invalid_argument("the network would predict nothing");
 }
 
+std::string describe(const OutputLayout& layout) {
+  std::string text;
+  for (const OutputGroup& g : layout.groups) {
+    if (!text.empty()) text += ",";
+    text += map_name(g.map);
+    if (!is_colour_map(g.map)) text += ":" + std::to_string(g.channels);
+  }
+  if (layout.material_classes > 0)
+    text += (text.empty() ? "" : " + ") + std::to_string(layout.material_classes) + " classes";
+  return text;
+}
+
+bool same_channels(const OutputLayout& a, const OutputLayout& b) {
+  if (a.groups.size() != b.groups.size() || a.material_classes != b.material_classes) return false;
+  for (size_t g = 0; g < a.groups.size(); ++g)
+    if (a.groups[g].map != b.groups[g].map || a.groups[g].channels != b.groups[g].channels) return false;
+  return true;
+}
+
 }  // namespace matlearn

@@ -97,16 +97,24 @@ Trainer::Trainer(TrainingConfig config) : config_(std::move(config)) {
   schedule_ = start_schedule(config_.learning_rate);
 }
 
-void Trainer::resume(const std::filesystem::path& checkpoint) {
-  const CheckpointHeader header = read_checkpoint_header(checkpoint);
+void Trainer::resume(const std::filesystem::path& path) {
+  const Checkpoint checkpoint = read_checkpoint(path);
+  const CheckpointHeader& header = checkpoint.header;
   if (header.network != config_.network || header.width_divisor != config_.width_divisor ||
-      header.layout.output_channels() != config_.layout.output_channels() || header.image_size != config_.image_size)
-    throw std::invalid_argument(checkpoint.string() + " holds " + header.network + " with " +
-                                std::to_string(header.layout.output_channels()) + " outputs at " +
-                                std::to_string(header.image_size) + " px, not the configured network");
-  model_ = load_checkpoint_model(checkpoint, header);
+      header.image_size != config_.image_size)
+    throw std::invalid_argument(path.string() + " holds " + header.network + " (widths / " +
+                                std::to_string(header.width_divisor) + ") at " + std::to_string(header.image_size) +
+                                " px, not the configured " + config_.network + " (widths / " +
+                                std::to_string(config_.width_divisor) + ") at " + std::to_string(config_.image_size) +
+                                " px");
+  // The same channel count is not enough: base_color,normal and base_color,roughness:3 are both 6.
+  if (!same_channels(header.layout, config_.layout) || header.linear_albedo != config_.linear_albedo)
+    throw std::invalid_argument(path.string() + " was trained to predict " + describe(header.layout) +
+                                (header.linear_albedo ? " (linear albedo)" : "") + ", not the configured " +
+                                describe(config_.layout) + (config_.linear_albedo ? " (linear albedo)" : ""));
+  model_ = load_model(checkpoint);
   optimizer_ = make_optimizer(config_, *model_);
-  load_checkpoint_optimizer(checkpoint, *optimizer_);
+  load_optimizer(checkpoint, *optimizer_);
   schedule_ = header.schedule;
   epochs_done_ = header.epochs_done;
   has_best_ = header.has_best_validation;

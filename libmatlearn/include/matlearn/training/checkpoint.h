@@ -2,7 +2,8 @@
 // A training checkpoint: everything needed to rebuild the network and continue training exactly
 // where it stopped (network, output layout, weights and BatchNorm statistics, optimiser moments,
 // learning-rate schedule, finished epochs), in one file torch's serialisation writes. Files are
-// written under a temporary name and renamed, so a stopped job never leaves half a checkpoint.
+// written under a temporary name and renamed, so a stopped job never leaves half a checkpoint,
+// and carry a CRC-32 of everything they hold, so a damaged one is refused instead of scored.
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -32,11 +33,22 @@ struct CheckpointHeader {
 void save_checkpoint(const std::filesystem::path& path, const CheckpointHeader& header, RegressorImpl& model,
                      torch::optim::Optimizer& optimizer);
 
-// Throws std::runtime_error naming the file when it is not a matpredict checkpoint.
-CheckpointHeader read_checkpoint_header(const std::filesystem::path& path);
-// A freshly built network of the header's design with the checkpoint's weights.
-std::shared_ptr<RegressorImpl> load_checkpoint_model(const std::filesystem::path& path, const CheckpointHeader& header);
-// Restores the optimiser state into an optimiser built for `model`'s parameters.
-void load_checkpoint_optimizer(const std::filesystem::path& path, torch::optim::Optimizer& optimizer);
+// A checkpoint file read whole and verified: its header, and the network's and the optimiser's
+// state still serialised (uint8 tensors holding torch archives).
+struct Checkpoint {
+  std::filesystem::path path;
+  CheckpointHeader header;
+  torch::Tensor model_state;
+  torch::Tensor optimizer_state;
+};
+
+// Throws std::runtime_error naming the file when it is not a matpredict checkpoint, when its
+// checksum does not match its contents, or when its header describes no network this build has.
+Checkpoint read_checkpoint(const std::filesystem::path& path);
+// A freshly built network of the header's design with the checkpoint's weights; throws
+// std::runtime_error naming the file when the weights do not fit that design.
+std::shared_ptr<RegressorImpl> load_model(const Checkpoint& checkpoint);
+// Restores the optimiser state into an optimiser built for load_model's parameters.
+void load_optimizer(const Checkpoint& checkpoint, torch::optim::Optimizer& optimizer);
 
 }  // namespace matlearn

@@ -41,5 +41,11 @@ MapKind map_kind_named(const std::string& name);
 // Throws std::invalid_argument naming the bad entry: a map twice, base colour or normal not 3
 // channels, roughness or metallic not 1 or 3, a negative weight, 1 material class, no output at all.
 void validate(const OutputLayout& layout);
+// The layout in train_regressor's --outputs syntax, classes after: "base_color,roughness:3 + 8 classes".
+std::string describe(const OutputLayout& layout);
+// Whether a network trained for one layout predicts the same thing in every channel of the other:
+// the same maps in the same order with the same channel counts, and the same classes. Loss weights
+// may differ (fine-tuning with other weights is a use, not a mistake).
+bool same_channels(const OutputLayout& a, const OutputLayout& b);
 
 }  // namespace matlearn
