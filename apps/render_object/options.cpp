@@ -85,8 +85,9 @@ glm::dvec3 parse_point(const std::string& option, const std::string& text) {
   const std::vector<std::string> parts = CLI::detail::split(text, ',');
   glm::dvec3 point(0.0);
   bool ok = parts.size() == 3;
-  for (int k = 0; ok && k < 3; ++k) ok = CLI::detail::lexical_cast(parts[static_cast<size_t>(k)], point[k]);
-  require(ok, option, "X,Y,Z (three numbers, metres)");
+  for (int k = 0; ok && k < 3; ++k)
+    ok = CLI::detail::lexical_cast(parts[static_cast<size_t>(k)], point[k]) && std::isfinite(point[k]);
+  require(ok, option, "X,Y,Z (three finite numbers, metres)");
   return point;
 }
 
@@ -310,7 +311,7 @@ ObjectDescription builtin_object(const std::string& argument) {
 
 SceneDescription chosen_scene(const Options& options) {
   if (options.scene_file) return matrender::read_scene_file(*options.scene_file);
-  if (options.mesh_file) return matrender::paper_object_scene(object_from(MeshFile{*options.mesh_file}, "--mesh"));
+  if (options.mesh_file) return matrender::paper_object_scene(object_from(MeshFile{*options.mesh_file}, "--mesh " + *options.mesh_file));
   if (options.object) return matrender::paper_object_scene(builtin_object(*options.object));
   return matrender::default_scene();
 }

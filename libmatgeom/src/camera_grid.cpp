@@ -1,5 +1,6 @@
 #include "matgeom/camera_grid.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -73,15 +74,17 @@ GridCamera make_grid_camera(const CameraGridSpec& spec, int i, int j) {
 glm::dmat4 look_at_camera_to_world(const glm::dvec3& eye, const glm::dvec3& target,
                                    const glm::dvec3& world_up) {
   if (!is_finite(eye) || !is_finite(target) || !is_finite(world_up)) {
-    throw std::invalid_argument("look_at_camera_to_world: non-finite eye, target or up vector");
+    throw std::invalid_argument("the position, look-at point or up direction is not finite");
   }
   const glm::dvec3 offset = eye - target;
-  const double distance = glm::length(offset);
-  if (!(distance > 0.0)) {
-    throw std::invalid_argument("look_at_camera_to_world: the eye must differ from the target");
-  }
+  // Scaled by its largest component first, so that points 1e-300 apart (whose squared distance
+  // underflows) or 1e300 apart (overflows) still give their direction.
+  const double largest = std::max({std::abs(offset.x), std::abs(offset.y), std::abs(offset.z)});
+  if (!(largest > 0.0)) throw std::invalid_argument("the position and the look-at point coincide");
+  if (!std::isfinite(largest))
+    throw std::invalid_argument("the position and the look-at point are too far apart for a direction");
   // The camera looks down its -Z, so +Z points from the target back to the eye.
-  const glm::dvec3 backward = offset / distance;
+  const glm::dvec3 backward = glm::normalize(offset / largest);
 
   // Image up is world_up projected onto the image plane. Looking along world_up leaves it
   // undefined; world +Y and then +X keep the frame a proper rotation.

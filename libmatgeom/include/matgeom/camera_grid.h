@@ -39,7 +39,8 @@ std::vector<GridCamera> camera_grid(const CameraGridSpec& spec);
 
 // Camera-to-world matrix of a camera at `eye` looking at `target`, image +Y toward `world_up`.
 // When the view direction is parallel to world_up the image +Y falls back to world +Y
-// (or +X), so the matrix is always a proper rotation.
+// (or +X), so the matrix is always a proper rotation. Throws std::invalid_argument, with a
+// sentence a user can act on, when a vector is not finite or the two points coincide.
 glm::dmat4 look_at_camera_to_world(const glm::dvec3& eye, const glm::dvec3& target,
                                    const glm::dvec3& world_up = glm::dvec3(0, 0, 1));
 

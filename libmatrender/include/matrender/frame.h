@@ -84,6 +84,8 @@ struct FrameBuffers {
 
   // Sizes every requested array for width x height and zeroes it.
   void resize(int w, int h, uint32_t aov_mask);
+  // The bytes resize(w, h, aov_mask) allocates.
+  static double bytes_for(int w, int h, uint32_t aov_mask);
 };
 
 }  // namespace matrender

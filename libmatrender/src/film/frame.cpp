@@ -9,6 +9,23 @@ constexpr int channels_of(const matgeom::MaterialParameterInfo& info) {
   return info.kind == matgeom::ParameterKind::Color ? 3 : 1;
 }
 
+constexpr uint32_t kAlways = 0;  // the AOV bit of the colour, which every frame has
+
+// Every buffer of a frame with its AOV bit, channels per pixel and fill value: the one list that
+// resize() and bytes_for() follow.
+template <class Visit>
+void visit_buffers(FrameBuffers& frame, Visit&& visit) {
+  visit(frame.color, kAlways, 3, 0.0f);
+  visit(frame.alpha, AovAlpha, 1, 0.0f);
+  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters)
+    visit(frame.parameter(info.id), parameter_aov(info.id), static_cast<std::size_t>(channels_of(info)), 0.0f);
+  visit(frame.normal_world, AovNormalWorld, 3, 0.0f);
+  visit(frame.normal_camera, AovNormalCamera, 3, 0.0f);
+  visit(frame.depth, AovDepth, 1, 0.0f);
+  visit(frame.label, AovLabel, 1, int32_t{0});
+  visit(frame.part_id, AovPartId, 1, int32_t{-1});
+}
+
 }  // namespace
 
 const std::vector<AovName>& aov_names() {
@@ -38,18 +55,18 @@ void FrameBuffers::resize(int w, int h, uint32_t aov_mask) {
   height = h;
   aovs = aov_mask;
   const std::size_t n = static_cast<size_t>(w) * static_cast<size_t>(h);
-  auto fit = [&](auto& buffer, uint32_t aov, std::size_t channels, auto fill) {
-    buffer.assign((aov_mask & aov) ? n * channels : 0, fill);
-  };
-  color.assign(n * 3, 0.0f);
-  fit(alpha, AovAlpha, 1, 0.0f);
-  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters)
-    fit(parameter(info.id), parameter_aov(info.id), static_cast<size_t>(channels_of(info)), 0.0f);
-  fit(normal_world, AovNormalWorld, 3, 0.0f);
-  fit(normal_camera, AovNormalCamera, 3, 0.0f);
-  fit(depth, AovDepth, 1, 0.0f);
-  fit(label, AovLabel, 1, int32_t{0});
-  fit(part_id, AovPartId, 1, int32_t{-1});
+  visit_buffers(*this, [&](auto& buffer, uint32_t aov, std::size_t channels, auto fill) {
+    buffer.assign(aov == kAlways || (aov_mask & aov) ? n * channels : 0, fill);
+  });
+}
+
+double FrameBuffers::bytes_for(int w, int h, uint32_t aov_mask) {
+  FrameBuffers unused;
+  double bytes_per_pixel = 0.0;
+  visit_buffers(unused, [&](auto& buffer, uint32_t aov, std::size_t channels, auto) {
+    if (aov == kAlways || (aov_mask & aov)) bytes_per_pixel += static_cast<double>(channels * sizeof(buffer[0]));
+  });
+  return bytes_per_pixel * static_cast<double>(w) * static_cast<double>(h);
 }
 
 }  // namespace matrender

@@ -164,8 +164,13 @@ void place_object(const ObjectDescription& object, matgeom::TriangleMesh& mesh) 
 }
 
 glm::dmat4 camera_to_world(const CameraDescription& camera, const glm::dvec3& centroid) {
-  if (const auto* look = std::get_if<LookAtPlacement>(&camera.placement))
-    return matgeom::look_at_camera_to_world(look->position, look->target, look->up);
+  if (const auto* look = std::get_if<LookAtPlacement>(&camera.placement)) {
+    try {
+      return matgeom::look_at_camera_to_world(look->position, look->target, look->up);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(std::string("camera: ") + e.what());
+    }
+  }
   if (const auto* matrix = std::get_if<MatrixPlacement>(&camera.placement)) return matrix->camera_to_world;
   const auto& grid = std::get<GridPlacement>(camera.placement);
   matgeom::CameraGridSpec spec = grid.spec;

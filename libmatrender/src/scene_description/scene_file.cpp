@@ -320,7 +320,11 @@ Light read_area_light(const Node& node) {
   const glm::dvec3 target = read_target(node, position);
   const glm::dvec3 up = node.has("up") ? read_direction(node.required("up")) : glm::dvec3(0.0, 0.0, 1.0);
   // A lamp emits down its -Z like a camera looks down its -Z, so the same frame aims both.
-  light.light_to_world = matgeom::look_at_camera_to_world(position, target, up);
+  try {
+    light.light_to_world = matgeom::look_at_camera_to_world(position, target, up);
+  } catch (const std::invalid_argument& e) {
+    node.required("look_at").fail(e.what());
+  }
   const Node size = node.required("size");
   if (size.is_number()) {
     light.size_x = light.size_y = size.positive();

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include <OpenImageIO/imageio.h>
 
 #include "matgeom/input_file.h"
+#include "matgeom/memory_limit.h"
 #include "matgeom/srgb.h"
 
 namespace matrender {
@@ -20,6 +22,16 @@ glm::vec4 to_rgba(const float* p, int channels) {
     case 3: return {p[0], p[1], p[2], 1.0f};
     default: return {p[0], p[1], p[2], p[3]};
   }
+}
+
+// Refuses, before anything is allocated, a texture whose texels (RGBA floats) and the
+// `staging_bytes_per_texel` of its decoding do not fit in memory.
+void require_texture_memory(const std::string& name, int width, int height, double staging_bytes_per_texel) {
+  const double texels = static_cast<double>(width) * static_cast<double>(height);
+  if (const std::optional<std::string> problem =
+          matgeom::memory_problem(texels * (sizeof(glm::vec4) + staging_bytes_per_texel),
+                                  "its " + std::to_string(width) + " x " + std::to_string(height) + " texels"))
+    throw std::runtime_error(name + ": " + *problem);
 }
 
 int wrap_index(int i, int n, Wrap wrap) {
@@ -60,6 +72,7 @@ std::shared_ptr<const Texture> Texture::from_pixels8(int width, int height, int 
                                                      const uint8_t* pixels, ColorSpace space, Wrap wrap,
                                                      std::string name) {
   if (pixels == nullptr) throw std::invalid_argument(name + ": no pixel data");
+  require_texture_memory(name, width, height, 4.0 * channels);
   std::vector<float> values(static_cast<size_t>(width) * height * channels);
   for (size_t i = 0; i < values.size(); ++i) values[i] = pixels[i] / 255.0f;
   // 8-bit sRGB images are filtered on the encoded values and decoded afterwards (Cycles).
@@ -82,6 +95,7 @@ std::shared_ptr<const Texture> Texture::load(const std::string& path, ColorSpace
   const int channels = std::min(spec.nchannels, 4);
   if (spec.width <= 0 || spec.height <= 0 || channels < 1)
     throw std::runtime_error(path + ": image has no pixels");
+  require_texture_memory(path, spec.width, spec.height, 4.0 * channels);
   std::vector<float> pixels(static_cast<size_t>(spec.width) * spec.height * channels);
   if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
     throw std::runtime_error(path + ": cannot decode image: " + input->geterror());
