@@ -20,7 +20,11 @@ std::optional<T> parse_whole(const std::string& text) {
   return value;
 }
 
-std::string shown(const std::string& text) { return text.size() > 40 ? text.substr(0, 37) + "..." : text; }
+// The value as the refusal quotes it: nothing is named, a very long one cut.
+std::string shown(const std::string& text) {
+  if (text.empty()) return "nothing";
+  return text.size() > 40 ? text.substr(0, 37) + "..." : text;
+}
 
 std::string with_thousands_unsigned(uint64_t n) {
   std::string digits = std::to_string(n);
@@ -45,25 +49,33 @@ std::string with_thousands(int64_t n) {
                : with_thousands_unsigned(static_cast<uint64_t>(n));
 }
 
+std::optional<int64_t> whole_number(const std::string& text) { return parse_whole<int64_t>(text); }
+std::optional<uint64_t> unsigned_whole_number(const std::string& text) { return parse_whole<uint64_t>(text); }
+
+std::optional<double> finite_number(const std::string& text) {
+  double value = 0.0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, value);
+  if (error != std::errc() || stop != end || text.empty() || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
 std::optional<std::string> whole_number_problem(const std::string& text, int64_t low, int64_t high) {
-  const std::optional<int64_t> value = parse_whole<int64_t>(text);
+  const std::optional<int64_t> value = whole_number(text);
   if (value && *value >= low && *value <= high) return std::nullopt;
   return "expected a whole number from " + with_thousands(low) + " to " + with_thousands(high) + ", got " +
          shown(text);
 }
 
 std::optional<std::string> seed_problem(const std::string& text) {
-  if (parse_whole<uint64_t>(text)) return std::nullopt;
+  if (unsigned_whole_number(text)) return std::nullopt;
   return "expected a whole number from 0 to " + with_thousands_unsigned(std::numeric_limits<uint64_t>::max()) +
          ", got " + shown(text);
 }
 
 std::optional<std::string> number_problem(const std::string& text, double low, double high, bool low_open) {
-  double value = 0.0;
-  const char* end = text.data() + text.size();
-  const auto [stop, error] = std::from_chars(text.data(), end, value);
-  const bool parsed = error == std::errc() && stop == end && !text.empty() && std::isfinite(value);
-  if (parsed && (low_open ? value > low : value >= low) && value <= high) return std::nullopt;
+  const std::optional<double> value = finite_number(text);
+  if (value && (low_open ? *value > low : *value >= low) && *value <= high) return std::nullopt;
   const std::string range = low_open ? fmt::format("greater than {:g} and at most {:g}", low, high)
                                      : fmt::format("from {:g} to {:g}", low, high);
   return "expected a number " + range + ", got " + shown(text);

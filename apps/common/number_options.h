@@ -11,6 +11,18 @@
 
 namespace app_support {
 
+// Limits the tools share. More threads than a machine has are capped to it anyway; a batch of
+// more samples than this is no training setting but a typo (4096 at 224 px is 2.3 GiB of input).
+constexpr int kMaxThreadRequest = 65536;
+constexpr int kMaxBatchSize = 4096;
+
+// The whole of `text` as a number (decimal, C locale), or nothing: no sign where the type has
+// none, no fraction in a whole number, nothing beyond the type's range, no trailing characters,
+// and for a real number nothing infinite or NaN.
+std::optional<int64_t> whole_number(const std::string& text);
+std::optional<uint64_t> unsigned_whole_number(const std::string& text);
+std::optional<double> finite_number(const std::string& text);
+
 // What is wrong with `text` as a whole number in [low, high], or nothing when it is one:
 // "expected a whole number from 1 to 65,536, got 99999999999".
 std::optional<std::string> whole_number_problem(const std::string& text, int64_t low, int64_t high);

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "common/number_options.h"
 #include "common/progress_bar.h"
 #include "common/thread_count.h"
 #include "matgeom/atomic_file.h"
@@ -176,12 +177,15 @@ int main(int argc, char** argv) {
   app.add_option("--split", o.split, "train, val or test (without a split file: train, or val and test alike for the 20 % part)")
       ->check(CLI::IsMember({"train", "val", "test"}))
       ->capture_default_str();
-  app.add_option("--seed", o.seed, "seed of the split without a split file")->capture_default_str();
+  app.add_option("--seed", o.seed, "seed of the split without a split file")
+      ->check(app_support::any_seed())
+      ->capture_default_str();
   app.add_flag("--paper-compat", o.paper_compat, "image-similarity-measures' conventions (8-bit, max_p 4095, its SAM), to compare with the paper");
   app.add_option("--output-dir", o.output_dir, "folder for the tables and panels")->capture_default_str();
-  app.add_option("--batch-size", o.batch_size, "samples per forward pass")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--batch-size", o.batch_size, "samples per forward pass")->check(app_support::whole_number_in(1, app_support::kMaxBatchSize))
+      ->capture_default_str();
   app.add_option("--threads", o.threads, "torch and decoding threads (0: all cores; more than the machine has are capped)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(app_support::whole_number_in(0, app_support::kMaxThreadRequest))
       ->capture_default_str();
   try {
     app.parse(argc, argv);

@@ -1,14 +1,15 @@
 #include "options.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
+#include <limits>
 #include <variant>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "common/number_options.h"
 #include "common/thread_count.h"
 #include "matgeom/builtin_objects.h"
 #include "matrender/camera.h"
@@ -31,6 +32,9 @@ using matrender::MeshFile;
 using matrender::ObjectDescription;
 using matrender::Origin;
 using matrender::SceneDescription;
+
+// The largest grid side the options take; a larger grid has cells finer than any dataset samples.
+constexpr int kMaxGridSize = 65536;
 
 // Thrown from an option callback, CLI11 reports it like its own errors ("--spp: expected ...").
 void require(bool ok, const std::string& option, const std::string& expectation) {
@@ -65,20 +69,18 @@ std::string aov_help() {
   return "passes written besides colour: default (" + defaults + "), all, none, or a comma-separated list of " + names;
 }
 
-int parse_positive_int(const std::string& text) {
-  int value = 0;
-  const char* end = text.data() + text.size();
-  const auto [stop, error] = std::from_chars(text.data(), end, value);
-  return error == std::errc() && stop == end && value >= 1 ? value : 0;
-}
+// An image side as the scene file takes it; the checked text converts.
+CLI::Validator image_side() { return app_support::whole_number_in(1, matrender::kMaxImageSide); }
 
 void set_resolution(const std::string& text, Options& options) {
   const size_t x = text.find_first_of("xX");
-  const int width = x == std::string::npos ? 0 : parse_positive_int(text.substr(0, x));
-  const int height = x == std::string::npos ? 0 : parse_positive_int(text.substr(x + 1));
-  require(width > 0 && height > 0, "--resolution", "WIDTHxHEIGHT with positive integers, e.g. 512x512");
-  options.width = width;
-  options.height = height;
+  require(x != std::string::npos, "--resolution", "WIDTHxHEIGHT, e.g. 512x512");
+  const std::string width = text.substr(0, x), height = text.substr(x + 1);
+  for (const std::string* side : {&width, &height})
+    if (const std::optional<std::string> problem = app_support::whole_number_problem(*side, 1, matrender::kMaxImageSide))
+      throw CLI::ValidationError("--resolution", "each side: " + *problem);
+  options.width = std::stoi(width);
+  options.height = std::stoi(height);
 }
 
 glm::dvec3 parse_point(const std::string& option, const std::string& text) {
@@ -136,21 +138,13 @@ void add_camera_options(CLI::App& app, Options& o) {
                          ->default_str(fmt::format("{}x{}", camera.width, camera.height))
                          ->group(group);
   auto* width = app.add_option_function<int>(
-                       "--width",
-                       [&o](const int& w) {
-                         require(w >= 1, "--width", "an integer >= 1");
-                         o.width = w;
-                       },
-                       "image width in pixels")
+                       "--width", [&o](const int& w) { o.width = w; }, "image width in pixels")
+                    ->check(image_side())
                     ->default_str(std::to_string(camera.width))
                     ->group(group);
   auto* height = app.add_option_function<int>(
-                        "--height",
-                        [&o](const int& h) {
-                          require(h >= 1, "--height", "an integer >= 1");
-                          o.height = h;
-                        },
-                        "image height in pixels")
+                        "--height", [&o](const int& h) { o.height = h; }, "image height in pixels")
+                     ->check(image_side())
                      ->default_str(std::to_string(camera.height))
                      ->group(group);
   resolution->excludes(width)->excludes(height);
@@ -163,24 +157,19 @@ void add_camera_options(CLI::App& app, Options& o) {
          "vertical field of view in degrees (the default is Blender's 50 mm lens)")
       ->default_str(fmt::format("{:.4f}", glm::degrees(camera.vertical_fov)))
       ->group(group);
+  // Cells beyond the grid are refused once the grid is known.
   auto* cell = app.add_option_function<std::array<int, 2>>(
-                      "--cell",
-                      [&o](const std::array<int, 2>& c) {
-                        require(c[0] >= 0 && c[1] >= 0, "--cell", "two integers >= 0");
-                        o.cell = c;
-                      },
+                      "--cell", [&o](const std::array<int, 2>& c) { o.cell = c; },
                       "grid camera cell I,J (I: polar row from the zenith, J: azimuth column)")
+                   ->check(app_support::whole_number_in(0, kMaxGridSize - 1))
                    ->delimiter(',')
                    ->type_name("I,J")
                    ->default_str(fmt::format("{},{}", grid.i, grid.j))
                    ->group(group);
   auto* grid_size = app.add_option_function<std::array<int, 2>>(
-                           "--grid",
-                           [&o](const std::array<int, 2>& g) {
-                             require(g[0] >= 1 && g[1] >= 1, "--grid", "two integers >= 1");
-                             o.grid = g;
-                           },
+                           "--grid", [&o](const std::array<int, 2>& g) { o.grid = g; },
                            "camera grid size NPHI,NTHETA over polar [0, 90] and azimuth [-90, 90] degrees")
+                        ->check(app_support::whole_number_in(1, kMaxGridSize))
                         ->delimiter(',')
                         ->type_name("NPHI,NTHETA")
                         ->default_str(fmt::format("{},{}", grid.spec.n_phi, grid.spec.n_theta))
@@ -213,16 +202,13 @@ void add_render_options(CLI::App& app, Options& o) {
   const std::string group = "Render (override the scene file's render block)";
   const matrender::RenderSettings settings;
   app.add_option_function<int>(
-         "--spp",
-         [&o](const int& spp) {
-           require(spp >= 1, "--spp", "an integer >= 1");
-           o.spp = spp;
-         },
-         "samples per pixel")
+         "--spp", [&o](const int& spp) { o.spp = spp; }, "samples per pixel")
+      ->check(app_support::whole_number_in(1, std::numeric_limits<int>::max()))
       ->default_str(std::to_string(settings.samples_per_pixel))
       ->group(group);
   app.add_option_function<uint32_t>(
          "--seed", [&o](const uint32_t& seed) { o.seed = seed; }, "sampler seed; the image depends only on it")
+      ->check(app_support::whole_number_in(0, std::numeric_limits<uint32_t>::max()))
       ->default_str(std::to_string(settings.seed))
       ->group(group);
   app.add_option_function<double>(
@@ -256,12 +242,9 @@ void add_render_options(CLI::App& app, Options& o) {
 void add_run_options(CLI::App& app, Options& o) {
   const std::string group = "Run";
   app.add_option_function<int>(
-         "--threads",
-         [&o](const int& threads) {
-           require(threads >= 0, "--threads", "an integer >= 0");
-           o.threads = threads;
-         },
+         "--threads", [&o](const int& threads) { o.threads = threads; },
          "render threads, 0 = all hardware threads, more are capped to them (the image does not depend on it)")
+      ->check(app_support::whole_number_in(0, app_support::kMaxThreadRequest))
       ->default_str("0")
       ->group(group);
   app.add_option_function<std::string>(
@@ -290,12 +273,10 @@ std::string joined(const std::vector<std::string>& names) {
 }
 
 uint32_t parse_seed(const std::string& text) {
-  uint32_t seed = 0;
-  const char* end = text.data() + text.size();
-  const auto [stop, error] = std::from_chars(text.data(), end, seed);
-  if (text.empty() || error != std::errc() || stop != end)
-    throw InputError("--object: seed \"" + text + "\" is not an integer in [0, 4294967295]");
-  return seed;
+  if (const std::optional<std::string> problem =
+          app_support::whole_number_problem(text, 0, std::numeric_limits<uint32_t>::max()))
+    throw InputError("--object: seed: " + *problem);
+  return static_cast<uint32_t>(std::stoul(text));
 }
 
 // "NAME" or "NAME:SEED" as given to --object.

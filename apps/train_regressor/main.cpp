@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "common/interrupt.h"
+#include "common/number_options.h"
 #include "common/progress_bar.h"
 #include "common/thread_count.h"
 #include "example_dataset.h"
@@ -31,13 +32,6 @@ double paper_millions(matlearn::Architecture a) {
   }
 }
 
-// 23730758 -> "23,730,758".
-std::string with_thousands(int64_t n) {
-  std::string digits = std::to_string(n);
-  for (int i = static_cast<int>(digits.size()) - 3; i > 0; i -= 3) digits.insert(static_cast<size_t>(i), ",");
-  return digits;
-}
-
 void describe(const matlearn::TrainingConfig& config) {
   const int64_t outputs = config.layout.output_channels();
   fmt::print("Networks for {} output channels ({} map channels, {} material classes):\n", outputs,
@@ -49,13 +43,13 @@ void describe(const matlearn::TrainingConfig& config) {
     const std::string paper_text =
         paper > 0 ? fmt::format("{:.1f}M ({:+.2f}%)", paper, 100.0 * (static_cast<double>(count) / (paper * 1e6) - 1.0))
                   : "-";
-    fmt::print("  {:<20} {:>12} {:>15}  {}\n", a.name, with_thousands(count), paper_text, a.description);
+    fmt::print("  {:<20} {:>12} {:>15}  {}\n", a.name, app_support::with_thousands(count), paper_text, a.description);
   }
   if (config.width_divisor != 1) {
     const auto thin = matlearn::make_regressor(matlearn::architecture_named(config.network).architecture, outputs,
                                                config.width_divisor);
     fmt::print("  {} with widths / {}: {} parameters\n", config.network, config.width_divisor,
-               with_thousands(matlearn::parameter_count(*thin)));
+               app_support::with_thousands(matlearn::parameter_count(*thin)));
   }
   fmt::print("The paper's counts are for 6 outputs (base colour 3 + roughness 3).\n");
 }

@@ -5,15 +5,40 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <fmt/format.h>
+
+#include "common/number_options.h"
 #include "matlearn/sample_loader.h"
 
 namespace train_regressor {
 namespace {
 
+// The values a numeric setting takes, stated in --help and in every refusal.
+struct Range {
+  enum class Kind { none, whole, real, seed } kind = Kind::none;
+  double low = 0.0;
+  double high = 0.0;
+  bool low_open = false;  // real: low itself is excluded
+};
+Range whole(int64_t low, int64_t high) { return {Range::Kind::whole, double(low), double(high), false}; }
+Range real(double low, double high) { return {Range::Kind::real, low, high, false}; }
+Range real_above(double low, double high) { return {Range::Kind::real, low, high, true}; }
+Range any_seed() { return {Range::Kind::seed, 0.0, 0.0, false}; }
+
+// Upper limits of no physical meaning, there to catch typos before they cost a day: a loss weight,
+// a learning rate, epochs, schedule periods.
+constexpr double kMaxLossWeight = 1000.0;
+constexpr double kMaxLearningRate = 10.0;
+constexpr int64_t kMaxEpochs = 100000;
+// Label maps are 16-bit PNGs: ids 0..65535.
+constexpr int64_t kMaxMaterialClasses = 65536;
+constexpr int64_t kMaxImageSize = 4096;
+
 struct Setting {
   const char* key;  // the YAML key; the option is --key with dashes
   const char* default_value;
   const char* help;
+  Range range = {};
 };
 
 // An empty default for the optimiser settings means the paper's choice for the network: AdamW
@@ -25,35 +50,35 @@ const std::vector<Setting>& settings_table() {
       {"model_name", "unet_no_skip",
        "network: unet_no_skip, resnet50_u, swin_t_u, convnext_t_u, repo_resnet50_unet (alias resnet50_unet), "
        "repo_swin_t_unet (alias swin_t_unet)"},
-      {"width_divisor", "1", "divide unet_no_skip's channel widths by this (4: a quick 1.5M-parameter network)"},
+      {"width_divisor", "1", "divide unet_no_skip's channel widths by this (4: a quick 1.5M-parameter network)", whole(1, 32)},
       {"encoder_weights", "", "torchvision weights converted by scripts/convert_torchvision_weights.py, for the trunk"},
       {"output_dir", "train_output", "folder for checkpoints/, log.csv and config.yaml"},
       {"task_mode", "pbr", "pbr (material maps), material (segmentation only) or both"},
       {"outputs", "base_color,roughness:3",
        "predicted maps with channel counts, in order: base_color, roughness[:1|3], metallic[:1|3], normal "
        "(normal reads the dataset's normal_obj maps)"},
-      {"albedo_weight", "1", "loss weight of the base colour"},
-      {"roughness_weight", "1", "loss weight of the roughness"},
-      {"metallic_weight", "1", "loss weight of the metallic map"},
-      {"normal_weight", "1", "loss weight of the normal map"},
-      {"material_num_classes", "8", "segmentation classes (the repository's 8 families, 0 = background)"},
-      {"material_ce_weight", "1", "loss weight of the segmentation cross-entropy"},
+      {"albedo_weight", "1", "loss weight of the base colour", real(0, kMaxLossWeight)},
+      {"roughness_weight", "1", "loss weight of the roughness", real(0, kMaxLossWeight)},
+      {"metallic_weight", "1", "loss weight of the metallic map", real(0, kMaxLossWeight)},
+      {"normal_weight", "1", "loss weight of the normal map", real(0, kMaxLossWeight)},
+      {"material_num_classes", "8", "segmentation classes (the repository's 8 families, 0 = background)", whole(0, kMaxMaterialClasses)},
+      {"material_ce_weight", "1", "loss weight of the segmentation cross-entropy", real(0, kMaxLossWeight)},
       {"loss", "mse", "regression loss: mse (the paper's) or l1 (the repository's)"},
       {"linear_albedo", "false", "supervise the albedo decoded from sRGB to linear values"},
       {"optimizer_name", "", "adam or adamw (default: the paper's for the network)"},
-      {"lr", "", "initial learning rate (default: the paper's, 2e-4, or 1e-4 for Swin-T)"},
-      {"weight_decay", "", "weight decay (default: the paper's, 0, or 1e-2 for Swin-T)"},
+      {"lr", "", "initial learning rate (default: the paper's, 2e-4, or 1e-4 for Swin-T)", real_above(0, kMaxLearningRate)},
+      {"weight_decay", "", "weight decay (default: the paper's, 0, or 1e-2 for Swin-T)", real(0, kMaxLearningRate)},
       {"schedule", "step", "learning-rate schedule: step, cosine or plateau"},
-      {"step_size", "20", "step schedule: epochs between reductions"},
-      {"gamma", "0.5", "step and plateau schedules: reduction factor"},
-      {"t_max", "50", "cosine schedule: half period in epochs"},
-      {"patience", "5", "plateau schedule: epochs without improvement before a reduction"},
-      {"epochs", "50", "epochs to train"},
-      {"batch_size", "8", "samples per step"},
-      {"image_size", "224", "side the samples are resized to"},
-      {"threads", "0", "torch and decoding threads (0: all cores, more are capped to them; libtorch alone would use 1)"},
-      {"seed", "42", "seed of the initial weights, the split and the sample order"},
-      {"validate_every", "1", "epochs between validations (the last epoch is always validated)"},
+      {"step_size", "20", "step schedule: epochs between reductions", whole(1, kMaxEpochs)},
+      {"gamma", "0.5", "step and plateau schedules: reduction factor", real_above(0, 1)},
+      {"t_max", "50", "cosine schedule: half period in epochs", whole(1, kMaxEpochs)},
+      {"patience", "5", "plateau schedule: epochs without improvement before a reduction", whole(0, kMaxEpochs)},
+      {"epochs", "50", "epochs to train", whole(1, kMaxEpochs)},
+      {"batch_size", "8", "samples per step", whole(1, app_support::kMaxBatchSize)},
+      {"image_size", "224", "side the samples are resized to", whole(1, kMaxImageSize)},
+      {"threads", "0", "torch and decoding threads (0: all cores, more are capped to them; libtorch alone would use 1)", whole(0, app_support::kMaxThreadRequest)},
+      {"seed", "42", "seed of the initial weights, the split and the sample order", any_seed()},
+      {"validate_every", "1", "epochs between validations (the last epoch is always validated)", whole(1, kMaxEpochs)},
       {"pretrained_model", "", "checkpoint to continue from (as the repository's option)"},
   };
   return table;
@@ -75,14 +100,48 @@ std::string option_name(const std::string& key) {
   return "--" + name;
 }
 
-template <class T>
-T parse_value(const std::map<std::string, std::string>& s, const std::string& key) {
+const Setting& setting_named(const std::string& key) {
+  for (const Setting& setting : settings_table())
+    if (setting.key == key) return setting;
+  throw std::logic_error("no setting " + key);
+}
+
+// The range as --help states it: "[1, 100000]", "(0, 10]".
+std::string range_text(const Range& r) {
+  switch (r.kind) {
+    case Range::Kind::none: return "";
+    case Range::Kind::whole: return fmt::format("[{:.0f}, {:.0f}]", r.low, r.high);
+    case Range::Kind::real: return fmt::format("{}{:g}, {:g}]", r.low_open ? "(" : "[", r.low, r.high);
+    case Range::Kind::seed: return "[0, 2^64 - 1]";
+  }
+  return "";
+}
+
+int64_t whole_setting(const std::map<std::string, std::string>& s, const std::string& key) {
+  const Range& r = setting_named(key).range;
   const std::string& text = s.at(key);
-  std::istringstream in(text);
-  T value{};
-  in >> value;
-  if (!in || !in.eof()) throw InputError(key + ": \"" + text + "\" is not a valid number");
-  return value;
+  if (const auto problem =
+          app_support::whole_number_problem(text, static_cast<int64_t>(r.low), static_cast<int64_t>(r.high)))
+    throw InputError(key + ": " + *problem);
+  return *app_support::whole_number(text);
+}
+
+int int_setting(const std::map<std::string, std::string>& s, const std::string& key) {
+  return static_cast<int>(whole_setting(s, key));  // every int setting's range fits an int
+}
+
+double number_setting(const std::map<std::string, std::string>& s, const std::string& key) {
+  const Range& r = setting_named(key).range;
+  const std::string& text = s.at(key);
+  if (const auto problem = app_support::number_problem(text, r.low, r.high, r.low_open))
+    throw InputError(key + ": " + *problem);
+  return *app_support::finite_number(text);
+}
+
+uint64_t seed_setting(const std::map<std::string, std::string>& s, const std::string& key) {
+  const std::string& text = s.at(key);
+  if (const auto problem = app_support::seed_problem(text)) throw InputError(key + ": " + *problem);
+  return *app_support::unsigned_whole_number(text);
 }
 
 bool parse_bool(const std::map<std::string, std::string>& s, const std::string& key) {
@@ -119,7 +178,7 @@ std::vector<matlearn::OutputGroup> output_groups(const std::map<std::string, std
       channels = std::stoi(count);
     }
     const std::string weight_key = map == matlearn::MapKind::base_color ? "albedo_weight" : name + "_weight";
-    groups.push_back({map, channels, parse_value<double>(s, weight_key)});
+    groups.push_back({map, channels, number_setting(s, weight_key)});
   }
   return groups;
 }
@@ -134,9 +193,12 @@ void add_options(CLI::App& app, Options& options) {
   for (const Setting& setting : settings_table()) {
     const std::string key = setting.key;
     std::string help = setting.help;
-    if (*setting.default_value) help += " [" + std::string(setting.default_value) + "]";
+    if (setting.range.kind != Range::Kind::none) help += ", in " + range_text(setting.range);
+    if (*setting.default_value) help += " [default " + std::string(setting.default_value) + "]";
+    const bool integer = setting.range.kind == Range::Kind::whole || setting.range.kind == Range::Kind::seed;
     app.add_option_function<std::string>(
-        option_name(key), [&options, key](const std::string& value) { options.command_line[key] = value; }, help);
+           option_name(key), [&options, key](const std::string& value) { options.command_line[key] = value; }, help)
+        ->type_name(integer ? "INT" : setting.range.kind == Range::Kind::real ? "FLOAT" : "TEXT");
   }
 }
 
@@ -174,8 +236,10 @@ matlearn::TrainingConfig training_config(const std::map<std::string, std::string
   matlearn::TrainingConfig c;
   try {
     c.network = network_name(s.at("model_name"));
-    matlearn::architecture_named(c.network);
-    c.width_divisor = parse_value<int64_t>(s, "width_divisor");
+    const matlearn::Architecture architecture = matlearn::architecture_named(c.network).architecture;
+    c.width_divisor = whole_setting(s, "width_divisor");
+    if (const auto problem = matlearn::width_divisor_problem(architecture, c.width_divisor))
+      throw InputError("width_divisor: " + *problem);
     c.encoder_weights = s.at("encoder_weights");
     c.output_dir = s.at("output_dir");
     const std::string task = s.at("task_mode");
@@ -184,12 +248,12 @@ matlearn::TrainingConfig training_config(const std::map<std::string, std::string
     if (task != "material") c.layout.groups = output_groups(s);
     else c.layout.groups.clear();
     if (task != "pbr") {
-      c.layout.material_classes = parse_value<int64_t>(s, "material_num_classes");
+      c.layout.material_classes = whole_setting(s, "material_num_classes");
       // A segmentation task needs a background and one class at least; 0 would train nothing.
       if (c.layout.material_classes < 2)
         throw InputError("material_num_classes: task_mode " + task + " needs at least 2 classes (0 is the background), got " +
                          std::to_string(c.layout.material_classes));
-      c.layout.material_weight = parse_value<double>(s, "material_ce_weight");
+      c.layout.material_weight = number_setting(s, "material_ce_weight");
     }
     matlearn::validate(c.layout);
     const std::string loss = s.at("loss");
@@ -197,19 +261,19 @@ matlearn::TrainingConfig training_config(const std::map<std::string, std::string
     c.loss = loss == "mse" ? matlearn::RegressionLoss::mse : matlearn::RegressionLoss::l1;
     c.linear_albedo = parse_bool(s, "linear_albedo");
     c.optimizer = matlearn::optimizer_kind_named(s.at("optimizer_name"));
-    c.learning_rate = parse_value<double>(s, "lr");
-    c.weight_decay = parse_value<double>(s, "weight_decay");
+    c.learning_rate = number_setting(s, "lr");
+    c.weight_decay = number_setting(s, "weight_decay");
     c.schedule.kind = matlearn::schedule_kind_named(s.at("schedule"));
-    c.schedule.step_size = parse_value<int>(s, "step_size");
-    c.schedule.gamma = parse_value<double>(s, "gamma");
-    c.schedule.t_max = parse_value<int>(s, "t_max");
-    c.schedule.patience = parse_value<int>(s, "patience");
-    c.epochs = parse_value<int>(s, "epochs");
-    c.batch_size = parse_value<int>(s, "batch_size");
-    c.image_size = parse_value<int>(s, "image_size");
-    c.threads = parse_value<int>(s, "threads");
-    c.seed = parse_value<uint64_t>(s, "seed");
-    c.validate_every = parse_value<int>(s, "validate_every");
+    c.schedule.step_size = int_setting(s, "step_size");
+    c.schedule.gamma = number_setting(s, "gamma");
+    c.schedule.t_max = int_setting(s, "t_max");
+    c.schedule.patience = int_setting(s, "patience");
+    c.epochs = int_setting(s, "epochs");
+    c.batch_size = int_setting(s, "batch_size");
+    c.image_size = int_setting(s, "image_size");
+    c.threads = int_setting(s, "threads");
+    c.seed = seed_setting(s, "seed");
+    c.validate_every = int_setting(s, "validate_every");
   } catch (const std::invalid_argument& e) {
     throw InputError(e.what());
   }

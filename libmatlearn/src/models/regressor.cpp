@@ -46,12 +46,19 @@ const ArchitectureInfo& info(Architecture architecture) {
   throw std::logic_error("architecture missing from the table");
 }
 
+std::optional<std::string> width_divisor_problem(Architecture architecture, int64_t width_divisor) {
+  if (width_divisor != 1 && architecture != Architecture::unet_no_skip)
+    return "only unet_no_skip can be thinned (width divisor " + std::to_string(width_divisor) + ")";
+  // Every width divides exactly, down to the last decoder stage's 32 channels, which keeps at least 1.
+  if (width_divisor < 1 || 32 % width_divisor != 0)
+    return "the width divisor must be 1, 2, 4, 8, 16 or 32 (a divisor of 32), got " + std::to_string(width_divisor);
+  return std::nullopt;
+}
+
 std::shared_ptr<RegressorImpl> make_regressor(Architecture architecture, int64_t output_channels,
                                               int64_t width_divisor) {
-  if (width_divisor != 1 && architecture != Architecture::unet_no_skip)
-    throw std::invalid_argument("only unet_no_skip can be thinned (width divisor " + std::to_string(width_divisor) + ")");
-  if (width_divisor < 1 || 32 % width_divisor != 0)
-    throw std::invalid_argument("the width divisor must divide 32 (got " + std::to_string(width_divisor) + ")");
+  if (const std::optional<std::string> problem = width_divisor_problem(architecture, width_divisor))
+    throw std::invalid_argument(*problem);
   switch (architecture) {
     case Architecture::unet_no_skip: return std::make_shared<UNetNoSkipImpl>(output_channels, width_divisor);
     case Architecture::resnet50_u: return std::make_shared<ResNet50UImpl>(output_channels);

@@ -128,7 +128,7 @@ class Node {
     return static_cast<int>(checked_integer(lo, hi, fmt::format("an integer in [{}, {}]", lo, hi)));
   }
   int integer_at_least(int lo) const {
-    return static_cast<int>(checked_integer(lo, kMaxInt, fmt::format("an integer >= {}", lo)));
+    return static_cast<int>(checked_integer(lo, kMaxInt, fmt::format("an integer in [{}, {}]", lo, kMaxInt)));
   }
   uint32_t uint32() const {
     return static_cast<uint32_t>(checked_integer(0, kMaxUint32, "an integer in [0, 4294967295]"));
@@ -300,8 +300,8 @@ CameraDescription read_camera(const Node& node) {
   if (auto fov = node.find("fov_deg"))
     camera.vertical_fov = glm::radians(
         fov->number_where([](double v) { return v > 0.0 && v < 180.0; }, "an angle in (0, 180) degrees"));
-  if (auto w = node.find("width")) camera.width = w->integer_in(1, 65536);
-  if (auto h = node.find("height")) camera.height = h->integer_in(1, 65536);
+  if (auto w = node.find("width")) camera.width = w->integer_in(1, kMaxImageSide);
+  if (auto h = node.find("height")) camera.height = h->integer_in(1, kMaxImageSide);
   return camera;
 }
 

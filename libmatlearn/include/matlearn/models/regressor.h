@@ -4,6 +4,7 @@
 // chosen by name.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,8 @@ const ArchitectureInfo& info(Architecture architecture);
 // the others.
 std::shared_ptr<RegressorImpl> make_regressor(Architecture architecture, int64_t output_channels,
                                               int64_t width_divisor = 1);
+// Why make_regressor would refuse `width_divisor` for the architecture, or nothing.
+std::optional<std::string> width_divisor_problem(Architecture architecture, int64_t width_divisor);
 
 int64_t parameter_count(const torch::nn::Module& module);
 
