@@ -2,6 +2,8 @@
 
 #include <signal.h>
 
+#include "matgeom/atomic_file.h"
+
 namespace app_support {
 namespace {
 
@@ -11,8 +13,16 @@ static_assert(std::atomic<int>::is_always_lock_free);
 std::atomic<bool> interrupted{false};
 std::atomic<int> interrupting_signal{SIGINT};
 
-void request_cancel(int signal) {
-  interrupting_signal.store(signal);
+// The first signal asks the work to stop where it can; a second one ends the process at once,
+// removing the temporaries being written first, so that even then nothing half-written is left.
+void on_signal(int signal) {
+  if (interrupted.load()) {
+    matgeom::remove_temporaries_in_flight();
+    ::signal(signal, SIG_DFL);
+    ::raise(signal);
+    return;
+  }
+  interrupting_signal.store(signal);  // before the flag, so that whoever sees the flag sees it
   interrupted.store(true);
 }
 
@@ -20,9 +30,8 @@ void request_cancel(int signal) {
 
 const std::atomic<bool>* cancel_on_interrupt() {
   struct sigaction action {};
-  action.sa_handler = request_cancel;
+  action.sa_handler = on_signal;
   sigemptyset(&action.sa_mask);
-  action.sa_flags = SA_RESETHAND;  // one-shot: the default action is back for a second signal
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
   return &interrupted;

@@ -76,6 +76,10 @@ int render_and_write(const Options& options) {
   report_files(files, options.output_folder);
   report_rig(built);
   report_summary(stats, built, settings.samples_per_pixel);
+  // A signal that came while the files were written let them finish: they are complete, and the
+  // exit code still says the run was asked to stop.
+  if (cancel->load()) return report_error("interrupted while writing; the files above are complete",
+                                          app_support::interrupted_exit_code());
   return 0;
 }
 

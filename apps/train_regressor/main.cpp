@@ -86,11 +86,21 @@ int train(Options options, bool example) {
   const std::filesystem::path last = config.output_dir / "checkpoints" / "last.pt";
   const std::string pretrained = settings.at("pretrained_model");
   if (options.resume || !pretrained.empty()) {
-    const std::filesystem::path from = pretrained.empty() ? last : std::filesystem::path(pretrained);
+    // --resume continues this folder's own run, also when its config.yaml names the checkpoint
+    // the run started from.
+    const std::filesystem::path from = options.resume ? last : std::filesystem::path(pretrained);
     try {
       trainer.resume(from);
     } catch (const std::exception& e) {
       throw InputError(e.what());
+    }
+    if (trainer.epochs_done() > config.epochs)
+      throw InputError(fmt::format("{} already holds epoch {}, beyond the {} epochs asked for; nothing was trained "
+                                   "(ask for more epochs, or give another --output-dir for a new run)",
+                                   from.string(), trainer.epochs_done(), config.epochs));
+    if (trainer.epochs_done() == config.epochs) {
+      fmt::print("{} already holds all {} epochs; nothing to train\n", from.string(), config.epochs);
+      return 0;
     }
     fmt::print("resuming after epoch {} from {}\n", trainer.epochs_done(), from.string());
   }
@@ -117,8 +127,15 @@ int train(Options options, bool example) {
   };
   if (!trainer.train(callbacks)) {
     if (bar) bar->finish();
-    fmt::print(stderr, "train_regressor: interrupted; {} holds epoch {} (continue with --resume)\n", last.string(),
-               trainer.epochs_done());
+    // config.yaml holds every setting of this run, so the command below is the whole of it.
+    const std::string resume_command =
+        fmt::format("train_regressor --config {} --resume", (config.output_dir / "config.yaml").string());
+    if (std::filesystem::exists(last))
+      fmt::print(stderr, "train_regressor: interrupted; {} holds epoch {}; continue with: {}\n", last.string(),
+                 trainer.epochs_done(), resume_command);
+    else
+      fmt::print(stderr, "train_regressor: interrupted before the first epoch finished; no checkpoint was written, "
+                 "so run the same command again to start over\n");
     return app_support::interrupted_exit_code();
   }
   fmt::print("wrote {}: checkpoints/last.pt{}, log.csv (one row per epoch), config.yaml (the settings)\n",

@@ -10,6 +10,8 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include "temporaries_in_flight.h"
+
 namespace matgeom {
 namespace fs = std::filesystem;
 namespace {
@@ -49,6 +51,10 @@ fs::path temporary_path(const fs::path& path) {
 
 void write_atomically(const fs::path& path, const std::function<void(const fs::path& temporary)>& write) {
   const fs::path temporary = temporary_path(path);
+  struct Record {
+    int slot;
+    ~Record() { forget_temporary(slot); }
+  } record{record_temporary(temporary)};
   try {
     write(temporary);
   } catch (...) {
@@ -69,12 +75,16 @@ void write_file_atomically(const fs::path& path, std::string_view bytes, AtomicF
 }
 
 AtomicFileSet::~AtomicFileSet() {
-  for (size_t i = committed_; i < staged_.size(); ++i) remove_quietly(staged_[i].temporary);
+  for (size_t i = committed_; i < staged_.size(); ++i) {
+    remove_quietly(staged_[i].temporary);
+    forget_temporary(staged_[i].record);
+  }
 }
 
 void AtomicFileSet::stage(const fs::path& destination, std::string_view bytes) {
   // Recorded first, so that the destructor removes the temporary whatever a failed write leaves.
-  staged_.push_back({destination, temporary_path(destination), false});
+  staged_.push_back({destination, temporary_path(destination)});
+  staged_.back().record = record_temporary(staged_.back().temporary);
   write_bytes(staged_.back().temporary, named_.string() + ": cannot write " + destination.string(), bytes);
 }
 
@@ -97,6 +107,7 @@ void AtomicFileSet::commit() {
       throw std::runtime_error(named_.string() + ": cannot rename " + file.temporary.string() + " to " +
                                file.destination.string() + ": " + error.message());
     }
+    forget_temporary(file.record);
   }
 }
 

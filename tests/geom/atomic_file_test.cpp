@@ -100,3 +100,27 @@ TEST_CASE("An AtomicFileSet makes its files appear together or not at all", "[ge
   CHECK(!fs::exists(folder.path / "blocked.mtl"));
   CHECK(folder.entries() == 3);
 }
+
+TEST_CASE("A signal handler can remove the temporaries being written, and only those", "[geom]") {
+  TemporaryFolder folder;
+  matgeom::write_file_atomically(folder.path / "done.txt", "done");
+  // Called where a handler would run: in the middle of writing one file, with a set staged.
+  matgeom::AtomicFileSet set(folder.path / "view.png");
+  set.stage(folder.path / "view.exr", "exr");
+  CHECK_THROWS_WITH(matgeom::write_atomically(folder.path / "big.bin",
+                                              [&](const fs::path& temporary) {
+                                                std::ofstream(temporary) << "half";
+                                                CHECK(folder.entries() == 3);
+                                                matgeom::remove_temporaries_in_flight();
+                                                CHECK(!fs::exists(temporary));
+                                                throw std::runtime_error("ended");
+                                              }),
+                    "ended");
+  // Only the finished file is left: the set's staged temporary went too.
+  CHECK(folder.entries() == 1);
+  CHECK(contents(folder.path / "done.txt") == "done");
+  // Renamed files are forgotten: removing again touches nothing that is done.
+  matgeom::write_file_atomically(folder.path / "later.txt", "later");
+  matgeom::remove_temporaries_in_flight();
+  CHECK(contents(folder.path / "later.txt") == "later");
+}

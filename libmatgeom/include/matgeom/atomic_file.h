@@ -26,6 +26,11 @@ void write_atomically(const std::filesystem::path& path,
 
 class AtomicFileSet;
 
+// Removes every temporary this process is writing at this moment. Async-signal-safe (it only
+// reads a fixed table and calls unlink), for a handler that ends the process on a second Ctrl-C:
+// even then no temporary is left beside the outputs.
+void remove_temporaries_in_flight() noexcept;
+
 // `bytes` as the whole of the file `path`; std::runtime_error starting with `path` on failure.
 // Given a set, the file is staged there instead, to appear with the set's others.
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes, AtomicFileSet* set = nullptr);
@@ -52,6 +57,7 @@ class AtomicFileSet {
   struct Staged {
     std::filesystem::path destination;
     std::filesystem::path temporary;
+    int record = -1;        // its slot among the temporaries in flight
     bool replaces = false;  // the destination existed before the commit
   };
   std::filesystem::path named_;
