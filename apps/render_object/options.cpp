@@ -292,7 +292,7 @@ ObjectDescription builtin_object(const std::string& argument) {
 
 SceneDescription chosen_scene(const Options& options) {
   if (options.scene_file) return matrender::read_scene_file(*options.scene_file);
-  if (options.mesh_file) return matrender::paper_object_scene(object_from(MeshFile{*options.mesh_file}, "--mesh " + *options.mesh_file));
+  if (options.mesh_file) return matrender::paper_object_scene(object_from(MeshFile{*options.mesh_file}, "--mesh"));
   if (options.object) return matrender::paper_object_scene(builtin_object(*options.object));
   return matrender::default_scene();
 }

@@ -127,7 +127,9 @@ void add_object(Scene& scene, const ObjectDescription& object, const matgeom::Ob
     options.shadow_terminator_geometry_offset = object.shadow_terminator_geometry_offset;
     add_asset(scene, asset, assigned, options);
   } catch (const std::invalid_argument& e) {
-    throw object.origin.error("", e.what());
+    // Named by its file: the scene's own mesh numbering means nothing to whoever wrote the input.
+    const auto* file = std::get_if<MeshFile>(&object.source);
+    throw object.origin.error("", file ? file->path + ": " + e.what() : e.what());
   }
 }
 
