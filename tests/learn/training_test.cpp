@@ -298,6 +298,19 @@ CATCH_TEST_CASE("A damaged checkpoint and one of another layout are refused", "[
   fs::resize_file(cut, fs::file_size(last) / 2);
   CATCH_CHECK_THROWS_WITH(read_checkpoint(cut), Catch::Contains("cut.pt is not a checkpoint"));
 
+  // A type annotation in the archive's TorchScript changed (the fuzzer's find): libtorch throws
+  // torch::jit::ErrorReport, not c10::Error, and it must still come out as a clear refusal.
+  {
+    std::ifstream in(last, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const size_t at = bytes.rfind("header : str");
+    CATCH_REQUIRE(at != std::string::npos);
+    bytes.replace(at, 12, "header : stx");
+    const fs::path retyped = c.output_dir / "retyped.pt";
+    std::ofstream(retyped, std::ios::binary) << bytes;
+    CATCH_CHECK_THROWS_WITH(read_checkpoint(retyped), Catch::Contains("retyped.pt is not a checkpoint: "));
+  }
+
   // base_color + normal has the same 6 channels as the paper's base_color + roughness:3.
   TrainingConfig normal = quick_config("matpredict_checkpoint_normal");
   normal.epochs = 1;

@@ -9,6 +9,7 @@
 
 #include "matgeom/atomic_file.h"
 #include "matgeom/input_file.h"
+#include "models/torch_error.h"
 
 namespace matlearn {
 namespace {
@@ -36,8 +37,8 @@ void load_state_dict(torch::nn::Module& module, const std::filesystem::path& pat
   torch::IValue value;
   try {
     value = torch::pickle_load(bytes);
-  } catch (const c10::Error& e) {
-    throw std::runtime_error(path.string() + " is not a file torch.save wrote: " + e.what_without_backtrace());
+  } catch (const std::exception& e) {
+    throw std::runtime_error(path.string() + " is not a file torch.save wrote: " + torch_error_text(e));
   }
   if (!value.isGenericDict()) throw std::runtime_error(path.string() + " does not hold a dict of tensors");
   std::map<std::string, torch::Tensor> loaded;

@@ -9,6 +9,7 @@
 
 #include "matgeom/atomic_file.h"
 #include "matgeom/input_file.h"
+#include "models/torch_error.h"
 
 namespace matlearn {
 namespace {
@@ -133,8 +134,8 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
   torch::serialize::InputArchive archive;
   try {
     archive.load_from(path.string());
-  } catch (const c10::Error& e) {
-    throw std::runtime_error(path.string() + " is not a checkpoint: " + e.what_without_backtrace());
+  } catch (const std::exception& e) {
+    throw std::runtime_error(path.string() + " is not a checkpoint: " + torch_error_text(e));
   }
   Checkpoint checkpoint;
   checkpoint.path = path;
@@ -154,8 +155,8 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
     archive.read("model", checkpoint.model_state);
     archive.read("optimizer", checkpoint.optimizer_state);
     archive.read("crc32", stored_checksum);
-  } catch (const c10::Error& e) {
-    throw not_ours(path, e.what_without_backtrace());
+  } catch (const std::exception& e) {
+    throw not_ours(path, torch_error_text(e));
   }
   for (const torch::Tensor* state : {&checkpoint.model_state, &checkpoint.optimizer_state})
     if (state->scalar_type() != torch::kUInt8 || state->dim() != 1 || !state->is_contiguous())
@@ -180,10 +181,10 @@ std::shared_ptr<RegressorImpl> load_model(const Checkpoint& checkpoint) {
   try {
     torch::serialize::InputArchive archive = open_state(checkpoint.model_state);
     model->load(archive);
-  } catch (const c10::Error& e) {
+  } catch (const std::exception& e) {
     throw std::runtime_error(checkpoint.path.string() + ": its weights do not fit " + h.network + " with " +
                              std::to_string(h.layout.output_channels()) + " outputs (" +
-                             e.what_without_backtrace() + ")");
+                             torch_error_text(e) + ")");
   }
   return model;
 }
@@ -192,9 +193,9 @@ void load_optimizer(const Checkpoint& checkpoint, torch::optim::Optimizer& optim
   try {
     torch::serialize::InputArchive archive = open_state(checkpoint.optimizer_state);
     optimizer.load(archive);
-  } catch (const c10::Error& e) {
+  } catch (const std::exception& e) {
     throw std::runtime_error(checkpoint.path.string() + ": its optimiser state does not fit this optimiser (" +
-                             e.what_without_backtrace() + ")");
+                             torch_error_text(e) + ")");
   }
 }
 
