@@ -1,18 +1,9 @@
 #!/usr/bin/env bash
 # Damaged checkpoints and checkpoints of another layout are refused (exit 2, naming the file) by
 # evaluate and by train_regressor --pretrained-model alike, and nothing is written.
-# Usage: damaged_checkpoint_test.sh TRAIN_REGRESSOR EVALUATE SCRATCH (run in the example's folder,
-# after train_regressor.example)
-set -u
-train=$1
-evaluate=$2
-scratch=$3
-dataset=train_output/example_dataset
-rm -rf "$scratch"
-mkdir -p "$scratch"
-log="$scratch/stderr.txt"
-status=0
-fail() { echo "$1"; echo "--- stderr ---"; cat "$log"; status=1; }
+# Usage: damaged_checkpoint_test.sh TRAIN_REGRESSOR EVALUATE SCRATCH (example_test_setup.sh)
+source "$(dirname "$0")/example_test_setup.sh" "$@"
+
 # expect_refusal WHAT MESSAGE OUTPUT COMMAND...: COMMAND exits 2 with MESSAGE and leaves no OUTPUT.
 expect_refusal() {
   local what=$1 message=$2 output=$3

@@ -3,18 +3,8 @@
 # their outputs (no checkpoint, no temporary, no tables without panels, no empty folder).
 # A small tmpfs where the machine lets us mount one, else a file-size limit (ulimit -f, SIGXFSZ
 # ignored, so writes fail with EFBIG).
-# Usage: full_disk_test.sh TRAIN_REGRESSOR EVALUATE SCRATCH (run in the example's folder, after
-# train_regressor.example)
-set -u
-train=$1
-evaluate=$2
-scratch=$3
-dataset=train_output/example_dataset
-rm -rf "$scratch"
-mkdir -p "$scratch"
-log="$scratch/stderr.txt"
-status=0
-fail() { echo "$1"; echo "--- stderr ---"; cat "$log"; status=1; }
+# Usage: full_disk_test.sh TRAIN_REGRESSOR EVALUATE SCRATCH (example_test_setup.sh)
+source "$(dirname "$0")/example_test_setup.sh" "$@"
 
 # run_full KB COMMAND...: runs COMMAND with at most KB kilobytes of room for its outputs, which it
 # writes under $scratch/small; sets $code.

@@ -3,18 +3,8 @@
 # the end. Run again, it has nothing to do (exit 0); asked for fewer epochs than the checkpoint
 # holds, it says so (exit 2) instead of claiming it wrote files. Interrupted before the first
 # epoch, it says no checkpoint was written.
-# Usage: resume_test.sh TRAIN_REGRESSOR SCRATCH (run in the example's folder, after
-# train_regressor.example)
-set -u
-train=$1
-scratch=$2
-dataset=train_output/example_dataset
-rm -rf "$scratch"
-mkdir -p "$scratch"
-out="$scratch/stdout.txt"
-log="$scratch/stderr.txt"
-status=0
-fail() { echo "$1"; echo "--- stdout ---"; cat "$out"; echo "--- stderr ---"; cat "$log"; status=1; }
+# Usage: resume_test.sh TRAIN_REGRESSOR EVALUATE SCRATCH (example_test_setup.sh)
+source "$(dirname "$0")/example_test_setup.sh" "$@"
 
 # interrupt_after REGEX ARGS...: starts a training, sends SIGINT once stdout shows REGEX, and
 # waits for the exit; sets $code.
