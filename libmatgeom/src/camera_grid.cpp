@@ -77,14 +77,16 @@ glm::dmat4 look_at_camera_to_world(const glm::dvec3& eye, const glm::dvec3& targ
     throw std::invalid_argument("the position, look-at point or up direction is not finite");
   }
   const glm::dvec3 offset = eye - target;
-  // Scaled by its largest component first, so that points 1e-300 apart (whose squared distance
-  // underflows) or 1e300 apart (overflows) still give their direction.
+  // Points 1e-300 apart (whose squared distance underflows) or 1e300 apart (overflows) still give
+  // their direction, scaled by the largest component first; at everyday distances the plain
+  // quotient keeps every camera exactly as before.
   const double largest = std::max({std::abs(offset.x), std::abs(offset.y), std::abs(offset.z)});
   if (!(largest > 0.0)) throw std::invalid_argument("the position and the look-at point coincide");
   if (!std::isfinite(largest))
     throw std::invalid_argument("the position and the look-at point are too far apart for a direction");
   // The camera looks down its -Z, so +Z points from the target back to the eye.
-  const glm::dvec3 backward = glm::normalize(offset / largest);
+  const double distance = glm::length(offset);
+  const glm::dvec3 backward = std::isnormal(distance) ? offset / distance : glm::normalize(offset / largest);
 
   // Image up is world_up projected onto the image plane. Looking along world_up leaves it
   // undefined; world +Y and then +X keep the frame a proper rotation.
