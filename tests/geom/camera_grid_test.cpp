@@ -188,6 +188,22 @@ TEST_CASE("look_at_camera_to_world for a general direction", "[geom][render]") {
   CHECK_THROWS_AS(matgeom::look_at_camera_to_world(eye, eye), std::invalid_argument);
 }
 
+TEST_CASE("look_at_camera_to_world at distances whose square a double cannot hold", "[geom][render]") {
+  // 1e-300 apart: the squared distance underflows to 0, yet the direction is plain +Z.
+  const glm::dmat4 near = matgeom::look_at_camera_to_world({1, 0, 0}, {1, 0, 1e-300});
+  check_proper_rigid(near);
+  check_near(-column(near, 2), glm::dvec3(0, 0, 1));
+  // 1e200 away: the square overflows.
+  const glm::dmat4 far = matgeom::look_at_camera_to_world({0, 0, 0}, {1e200, 1e200, 0});
+  check_near(-column(far, 2), glm::normalize(glm::dvec3(1, 1, 0)));
+  // What cannot be aimed is said without the function's name, for the tools to pass on.
+  CHECK_THROWS_WITH(matgeom::look_at_camera_to_world({1, 2, 3}, {1, 2, 3}), "the position and the look-at point coincide");
+  CHECK_THROWS_WITH(matgeom::look_at_camera_to_world({1e308, 0, 0}, {-1e308, 0, 0}),
+                    "the position and the look-at point are too far apart for a direction");
+  CHECK_THROWS_WITH(matgeom::look_at_camera_to_world({std::nan(""), 0, 0}, {0, 0, 0}),
+                    "the position, look-at point or up direction is not finite");
+}
+
 TEST_CASE("camera grid rejects bad specs and cells", "[geom][render]") {
   const matgeom::CameraGridSpec good;
   CHECK_THROWS_AS(matgeom::grid_camera(good, -1, 0), std::out_of_range);
