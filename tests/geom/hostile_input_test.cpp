@@ -1,13 +1,18 @@
 // Inputs the shared helpers guard against: paths that are not regular files (a device or a FIFO
-// can block a reader or feed it forever) and thread counts beyond the machine.
+// can block a reader or feed it forever), thread counts beyond the machine and allocations beyond
+// its memory.
 #include <catch2/catch.hpp>
 
 #include <fstream>
+#include <optional>
+#include <string>
 #include <stdexcept>
 
+#include <sys/resource.h>
 #include <sys/stat.h>
 
 #include "matgeom/input_file.h"
+#include "matgeom/memory_limit.h"
 #include "matgeom/gltf_reader.h"
 #include "matgeom/mesh_io.h"
 #include "matgeom/obj_io.h"
@@ -53,4 +58,24 @@ TEST_CASE("Thread requests beyond the machine are capped to it", "[geom]") {
   CHECK(matgeom::worker_threads(1) == 1);
   CHECK(matgeom::worker_threads(1000000) == hardware);
   CHECK_THROWS_AS(matgeom::worker_threads(-1), std::invalid_argument);
+}
+
+TEST_CASE("Allocations are checked against the memory this process can have", "[geom]") {
+  CHECK(matgeom::byte_size_text(512) == "512 bytes");
+  CHECK(matgeom::byte_size_text(6.0 * 1024 * 1024 * 1024) == "6.0 GiB");
+  CHECK(matgeom::byte_size_text(1536) == "1.5 KiB");
+  CHECK_FALSE(matgeom::memory_problem(1024.0, "a small image"));
+  const std::optional<std::string> huge = matgeom::memory_problem(1e18, "its 100000 x 100000 texels");
+  REQUIRE(huge);
+  CHECK_THAT(*huge, Catch::StartsWith("needs 888.2 PiB for its 100000 x 100000 texels, more than the ") &&
+                        Catch::EndsWith(" of memory this process can have"));
+  // ulimit -v counts: a lower address-space limit lowers what fits.
+  rlimit saved{};
+  REQUIRE(getrlimit(RLIMIT_AS, &saved) == 0);
+  const rlimit lowered{rlim_t{1} << 40, saved.rlim_max};  // 1 TiB: more than the tests use
+  if (saved.rlim_cur == RLIM_INFINITY || saved.rlim_cur > lowered.rlim_cur) {
+    REQUIRE(setrlimit(RLIMIT_AS, &lowered) == 0);
+    CHECK(matgeom::memory_limit_bytes() <= lowered.rlim_cur);
+    REQUIRE(setrlimit(RLIMIT_AS, &saved) == 0);
+  }
 }
