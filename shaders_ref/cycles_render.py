@@ -43,11 +43,9 @@ def make_material(description):
     material.use_nodes = True
     bsdf = material.node_tree.nodes["Principled BSDF"]
     bsdf.distribution = "GGX"  # single-scatter GGX, as ours
-    bsdf.inputs["Base Color"].default_value = (*description["base_color"], 1.0)
-    bsdf.inputs["Metallic"].default_value = description["metallic"]
-    bsdf.inputs["Roughness"].default_value = description["roughness"]
-    bsdf.inputs["Specular"].default_value = description["specular"]
-    bsdf.inputs["Specular Tint"].default_value = description["specular_tint"]
+    # Principled BSDF input name -> value, one per row of the material table.
+    for name, value in description.items():
+        bsdf.inputs[name].default_value = (*value, 1.0) if isinstance(value, list) else value
     return material
 
 

@@ -27,6 +27,18 @@ json column_major(const glm::dmat4& m) {
   return values;
 }
 
+// Every row of the material table as Blender input name -> value (a colour as RGB), so that the
+// script sets exactly what libmatrender shades with.
+json principled_inputs(const matrender::Material& m) {
+  json inputs = json::object();
+  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) {
+    const glm::vec3 value = m.parameters[static_cast<size_t>(info.id)].value;
+    inputs[info.blender_input] =
+        info.kind == matgeom::ParameterKind::Color ? json{value.r, value.g, value.b} : json(value.x);
+  }
+  return inputs;
+}
+
 json describe(const CyclesScene& scene) {
   json positions = json::array(), normals = json::array(), triangles = json::array();
   for (const glm::vec3& p : scene.mesh.positions) positions.push_back({p.x, p.y, p.z});
@@ -50,12 +62,7 @@ json describe(const CyclesScene& scene) {
             {"normals", normals},
             {"triangles", triangles},
             {"shadow_terminator_geometry_offset", scene.shadow_terminator_geometry_offset}}},
-          {"material",
-           {{"base_color", {m.color(matrender::MaterialParameter::BaseColor).r, m.color(matrender::MaterialParameter::BaseColor).g, m.color(matrender::MaterialParameter::BaseColor).b}},
-            {"metallic", m.scalar(matrender::MaterialParameter::Metallic)},
-            {"roughness", m.scalar(matrender::MaterialParameter::Roughness)},
-            {"specular", m.scalar(matrender::MaterialParameter::Specular)},
-            {"specular_tint", m.scalar(matrender::MaterialParameter::SpecularTint)}}},
+          {"material", principled_inputs(m)},
           {"lamps", lamps},
           {"camera",
            {{"camera_to_world", column_major(c.camera_to_world)},

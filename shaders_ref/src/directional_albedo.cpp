@@ -168,7 +168,10 @@ double stretched_horizon_limit(double sin_o, double cos_o, double phi, double al
 
 // --- Lobe albedos ------------------------------------------------------------------------------
 
-glm::dvec3 diffuse_albedo(const PrincipledParams& p, const glm::dvec3& wo) {
+// Integral of brdf(p, wo, wi) cos(theta_i) over the upper hemisphere in spherical coordinates,
+// for lobes smooth over it (diffuse, sheen).
+glm::dvec3 hemisphere_albedo(glm::dvec3 (*brdf)(const PrincipledParams&, const glm::dvec3&, const glm::dvec3&),
+                             const PrincipledParams& p, const glm::dvec3& wo) {
   const double phi_o = std::atan2(wo.y, wo.x);
   const Tolerance inner = inner_tolerance(kAlbedoTolerance, 2.0 * kPi);
   const std::vector<double> polar_range = {0.0, 0.5 * kPi};
@@ -178,7 +181,7 @@ glm::dvec3 diffuse_albedo(const PrincipledParams& p, const glm::dvec3& wo) {
       const double sin_t = std::sin(theta);
       const double cos_t = std::cos(theta);
       const glm::dvec3 wi = spherical_direction(sin_t, cos_t, phi_o + phi);
-      return diffuse_brdf(p, wo, wi) * (cos_t * sin_t);
+      return brdf(p, wo, wi) * (cos_t * sin_t);
     };
     return integrate_adaptive<glm::dvec3>(integrand, polar_range, inner);
   };
@@ -222,12 +225,13 @@ glm::dvec3 specular_albedo(const PrincipledParams& p, const glm::dvec3& wo) {
 
 LobeAlbedos lobe_albedos(const PrincipledParams& p, const glm::dvec3& wo) {
   if (wo.z <= 0.0) return {};
-  return {diffuse_albedo(p, wo), specular_albedo(p, wo)};
+  const glm::dvec3 sheen = p.sheen > 0.0 ? hemisphere_albedo(sheen_brdf, p, wo) : glm::dvec3(0.0);
+  return {hemisphere_albedo(diffuse_brdf, p, wo), sheen, specular_albedo(p, wo)};
 }
 
 glm::dvec3 directional_albedo(const PrincipledParams& p, const glm::dvec3& wo) {
   const LobeAlbedos albedos = lobe_albedos(p, wo);
-  return albedos.diffuse + albedos.specular;
+  return albedos.diffuse + albedos.sheen + albedos.specular;
 }
 
 double integrate_over_sphere(const DirectionFunction& f, const glm::dvec3& peak_axis,

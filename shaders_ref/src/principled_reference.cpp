@@ -95,6 +95,15 @@ glm::dvec3 diffuse_brdf(const PrincipledParams& p, const glm::dvec3& wo, const g
   return weight * ((lambert_part + retro_reflection) / kPi);
 }
 
+glm::dvec3 sheen_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi) {
+  if (wo.z <= 0.0 || wi.z <= 0.0) return glm::dvec3(0.0);
+  const double lum = rec709_luminance(p.base_color);
+  const glm::dvec3 tint = lum > 0.0 ? p.base_color / lum : glm::dvec3(1.0);
+  const glm::dvec3 colour = (1.0 - p.sheen_tint) * glm::dvec3(1.0) + p.sheen_tint * tint;
+  const glm::dvec3 h = glm::normalize(wo + wi);
+  return p.sheen * (1.0 - p.metallic) * colour * fifth_power_of_complement(glm::dot(wi, h));
+}
+
 glm::dvec3 specular_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi) {
   if (!has_specular_lobe(p) || wo.z <= 0.0 || wi.z <= 0.0) return glm::dvec3(0.0);
   const double alpha = ggx_alpha(p.roughness);
@@ -105,7 +114,7 @@ glm::dvec3 specular_brdf(const PrincipledParams& p, const glm::dvec3& wo, const 
 }
 
 glm::dvec3 principled_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi) {
-  return diffuse_brdf(p, wo, wi) + specular_brdf(p, wo, wi);
+  return diffuse_brdf(p, wo, wi) + sheen_brdf(p, wo, wi) + specular_brdf(p, wo, wi);
 }
 
 }  // namespace shaders_ref

@@ -56,6 +56,8 @@ PrincipledInputs random_material(UniformFloats& rng, float min_roughness, float 
   in.set(MaterialParameter::Specular, with_edges(0.1f, 0.1f));
   in.set(MaterialParameter::SpecularTint, with_edges(0.3f, 0.2f));
   in.diffuse_model = rng.next() < 0.5f ? DiffuseModel::Principled : DiffuseModel::Lambert;
+  in.set(MaterialParameter::Sheen, with_edges(0.5f, 0.1f));
+  in.set(MaterialParameter::SheenTint, with_edges(0.2f, 0.2f));
   return in;
 }
 
@@ -100,6 +102,21 @@ TEST_CASE("Reference quadrature reproduces closed forms", "[render]") {
       CHECK(a.diffuse.x == Approx(1.0).epsilon(1e-9));
       CHECK(a.specular.x == 0.0);
     }
+  }
+  SECTION("Sheen albedo seen head-on has a closed form") {
+    // wo = n: wi.h = cos(theta/2). With u = 1 - cos(theta/2) the integral of (1 - wi.h)^5 cos(theta)
+    // over the hemisphere is 2 pi int_0^U 4 (u^5 - 5 u^6 + 6 u^7 - 2 u^8) du, U = 1 - 1/sqrt(2).
+    const double u = 1.0 - 1.0 / std::sqrt(2.0);
+    const double closed_form = 2.0 * kPi * 4.0 *
+                               (std::pow(u, 6) / 6.0 - 5.0 * std::pow(u, 7) / 7.0 + 6.0 * std::pow(u, 8) / 8.0 -
+                                2.0 * std::pow(u, 9) / 9.0);
+    shaders_ref::PrincipledParams cloth;
+    cloth.base_color = glm::dvec3(0.0);  // no diffuse; a black base tints nothing: colour 1
+    cloth.specular = 0.0;
+    cloth.sheen = 1.0;
+    const shaders_ref::LobeAlbedos a = shaders_ref::lobe_albedos(cloth, glm::dvec3(0.0, 0.0, 1.0));
+    CHECK(a.sheen.x == Approx(closed_form).epsilon(1e-9));
+    CHECK(a.diffuse.x == 0.0);
   }
   SECTION("GGX normalisation: integral of D(m) (n.m) dm = 1") {
     for (double roughness : roughness_values) {
@@ -233,7 +250,9 @@ TEST_CASE("Fast BSDF eval agrees with the double-precision reference", "[render]
     const shaders_ref::PrincipledParams p = reference_params(in);
     const glm::dvec3 wo_d = glm::normalize(glm::dvec3(wo));
     const glm::dvec3 wi_d = glm::normalize(glm::dvec3(wi));
-    const glm::dvec3 diffuse_ref = shaders_ref::diffuse_brdf(p, wo_d, wi_d);
+    // The sheen lobe is a diffuse one (Cycles labels it so): the diffuse flag selects both.
+    const glm::dvec3 sheen_ref = shaders_ref::sheen_brdf(p, wo_d, wi_d);
+    const glm::dvec3 diffuse_ref = shaders_ref::diffuse_brdf(p, wo_d, wi_d) + sheen_ref;
     const glm::dvec3 specular_ref = shaders_ref::specular_brdf(p, wo_d, wi_d);
     const glm::dvec3 total_ref = shaders_ref::principled_brdf(p, wo_d, wi_d);
     shaders_ref::PrincipledParams fresnel_one = p;
@@ -247,7 +266,8 @@ TEST_CASE("Fast BSDF eval agrees with the double-precision reference", "[render]
     for (int k = 0; k < 3; ++k) {
       const double specular_tolerance =
           (1e-5 + 1e-6 / cos_h + conditioning) * specular_ref[k] + 1e-6 * specular_without_fresnel;
-      const double diffuse_tolerance = 1e-5 * diffuse_ref[k] + 1e-12;
+      // The sheen's (1 - wi.h)^5 shares the half vector's error (term 2 above), absolute near wi.h = 1.
+      const double diffuse_tolerance = 1e-5 * diffuse_ref[k] + 1e-6 / cos_h * sheen_ref[k] + 1e-7 * p.sheen + 1e-12;
       const bool diffuse_ok = std::abs(diffuse[k] - diffuse_ref[k]) <= diffuse_tolerance;
       const bool specular_ok = std::abs(specular[k] - specular_ref[k]) <= specular_tolerance;
       const bool total_ok =
@@ -259,7 +279,8 @@ TEST_CASE("Fast BSDF eval agrees with the double-precision reference", "[render]
         INFO("input " << n << " channel " << k << ": base (" << in.color(MaterialParameter::BaseColor).x << ", "
                       << in.color(MaterialParameter::BaseColor).y << ", " << in.color(MaterialParameter::BaseColor).z << "), metallic " << in.scalar(MaterialParameter::Metallic)
                       << ", roughness " << in.scalar(MaterialParameter::Roughness) << ", specular " << in.scalar(MaterialParameter::Specular) << ", tint "
-                      << in.scalar(MaterialParameter::SpecularTint) << ", "
+                      << in.scalar(MaterialParameter::SpecularTint) << ", sheen "
+                      << in.scalar(MaterialParameter::Sheen) << " tint " << in.scalar(MaterialParameter::SheenTint) << ", "
                       << (in.diffuse_model == DiffuseModel::Lambert ? "Lambert" : "principled")
                       << "; cos_o " << wo.z << ", cos_i " << wi.z << ", cos_h " << cos_h);
         INFO("diffuse " << diffuse[k] << " vs " << diffuse_ref[k] << "; specular " << specular[k]
@@ -286,6 +307,7 @@ TEST_CASE("Singular mirror lobe: sample weight is F(cos_o) over its selection pr
   int checked = 0;
   for (int n = 0; n < 5000; ++n) {
     PrincipledInputs in = random_material(rng, 0.0f, 0.0177f);
+    in.set(MaterialParameter::Sheen, 0.0f);  // the two lobes of the formula above
     if (n % 4 == 0) in.set(MaterialParameter::Metallic, 1.0f);  // no diffuse lobe: the weight is F itself
     const glm::vec3 wo = random_upper_direction(rng);
     const LobeMixture bsdf = principled_bsdf(in, wo);

@@ -49,6 +49,12 @@ PrincipledInputs material(glm::vec3 base, float metallic, float roughness, float
   return in;
 }
 
+PrincipledInputs with_sheen(PrincipledInputs in, float sheen, float sheen_tint) {
+  in.set(MaterialParameter::Sheen, sheen);
+  in.set(MaterialParameter::SheenTint, sheen_tint);
+  return in;
+}
+
 PrincipledInputs random_material(UniformFloats& rng) {
   PrincipledInputs in;
   in.set(MaterialParameter::BaseColor, glm::vec3{rng.next(), rng.next(), rng.next()});
@@ -57,6 +63,8 @@ PrincipledInputs random_material(UniformFloats& rng) {
   in.set(MaterialParameter::Specular, rng.next());
   in.set(MaterialParameter::SpecularTint, rng.next());
   in.diffuse_model = rng.next() < 0.5f ? DiffuseModel::Principled : DiffuseModel::Lambert;
+  in.set(MaterialParameter::Sheen, rng.next() < 0.5f ? 0.0f : rng.next());
+  in.set(MaterialParameter::SheenTint, rng.next());
   return in;
 }
 
@@ -293,10 +301,13 @@ struct MixtureCase {
   PrincipledInputs inputs;
   float cos_o;
 };
-const std::array<MixtureCase, 3> kMixtureCases = {{
+const std::array<MixtureCase, 5> kMixtureCases = {{
     {"dielectric", material({0.8f, 0.3f, 0.2f}, 0.0f, 0.3f, 0.5f, 0.0f), 0.8f},
     {"metallic 1", material({0.9f, 0.6f, 0.3f}, 1.0f, 0.5f, 0.5f, 0.0f), 0.4f},
     {"mixed", material({0.2f, 0.5f, 0.9f}, 0.5f, 0.15f, 0.8f, 0.5f), 0.15f},
+    // Fabric: diffuse, sheen and a rough specular lobe, at a grazing view where sheen is strong.
+    {"sheen, grazing", with_sheen(material({0.3f, 0.2f, 0.6f}, 0.0f, 0.8f, 0.5f, 0.0f), 1.0f, 0.5f), 0.15f},
+    {"sheen, half metal", with_sheen(material({0.7f, 0.5f, 0.2f}, 0.5f, 0.4f, 0.5f, 0.0f), 0.6f, 1.0f), 0.6f},
 }};
 constexpr int kMixtureCharts = 2;
 
@@ -450,7 +461,11 @@ TEST_CASE("BSDF values are reciprocal in wo and wi", "[render]") {
       const double spec_tolerance =
           (1e-5 + 1e-6 / cos_h) * std::abs(spec_backward[k]) + 1e-6 * f_without_fresnel;
       CHECK(std::abs(spec_forward[k] - spec_backward[k]) <= spec_tolerance);
-      CHECK(diffuse_forward[k] == Approx(diffuse_backward[k]).epsilon(1e-5).margin(1e-12));
+      // The sheen's (1 - wi.h)^5 shares the half vector's error.
+      const double diffuse_tolerance =
+          (1e-5 + (in.scalar(MaterialParameter::Sheen) > 0.0f ? 1e-6 / cos_h : 0.0)) * std::abs(diffuse_backward[k]) +
+          1e-12;
+      CHECK(std::abs(diffuse_forward[k] - diffuse_backward[k]) <= diffuse_tolerance);
     }
   }
 }
@@ -607,6 +622,8 @@ TEST_CASE("White furnace: mean sample weight equals the reference directional al
       check_furnace(material(glm::vec3(1.0f), 0.0f, roughness, 0.0f, 0.0f), cos_o, ++seed);
       // GGX alone with F = 1 (cspec0 = base = 1).
       check_furnace(material(glm::vec3(1.0f), 1.0f, roughness, 0.5f, 0.0f), cos_o, ++seed);
+      // Diffuse and sheen (sheen adds to the diffuse, as in Cycles: more than 1 at grazing).
+      check_furnace(with_sheen(material(glm::vec3(1.0f), 0.0f, roughness, 0.0f, 0.0f), 1.0f, 0.0f), cos_o, ++seed);
     }
   }
 }

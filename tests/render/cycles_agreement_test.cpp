@@ -178,6 +178,7 @@ struct Case {
   int rings = 48;  // 6: a coarse sphere of 132 triangles, where ensure_valid_reflection bends the
                    // shading normal off the smooth one and Cycles' bump shadowing term matters
   float terminator_offset = 0.1f;  // Cycles' default; the next test case is about this offset
+  float sheen = 0.0f, sheen_tint = 0.5f;
 };
 
 }  // namespace
@@ -192,6 +193,9 @@ TEST_CASE("Renders agree with Blender 3.4 Cycles up to noise", "[render][blender
       {"metal_0", {0.9f, 0.9f, 0.9f}, 1.0f, 0.0f, 0.5f, 0.0f},
       {"half_metal_0.6", {0.5f, 0.8f, 0.5f}, 0.5f, 0.6f, 0.5f, 0.0f},
       {"coarse_sphere_no_terminator_offset", {0.8f, 0.8f, 0.8f}, 0.0f, 0.5f, 0.5f, 0.0f, 6, 0.0f},
+      // Fabric: a dark base, where the sheen's grazing rim is most of the light.
+      {"sheen_1_tint_0.5", {0.15f, 0.05f, 0.3f}, 0.0f, 0.8f, 0.3f, 0.0f, 48, 0.1f, 1.0f, 0.5f},
+      {"sheen_0.6_tint_1_half_metal", {0.6f, 0.4f, 0.1f}, 0.5f, 0.5f, 0.5f, 0.0f, 48, 0.1f, 0.6f, 1.0f},
   };
   for (const Case& c : cases) {
     matrender::Material material;
@@ -200,6 +204,8 @@ TEST_CASE("Renders agree with Blender 3.4 Cycles up to noise", "[render][blender
     material.set(matrender::MaterialParameter::Roughness, c.roughness);
     material.set(matrender::MaterialParameter::Specular, c.specular);
     material.set(matrender::MaterialParameter::SpecularTint, c.specular_tint);
+    material.set(matrender::MaterialParameter::Sheen, c.sheen);
+    material.set(matrender::MaterialParameter::SheenTint, c.sheen_tint);
     const shaders_ref::CyclesScene scene = paper_scene(material, c.rings, c.terminator_offset);
     std::vector<shaders_ref::CyclesRender> renders = {{kSamples, 1, "", 0.0}, {kSamples, 2, "", 0.0}};
     shaders_ref::render_with_cycles(scene, renders, 2, cycles_work_folder(c.name));

@@ -1,10 +1,10 @@
 #pragma once
-// The Principled BSDF's two lobes evaluated apart, for tests against the reference shaders.
+// The Principled BSDF's diffuse and specular lobes evaluated apart, for tests against the reference shaders.
 #include <glm/glm.hpp>
 
 #include "bsdf/principled.h"
 
-// f cos of the diffuse lobe alone.
+// f cos of the diffuse lobes alone: the diffuse one and the sheen (which Cycles labels diffuse).
 inline glm::vec3 diffuse_value(const matrender::LobeMixture& bsdf, const glm::vec3& wi) {
   float pdf;
   return bsdf.eval(wi, matrender::BxDFFlags::Diffuse, &pdf);

@@ -12,6 +12,8 @@ inline shaders_ref::PrincipledParams reference_params(const matrender::Principle
   p.roughness = in.scalar(matrender::MaterialParameter::Roughness);
   p.specular = in.scalar(matrender::MaterialParameter::Specular);
   p.specular_tint = in.scalar(matrender::MaterialParameter::SpecularTint);
+  p.sheen = in.scalar(matrender::MaterialParameter::Sheen);
+  p.sheen_tint = in.scalar(matrender::MaterialParameter::SheenTint);
   p.lambert_diffuse = in.diffuse_model == matrender::DiffuseModel::Lambert;
   return p;
 }

@@ -22,8 +22,10 @@ enum class MaterialParameter : unsigned {
   Specular,
   SpecularTint,
   Ior,
+  Sheen,
+  SheenTint,
 };
-constexpr size_t kMaterialParameterCount = 6;
+constexpr size_t kMaterialParameterCount = 8;
 
 enum class ParameterKind {
   Color,   // RGB, from the RGB of a texture
@@ -57,6 +59,10 @@ constexpr std::array<MaterialParameterInfo, kMaterialParameterCount> kMaterialPa
      ColorSpace::NonColor, 0, false, "tints dielectric reflection toward the base colour's hue"},
     {MaterialParameter::Ior, "ior", "IOR", ParameterKind::Scalar, 1.45, 1.0, 1000.0, false, ColorSpace::NonColor, 0, false,
      "index of refraction of transmitted light (no lobe transmits yet: it changes no image)"},
+    {MaterialParameter::Sheen, "sheen", "Sheen", ParameterKind::Scalar, 0.0, 0.0, 1.0, true, ColorSpace::NonColor, 0,
+     false, "cloth's grazing sheen: f = sheen (1 - metallic) colour (1 - L.H)^5, added to the diffuse"},
+    {MaterialParameter::SheenTint, "sheen_tint", "Sheen Tint", ParameterKind::Scalar, 0.5, 0.0, 1.0, true,
+     ColorSpace::NonColor, 0, false, "mixes the sheen colour from white toward the base colour's hue"},
 }};
 
 constexpr const MaterialParameterInfo& material_parameter(MaterialParameter id) {

@@ -5,6 +5,9 @@
 namespace matrender {
 namespace {
 
+// Cycles' CLOSURE_WEIGHT_CUTOFF: closures weaker than this are not made.
+constexpr float kClosureWeightCutoff = 1e-5f;
+
 // Rec.709 luminance, Cycles' linear_rgb_to_gray for the default scene-linear space.
 float luminance(const glm::vec3& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
 
@@ -37,9 +40,18 @@ PrincipledParameters::PrincipledParameters(const PrincipledInputs& inputs) : dif
   diffuse_weight = (1.0f - metallic) * base;
   specular_enabled = specular > 0.0f || metallic > 0.0f;
 
-  // cspec0 = mix(0.08 specular mix(1, tint, specular_tint), base, metallic), tint = base / lum.
+  // The base colour's hue: tint = base / lum (white for black), for the specular and sheen tints.
   const float lum = luminance(base);
   const glm::vec3 tint = lum > 0.0f ? base / lum : glm::vec3(1.0f);
+
+  const float sheen = glm::clamp(inputs.scalar(MaterialParameter::Sheen), 0.0f, 1.0f);
+  sheen_enabled = sheen > kClosureWeightCutoff && 1.0f - metallic > kClosureWeightCutoff;
+  if (sheen_enabled) {
+    const float sheen_tint = glm::clamp(inputs.scalar(MaterialParameter::SheenTint), 0.0f, 1.0f);
+    sheen_weight = sheen * (1.0f - metallic) * glm::mix(glm::vec3(1.0f), tint, sheen_tint);
+  }
+
+  // cspec0 = mix(0.08 specular mix(1, tint, specular_tint), base, metallic).
   const glm::vec3 dielectric = 0.08f * specular * glm::mix(glm::vec3(1.0f), tint, tint_amount);
   // principled_specular_ior makes ((ior - 1) / (ior + 1))^2 = 0.08 specular: F(1) needs no evaluation.
   fresnel = InterpolatedFresnel(glm::mix(dielectric, base, metallic), principled_specular_ior(specular),
@@ -50,6 +62,9 @@ void add_principled_lobes(const PrincipledParameters& p, const glm::vec3& wo, co
                           LobeMixture* lobes) {
   const DiffuseLobe diffuse(p.diffuse_weight, p.diffuse_model, p.roughness, wo, smooth_normal);
   if (diffuse.sample_weight() > 0.0f) lobes->add(diffuse);
+  // Added even where its sample weight is 0 (seen head-on): like Cycles' closure it then still
+  // counts in every evaluation, only BSDF sampling never picks it.
+  if (p.sheen_enabled) lobes->add(SheenLobe(p.sheen_weight, wo));
   if (p.specular_enabled) lobes->add(GgxReflectionLobe(p.fresnel, p.alpha, p.singular, wo));
   lobes->finish();
 }

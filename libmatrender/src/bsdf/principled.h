@@ -1,8 +1,9 @@
 #pragma once
 // The Principled BSDF of Blender 3.4 Cycles restricted to what matpredict's materials use: a
-// diffuse lobe weighted (1 - metallic) * base colour plus a GGX specular lobe with the
-// interpolated Fresnel, added on top (svm_closure.h, CLOSURE_BSDF_PRINCIPLED_ID). A material
-// without a lobe pays nothing for it: specular 0 and metallic 0 make no specular lobe at all.
+// diffuse lobe weighted (1 - metallic) * base colour, a sheen lobe on top of it, and a GGX
+// specular lobe with the interpolated Fresnel (svm_closure.h, CLOSURE_BSDF_PRINCIPLED_ID). A
+// material without a lobe pays nothing for it: specular 0 and metallic 0 make no specular lobe
+// at all, sheen 0 (the default) no sheen lobe.
 #include <array>
 
 #include <glm/glm.hpp>
@@ -38,6 +39,8 @@ struct PrincipledParameters {
   explicit PrincipledParameters(const PrincipledInputs& inputs);
 
   glm::vec3 diffuse_weight{0.0f};  // (1 - metallic) base colour
+  glm::vec3 sheen_weight{0.0f};    // sheen (1 - metallic) mix(1, base tint, sheen_tint)
+  bool sheen_enabled;              // Cycles' cutoff: sheen and 1 - metallic both above 1e-5
   DiffuseModel diffuse_model;
   float roughness;
   float alpha;                     // GGX alpha = roughness^2

@@ -54,7 +54,12 @@ SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm:
   const float b1 = hit.u, b2 = hit.v, b0 = 1.0f - hit.u - hit.v;
   const glm::vec3 p0 = mesh.positions[tri.x], p1 = mesh.positions[tri.y], p2 = mesh.positions[tri.z];
 
-  SurfacePoint sp;
+  const uint32_t part = mesh.triangle_parts.empty() ? 0 : mesh.triangle_parts[hit.triangle];
+  const uint32_t material_index = mesh.part_materials[part];
+  const Material& material = scene.materials[material_index];
+  SurfacePoint sp(material);
+  sp.part = static_cast<int32_t>(part);
+  sp.material = material_index;
   // Interpolating the vertices is more precise than origin + t dir.
   sp.position = b0 * p0 + b1 * p1 + b2 * p2;
   const glm::vec3 ng_front = normalize_or(glm::cross(p1 - p0, p2 - p0), wo);
@@ -70,9 +75,6 @@ SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm:
     n_front = normalize_or(b0 * mesh.normals[tri.x] + b1 * mesh.normals[tri.y] + b2 * mesh.normals[tri.z],
                            ng_front);
   }
-  sp.part = mesh.triangle_parts.empty() ? 0 : static_cast<int32_t>(mesh.triangle_parts[hit.triangle]);
-  sp.material = mesh.part_materials[static_cast<size_t>(sp.part)];
-  const Material& material = scene.materials[sp.material];
 
   // Only textures read the UV.
   const bool textured_parameters = material.textured();
@@ -90,7 +92,6 @@ SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm:
   if (!is_finite(n)) n = sp.geometric_normal;
   sp.shading_normal = ensure_valid_reflection(sp.geometric_normal, wo, n);
 
-  sp.inputs = PrincipledInputs(material);
   if (textured_parameters) look_up_textures(material, sp.uv, sp.inputs);
   return sp;
 }

@@ -16,19 +16,20 @@ using DirectionFunction = std::function<double(const glm::dvec3&)>;
 
 struct LobeAlbedos {
   glm::dvec3 diffuse{0.0};
+  glm::dvec3 sheen{0.0};
   glm::dvec3 specular{0.0};
 };
 
 // Directional albedo of each lobe, a(wo) = integral over the upper hemisphere of
 // f(wo, wi) cos(theta_i) dwi, per RGB channel. wo is a unit vector with wo.z > 0.
-// The diffuse lobe is integrated over wi in spherical coordinates. The specular lobe is integrated
+// The diffuse and sheen lobes are integrated over wi in spherical coordinates. The specular lobe is integrated
 // over the half vector m with wi = reflect(wo, m), dwi = 4 (wo.m) dm (Walter et al. 2007,
 // eq. 14), in the "stretched" polar angle s with tan(theta_m) = alpha tan(s): the GGX
 // distribution is spread evenly over s in [0, pi/2) whatever alpha is, and the horizon
 // wi.z > 0 becomes the closed-form limit s < s_max(phi), so the integrand is smooth.
 LobeAlbedos lobe_albedos(const PrincipledParams& p, const glm::dvec3& wo);
 
-// The sum of both lobes' albedos.
+// The sum of the lobes' albedos.
 glm::dvec3 directional_albedo(const PrincipledParams& p, const glm::dvec3& wo);
 
 // Integral of f(w) over the whole unit sphere (e.g. a pdf, to check it integrates to at most 1).

@@ -18,6 +18,8 @@ struct PrincipledParams {
   double roughness = 0.5;
   double specular = 0.5;
   double specular_tint = 0.0;
+  double sheen = 0.0;
+  double sheen_tint = 0.5;
   bool lambert_diffuse = false;  // Cycles' Diffuse BSDF (f = 1/pi) instead of the principled one
 };
 
@@ -77,12 +79,17 @@ bool has_specular_lobe(const PrincipledParams& p);
 // FV = (1 - cos_o)^5, RR = roughness (1 + wi.wo); or times 1/pi for the Lambert lobe.
 glm::dvec3 diffuse_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi);
 
+// Burley's sheen (Physically Based Shading at Disney, 2012, sec. 5.3) as Cycles 3.4 scales it:
+// sheen (1 - metallic) mix(1, tint, sheen_tint) (1 - wi.h)^5 with h = normalize(wo + wi) and
+// the tint of specular_color_at_normal_incidence; no 1/pi. Zero below the surface.
+glm::dvec3 sheen_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi);
+
 // F(wi.h) D(h) G1(wo) G1(wi) / (4 cos_o cos_i) with h = normalize(wo + wi) (Walter et al. 2007,
 // eq. 20); zero when there is no specular lobe or either direction is below the surface. Needs
 // roughness > 0: the reference has no singular (mirror) case.
 glm::dvec3 specular_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi);
 
-// diffuse_brdf + specular_brdf.
+// diffuse_brdf + sheen_brdf + specular_brdf.
 glm::dvec3 principled_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi);
 
 }  // namespace shaders_ref
