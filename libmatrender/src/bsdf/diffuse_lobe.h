@@ -37,11 +37,7 @@ class DiffuseLobe {
     return weight_ * (f_cos * shadowing);
   }
 
-  bool sample(glm::vec2 u, LobeSample* out) const {
-    if (wo_.z <= 0.0f) return false;
-    out->wi = diffuse_sample(u);
-    return out->wi.z > 0.0f;
-  }
+  bool sample(glm::vec2 u, LobeSample* out) const { return sample_diffuse_lobe(wo_, u, out); }
 
  private:
   glm::vec3 weight_{0.0f};

@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include "bsdf/lobe_sample.h"
 #include "sampling/warp.h"
 
 namespace matrender {
@@ -35,10 +36,16 @@ inline float lambert_eval_cos(const glm::vec3& wo, const glm::vec3& wi) {
   return wi.z * kInvPi;
 }
 
-// Both diffuse lobes are sampled cosine-weighted.
+// Both diffuse lobes, and the sheen, are sampled cosine-weighted.
 inline glm::vec3 diffuse_sample(glm::vec2 u) { return sample_cosine_hemisphere(u); }
 inline float diffuse_pdf(const glm::vec3& wo, const glm::vec3& wi) {
   return wo.z > 0.0f ? cosine_hemisphere_pdf(wi.z) : 0.0f;
+}
+// A cosine-sampled lobe's sample(): nothing from below the surface, nothing in its plane.
+inline bool sample_diffuse_lobe(const glm::vec3& wo, glm::vec2 u, LobeSample* out) {
+  if (wo.z <= 0.0f) return false;
+  out->wi = diffuse_sample(u);
+  return out->wi.z > 0.0f;
 }
 
 }  // namespace matrender

@@ -34,11 +34,7 @@ class SheenLobe {
     return weight_ * (schlick_weight(cos_lh) * wi.z);
   }
 
-  bool sample(glm::vec2 u, LobeSample* out) const {
-    if (wo_.z <= 0.0f) return false;
-    out->wi = diffuse_sample(u);
-    return out->wi.z > 0.0f;
-  }
+  bool sample(glm::vec2 u, LobeSample* out) const { return sample_diffuse_lobe(wo_, u, out); }
 
  private:
   glm::vec3 weight_{0.0f};
