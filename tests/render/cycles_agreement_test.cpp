@@ -179,6 +179,7 @@ struct Case {
                    // shading normal off the smooth one and Cycles' bump shadowing term matters
   float terminator_offset = 0.1f;  // Cycles' default; the next test case is about this offset
   float sheen = 0.0f, sheen_tint = 0.5f;
+  glm::vec3 emission{0.0f};
 };
 
 }  // namespace
@@ -196,6 +197,8 @@ TEST_CASE("Renders agree with Blender 3.4 Cycles up to noise", "[render][blender
       // Fabric: a dark base, where the sheen's grazing rim is most of the light.
       {"sheen_1_tint_0.5", {0.15f, 0.05f, 0.3f}, 0.0f, 0.8f, 0.3f, 0.0f, 48, 0.1f, 1.0f, 0.5f},
       {"sheen_0.6_tint_1_half_metal", {0.6f, 0.4f, 0.1f}, 0.5f, 0.5f, 0.5f, 0.0f, 48, 0.1f, 0.6f, 1.0f},
+      // A faint glow on a glossy dielectric: emission beside reflected lamps.
+      {"emission_glossy", {0.5f, 0.5f, 0.5f}, 0.0f, 0.2f, 0.5f, 0.0f, 48, 0.1f, 0.0f, 0.5f, {0.02f, 0.01f, 0.004f}},
   };
   for (const Case& c : cases) {
     matrender::Material material;
@@ -206,6 +209,7 @@ TEST_CASE("Renders agree with Blender 3.4 Cycles up to noise", "[render][blender
     material.set(matrender::MaterialParameter::SpecularTint, c.specular_tint);
     material.set(matrender::MaterialParameter::Sheen, c.sheen);
     material.set(matrender::MaterialParameter::SheenTint, c.sheen_tint);
+    material.set(matrender::MaterialParameter::Emission, c.emission);
     const shaders_ref::CyclesScene scene = paper_scene(material, c.rings, c.terminator_offset);
     std::vector<shaders_ref::CyclesRender> renders = {{kSamples, 1, "", 0.0}, {kSamples, 2, "", 0.0}};
     shaders_ref::render_with_cycles(scene, renders, 2, cycles_work_folder(c.name));

@@ -24,8 +24,10 @@ enum class MaterialParameter : unsigned {
   Ior,
   Sheen,
   SheenTint,
+  Emission,
+  EmissionStrength,
 };
-constexpr size_t kMaterialParameterCount = 8;
+constexpr size_t kMaterialParameterCount = 10;
 
 enum class ParameterKind {
   Color,   // RGB, from the RGB of a texture
@@ -63,6 +65,10 @@ constexpr std::array<MaterialParameterInfo, kMaterialParameterCount> kMaterialPa
      false, "cloth's grazing sheen: f = sheen (1 - metallic) colour (1 - L.H)^5, added to the diffuse"},
     {MaterialParameter::SheenTint, "sheen_tint", "Sheen Tint", ParameterKind::Scalar, 0.5, 0.0, 1.0, true,
      ColorSpace::NonColor, 0, false, "mixes the sheen colour from white toward the base colour's hue"},
+    {MaterialParameter::Emission, "emission", "Emission", ParameterKind::Color, 0.0, 0.0, 1.0, true, ColorSpace::SRGB,
+     0, false, "emitted radiance, times emission_strength, from both sides (strength 1: a white one shows as 1)"},
+    {MaterialParameter::EmissionStrength, "emission_strength", "Emission Strength", ParameterKind::Scalar, 1.0, 0.0,
+     1e6, true, ColorSpace::NonColor, 0, false, "scales the emission"},
 }};
 
 constexpr const MaterialParameterInfo& material_parameter(MaterialParameter id) {

@@ -102,6 +102,10 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
       result.first = sp;
       result.first_distance = hit.t;
     }
+    // Emission, seen by every ray including the camera's. No light sample aims at emissive
+    // surfaces yet, so a hit takes it whole: the estimator Cycles has with the mesh's MIS off.
+    const glm::vec3 emitted = sp.emitted();
+    if (emitted != glm::vec3(0.0f)) result.radiance += throughput * emitted;
     // Cycles terminates here, after the lamp and background hits of the arriving ray counted.
     if (bounce > settings_.max_bounces || diffuse_bounces > settings_.max_diffuse_bounces ||
         glossy_bounces > settings_.max_glossy_bounces)

@@ -31,6 +31,12 @@ struct SurfacePoint {
   int32_t part = 0;
   PrincipledInputs inputs;
 
+  // Radiance the surface emits toward the viewer: Cycles' emission closure, the same from both
+  // sides (kernel/closure/emissive.h).
+  glm::vec3 emitted() const {
+    return inputs.color(MaterialParameter::Emission) * inputs.scalar(MaterialParameter::EmissionStrength);
+  }
+
   // Relative index of refraction across the surface along the ray: the material's IOR entering
   // through the front, its inverse leaving through the back. Computed when a lobe asks, not at
   // every hit.
