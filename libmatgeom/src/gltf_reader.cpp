@@ -695,6 +695,9 @@ TextureRef resolve_texture(const GltfFile& file, ImageTable& images, int texture
   return ref;
 }
 
+// The extension that scales emission beyond glTF's [0, 1] factor.
+constexpr const char* kEmissiveStrength = "KHR_materials_emissive_strength";
+
 // A factor must lie in its parameter's range (the parameter table's).
 double checked_factor(const GltfFile& file, MaterialParameter p, double value, const std::string& what) {
   const MaterialParameterInfo& info = material_parameter(p);
@@ -705,8 +708,9 @@ double checked_factor(const GltfFile& file, MaterialParameter p, double value, c
 
 // The Principled BSDF inputs Blender's importer sets (docs/conventions.md): base colour =
 // factor x texture, roughness = factor x texture.G, metallic = factor x texture.B, normal map
-// strength = normalTexture.scale; specular and specular tint keep Blender's defaults. Emission,
-// occlusion and alpha have no MaterialDesc input yet.
+// strength = normalTexture.scale, emission = emissiveFactor x emissiveTexture with
+// KHR_materials_emissive_strength's strength; specular and specular tint keep Blender's
+// defaults. Occlusion and alpha have no MaterialDesc input yet.
 MaterialDesc convert_material(const GltfFile& file, ImageTable& images, size_t index) {
   const tinygltf::Material& material = file.model.materials[index];
   const tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
@@ -723,6 +727,19 @@ MaterialDesc convert_material(const GltfFile& file, ImageTable& images, size_t i
   desc.set(P::BaseColor, base_color);
   desc.set(P::Metallic, checked_factor(file, P::Metallic, pbr.metallicFactor, what + " metallicFactor"));
   desc.set(P::Roughness, checked_factor(file, P::Roughness, pbr.roughnessFactor, what + " roughnessFactor"));
+  if (material.emissiveFactor.size() != 3) fail(file.path, what + ": emissiveFactor needs 3 numbers");
+  glm::dvec3 emission;
+  for (int c = 0; c < 3; ++c)
+    emission[c] = checked_factor(file, P::Emission, material.emissiveFactor[static_cast<size_t>(c)],
+                                 what + " emissiveFactor");
+  desc.set(P::Emission, emission);
+  const auto strength = material.extensions.find(kEmissiveStrength);
+  if (strength != material.extensions.end() && strength->second.Has("emissiveStrength")) {
+    const tinygltf::Value& value = strength->second.Get("emissiveStrength");
+    if (!value.IsNumber()) fail(file.path, what + ": emissiveStrength is not a number");
+    desc.set(P::EmissionStrength, checked_factor(file, P::EmissionStrength, value.GetNumberAsDouble(),
+                                                 what + " emissiveStrength"));
+  }
   if (!std::isfinite(material.normalTexture.scale))
     fail(file.path, what + ": non-finite normal scale");
   desc.normal_strength = material.normalTexture.scale;
@@ -736,7 +753,11 @@ MaterialDesc convert_material(const GltfFile& file, ImageTable& images, size_t i
   const TextureRef normal =
       resolve_texture(file, images, material.normalTexture.index, material.normalTexture.texCoord,
                       what + " normalTexture");
+  const TextureRef emissive =
+      resolve_texture(file, images, material.emissiveTexture.index, material.emissiveTexture.texCoord,
+                      what + " emissiveTexture");
   if (base.image >= 0) desc.set_image(P::BaseColor, base.image);
+  if (emissive.image >= 0) desc.set_image(P::Emission, emissive.image);
   if (metallic_roughness.image >= 0) desc.set_metallic_roughness_image(metallic_roughness.image);
   desc.normal_image = normal.image;
   // The wrap mode follows the most visible texture: base colour, else roughness, else normal.

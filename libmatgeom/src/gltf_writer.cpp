@@ -202,6 +202,15 @@ tinygltf::Material make_material(const MaterialDesc& desc, TextureTable& texture
   pbr.metallicRoughnessTexture.index = textures.metallic_roughness_texture(desc, what);
   material.normalTexture.index = textures.texture(desc.normal_image, desc.wrap, what);
   material.normalTexture.scale = desc.normal_strength;
+  const glm::dvec3 emission = desc.color(P::Emission);
+  material.emissiveFactor = {emission.r, emission.g, emission.b};
+  material.emissiveTexture.index = textures.texture(desc[P::Emission].image, desc.wrap, what);
+  // glTF's factor stops at 1; the rest is the extension's (Blender's exporter writes it the same way).
+  if (desc.scalar(P::EmissionStrength) != 1.0) {
+    tinygltf::Value::Object strength;
+    strength["emissiveStrength"] = tinygltf::Value(desc.scalar(P::EmissionStrength));
+    material.extensions["KHR_materials_emissive_strength"] = tinygltf::Value(strength);
+  }
   return material;
 }
 
@@ -217,6 +226,11 @@ tinygltf::Model make_model(const ObjectAsset& asset) {
   model.buffers.resize(1);
   TextureTable textures(model, asset.images);
   for (const MaterialDesc& desc : asset.materials) model.materials.push_back(make_material(desc, textures));
+  for (const tinygltf::Material& material : model.materials)
+    if (material.extensions.count("KHR_materials_emissive_strength")) {
+      model.extensionsUsed.push_back("KHR_materials_emissive_strength");
+      break;
+    }
 
   tinygltf::Mesh mesh;
   for (const MeshPart& part : split_parts(asset.mesh))

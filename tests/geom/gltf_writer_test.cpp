@@ -55,6 +55,10 @@ ObjectAsset two_part_asset() {
   wood.set(P::Roughness, 0.75);
   wood.normal_image = 1;
   wood.normal_strength = 0.5;
+  // A glow beyond glTF's [0, 1] factor: KHR_materials_emissive_strength carries the rest.
+  wood.set(P::Emission, glm::dvec3(0.25, 0.5, 1.0));
+  wood.set_image(P::Emission, 0);
+  wood.set(P::EmissionStrength, 2.5);
   MaterialDesc brass;
   brass.name = "brass handle";
   brass.set(P::BaseColor, glm::dvec3(1.0, 0.75, 0.25));
@@ -96,10 +100,13 @@ void check_same_asset(const ObjectAsset& written, const ObjectAsset& read) {
     CHECK(b.color(P::BaseColor) == a.color(P::BaseColor));
     CHECK(b.scalar(P::Metallic) == a.scalar(P::Metallic));
     CHECK(b.scalar(P::Roughness) == a.scalar(P::Roughness));
+    CHECK(b.color(P::Emission) == a.color(P::Emission));
+    CHECK(b.scalar(P::EmissionStrength) == a.scalar(P::EmissionStrength));
     CHECK(b.normal_strength == a.normal_strength);
     CHECK(b.wrap == a.wrap);
     for (const auto& [image_a, image_b] : {std::pair{a[P::BaseColor].image, b[P::BaseColor].image},
                                            std::pair{a[P::Roughness].image, b[P::Roughness].image},
+                                           std::pair{a[P::Emission].image, b[P::Emission].image},
                                            std::pair{a.normal_image, b.normal_image}}) {
       REQUIRE((image_a < 0) == (image_b < 0));
       if (image_a < 0) continue;
