@@ -73,7 +73,8 @@ glm::vec3 PathTracer::lamps_hit(const glm::vec3& origin, const glm::vec3& dir, f
 }
 
 PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& camera_dir,
-                             const RayHit& camera_hit, const PixelSampler& sampler) const {
+                             const RayHit& camera_hit, const PixelSampler& sampler,
+                             SurfacePoint* first_surface) const {
   PathResult result;
   glm::vec3 throughput(1.0f);
   glm::vec3 origin = camera_origin;
@@ -99,8 +100,8 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     const SurfacePoint sp = shade_surface(scene_, hit, wo_world);
     if (bounce == 0) {
       result.hit = true;
-      result.first = sp;
       result.first_distance = hit.t;
+      if (first_surface) *first_surface = sp;
     }
     // Emission, seen by every ray including the camera's. No light sample aims at emissive
     // surfaces yet, so a hit takes it whole: the estimator Cycles has with the mesh's MIS off.

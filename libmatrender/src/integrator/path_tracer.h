@@ -24,7 +24,6 @@ struct PathSettings {
 struct PathResult {
   glm::vec3 radiance{0.0f};
   bool hit = false;           // the camera ray hit a surface
-  SurfacePoint first;         // that surface (valid when hit)
   float first_distance = 0.0f;
   uint32_t rays = 0;          // closest-hit plus shadow rays traced
 };
@@ -35,9 +34,10 @@ class PathTracer {
 
   // Radiance along the camera ray, whose closest hit the caller traced (camera rays go to
   // Embree in packets); random numbers come from `sampler` pairs 1, 2, ... (pair 0 is the
-  // caller's pixel-filter offset).
+  // caller's pixel-filter offset). When the camera ray hits and first_surface is given, the
+  // surface it hit is copied there (for the AOVs): a caller without AOVs pays for no copy.
   PathResult trace(const glm::vec3& origin, const glm::vec3& dir, const RayHit& camera_hit,
-                   const PixelSampler& sampler) const;
+                   const PixelSampler& sampler, SurfacePoint* first_surface = nullptr) const;
 
  private:
   // MIS-weighted radiance of the area lamps in front of the segment [origin, origin + t_max dir].

@@ -132,6 +132,8 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
     glm::vec2 offsets[kPacketSamples];
     glm::vec3 dirs[kPacketSamples];
     RayHit camera_hits[kPacketSamples];
+    // The surface each camera ray hits, for the AOVs; made once per pixel, filled by trace.
+    SurfacePoint sp;
     for (uint32_t first = 0; first < spp; first += kPacketSamples) {
       if (cancel_requested()) return;
       const int count = static_cast<int>(std::min<uint32_t>(kPacketSamples, spp - first));
@@ -148,7 +150,8 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
       }
       data.accel.intersect_coherent(rays.origin(), dirs, count, camera_hits);
       for (int lane = 0; lane < count; ++lane) {
-        const PathResult path = tracer.trace(rays.origin(), dirs[lane], camera_hits[lane], PixelSampler(packet, lane));
+        const PathResult path = tracer.trace(rays.origin(), dirs[lane], camera_hits[lane], PixelSampler(packet, lane),
+                                             surface_aovs ? &sp : nullptr);
         tile_rays += path.rays;
         if (is_finite(path.radiance)) {
           acc.color += glm::dvec3(path.radiance);
@@ -158,7 +161,6 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
         if (!path.hit) continue;
         ++acc.hits;
         if (!surface_aovs) continue;
-        const SurfacePoint& sp = path.first;
         // Colours and scalars sum alike; a scalar's AOV reads x.
         for (const matgeom::MaterialParameterInfo* info : parameter_aovs)
           acc.parameters[static_cast<size_t>(info->id)] += glm::dvec3(
