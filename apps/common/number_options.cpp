@@ -9,10 +9,10 @@
 namespace app_support {
 namespace {
 
-// The whole of `text` as an integer of type T, or nothing (a sign where T has none, a fraction,
+// The whole of `text` as a T, or nothing (a sign where T has none, a fraction in an integer,
 // digits beyond T's range, trailing characters).
 template <class T>
-std::optional<T> parse_whole(const std::string& text) {
+std::optional<T> parse_all(const std::string& text) {
   T value{};
   const char* end = text.data() + text.size();
   const auto [stop, error] = std::from_chars(text.data(), end, value);
@@ -49,15 +49,12 @@ std::string with_thousands(int64_t n) {
                : with_thousands_unsigned(static_cast<uint64_t>(n));
 }
 
-std::optional<int64_t> whole_number(const std::string& text) { return parse_whole<int64_t>(text); }
-std::optional<uint64_t> unsigned_whole_number(const std::string& text) { return parse_whole<uint64_t>(text); }
+std::optional<int64_t> whole_number(const std::string& text) { return parse_all<int64_t>(text); }
+std::optional<uint64_t> unsigned_whole_number(const std::string& text) { return parse_all<uint64_t>(text); }
 
 std::optional<double> finite_number(const std::string& text) {
-  double value = 0.0;
-  const char* end = text.data() + text.size();
-  const auto [stop, error] = std::from_chars(text.data(), end, value);
-  if (error != std::errc() || stop != end || text.empty() || !std::isfinite(value)) return std::nullopt;
-  return value;
+  const std::optional<double> value = parse_all<double>(text);
+  return value && std::isfinite(*value) ? value : std::nullopt;
 }
 
 std::optional<std::string> whole_number_problem(const std::string& text, int64_t low, int64_t high) {

@@ -18,6 +18,7 @@
 #include <tiny_gltf.h>
 
 #include "file_error.h"
+#include "gltf/extensions.h"
 #include "image_bytes.h"
 #include "matgeom/input_file.h"
 #include "matgeom/tangents.h"
@@ -695,9 +696,6 @@ TextureRef resolve_texture(const GltfFile& file, ImageTable& images, int texture
   return ref;
 }
 
-// The extension that scales emission beyond glTF's [0, 1] factor.
-constexpr const char* kEmissiveStrength = "KHR_materials_emissive_strength";
-
 // A factor must lie in its parameter's range (the parameter table's).
 double checked_factor(const GltfFile& file, MaterialParameter p, double value, const std::string& what) {
   const MaterialParameterInfo& info = material_parameter(p);
@@ -733,7 +731,7 @@ MaterialDesc convert_material(const GltfFile& file, ImageTable& images, size_t i
     emission[c] = checked_factor(file, P::Emission, material.emissiveFactor[static_cast<size_t>(c)],
                                  what + " emissiveFactor");
   desc.set(P::Emission, emission);
-  const auto strength = material.extensions.find(kEmissiveStrength);
+  const auto strength = material.extensions.find(gltf::kEmissiveStrength);
   if (strength != material.extensions.end() && strength->second.Has("emissiveStrength")) {
     const tinygltf::Value& value = strength->second.Get("emissiveStrength");
     if (!value.IsNumber()) fail(file.path, what + ": emissiveStrength is not a number");

@@ -12,6 +12,7 @@
 
 #include <tiny_gltf.h>
 
+#include "gltf/extensions.h"
 #include "gltf/metallic_roughness_image.h"
 #include "matgeom/atomic_file.h"
 #include "matgeom/mesh_parts.h"
@@ -209,7 +210,7 @@ tinygltf::Material make_material(const MaterialDesc& desc, TextureTable& texture
   if (desc.scalar(P::EmissionStrength) != 1.0) {
     tinygltf::Value::Object strength;
     strength["emissiveStrength"] = tinygltf::Value(desc.scalar(P::EmissionStrength));
-    material.extensions["KHR_materials_emissive_strength"] = tinygltf::Value(strength);
+    material.extensions[gltf::kEmissiveStrength] = tinygltf::Value(strength);
   }
   return material;
 }
@@ -227,8 +228,8 @@ tinygltf::Model make_model(const ObjectAsset& asset) {
   TextureTable textures(model, asset.images);
   for (const MaterialDesc& desc : asset.materials) model.materials.push_back(make_material(desc, textures));
   for (const tinygltf::Material& material : model.materials)
-    if (material.extensions.count("KHR_materials_emissive_strength")) {
-      model.extensionsUsed.push_back("KHR_materials_emissive_strength");
+    if (material.extensions.count(gltf::kEmissiveStrength)) {
+      model.extensionsUsed.push_back(gltf::kEmissiveStrength);
       break;
     }
 

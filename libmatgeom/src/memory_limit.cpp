@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 
 namespace matgeom {
@@ -48,7 +49,10 @@ uint64_t address_space_bytes() {
 }  // namespace
 
 uint64_t memory_limit_bytes() {
-  return std::min({physical_memory_bytes(), cgroup_memory_bytes(), address_space_bytes()});
+  // The machine's and the cgroup's limits are read once (files under /proc and /sys: every
+  // decoded dataset image asks); ulimit -v is one system call, so a change to it is seen.
+  static const uint64_t machine_limit = std::min(physical_memory_bytes(), cgroup_memory_bytes());
+  return std::min(machine_limit, address_space_bytes());
 }
 
 std::string byte_size_text(double bytes) {
@@ -68,6 +72,11 @@ std::optional<std::string> memory_problem(double bytes, const std::string& what)
   if (bytes <= static_cast<double>(limit)) return std::nullopt;
   return "needs " + byte_size_text(bytes) + " for " + what + ", more than the " +
          byte_size_text(static_cast<double>(limit)) + " of memory this process can have";
+}
+
+void require_memory(double bytes, const std::string& what, const std::string& owner) {
+  if (const std::optional<std::string> problem = memory_problem(bytes, what))
+    throw std::runtime_error(owner + ": " + *problem);
 }
 
 }  // namespace matgeom

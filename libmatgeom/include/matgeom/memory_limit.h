@@ -17,6 +17,10 @@ uint64_t memory_limit_bytes();
 // the 23.4 GiB of memory this process can have".
 std::optional<std::string> memory_problem(double bytes, const std::string& what);
 
+// Throws std::runtime_error "<owner>: needs ... for <what>, more than ..." when memory_problem
+// finds one: the check every reader and the renderer make before an allocation an input sized.
+void require_memory(double bytes, const std::string& what, const std::string& owner);
+
 // "6.0 GiB", "512 KiB".
 std::string byte_size_text(double bytes);
 

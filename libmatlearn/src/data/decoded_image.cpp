@@ -1,7 +1,6 @@
 #include "data/decoded_image.h"
 
 #include <cmath>
-#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -21,9 +20,9 @@ Decoded decode(const std::filesystem::path& path) {
   const OIIO::ImageSpec& spec = in->spec();
   Decoded d{spec.width, spec.height, spec.nchannels, {}};
   const double values = static_cast<double>(d.width) * static_cast<double>(d.height) * static_cast<double>(d.channels);
-  if (const std::optional<std::string> problem = matgeom::memory_problem(
-          values * sizeof(float), "decoding its " + std::to_string(d.width) + " x " + std::to_string(d.height) + " pixels"))
-    throw std::runtime_error(path.string() + ": " + *problem);
+  matgeom::require_memory(values * sizeof(float),
+                          "decoding its " + std::to_string(d.width) + " x " + std::to_string(d.height) + " pixels",
+                          path.string());
   d.values.resize(static_cast<size_t>(d.width) * static_cast<size_t>(d.height) * static_cast<size_t>(d.channels));
   if (!in->read_image(0, 0, 0, d.channels, OIIO::TypeDesc::FLOAT, d.values.data()))
     throw std::runtime_error("cannot decode " + path.string() + ": " + in->geterror());

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <limits>
 #include <mutex>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -64,11 +63,10 @@ void validate(const Camera& camera, const RenderSettings& settings) {
   check_scene_point(glm::dvec3(camera.camera_to_world[3]), "render: the camera");
   if (!(camera.vertical_fov > 0.0 && camera.vertical_fov < M_PI))
     throw std::invalid_argument("render: vertical field of view must be in (0, pi) radians");
-  if (const std::optional<std::string> problem =
-          matgeom::memory_problem(FrameBuffers::bytes_for(camera.width, camera.height, settings.aovs),
-                                  "the colour and AOV buffers of a " + std::to_string(camera.width) + " x " +
-                                      std::to_string(camera.height) + " image"))
-    throw std::runtime_error("render: " + *problem);
+  matgeom::require_memory(FrameBuffers::bytes_for(camera.width, camera.height, settings.aovs),
+                          "the colour and AOV buffers of a " + std::to_string(camera.width) + " x " +
+                              std::to_string(camera.height) + " image",
+                          "render");
   if (settings.samples_per_pixel < 1) throw std::invalid_argument("render: samples per pixel must be >= 1");
   if (settings.threads < 0) throw std::invalid_argument("render: threads must be >= 0");
   if (settings.max_bounces < 0 || settings.max_diffuse_bounces < 0 || settings.max_glossy_bounces < 0)

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <stdexcept>
 
 #include <OpenImageIO/imageio.h>
@@ -28,10 +27,8 @@ glm::vec4 to_rgba(const float* p, int channels) {
 // `staging_bytes_per_texel` of its decoding do not fit in memory.
 void require_texture_memory(const std::string& name, int width, int height, double staging_bytes_per_texel) {
   const double texels = static_cast<double>(width) * static_cast<double>(height);
-  if (const std::optional<std::string> problem =
-          matgeom::memory_problem(texels * (sizeof(glm::vec4) + staging_bytes_per_texel),
-                                  "its " + std::to_string(width) + " x " + std::to_string(height) + " texels"))
-    throw std::runtime_error(name + ": " + *problem);
+  matgeom::require_memory(texels * (sizeof(glm::vec4) + staging_bytes_per_texel),
+                          "its " + std::to_string(width) + " x " + std::to_string(height) + " texels", name);
 }
 
 int wrap_index(int i, int n, Wrap wrap) {
