@@ -39,6 +39,7 @@ struct Options {
   std::optional<double> illuminance_lux;
   bool paper_powers = false;
   bool transparent = false;
+  bool cycles_parity = false;
 
   // The run itself.
   int threads = 0;  // 0 = all hardware threads

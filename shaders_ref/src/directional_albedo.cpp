@@ -221,17 +221,24 @@ glm::dvec3 specular_albedo(const PrincipledParams& p, const glm::dvec3& wo) {
       ggx_alpha(p.roughness));
 }
 
+glm::dvec3 clearcoat_albedo(const PrincipledParams& p, const glm::dvec3& wo) {
+  if (p.clearcoat <= 0.0) return glm::dvec3(0.0);
+  return integrate_over_reflections<glm::dvec3>(
+      [&](const glm::dvec3& wi) { return clearcoat_brdf(p, wo, wi) * wi.z; }, wo,
+      ggx_alpha(p.clearcoat_roughness));
+}
+
 }  // namespace
 
 LobeAlbedos lobe_albedos(const PrincipledParams& p, const glm::dvec3& wo) {
   if (wo.z <= 0.0) return {};
   const glm::dvec3 sheen = p.sheen > 0.0 ? hemisphere_albedo(sheen_brdf, p, wo) : glm::dvec3(0.0);
-  return {hemisphere_albedo(diffuse_brdf, p, wo), sheen, specular_albedo(p, wo)};
+  return {hemisphere_albedo(diffuse_brdf, p, wo), sheen, specular_albedo(p, wo), clearcoat_albedo(p, wo)};
 }
 
 glm::dvec3 directional_albedo(const PrincipledParams& p, const glm::dvec3& wo) {
   const LobeAlbedos albedos = lobe_albedos(p, wo);
-  return albedos.diffuse + albedos.sheen + albedos.specular;
+  return albedos.diffuse + albedos.sheen + albedos.specular + albedos.clearcoat;
 }
 
 double integrate_over_sphere(const DirectionFunction& f, const glm::dvec3& peak_axis,

@@ -113,8 +113,25 @@ glm::dvec3 specular_brdf(const PrincipledParams& p, const glm::dvec3& wo, const 
          (ggx_ndf(h, alpha) * shadowing / (4.0 * wo.z * wi.z));
 }
 
+double gtr1_ndf(const glm::dvec3& m, double a) {
+  if (m.z <= 0.0) return 0.0;
+  if (a >= 1.0) return 1.0 / kPi;
+  const double a2 = a * a;
+  return (a2 - 1.0) / (kPi * std::log(a2) * (1.0 + (a2 - 1.0) * m.z * m.z));
+}
+
+glm::dvec3 clearcoat_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi) {
+  if (p.clearcoat <= 0.0 || wo.z <= 0.0 || wi.z <= 0.0) return glm::dvec3(0.0);
+  constexpr double kShadowingAlpha = 0.25;
+  const glm::dvec3 h = glm::normalize(wo + wi);
+  const double shadowing = ggx_smith_g1(wo, kShadowingAlpha) * ggx_smith_g1(wi, kShadowingAlpha);
+  const double f = 0.25 * p.clearcoat * dielectric_fresnel(glm::dot(wi, h), 1.5) *
+                   gtr1_ndf(h, ggx_alpha(p.clearcoat_roughness)) * shadowing / (4.0 * wo.z * wi.z);
+  return glm::dvec3(f);
+}
+
 glm::dvec3 principled_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi) {
-  return diffuse_brdf(p, wo, wi) + sheen_brdf(p, wo, wi) + specular_brdf(p, wo, wi);
+  return diffuse_brdf(p, wo, wi) + sheen_brdf(p, wo, wi) + specular_brdf(p, wo, wi) + clearcoat_brdf(p, wo, wi);
 }
 
 }  // namespace shaders_ref

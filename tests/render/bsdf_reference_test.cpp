@@ -58,6 +58,8 @@ PrincipledInputs random_material(UniformFloats& rng, float min_roughness, float 
   in.diffuse_model = rng.next() < 0.5f ? DiffuseModel::Principled : DiffuseModel::Lambert;
   in.set(MaterialParameter::Sheen, with_edges(0.5f, 0.1f));
   in.set(MaterialParameter::SheenTint, with_edges(0.2f, 0.2f));
+  in.set(MaterialParameter::Clearcoat, with_edges(0.5f, 0.1f));
+  in.set(MaterialParameter::ClearcoatRoughness, min_roughness + (max_roughness - min_roughness) * rng.next());
   return in;
 }
 
@@ -125,6 +127,38 @@ TEST_CASE("Reference quadrature reproduces closed forms", "[render]") {
           [&](const glm::dvec3& m) { return shaders_ref::ggx_ndf(m, alpha) * m.z; }, alpha);
       CAPTURE(roughness);
       CHECK(integral == Approx(1.0).epsilon(1e-9));
+    }
+  }
+  SECTION("GTR1 normalisation: integral of D(m) (n.m) dm = 1") {
+    for (double roughness : roughness_values) {
+      const double a = shaders_ref::ggx_alpha(roughness);
+      const double integral = shaders_ref::integrate_over_microfacet_normals(
+          [&](const glm::dvec3& m) { return shaders_ref::gtr1_ndf(m, a) * m.z; }, a);
+      CAPTURE(roughness);
+      CHECK(integral == Approx(1.0).epsilon(1e-8));
+    }
+  }
+  SECTION("Clearcoat albedo: half-vector and spherical quadratures agree") {
+    shaders_ref::PrincipledParams lacquer;
+    lacquer.base_color = glm::dvec3(0.0);
+    lacquer.specular = 0.0;
+    lacquer.clearcoat = 1.0;
+    for (double roughness : {0.03, 0.1, 0.5, 1.0}) {
+      for (double cos_o : {1.0, 0.7, 0.02}) {
+        lacquer.clearcoat_roughness = roughness;
+        const double a = shaders_ref::ggx_alpha(roughness);
+        const glm::dvec3 wo = direction_with_cosine(cos_o);
+        const double spherical = shaders_ref::integrate_over_sphere(
+            [&](const glm::dvec3& wi) { return shaders_ref::clearcoat_brdf(lacquer, wo, wi).x * wi.z; },
+            {-wo.x, -wo.y, wo.z}, 2.0 * a * cos_o);
+        const shaders_ref::LobeAlbedos albedos = shaders_ref::lobe_albedos(lacquer, wo);
+        CAPTURE(roughness, cos_o);
+        // integrate_over_sphere's absolute accuracy, 1e-4 of these albedos.
+        CHECK(albedos.clearcoat.x == Approx(spherical).margin(1e-6));
+        // A quarter of a dielectric's reflectance, at most.
+        CHECK(albedos.clearcoat.x <= 0.25);
+        CHECK(albedos.diffuse.x + albedos.specular.x == 0.0);
+      }
     }
   }
   SECTION(
@@ -239,8 +273,11 @@ TEST_CASE("Fast BSDF eval agrees with the double-precision reference", "[render]
   for (int n = 0; n < kInputs; ++n) {
     const PrincipledInputs in = random_material(rng, 0.02f, 1.0f);
     const glm::vec3 wo = random_upper_direction(rng);
-    const glm::vec3 wi = n % 2 ? direction_near_peak(wo, in.scalar(MaterialParameter::Roughness) * in.scalar(MaterialParameter::Roughness), rng)
-                               : random_upper_direction(rng);
+    // Odd inputs aim at the specular peak, every fourth at the clearcoat's.
+    const float peak_roughness =
+        in.scalar(n % 4 == 1 ? MaterialParameter::ClearcoatRoughness : MaterialParameter::Roughness);
+    const glm::vec3 wi =
+        n % 2 ? direction_near_peak(wo, peak_roughness * peak_roughness, rng) : random_upper_direction(rng);
     const LobeMixture bsdf = principled_bsdf(in, wo);
     float pdf = 0.0f;
     const glm::vec3 diffuse = diffuse_value(bsdf, wi) / wi.z;
@@ -253,7 +290,9 @@ TEST_CASE("Fast BSDF eval agrees with the double-precision reference", "[render]
     // The sheen lobe is a diffuse one (Cycles labels it so): the diffuse flag selects both.
     const glm::dvec3 sheen_ref = shaders_ref::sheen_brdf(p, wo_d, wi_d);
     const glm::dvec3 diffuse_ref = shaders_ref::diffuse_brdf(p, wo_d, wi_d) + sheen_ref;
-    const glm::dvec3 specular_ref = shaders_ref::specular_brdf(p, wo_d, wi_d);
+    // The glossy flag selects the specular lobe and the clearcoat.
+    const glm::dvec3 clearcoat_ref = shaders_ref::clearcoat_brdf(p, wo_d, wi_d);
+    const glm::dvec3 specular_ref = shaders_ref::specular_brdf(p, wo_d, wi_d) + clearcoat_ref;
     const glm::dvec3 total_ref = shaders_ref::principled_brdf(p, wo_d, wi_d);
     shaders_ref::PrincipledParams fresnel_one = p;
     fresnel_one.base_color = glm::dvec3(1.0);
@@ -262,10 +301,15 @@ TEST_CASE("Fast BSDF eval agrees with the double-precision reference", "[render]
     const double cos_h = glm::length(wo_d + wi_d) / 2.0;
     const double conditioning =
         ggx_direction_condition(wo_d, wi_d, shaders_ref::ggx_alpha(p.roughness));
+    // GTR1's ln D changes at most half as fast as GGX's of the same width (its denominator is
+    // squared in GGX), so the GGX condition bounds the clearcoat's.
+    const double clearcoat_conditioning =
+        ggx_direction_condition(wo_d, wi_d, shaders_ref::ggx_alpha(p.clearcoat_roughness));
 
     for (int k = 0; k < 3; ++k) {
-      const double specular_tolerance =
-          (1e-5 + 1e-6 / cos_h + conditioning) * specular_ref[k] + 1e-6 * specular_without_fresnel;
+      const double specular_tolerance = (1e-5 + 1e-6 / cos_h + conditioning) * (specular_ref[k] - clearcoat_ref[k]) +
+                                        1e-6 * specular_without_fresnel +
+                                        (1e-5 + 1e-6 / cos_h + clearcoat_conditioning) * clearcoat_ref[k];
       // The sheen's (1 - wi.h)^5 shares the half vector's error (term 2 above), absolute near wi.h = 1.
       const double diffuse_tolerance = 1e-5 * diffuse_ref[k] + 1e-6 / cos_h * sheen_ref[k] + 1e-7 * p.sheen + 1e-12;
       const bool diffuse_ok = std::abs(diffuse[k] - diffuse_ref[k]) <= diffuse_tolerance;
@@ -280,7 +324,9 @@ TEST_CASE("Fast BSDF eval agrees with the double-precision reference", "[render]
                       << in.color(MaterialParameter::BaseColor).y << ", " << in.color(MaterialParameter::BaseColor).z << "), metallic " << in.scalar(MaterialParameter::Metallic)
                       << ", roughness " << in.scalar(MaterialParameter::Roughness) << ", specular " << in.scalar(MaterialParameter::Specular) << ", tint "
                       << in.scalar(MaterialParameter::SpecularTint) << ", sheen "
-                      << in.scalar(MaterialParameter::Sheen) << " tint " << in.scalar(MaterialParameter::SheenTint) << ", "
+                      << in.scalar(MaterialParameter::Sheen) << " tint " << in.scalar(MaterialParameter::SheenTint)
+                      << ", clearcoat " << in.scalar(MaterialParameter::Clearcoat) << " roughness "
+                      << in.scalar(MaterialParameter::ClearcoatRoughness) << ", "
                       << (in.diffuse_model == DiffuseModel::Lambert ? "Lambert" : "principled")
                       << "; cos_o " << wo.z << ", cos_i " << wi.z << ", cos_h " << cos_h);
         INFO("diffuse " << diffuse[k] << " vs " << diffuse_ref[k] << "; specular " << specular[k]
@@ -308,6 +354,7 @@ TEST_CASE("Singular mirror lobe: sample weight is F(cos_o) over its selection pr
   for (int n = 0; n < 5000; ++n) {
     PrincipledInputs in = random_material(rng, 0.0f, 0.0177f);
     in.set(MaterialParameter::Sheen, 0.0f);  // the two lobes of the formula above
+    in.set(MaterialParameter::Clearcoat, 0.0f);
     if (n % 4 == 0) in.set(MaterialParameter::Metallic, 1.0f);  // no diffuse lobe: the weight is F itself
     const glm::vec3 wo = random_upper_direction(rng);
     const LobeMixture bsdf = principled_bsdf(in, wo);
@@ -336,4 +383,27 @@ TEST_CASE("Singular mirror lobe: sample weight is F(cos_o) over its selection pr
     ++checked;
   }
   CHECK(checked > 3000);
+}
+
+TEST_CASE("Singular clearcoat: sample weight is 0.25 clearcoat F(cos_o; 1.5) over its selection probability",
+          "[render]") {
+  // Clearcoat roughness below (1e-7)^(1/4) makes the lacquer a mirror, as Cycles' singular GGX.
+  // With no other lobe (black base, no specular) it is picked every time.
+  UniformFloats rng(0x5eed1200);
+  for (int n = 0; n < 2000; ++n) {
+    PrincipledInputs in;
+    in.set(MaterialParameter::BaseColor, glm::vec3(0.0f));
+    in.set(MaterialParameter::Specular, 0.0f);
+    const float clearcoat = 0.01f + 0.99f * rng.next();
+    in.set(MaterialParameter::Clearcoat, clearcoat);
+    in.set(MaterialParameter::ClearcoatRoughness, 0.0177f * rng.next());
+    const glm::vec3 wo = random_upper_direction(rng);
+    const LobeMixture bsdf = principled_bsdf(in, wo);
+    BsdfSample s;
+    REQUIRE(bsdf.sample(rng.next(), {rng.next(), rng.next()}, &s));
+    CHECK(matrender::is_specular(s.flags));
+    CHECK(s.wi == glm::vec3(-wo.x, -wo.y, wo.z));
+    const double expected = 0.25 * clearcoat * shaders_ref::dielectric_fresnel(wo.z, 1.5);
+    CHECK(s.weight.x == Approx(expected).epsilon(1e-5));
+  }
 }

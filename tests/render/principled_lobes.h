@@ -17,8 +17,10 @@ inline glm::vec3 specular_value(const matrender::LobeMixture& bsdf, const glm::v
 }
 
 // The Principled BSDF's lobes seen from wo, in the local shading frame.
-inline matrender::LobeMixture principled_bsdf(const matrender::PrincipledInputs& inputs, const glm::vec3& wo) {
+inline matrender::LobeMixture principled_bsdf(
+    const matrender::PrincipledInputs& inputs, const glm::vec3& wo,
+    matrender::ClearcoatEstimator estimator = matrender::ClearcoatEstimator::Integral) {
   matrender::LobeMixture lobes;
-  matrender::add_principled_lobes(matrender::PrincipledParameters(inputs), wo, glm::vec3(0.0f, 0.0f, 1.0f), &lobes);
+  matrender::add_principled_lobes(matrender::PrincipledParameters(inputs, estimator), wo, {}, &lobes);
   return lobes;
 }

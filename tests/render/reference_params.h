@@ -14,6 +14,8 @@ inline shaders_ref::PrincipledParams reference_params(const matrender::Principle
   p.specular_tint = in.scalar(matrender::MaterialParameter::SpecularTint);
   p.sheen = in.scalar(matrender::MaterialParameter::Sheen);
   p.sheen_tint = in.scalar(matrender::MaterialParameter::SheenTint);
+  p.clearcoat = in.scalar(matrender::MaterialParameter::Clearcoat);
+  p.clearcoat_roughness = in.scalar(matrender::MaterialParameter::ClearcoatRoughness);
   p.lambert_diffuse = in.diffuse_model == matrender::DiffuseModel::Lambert;
   return p;
 }

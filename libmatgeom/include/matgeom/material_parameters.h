@@ -26,8 +26,10 @@ enum class MaterialParameter : unsigned {
   SheenTint,
   Emission,
   EmissionStrength,
+  Clearcoat,
+  ClearcoatRoughness,
 };
-constexpr size_t kMaterialParameterCount = 10;
+constexpr size_t kMaterialParameterCount = 12;
 
 enum class ParameterKind {
   Color,   // RGB, from the RGB of a texture
@@ -69,6 +71,11 @@ constexpr std::array<MaterialParameterInfo, kMaterialParameterCount> kMaterialPa
      0, false, "emitted radiance, times emission_strength, from both sides (strength 1: a white one shows as 1)"},
     {MaterialParameter::EmissionStrength, "emission_strength", "Emission Strength", ParameterKind::Scalar, 1.0, 0.0,
      1e6, true, ColorSpace::NonColor, 0, false, "scales the emission"},
+    {MaterialParameter::Clearcoat, "clearcoat", "Clearcoat", ParameterKind::Scalar, 0.0, 0.0, 1.0, true,
+     ColorSpace::NonColor, 0, false,
+     "a lacquer layer on top: GGX-shadowed GTR1 reflection of weight 0.25 clearcoat with the Fresnel of ior 1.5"},
+    {MaterialParameter::ClearcoatRoughness, "clearcoat_roughness", "Clearcoat Roughness", ParameterKind::Scalar, 0.03,
+     0.0, 1.0, true, ColorSpace::NonColor, 0, false, "the lacquer's roughness: GTR1 alpha = clearcoat_roughness^2"},
 }};
 
 constexpr const MaterialParameterInfo& material_parameter(MaterialParameter id) {

@@ -19,6 +19,9 @@ struct RenderSettings {
   int max_diffuse_bounces = 4;
   int max_glossy_bounces = 4;
   bool transparent_background = false;  // camera rays that miss give 0 instead of the background
+  // Reproduce Cycles 3.4's own estimators where they do not converge to the integral of its BSDF
+  // (the clearcoat's sampling, docs/conventions.md), for parity with images made in Blender.
+  bool cycles_parity = false;
   uint32_t aovs = default_aovs();
   // Called with the finished fraction of all samples in [0, 1], from a render thread, every 65,536
   // samples a thread takes and when a tile ends; calls are serialised and the fraction increases.

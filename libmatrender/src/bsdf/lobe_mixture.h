@@ -16,6 +16,7 @@
 #include <glm/glm.hpp>
 
 #include "bsdf/bxdf_flags.h"
+#include "bsdf/clearcoat_lobe.h"
 #include "bsdf/diffuse_lobe.h"
 #include "bsdf/ggx_reflection_lobe.h"
 #include "bsdf/lobe_sample.h"
@@ -23,7 +24,7 @@
 
 namespace matrender {
 
-using Lobe = std::variant<DiffuseLobe, GgxReflectionLobe, SheenLobe>;
+using Lobe = std::variant<DiffuseLobe, GgxReflectionLobe, SheenLobe, ClearcoatLobe>;
 
 // f(the lobe as its own type). A switch, not std::visit: GCC turns std::visit into a call through
 // a table, which keeps the lobes' small methods from being inlined at every path vertex. Forced
@@ -31,11 +32,12 @@ using Lobe = std::variant<DiffuseLobe, GgxReflectionLobe, SheenLobe>;
 // more instructions on the vase, measured with callgrind).
 template <class F>
 [[gnu::always_inline]] inline decltype(auto) with_lobe(const Lobe& lobe, F&& f) {
-  static_assert(std::variant_size_v<Lobe> == 3, "a new lobe needs its case here");
+  static_assert(std::variant_size_v<Lobe> == 4, "a new lobe needs its case here");
   switch (lobe.index()) {
     case 0: return f(*std::get_if<0>(&lobe));
     case 1: return f(*std::get_if<1>(&lobe));
-    default: return f(*std::get_if<2>(&lobe));
+    case 2: return f(*std::get_if<2>(&lobe));
+    default: return f(*std::get_if<3>(&lobe));
   }
 }
 
@@ -50,7 +52,7 @@ class LobeMixture {
  public:
   // Room for every lobe of the Principled BSDF (a mixture lives on the stack of every path
   // vertex: room for lobes nobody has costs stores).
-  static constexpr size_t kMaxLobes = 3;
+  static constexpr size_t kMaxLobes = 4;
 
   // Adds a lobe (one of Lobe's alternatives); finish() must follow the last one.
   template <class LobeType>

@@ -28,7 +28,8 @@ PrincipledInputs::PrincipledInputs(const Material& material) : diffuse_model(mat
   for (size_t i = 0; i < values.size(); ++i) values[i] = material.parameters[i].value;
 }
 
-PrincipledParameters::PrincipledParameters(const PrincipledInputs& inputs) : diffuse_model(inputs.diffuse_model) {
+PrincipledParameters::PrincipledParameters(const PrincipledInputs& inputs, ClearcoatEstimator estimator)
+    : diffuse_model(inputs.diffuse_model), clearcoat_estimator(estimator) {
   const glm::vec3 base = glm::max(inputs.color(MaterialParameter::BaseColor), glm::vec3(0.0f));
   const float metallic = glm::clamp(inputs.scalar(MaterialParameter::Metallic), 0.0f, 1.0f);
   const float specular = glm::clamp(inputs.scalar(MaterialParameter::Specular), 0.0f, 1.0f);
@@ -56,16 +57,26 @@ PrincipledParameters::PrincipledParameters(const PrincipledInputs& inputs) : dif
   // principled_specular_ior makes ((ior - 1) / (ior + 1))^2 = 0.08 specular: F(1) needs no evaluation.
   fresnel = InterpolatedFresnel(glm::mix(dielectric, base, metallic), principled_specular_ior(specular),
                                 0.08f * specular);
+
+  const float clearcoat = glm::clamp(inputs.scalar(MaterialParameter::Clearcoat), 0.0f, 1.0f);
+  clearcoat_enabled = clearcoat > kClosureWeightCutoff;
+  if (clearcoat_enabled) {
+    const float clearcoat_roughness = glm::clamp(inputs.scalar(MaterialParameter::ClearcoatRoughness), 0.0f, 1.0f);
+    clearcoat_weight = 0.25f * clearcoat;
+    clearcoat_alpha = clearcoat_roughness * clearcoat_roughness;
+  }
 }
 
-void add_principled_lobes(const PrincipledParameters& p, const glm::vec3& wo, const glm::vec3& smooth_normal,
+void add_principled_lobes(const PrincipledParameters& p, const glm::vec3& wo, const LobeNormals& normals,
                           LobeMixture* lobes) {
-  const DiffuseLobe diffuse(p.diffuse_weight, p.diffuse_model, p.roughness, wo, smooth_normal);
+  const DiffuseLobe diffuse(p.diffuse_weight, p.diffuse_model, p.roughness, wo, normals.smooth);
   if (diffuse.sample_weight() > 0.0f) lobes->add(diffuse);
   // Added even where its sample weight is 0 (seen head-on): like Cycles' closure it then still
   // counts in every evaluation, only BSDF sampling never picks it.
   if (p.sheen_enabled) lobes->add(SheenLobe(p.sheen_weight, wo));
   if (p.specular_enabled) lobes->add(GgxReflectionLobe(p.fresnel, p.alpha, p.singular, wo));
+  if (p.clearcoat_enabled)
+    lobes->add(ClearcoatLobe(p.clearcoat_weight, p.clearcoat_alpha, p.clearcoat_estimator, wo, normals.clearcoat));
   lobes->finish();
 }
 

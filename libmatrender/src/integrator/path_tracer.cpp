@@ -56,8 +56,9 @@ PathTracer::PathTracer(const SceneData& scene, const LightSampler& lights, const
     : scene_(scene), lights_(lights), settings_(settings) {
   for (const Material& material : scene.materials) {
     const std::optional<PrincipledInputs> inputs = constant_inputs(material);
-    constant_parameters_.push_back(inputs ? std::optional<PrincipledParameters>(PrincipledParameters(*inputs))
-                                          : std::nullopt);
+    constant_parameters_.push_back(
+        inputs ? std::optional<PrincipledParameters>(PrincipledParameters(*inputs, settings.clearcoat_estimator))
+               : std::nullopt);
   }
 }
 
@@ -122,11 +123,20 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
 
     const ShadingFrame frame = ShadingFrame::from_normal(sp.shading_normal);
     const glm::vec3 wo = frame.to_local(wo_world);
-    const glm::vec3 smooth_local =
-        sp.smooth_normal == sp.shading_normal ? glm::vec3(0.0f, 0.0f, 1.0f) : frame.to_local(sp.smooth_normal);
     const std::optional<PrincipledParameters>& constant = constant_parameters_[sp.material];
+    const PrincipledParameters parameters =
+        constant ? *constant : PrincipledParameters(sp.inputs, settings_.clearcoat_estimator);
+    LobeNormals normals;
+    if (sp.smooth_normal != sp.shading_normal) {
+      normals.smooth = frame.to_local(sp.smooth_normal);
+      // Without a normal map the clearcoat's normal is the shading normal: both are the smooth
+      // normal made valid for reflection.
+      if (parameters.clearcoat_enabled && scene_.materials[sp.material].normal_map)
+        normals.clearcoat =
+            frame.to_local(ensure_valid_reflection(sp.geometric_normal, wo_world, sp.smooth_normal));
+    }
     Bsdf bsdf(frame, sp.geometric_normal);
-    add_principled_lobes(constant ? *constant : PrincipledParameters(sp.inputs), wo, smooth_local, &bsdf.lobes());
+    add_principled_lobes(parameters, wo, normals, &bsdf.lobes());
 
     // Next-event estimation: one lamp, one point on it.
     if (!lights_.empty() && is_non_specular(bsdf.flags())) {

@@ -19,6 +19,7 @@ struct PathSettings {
   int max_diffuse_bounces = 4;
   int max_glossy_bounces = 4;
   bool transparent_background = false;
+  ClearcoatEstimator clearcoat_estimator = ClearcoatEstimator::Integral;
 };
 
 struct PathResult {

@@ -83,7 +83,8 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
   const LightSampler lights(data.lights, data.background);
   const PathTracer tracer(data, lights,
                           {settings.max_bounces, settings.max_diffuse_bounces, settings.max_glossy_bounces,
-                           settings.transparent_background});
+                           settings.transparent_background,
+                           settings.cycles_parity ? ClearcoatEstimator::Cycles34 : ClearcoatEstimator::Integral});
   const CameraRays rays(camera);
   const PixelFilterSampler& filter = blackman_harris_sampler();
   const glm::mat3 world_to_camera = glm::transpose(glm::mat3(rays.right(), rays.up(), rays.back()));

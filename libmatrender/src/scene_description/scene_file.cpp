@@ -554,7 +554,7 @@ std::vector<ObjectDescription> read_objects(const Node& node, const fs::path& fo
 
 void read_render(const Node& node, SceneDescription& scene) {
   node.expect_keys({"spp", "seed", "max_bounces", "max_diffuse_bounces", "max_glossy_bounces", "exposure",
-                    "transparent_background"});
+                    "transparent_background", "cycles_parity"});
   RenderSettings& s = scene.settings;
   if (auto n = node.find("spp")) s.samples_per_pixel = n->integer_at_least(1);
   if (auto n = node.find("seed")) s.seed = n->uint32();
@@ -565,6 +565,7 @@ void read_render(const Node& node, SceneDescription& scene) {
     scene.exposure_stops = n->number_where([](double v) { return std::abs(v) <= kMaxExposureStops; },
                                            fmt::format("a number of stops in [{}, {}]", -kMaxExposureStops, kMaxExposureStops));
   if (auto n = node.find("transparent_background")) s.transparent_background = n->boolean();
+  if (auto n = node.find("cycles_parity")) s.cycles_parity = n->boolean();
 }
 
 json parse_json_file(const std::string& path) {

@@ -18,6 +18,7 @@ struct LobeAlbedos {
   glm::dvec3 diffuse{0.0};
   glm::dvec3 sheen{0.0};
   glm::dvec3 specular{0.0};
+  glm::dvec3 clearcoat{0.0};
 };
 
 // Directional albedo of each lobe, a(wo) = integral over the upper hemisphere of
@@ -26,7 +27,8 @@ struct LobeAlbedos {
 // over the half vector m with wi = reflect(wo, m), dwi = 4 (wo.m) dm (Walter et al. 2007,
 // eq. 14), in the "stretched" polar angle s with tan(theta_m) = alpha tan(s): the GGX
 // distribution is spread evenly over s in [0, pi/2) whatever alpha is, and the horizon
-// wi.z > 0 becomes the closed-form limit s < s_max(phi), so the integrand is smooth.
+// wi.z > 0 becomes the closed-form limit s < s_max(phi), so the integrand is smooth. The
+// clearcoat is integrated the same way with its GTR1 width for alpha.
 LobeAlbedos lobe_albedos(const PrincipledParams& p, const glm::dvec3& wo);
 
 // The sum of the lobes' albedos.

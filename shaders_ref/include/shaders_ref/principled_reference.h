@@ -1,6 +1,6 @@
 #pragma once
-// Reference Principled BSDF v1 of Blender 3.4 Cycles (principled or Lambert diffuse plus a
-// single-scatter GGX specular lobe with the "interpolated" Fresnel), written plainly in double
+// Reference Principled BSDF v1 of Blender 3.4 Cycles (principled or Lambert diffuse, sheen, a
+// single-scatter GGX specular lobe with the "interpolated" Fresnel, clearcoat), written plainly in double
 // precision from the published equations. It shares no code with libmatrender: it is the
 // independent implementation the fast float code is tested against (docs/conventions.md,
 // "Principled BSDF v1").
@@ -20,6 +20,8 @@ struct PrincipledParams {
   double specular_tint = 0.0;
   double sheen = 0.0;
   double sheen_tint = 0.5;
+  double clearcoat = 0.0;
+  double clearcoat_roughness = 0.03;
   bool lambert_diffuse = false;  // Cycles' Diffuse BSDF (f = 1/pi) instead of the principled one
 };
 
@@ -89,7 +91,17 @@ glm::dvec3 sheen_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm
 // roughness > 0: the reference has no singular (mirror) case.
 glm::dvec3 specular_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi);
 
-// diffuse_brdf + sheen_brdf + specular_brdf.
+// Berry's distribution ("GTR1", Burley 2012, "Physically Based Shading at Disney", appendix B.2,
+// eq. 4) of width a: D(m) = (a^2 - 1) / (pi ln(a^2) (1 + (a^2 - 1) cos^2(theta_m))), 1/pi at a = 1,
+// zero below the tangent plane. Normalised: the integral of D(m) cos(theta_m) dm is 1.
+double gtr1_ndf(const glm::dvec3& m, double a);
+
+// Cycles 3.4's clearcoat lobe: 0.25 clearcoat F(wi.h; ior 1.5) D_GTR1(h; clearcoat_roughness^2)
+// G1(wo) G1(wi) / (4 cos_o cos_i) with Smith-GGX G1 of a fixed alpha 0.25; zero when clearcoat
+// is 0 or either direction is below the surface. Needs clearcoat_roughness > 0.
+glm::dvec3 clearcoat_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi);
+
+// diffuse_brdf + sheen_brdf + specular_brdf + clearcoat_brdf.
 glm::dvec3 principled_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi);
 
 }  // namespace shaders_ref
