@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -57,9 +58,10 @@ std::string lowercase_extension(const std::string& path) {
 
 void check_required_extensions(const GltfFile& file) {
   // Extensions that change how geometry or images are stored would be misread if ignored;
-  // KHR_mesh_quantization only widens the accessor formats, which the reader handles.
+  // KHR_mesh_quantization only widens the accessor formats, which the reader handles;
+  // KHR_materials_clearcoat and KHR_materials_ior are read.
   for (const std::string& extension : file.model.extensionsRequired) {
-    if (extension == "KHR_mesh_quantization") continue;
+    if (extension == "KHR_mesh_quantization" || extension == gltf::kClearcoat || extension == gltf::kIor) continue;
     fail(file.path, "requires the unsupported glTF extension " + extension);
   }
 }
@@ -704,11 +706,56 @@ double checked_factor(const GltfFile& file, MaterialParameter p, double value, c
   return value;
 }
 
+// A number member of an extension object, if present.
+std::optional<double> extension_number(const GltfFile& file, const tinygltf::Value& extension, const char* member,
+                                       const std::string& what) {
+  if (!extension.Has(member)) return std::nullopt;
+  const tinygltf::Value& value = extension.Get(member);
+  if (!value.IsNumber()) fail(file.path, concat(what, ": ", member, " is not a number"));
+  return value.GetNumberAsDouble();
+}
+
+// A textureInfo member of an extension object: the texture's image, or -1 when absent.
+int extension_texture(const GltfFile& file, ImageTable& images, const tinygltf::Value& extension, const char* member,
+                      const std::string& what) {
+  if (!extension.Has(member)) return -1;
+  const tinygltf::Value& info = extension.Get(member);
+  const std::string where = concat(what, " ", member);
+  if (!info.IsObject() || !info.Has("index") || !info.Get("index").IsInt())
+    fail(file.path, where + ": expected a texture info with an integer index");
+  int tex_coord = 0;
+  if (info.Has("texCoord")) {
+    if (!info.Get("texCoord").IsInt()) fail(file.path, where + ": texCoord is not an integer");
+    tex_coord = info.Get("texCoord").GetNumberAsInt();
+  }
+  return resolve_texture(file, images, info.Get("index").GetNumberAsInt(), tex_coord, where).image;
+}
+
+// KHR_materials_clearcoat as Blender 3.4's importer wires it: Clearcoat = clearcoatFactor x
+// clearcoatTexture.R, Clearcoat Roughness = clearcoatRoughnessFactor x clearcoatRoughnessTexture.G,
+// both factors 0 when absent (so a coat without a roughness is a mirror, not Blender's default
+// 0.03). clearcoatNormalTexture has no MaterialDesc input yet: the coat keeps the smooth normal.
+void read_clearcoat(const GltfFile& file, ImageTable& images, const tinygltf::Value& extension, MaterialDesc& desc,
+                    const std::string& what) {
+  using P = MaterialParameter;
+  const std::string where = concat(what, " ", gltf::kClearcoat);
+  desc.set(P::Clearcoat, checked_factor(file, P::Clearcoat, extension_number(file, extension, "clearcoatFactor", where).value_or(0.0),
+                                        where + " clearcoatFactor"));
+  desc.set(P::ClearcoatRoughness,
+           checked_factor(file, P::ClearcoatRoughness,
+                          extension_number(file, extension, "clearcoatRoughnessFactor", where).value_or(0.0),
+                          where + " clearcoatRoughnessFactor"));
+  const int coat_image = extension_texture(file, images, extension, "clearcoatTexture", where);
+  if (coat_image >= 0) desc.set_image(P::Clearcoat, coat_image, gltf::kClearcoatChannel);
+  const int roughness_image = extension_texture(file, images, extension, "clearcoatRoughnessTexture", where);
+  if (roughness_image >= 0) desc.set_image(P::ClearcoatRoughness, roughness_image, gltf::kClearcoatRoughnessChannel);
+}
+
 // The Principled BSDF inputs Blender's importer sets (docs/conventions.md): base colour =
 // factor x texture, roughness = factor x texture.G, metallic = factor x texture.B, normal map
 // strength = normalTexture.scale, emission = emissiveFactor x emissiveTexture with
-// KHR_materials_emissive_strength's strength; specular and specular tint keep Blender's
-// defaults. Occlusion and alpha have no MaterialDesc input yet.
+// KHR_materials_emissive_strength's strength, IOR = KHR_materials_ior's (1.5 without it),
+// KHR_materials_clearcoat (read_clearcoat); specular and specular tint keep Blender's defaults. Occlusion and alpha have no MaterialDesc input yet.
 MaterialDesc convert_material(const GltfFile& file, ImageTable& images, size_t index) {
   const tinygltf::Material& material = file.model.materials[index];
   const tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
@@ -738,6 +785,13 @@ MaterialDesc convert_material(const GltfFile& file, ImageTable& images, size_t i
     desc.set(P::EmissionStrength, checked_factor(file, P::EmissionStrength, value.GetNumberAsDouble(),
                                                  what + " emissiveStrength"));
   }
+  desc.set(P::Ior, gltf::kDefaultIor);
+  const auto ior = material.extensions.find(gltf::kIor);
+  if (ior != material.extensions.end())
+    desc.set(P::Ior, checked_factor(file, P::Ior, extension_number(file, ior->second, "ior", what).value_or(gltf::kDefaultIor),
+                                    concat(what, " ", gltf::kIor, " ior")));
+  const auto clearcoat = material.extensions.find(gltf::kClearcoat);
+  if (clearcoat != material.extensions.end()) read_clearcoat(file, images, clearcoat->second, desc, what);
   if (!std::isfinite(material.normalTexture.scale))
     fail(file.path, what + ": non-finite normal scale");
   desc.normal_strength = material.normalTexture.scale;

@@ -188,6 +188,35 @@ class TextureTable {
   std::map<TextureWrap, int> samplers_;
 };
 
+// A textureInfo object for image `image` of a scalar that glTF reads from `channel`; the
+// writer does not repack single-channel inputs, so another channel is an error.
+tinygltf::Value::Object texture_info(const MaterialDesc& desc, MaterialParameter p, int channel, TextureTable& textures,
+                                     const std::string& what) {
+  const MaterialInput& input = desc[p];
+  if (input.channel != channel)
+    throw std::invalid_argument("write_gltf: " + what + " " + material_parameter(p).name + " reads image channel " +
+                                std::to_string(input.channel) + ", but glTF reads it from channel " +
+                                std::to_string(channel));
+  tinygltf::Value::Object info;
+  info["index"] = tinygltf::Value(textures.texture(input.image, desc.wrap, what));
+  return info;
+}
+
+// KHR_materials_clearcoat, the inverse of read_gltf's read_clearcoat.
+tinygltf::Value::Object clearcoat_extension(const MaterialDesc& desc, TextureTable& textures, const std::string& what) {
+  using P = MaterialParameter;
+  tinygltf::Value::Object extension;
+  extension["clearcoatFactor"] = tinygltf::Value(desc.scalar(P::Clearcoat));
+  extension["clearcoatRoughnessFactor"] = tinygltf::Value(desc.scalar(P::ClearcoatRoughness));
+  if (desc[P::Clearcoat].image >= 0)
+    extension["clearcoatTexture"] =
+        tinygltf::Value(texture_info(desc, P::Clearcoat, gltf::kClearcoatChannel, textures, what));
+  if (desc[P::ClearcoatRoughness].image >= 0)
+    extension["clearcoatRoughnessTexture"] =
+        tinygltf::Value(texture_info(desc, P::ClearcoatRoughness, gltf::kClearcoatRoughnessChannel, textures, what));
+  return extension;
+}
+
 // The inverse of read_gltf's mapping (docs/conventions.md: Blender's glTF importer).
 tinygltf::Material make_material(const MaterialDesc& desc, TextureTable& textures) {
   tinygltf::Material material;
@@ -212,6 +241,13 @@ tinygltf::Material make_material(const MaterialDesc& desc, TextureTable& texture
     strength["emissiveStrength"] = tinygltf::Value(desc.scalar(P::EmissionStrength));
     material.extensions[gltf::kEmissiveStrength] = tinygltf::Value(strength);
   }
+  if (desc.scalar(P::Ior) != gltf::kDefaultIor) {
+    tinygltf::Value::Object ior;
+    ior["ior"] = tinygltf::Value(desc.scalar(P::Ior));
+    material.extensions[gltf::kIor] = tinygltf::Value(ior);
+  }
+  if (desc.scalar(P::Clearcoat) != 0.0 || desc[P::Clearcoat].image >= 0)
+    material.extensions[gltf::kClearcoat] = tinygltf::Value(clearcoat_extension(desc, textures, what));
   return material;
 }
 
@@ -227,11 +263,12 @@ tinygltf::Model make_model(const ObjectAsset& asset) {
   model.buffers.resize(1);
   TextureTable textures(model, asset.images);
   for (const MaterialDesc& desc : asset.materials) model.materials.push_back(make_material(desc, textures));
-  for (const tinygltf::Material& material : model.materials)
-    if (material.extensions.count(gltf::kEmissiveStrength)) {
-      model.extensionsUsed.push_back(gltf::kEmissiveStrength);
-      break;
-    }
+  for (const char* extension : {gltf::kEmissiveStrength, gltf::kIor, gltf::kClearcoat})
+    for (const tinygltf::Material& material : model.materials)
+      if (material.extensions.count(extension)) {
+        model.extensionsUsed.push_back(extension);
+        break;
+      }
 
   tinygltf::Mesh mesh;
   for (const MeshPart& part : split_parts(asset.mesh))

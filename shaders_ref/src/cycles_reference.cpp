@@ -14,6 +14,9 @@
 #ifndef MATPREDICT_CYCLES_SCRIPT
 #error "MATPREDICT_CYCLES_SCRIPT must name shaders_ref/cycles_render.py"
 #endif
+#ifndef MATPREDICT_GLTF_IMPORT_SCRIPT
+#error "MATPREDICT_GLTF_IMPORT_SCRIPT must name shaders_ref/blender_gltf_import.py"
+#endif
 
 namespace shaders_ref {
 namespace {
@@ -108,6 +111,31 @@ void render_with_cycles(const CyclesScene& scene, std::vector<CyclesRender>& ren
   json timings;
   std::ifstream(folder + "/cycles_timings.json") >> timings;
   for (CyclesRender& render : renders) render.seconds = timings.at(render.exr_path).get<double>();
+}
+
+BlenderMaterials import_gltf_with_blender(const std::string& gltf_path, const std::string& folder,
+                                          const std::string& blender) {
+  std::filesystem::create_directories(folder);
+  const std::string out_path = folder + "/blender_materials.json", log_path = folder + "/blender.log";
+  const std::string command = quoted(blender) + " -b --factory-startup -noaudio --python-exit-code 1 -P " +
+                              quoted(MATPREDICT_GLTF_IMPORT_SCRIPT) + " -- " + quoted(gltf_path) + " " +
+                              quoted(out_path) + " > " + quoted(log_path) + " 2>&1";
+  if (std::system(command.c_str()) != 0)
+    throw std::runtime_error("Blender failed to import " + gltf_path + "; see " + log_path);
+  json materials;
+  std::ifstream(out_path) >> materials;
+  BlenderMaterials result;
+  for (const auto& [name, inputs] : materials.items())
+    for (const auto& [input, state] : inputs.items()) {
+      BlenderInput& out = result[name][input];
+      out.linked = state.at("linked").get<bool>();
+      const json& value = state.at("value");
+      if (value.is_array())
+        out.value = value.get<std::vector<double>>();
+      else if (value.is_number())
+        out.value = {value.get<double>()};
+    }
+  return result;
 }
 
 std::vector<float> read_rgb_exr(const std::string& path, int width, int height) {

@@ -275,7 +275,12 @@ std::string write_two_material_quad(const TempDir& dir, Container container) {
                                     {{"baseColorFactor", {0.1, 0.2, 0.9, 1.0}},
                                      {"metallicFactor", 0.0},
                                      {"roughnessFactor", 0.6},
-                                     {"metallicRoughnessTexture", {{"index", 1}}}}}}});
+                                     {"metallicRoughnessTexture", {{"index", 1}}}}},
+                                   // A lacquer from the red channel, its roughness left out (glTF's 0).
+                                   {"extensions",
+                                    {{"KHR_materials_clearcoat",
+                                      {{"clearcoatFactor", 0.6}, {"clearcoatTexture", {{"index", 1}}}}}}}}});
+  doc["extensionsUsed"] = json::array({"KHR_materials_clearcoat"});
   return writer.write();
 }
 
@@ -334,6 +339,12 @@ TEST_CASE("glTF two-material quad: transforms, axes, uvs, parts, materials, imag
   CHECK(red[P::Roughness].image == -1);
   CHECK(red.normal_strength == Approx(0.7));
   CHECK(red.wrap == matgeom::TextureWrap::Clamp);
+  // Without the clearcoat extension Blender's defaults stay: no coat, coat roughness 0.03.
+  CHECK(red.scalar(P::Clearcoat) == 0.0);
+  CHECK(red.scalar(P::ClearcoatRoughness) == Approx(0.03));
+  // Blender's importer gives every glTF material glTF's IOR 1.5, not the node's 1.45.
+  CHECK(red.scalar(P::Ior) == 1.5);
+  CHECK(red[P::Clearcoat].image == -1);
   const matgeom::MaterialDesc& blue = asset.materials[1];
   CHECK(blue.name == "blue");
   CHECK(blue.color(P::BaseColor).b == Approx(0.9));
@@ -342,8 +353,14 @@ TEST_CASE("glTF two-material quad: transforms, axes, uvs, parts, materials, imag
   CHECK(blue[P::BaseColor].image == -1);
   CHECK(blue.normal_image == -1);
   CHECK(blue.wrap == matgeom::TextureWrap::Repeat);
-  // One image used by two materials is stored once.
+  // Blender's importer: Clearcoat = factor x texture R, Clearcoat Roughness = its factor, 0 when absent.
+  CHECK(blue.scalar(P::Clearcoat) == Approx(0.6));
+  CHECK(blue[P::Clearcoat].channel == 0);
+  CHECK(blue.scalar(P::ClearcoatRoughness) == 0.0);
+  CHECK(blue[P::ClearcoatRoughness].image == -1);
+  // One image used by two materials (and by the coat) is stored once.
   CHECK(blue[P::Roughness].image == red.normal_image);
+  CHECK(blue[P::Clearcoat].image == red.normal_image);
 
   REQUIRE(asset.images.size() == 2);
   REQUIRE(red[P::BaseColor].image >= 0);

@@ -59,12 +59,19 @@ ObjectAsset two_part_asset() {
   wood.set(P::Emission, glm::dvec3(0.25, 0.5, 1.0));
   wood.set_image(P::Emission, 0);
   wood.set(P::EmissionStrength, 2.5);
+  // KHR_materials_ior for both: glTF's default is 1.5, the table's (brass) 1.45.
+  wood.set(P::Ior, 1.33);
   MaterialDesc brass;
   brass.name = "brass handle";
   brass.set(P::BaseColor, glm::dvec3(1.0, 0.75, 0.25));
   brass.set(P::Metallic, 1.0);
   brass.set(P::Roughness, 0.25);
   brass.set_metallic_roughness_image(1);
+  // Lacquered: the coat from image 0's red, its roughness from image 1's green (glTF's channels).
+  brass.set(P::Clearcoat, 0.75);
+  brass.set_image(P::Clearcoat, 0, 0);
+  brass.set(P::ClearcoatRoughness, 0.125);
+  brass.set_image(P::ClearcoatRoughness, 1, 1);
   brass.wrap = TextureWrap::Clamp;
   asset.materials = {wood, brass};
   return asset;
@@ -102,11 +109,18 @@ void check_same_asset(const ObjectAsset& written, const ObjectAsset& read) {
     CHECK(b.scalar(P::Roughness) == a.scalar(P::Roughness));
     CHECK(b.color(P::Emission) == a.color(P::Emission));
     CHECK(b.scalar(P::EmissionStrength) == a.scalar(P::EmissionStrength));
+    CHECK(b.scalar(P::Ior) == a.scalar(P::Ior));
+    CHECK(b.scalar(P::Clearcoat) == a.scalar(P::Clearcoat));
+    CHECK(b.scalar(P::ClearcoatRoughness) == a.scalar(P::ClearcoatRoughness));
+    CHECK(b[P::Clearcoat].channel == a[P::Clearcoat].channel);
+    CHECK(b[P::ClearcoatRoughness].channel == a[P::ClearcoatRoughness].channel);
     CHECK(b.normal_strength == a.normal_strength);
     CHECK(b.wrap == a.wrap);
     for (const auto& [image_a, image_b] : {std::pair{a[P::BaseColor].image, b[P::BaseColor].image},
                                            std::pair{a[P::Roughness].image, b[P::Roughness].image},
                                            std::pair{a[P::Emission].image, b[P::Emission].image},
+                                           std::pair{a[P::Clearcoat].image, b[P::Clearcoat].image},
+                                           std::pair{a[P::ClearcoatRoughness].image, b[P::ClearcoatRoughness].image},
                                            std::pair{a.normal_image, b.normal_image}}) {
       REQUIRE((image_a < 0) == (image_b < 0));
       if (image_a < 0) continue;
@@ -146,6 +160,11 @@ TEST_CASE("write_gltf rejects what glTF cannot hold and leaves nothing behind", 
   ObjectAsset bad_image = asset;
   bad_image.materials[0].set_image(P::BaseColor, 5);
   CHECK_THROWS_AS(write_gltf(bad_image, dir.file("b.glb")), std::invalid_argument);
+  // glTF reads the coat from R; the writer does not repack one channel into another.
+  ObjectAsset coat_from_blue = asset;
+  coat_from_blue.materials[1].set_image(P::Clearcoat, 0, 2);
+  CHECK_THROWS_WITH(write_gltf(coat_from_blue, dir.file("e.glb")),
+                    Catch::Matchers::Contains("clearcoat reads image channel 2"));
   ObjectAsset empty;
   CHECK_THROWS_AS(write_gltf(empty, dir.file("c.glb")), std::invalid_argument);
   CHECK_THROWS_AS(write_gltf(asset, dir.file("missing_dir/d.glb")), std::runtime_error);

@@ -6,4 +6,16 @@ namespace matgeom::gltf {
 // Scales emission beyond glTF's [0, 1] emissiveFactor (its member: emissiveStrength).
 constexpr const char* kEmissiveStrength = "KHR_materials_emissive_strength";
 
+// The index of refraction: `ior`, 1.5 when absent. Blender's importer sets the Principled IOR to
+// 1.5 for every glTF material, with the extension or without it.
+constexpr const char* kIor = "KHR_materials_ior";
+constexpr double kDefaultIor = 1.5;
+
+// A clear lacquer layer: clearcoatFactor x clearcoatTexture.R and clearcoatRoughnessFactor x
+// clearcoatRoughnessTexture.G (both factors default to 0), clearcoatNormalTexture.
+constexpr const char* kClearcoat = "KHR_materials_clearcoat";
+// The channels of the extension's textures Blender's importer reads.
+constexpr int kClearcoatChannel = 0;
+constexpr int kClearcoatRoughnessChannel = 1;
+
 }  // namespace matgeom::gltf

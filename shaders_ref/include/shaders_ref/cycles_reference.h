@@ -1,9 +1,10 @@
 #pragma once
-// Blender 3.4 Cycles as an outside reference: a scene handed to Blender as a JSON description
-// that shaders_ref/cycles_render.py rebuilds there, rendered into linear EXRs. Blender is needed
-// only at run time, and only by the optional tests and the bench (docs/conventions.md,
-// "Checked against Blender 3.4.1").
+// Blender 3.4 as an outside reference: a scene handed to Blender as a JSON description that
+// shaders_ref/cycles_render.py rebuilds there, rendered by Cycles into linear EXRs; and Blender's
+// own glTF importer (shaders_ref/blender_gltf_import.py). Blender is needed only at run time, and
+// only by the optional tests and the bench (docs/conventions.md, "Checked against Blender 3.4.1").
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,19 @@ bool cycles_available(const std::string& blender = "blender");
 // `folder`/cycles_<spp>_<seed>.exr. Throws std::runtime_error naming Blender's log on failure.
 void render_with_cycles(const CyclesScene& scene, std::vector<CyclesRender>& renders, int threads,
                         const std::string& folder, const std::string& blender = "blender");
+
+// One input of a Principled BSDF node as Blender's glTF importer left it.
+struct BlenderInput {
+  std::vector<double> value;  // one number, or RGB
+  bool linked = false;        // a node (an image texture, a math node) feeds it
+};
+// Material name -> Principled input name -> input.
+using BlenderMaterials = std::map<std::string, std::map<std::string, BlenderInput>>;
+
+// Imports `gltf_path` with Blender's glTF importer, working in `folder`. Throws std::runtime_error
+// naming Blender's log on failure.
+BlenderMaterials import_gltf_with_blender(const std::string& gltf_path, const std::string& folder,
+                                          const std::string& blender = "blender");
 
 // Linear RGB of an EXR, row 0 at the top; throws if the size differs.
 std::vector<float> read_rgb_exr(const std::string& path, int width, int height);

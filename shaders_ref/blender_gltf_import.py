@@ -1,0 +1,43 @@
+# Imports a glTF file with the glTF importer Blender 3.4 ships and writes, for every material it
+# made, the Principled BSDF's inputs: each input's default value and whether a node feeds it.
+# The optional tests compare this with what read_gltf makes of the same file.
+#
+#   blender -b --factory-startup -noaudio --python-exit-code 1 -P blender_gltf_import.py -- FILE.glb OUT.json
+import json
+import sys
+
+import bpy
+import numpy
+
+# Debian 12's Blender 3.4 importer still uses numpy.bool, which Debian's numpy 1.24 removed
+# (set_poly_smoothing fails on every file with normals); the alias is what it meant.
+if not hasattr(numpy, "bool"):
+    numpy.bool = bool
+
+
+def principled_inputs(material):
+    nodes = [n for n in material.node_tree.nodes if n.type == "BSDF_PRINCIPLED"]
+    if len(nodes) != 1:
+        raise RuntimeError(f"material {material.name}: {len(nodes)} Principled BSDF nodes")
+    inputs = {}
+    for socket in nodes[0].inputs:
+        if not hasattr(socket, "default_value"):
+            continue
+        value = socket.default_value
+        value = list(value)[:3] if hasattr(value, "__len__") else value
+        inputs[socket.name] = {"value": value, "linked": socket.is_linked}
+    return inputs
+
+
+def main():
+    arguments = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    if len(arguments) != 2:
+        sys.exit("usage: blender -b --factory-startup -P blender_gltf_import.py -- FILE.glb OUT.json")
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    bpy.ops.import_scene.gltf(filepath=arguments[0])
+    materials = {m.name: principled_inputs(m) for m in bpy.data.materials if m.use_nodes}
+    with open(arguments[1], "w") as f:
+        json.dump(materials, f)
+
+
+main()
