@@ -28,8 +28,10 @@ enum class MaterialParameter : unsigned {
   EmissionStrength,
   Clearcoat,
   ClearcoatRoughness,
+  Transmission,
+  TransmissionRoughness,
 };
-constexpr size_t kMaterialParameterCount = 12;
+constexpr size_t kMaterialParameterCount = 14;
 
 enum class ParameterKind {
   Color,   // RGB, from the RGB of a texture
@@ -62,7 +64,7 @@ constexpr std::array<MaterialParameterInfo, kMaterialParameterCount> kMaterialPa
     {MaterialParameter::SpecularTint, "specular_tint", "Specular Tint", ParameterKind::Scalar, 0.0, 0.0, 1.0, true,
      ColorSpace::NonColor, 0, false, "tints dielectric reflection toward the base colour's hue"},
     {MaterialParameter::Ior, "ior", "IOR", ParameterKind::Scalar, 1.45, 1.0, 1000.0, false, ColorSpace::NonColor, 0, false,
-     "index of refraction of transmitted light (no lobe transmits yet: it changes no image)"},
+     "the glass's index of refraction (entering through the front face, leaving through the back)"},
     {MaterialParameter::Sheen, "sheen", "Sheen", ParameterKind::Scalar, 0.0, 0.0, 1.0, true, ColorSpace::NonColor, 0,
      false, "cloth's grazing sheen: f = sheen (1 - metallic) colour (1 - L.H)^5, added to the diffuse"},
     {MaterialParameter::SheenTint, "sheen_tint", "Sheen Tint", ParameterKind::Scalar, 0.5, 0.0, 1.0, true,
@@ -76,6 +78,12 @@ constexpr std::array<MaterialParameterInfo, kMaterialParameterCount> kMaterialPa
      "a lacquer layer on top: GGX-shadowed GTR1 reflection of weight 0.25 clearcoat with the Fresnel of ior 1.5"},
     {MaterialParameter::ClearcoatRoughness, "clearcoat_roughness", "Clearcoat Roughness", ParameterKind::Scalar, 0.03,
      0.0, 1.0, true, ColorSpace::NonColor, 0, false, "the lacquer's roughness: GTR1 alpha = clearcoat_roughness^2"},
+    {MaterialParameter::Transmission, "transmission", "Transmission", ParameterKind::Scalar, 0.0, 0.0, 1.0, true,
+     ColorSpace::NonColor, 0, false,
+     "glass: GGX reflection and refraction with the IOR, weighted transmission (1 - metallic), tinted by the base colour"},
+    {MaterialParameter::TransmissionRoughness, "transmission_roughness", "Transmission Roughness", ParameterKind::Scalar,
+     0.0, 0.0, 1.0, true, ColorSpace::NonColor, 0, false,
+     "roughens the refraction only: its roughness is 1 - (1 - roughness)(1 - transmission_roughness)"},
 }};
 
 constexpr const MaterialParameterInfo& material_parameter(MaterialParameter id) {

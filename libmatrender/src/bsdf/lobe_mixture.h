@@ -19,12 +19,13 @@
 #include "bsdf/clearcoat_lobe.h"
 #include "bsdf/diffuse_lobe.h"
 #include "bsdf/ggx_reflection_lobe.h"
+#include "bsdf/ggx_transmission_lobe.h"
 #include "bsdf/lobe_sample.h"
 #include "bsdf/sheen_lobe.h"
 
 namespace matrender {
 
-using Lobe = std::variant<DiffuseLobe, GgxReflectionLobe, SheenLobe, ClearcoatLobe>;
+using Lobe = std::variant<DiffuseLobe, GgxReflectionLobe, SheenLobe, ClearcoatLobe, GgxTransmissionLobe>;
 
 // f(the lobe as its own type). A switch, not std::visit: GCC turns std::visit into a call through
 // a table, which keeps the lobes' small methods from being inlined at every path vertex. Forced
@@ -32,12 +33,13 @@ using Lobe = std::variant<DiffuseLobe, GgxReflectionLobe, SheenLobe, ClearcoatLo
 // more instructions on the vase, measured with callgrind).
 template <class F>
 [[gnu::always_inline]] inline decltype(auto) with_lobe(const Lobe& lobe, F&& f) {
-  static_assert(std::variant_size_v<Lobe> == 4, "a new lobe needs its case here");
+  static_assert(std::variant_size_v<Lobe> == 5, "a new lobe needs its case here");
   switch (lobe.index()) {
     case 0: return f(*std::get_if<0>(&lobe));
     case 1: return f(*std::get_if<1>(&lobe));
     case 2: return f(*std::get_if<2>(&lobe));
-    default: return f(*std::get_if<3>(&lobe));
+    case 3: return f(*std::get_if<3>(&lobe));
+    default: return f(*std::get_if<4>(&lobe));
   }
 }
 
@@ -50,9 +52,10 @@ struct BsdfSample {
 
 class LobeMixture {
  public:
-  // Room for every lobe of the Principled BSDF (a mixture lives on the stack of every path
-  // vertex: room for lobes nobody has costs stores).
-  static constexpr size_t kMaxLobes = 4;
+  // Room for every lobe of the Principled BSDF: diffuse, sheen, specular, clearcoat and the
+  // glass's reflection and refraction (a mixture lives on the stack of every path vertex; the
+  // room is left unconstructed, so lobes nobody has cost nothing).
+  static constexpr size_t kMaxLobes = 6;
 
   // Adds a lobe (one of Lobe's alternatives); finish() must follow the last one.
   template <class LobeType>

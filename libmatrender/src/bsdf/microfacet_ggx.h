@@ -55,6 +55,19 @@ inline glm::vec3 reflect_about(const glm::vec3& wo, const glm::vec3& m) {
   return 2.0f * glm::dot(wo, m) * m - wo;
 }
 
+// wo refracted through the microfacet m (wo.m > 0) into a medium of relative index eta (the far
+// side's over wo's side): wi = -wo / eta + (wo.m / eta - cos_t) m, Snell's law in vector form
+// (Walter et al. 2007, eq. 40). False at total internal reflection.
+inline bool refract_about(const glm::vec3& wo, const glm::vec3& m, float eta, glm::vec3* wi) {
+  const float cos_i = glm::dot(wo, m);
+  const float inv_eta = 1.0f / eta;
+  const float sin2_t = inv_eta * inv_eta * std::max(0.0f, 1.0f - cos_i * cos_i);
+  if (sin2_t >= 1.0f) return false;
+  const float cos_t = std::sqrt(1.0f - sin2_t);
+  *wi = -inv_eta * wo + (inv_eta * cos_i - cos_t) * m;
+  return true;
+}
+
 // pdf of wi under visible-normal sampling: G1(wo) D(m) / (4 cos_o)   (Heitz 2018, eq. 17 with
 // the reflection Jacobian 1 / (4 wo.m)).
 inline float ggx_reflection_pdf(const glm::vec3& wo, const glm::vec3& wi, float alpha) {

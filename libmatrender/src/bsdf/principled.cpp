@@ -1,5 +1,7 @@
 #include "bsdf/principled.h"
 
+#include <algorithm>
+
 #include "bsdf/microfacet_ggx.h"
 
 namespace matrender {
@@ -10,6 +12,22 @@ constexpr float kClosureWeightCutoff = 1e-5f;
 
 // Rec.709 luminance, Cycles' linear_rgb_to_gray for the default scene-linear space.
 float luminance(const glm::vec3& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
+
+// Cycles' glass: the Fresnel reflectance toward the viewer splits the glass weight between a
+// reflection (whose interpolated Fresnel is 1 unless specular tint colours it) and a refraction
+// tinted by the base colour; the refraction keeps at least 1e-4 of it, even at total internal
+// reflection, where it samples nothing. Closures below the cutoff are not made.
+void add_glass_lobes(const PrincipledParameters& p, const glm::vec3& wo, bool front_face, LobeMixture* lobes) {
+  const float eta = front_face ? p.ior : 1.0f / p.ior;
+  const float reflectance = fresnel_dielectric_cos(wo.z, eta);
+  const float reflection_weight = p.glass_weight * reflectance;
+  if (reflection_weight >= kClosureWeightCutoff)
+    lobes->add(
+        GgxReflectionLobe(reflection_weight, InterpolatedFresnel(p.glass_cspec0, eta, p.glass_f0), p.alpha, p.singular, wo));
+  const glm::vec3 refraction_weight = p.refraction_tint * (p.glass_weight * std::max(1e-4f, 1.0f - reflectance));
+  if ((refraction_weight.x + refraction_weight.y + refraction_weight.z) / 3.0f >= kClosureWeightCutoff)
+    lobes->add(GgxTransmissionLobe(refraction_weight, eta, p.refraction_alpha, wo));
+}
 
 }  // namespace
 
@@ -38,18 +56,22 @@ PrincipledParameters::PrincipledParameters(const PrincipledInputs& inputs, Clear
   alpha = roughness * roughness;
   singular = alpha * alpha <= kGgxSingularAlpha2;
 
-  diffuse_weight = (1.0f - metallic) * base;
-  specular_enabled = specular > 0.0f || metallic > 0.0f;
+  const float transmission = glm::clamp(inputs.scalar(MaterialParameter::Transmission), 0.0f, 1.0f);
+  const float dielectric_opaque = (1.0f - metallic) * (1.0f - transmission);
+  diffuse_weight = dielectric_opaque * base;
+  glass_weight = transmission * (1.0f - metallic);
+  specular_weight = 1.0f - glass_weight;
+  specular_enabled = (specular > 0.0f || metallic > 0.0f) && specular_weight > kClosureWeightCutoff;
 
   // The base colour's hue: tint = base / lum (white for black), for the specular and sheen tints.
   const float lum = luminance(base);
   const glm::vec3 tint = lum > 0.0f ? base / lum : glm::vec3(1.0f);
 
   const float sheen = glm::clamp(inputs.scalar(MaterialParameter::Sheen), 0.0f, 1.0f);
-  sheen_enabled = sheen > kClosureWeightCutoff && 1.0f - metallic > kClosureWeightCutoff;
+  sheen_enabled = sheen > kClosureWeightCutoff && dielectric_opaque > kClosureWeightCutoff;
   if (sheen_enabled) {
     const float sheen_tint = glm::clamp(inputs.scalar(MaterialParameter::SheenTint), 0.0f, 1.0f);
-    sheen_weight = sheen * (1.0f - metallic) * glm::mix(glm::vec3(1.0f), tint, sheen_tint);
+    sheen_weight = sheen * dielectric_opaque * glm::mix(glm::vec3(1.0f), tint, sheen_tint);
   }
 
   // cspec0 = mix(0.08 specular mix(1, tint, specular_tint), base, metallic).
@@ -57,6 +79,18 @@ PrincipledParameters::PrincipledParameters(const PrincipledInputs& inputs, Clear
   // principled_specular_ior makes ((ior - 1) / (ior + 1))^2 = 0.08 specular: F(1) needs no evaluation.
   fresnel = InterpolatedFresnel(glm::mix(dielectric, base, metallic), principled_specular_ior(specular),
                                 0.08f * specular);
+
+  glass_enabled = glass_weight > kClosureWeightCutoff;
+  if (glass_enabled) {
+    ior = std::max(inputs.scalar(MaterialParameter::Ior), 1e-5f);  // Cycles' lower bound
+    glass_f0 = fresnel_dielectric_cos(1.0f, ior);
+    glass_cspec0 = glm::mix(glm::vec3(1.0f), base, tint_amount);
+    refraction_tint = base;
+    const float transmission_roughness =
+        glm::clamp(inputs.scalar(MaterialParameter::TransmissionRoughness), 0.0f, 1.0f);
+    const float refraction_roughness = 1.0f - (1.0f - roughness) * (1.0f - transmission_roughness);
+    refraction_alpha = refraction_roughness * refraction_roughness;
+  }
 
   const float clearcoat = glm::clamp(inputs.scalar(MaterialParameter::Clearcoat), 0.0f, 1.0f);
   clearcoat_enabled = clearcoat > kClosureWeightCutoff;
@@ -67,16 +101,18 @@ PrincipledParameters::PrincipledParameters(const PrincipledInputs& inputs, Clear
   }
 }
 
-void add_principled_lobes(const PrincipledParameters& p, const glm::vec3& wo, const LobeNormals& normals,
+void add_principled_lobes(const PrincipledParameters& p, const glm::vec3& wo, const ShadingGeometry& geometry,
                           LobeMixture* lobes) {
-  const DiffuseLobe diffuse(p.diffuse_weight, p.diffuse_model, p.roughness, wo, normals.smooth);
+  const DiffuseLobe diffuse(p.diffuse_weight, p.diffuse_model, p.roughness, wo, geometry.smooth_normal);
   if (diffuse.sample_weight() > 0.0f) lobes->add(diffuse);
   // Added even where its sample weight is 0 (seen head-on): like Cycles' closure it then still
   // counts in every evaluation, only BSDF sampling never picks it.
   if (p.sheen_enabled) lobes->add(SheenLobe(p.sheen_weight, wo));
-  if (p.specular_enabled) lobes->add(GgxReflectionLobe(p.fresnel, p.alpha, p.singular, wo));
+  if (p.specular_enabled) lobes->add(GgxReflectionLobe(p.specular_weight, p.fresnel, p.alpha, p.singular, wo));
+  if (p.glass_enabled) add_glass_lobes(p, wo, geometry.front_face, lobes);
   if (p.clearcoat_enabled)
-    lobes->add(ClearcoatLobe(p.clearcoat_weight, p.clearcoat_alpha, p.clearcoat_estimator, wo, normals.clearcoat));
+    lobes->add(
+        ClearcoatLobe(p.clearcoat_weight, p.clearcoat_alpha, p.clearcoat_estimator, wo, geometry.clearcoat_normal));
   lobes->finish();
 }
 

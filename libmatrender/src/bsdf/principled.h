@@ -1,10 +1,11 @@
 #pragma once
 // The Principled BSDF of Blender 3.4 Cycles restricted to what matpredict's materials use: a
-// diffuse lobe weighted (1 - metallic) * base colour, a sheen lobe on top of it, a GGX specular
-// lobe with the interpolated Fresnel and a clearcoat lobe (svm_closure.h,
+// diffuse lobe weighted (1 - metallic)(1 - transmission) base colour, a sheen lobe on top of it,
+// a GGX specular lobe with the interpolated Fresnel, a clearcoat lobe, and glass (a GGX
+// reflection and a GGX refraction) of weight transmission (1 - metallic) (svm_closure.h,
 // CLOSURE_BSDF_PRINCIPLED_ID). A material without a lobe pays nothing for it: specular 0 and
-// metallic 0 make no specular lobe at all, sheen 0 and clearcoat 0 (the defaults) no sheen and
-// no clearcoat lobe.
+// metallic 0 make no specular lobe at all; sheen, clearcoat and transmission 0 (the defaults)
+// no sheen, clearcoat or glass lobes.
 #include <array>
 
 #include <glm/glm.hpp>
@@ -40,35 +41,46 @@ struct PrincipledParameters {
   explicit PrincipledParameters(const PrincipledInputs& inputs,
                                 ClearcoatEstimator estimator = ClearcoatEstimator::Integral);
 
-  glm::vec3 diffuse_weight{0.0f};  // (1 - metallic) base colour
-  glm::vec3 sheen_weight{0.0f};    // sheen (1 - metallic) mix(1, base tint, sheen_tint)
-  bool sheen_enabled;              // Cycles' cutoff: sheen and 1 - metallic both above 1e-5
+  glm::vec3 diffuse_weight{0.0f};  // (1 - metallic)(1 - transmission) base colour
+  glm::vec3 sheen_weight{0.0f};    // sheen (1 - metallic)(1 - transmission) mix(1, base tint, sheen_tint)
+  bool sheen_enabled;              // Cycles' cutoff: sheen and the diffuse weight both above 1e-5
   DiffuseModel diffuse_model;
   float roughness;
   float alpha;                     // GGX alpha = roughness^2
   bool singular;                   // a perfect mirror
-  bool specular_enabled;           // specular > 0 or metallic > 0
+  float specular_weight;           // 1 - transmission (1 - metallic)
+  bool specular_enabled;           // specular > 0 or metallic > 0, and a specular weight
   InterpolatedFresnel fresnel;
   float clearcoat_weight = 0.0f;   // 0.25 clearcoat
   float clearcoat_alpha = 0.0f;    // GTR1 alpha = clearcoat_roughness^2
   bool clearcoat_enabled;          // clearcoat above Cycles' cutoff 1e-5
   ClearcoatEstimator clearcoat_estimator;
+  // Glass, of weight transmission (1 - metallic): a GGX reflection with the interpolated Fresnel
+  // of cspec0 mix(1, base, specular_tint) and a GGX refraction tinted by the base colour.
+  float glass_weight = 0.0f;
+  bool glass_enabled;              // the glass weight above Cycles' cutoff 1e-5
+  float ior = 1.45f;               // the material's, entering through the front face
+  glm::vec3 glass_cspec0{1.0f};
+  float glass_f0 = 0.0f;           // fresnel_dielectric_cos(1, ior), the same for ior and 1 / ior
+  glm::vec3 refraction_tint{0.0f};
+  float refraction_alpha = 0.0f;   // (1 - (1 - roughness)(1 - transmission_roughness))^2
 };
 
-// The normals the lobes use besides the shading normal (+Z), in the local shading frame; +Z
-// where they coincide with it.
-struct LobeNormals {
+// What a hit adds to the shading frame, in its local coordinates.
+struct ShadingGeometry {
   // Cycles' sd->N: the interpolated normal before normal mapping and ensure_valid_reflection.
   // Where it differs from +Z the diffuse lobe carries Cycles' bump shadowing term.
-  glm::vec3 smooth{0.0f, 0.0f, 1.0f};
-  // The clearcoat's: the smooth normal made valid for reflection, as Cycles makes the unlinked
-  // Clearcoat Normal input; it differs from +Z only under a normal map.
-  glm::vec3 clearcoat{0.0f, 0.0f, 1.0f};
+  glm::vec3 smooth_normal{0.0f, 0.0f, 1.0f};
+  // The clearcoat's normal: the smooth normal made valid for reflection, as Cycles makes the
+  // unlinked Clearcoat Normal input; it differs from +Z only under a normal map.
+  glm::vec3 clearcoat_normal{0.0f, 0.0f, 1.0f};
+  // The viewer is on the side the triangle's winding faces: glass is entered, not left.
+  bool front_face = true;
 };
 
 // Adds the lobes seen from wo (local shading frame, +Z = shading normal) to the empty `lobes`
 // and finishes it.
-void add_principled_lobes(const PrincipledParameters& parameters, const glm::vec3& wo, const LobeNormals& normals,
+void add_principled_lobes(const PrincipledParameters& parameters, const glm::vec3& wo, const ShadingGeometry& geometry,
                           LobeMixture* lobes);
 
 }  // namespace matrender

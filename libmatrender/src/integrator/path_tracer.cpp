@@ -84,6 +84,7 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
   bool bsdf_delta = false;
   int diffuse_bounces = 0;
   int glossy_bounces = 0;
+  int transmission_bounces = 0;
 
   for (int bounce = 0;; ++bounce) {
     const RayHit hit = bounce == 0 ? camera_hit : scene_.accel.intersect(origin, dir, kInfinity);
@@ -110,7 +111,7 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     if (emitted != glm::vec3(0.0f)) result.radiance += throughput * emitted;
     // Cycles terminates here, after the lamp and background hits of the arriving ray counted.
     if (bounce > settings_.max_bounces || diffuse_bounces > settings_.max_diffuse_bounces ||
-        glossy_bounces > settings_.max_glossy_bounces)
+        glossy_bounces > settings_.max_glossy_bounces || transmission_bounces > settings_.max_transmission_bounces)
       break;
 
     const VertexDimensions dims(bounce);
@@ -126,17 +127,18 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     const std::optional<PrincipledParameters>& constant = constant_parameters_[sp.material];
     const PrincipledParameters parameters =
         constant ? *constant : PrincipledParameters(sp.inputs, settings_.clearcoat_estimator);
-    LobeNormals normals;
+    ShadingGeometry geometry;
+    geometry.front_face = sp.front_face;
     if (sp.smooth_normal != sp.shading_normal) {
-      normals.smooth = frame.to_local(sp.smooth_normal);
+      geometry.smooth_normal = frame.to_local(sp.smooth_normal);
       // Without a normal map the clearcoat's normal is the shading normal: both are the smooth
       // normal made valid for reflection.
       if (parameters.clearcoat_enabled && scene_.materials[sp.material].normal_map)
-        normals.clearcoat =
+        geometry.clearcoat_normal =
             frame.to_local(ensure_valid_reflection(sp.geometric_normal, wo_world, sp.smooth_normal));
     }
     Bsdf bsdf(frame, sp.geometric_normal);
-    add_principled_lobes(parameters, wo, normals, &bsdf.lobes());
+    add_principled_lobes(parameters, wo, geometry, &bsdf.lobes());
 
     // Next-event estimation: one lamp, one point on it.
     if (!lights_.empty() && is_non_specular(bsdf.flags())) {
@@ -177,7 +179,9 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     if (!(max_component(throughput) > 0.0f)) break;
     bsdf_pdf = s.pdf;
     bsdf_delta = is_specular(s.flags);
-    (is_diffuse(s.flags) ? diffuse_bounces : glossy_bounces)++;
+    // Cycles counts a bounce by its label: transmission first, then diffuse, else glossy (a
+    // mirror included).
+    (is_transmissive(s.flags) ? transmission_bounces : is_diffuse(s.flags) ? diffuse_bounces : glossy_bounces)++;
     dir = s.wi;
     origin = offset_ray_origin(sp.position, is_reflective(s.flags) ? sp.geometric_normal : -sp.geometric_normal);
   }

@@ -18,6 +18,7 @@ struct PathSettings {
   int max_bounces = 12;
   int max_diffuse_bounces = 4;
   int max_glossy_bounces = 4;
+  int max_transmission_bounces = 12;
   bool transparent_background = false;
   ClearcoatEstimator clearcoat_estimator = ClearcoatEstimator::Integral;
 };

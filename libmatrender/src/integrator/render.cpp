@@ -69,7 +69,8 @@ void validate(const Camera& camera, const RenderSettings& settings) {
                           "render");
   if (settings.samples_per_pixel < 1) throw std::invalid_argument("render: samples per pixel must be >= 1");
   if (settings.threads < 0) throw std::invalid_argument("render: threads must be >= 0");
-  if (settings.max_bounces < 0 || settings.max_diffuse_bounces < 0 || settings.max_glossy_bounces < 0)
+  if (settings.max_bounces < 0 || settings.max_diffuse_bounces < 0 || settings.max_glossy_bounces < 0 ||
+      settings.max_transmission_bounces < 0)
     throw std::invalid_argument("render: bounce limits must be >= 0");
 }
 
@@ -83,7 +84,7 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
   const LightSampler lights(data.lights, data.background);
   const PathTracer tracer(data, lights,
                           {settings.max_bounces, settings.max_diffuse_bounces, settings.max_glossy_bounces,
-                           settings.transparent_background,
+                           settings.max_transmission_bounces, settings.transparent_background,
                            settings.cycles_parity ? ClearcoatEstimator::Cycles34 : ClearcoatEstimator::Integral});
   const CameraRays rays(camera);
   const PixelFilterSampler& filter = blackman_harris_sampler();

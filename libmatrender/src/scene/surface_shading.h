@@ -37,13 +37,6 @@ struct SurfacePoint {
     return inputs.color(MaterialParameter::Emission) * inputs.scalar(MaterialParameter::EmissionStrength);
   }
 
-  // Relative index of refraction across the surface along the ray: the material's IOR entering
-  // through the front, its inverse leaving through the back. Computed when a lobe asks, not at
-  // every hit.
-  float eta() const {
-    const float ior = inputs.scalar(MaterialParameter::Ior);
-    return front_face ? ior : 1.0f / ior;
-  }
 };
 
 // wo = unit direction from the hit back toward the ray origin.
