@@ -228,17 +228,42 @@ glm::dvec3 clearcoat_albedo(const PrincipledParams& p, const glm::dvec3& wo) {
       ggx_alpha(p.clearcoat_roughness));
 }
 
+glm::dvec3 glass_reflection_albedo(const PrincipledParams& p, const glm::dvec3& wo) {
+  if (p.transmission <= 0.0) return glm::dvec3(0.0);
+  return integrate_over_reflections<glm::dvec3>(
+      [&](const glm::dvec3& wi) { return glass_reflection_brdf(p, wo, wi) * wi.z; }, wo, ggx_alpha(p.roughness));
+}
+
+// Per channel, over the sphere around the direction wo refracts to through the macro normal (or
+// its mirror image below the surface where it cannot refract).
+glm::dvec3 glass_refraction_albedo(const PrincipledParams& p, const glm::dvec3& wo) {
+  if (p.transmission <= 0.0) return glm::dvec3(0.0);
+  const double eta = glass_eta(p);
+  const double sin2_t = (1.0 - wo.z * wo.z) / (eta * eta);
+  const glm::dvec3 peak = sin2_t < 1.0 ? glm::normalize(glm::dvec3(-wo.x / eta, -wo.y / eta, -std::sqrt(1.0 - sin2_t)))
+                                       : glm::dvec3(wo.x, wo.y, -wo.z);
+  const double roughness = 1.0 - (1.0 - p.roughness) * (1.0 - p.transmission_roughness);
+  const double width = 2.0 * ggx_alpha(roughness);
+  glm::dvec3 albedo(0.0);
+  for (int c = 0; c < 3; ++c)
+    albedo[c] = integrate_over_sphere(
+        [&](const glm::dvec3& wi) { return glass_refraction_btdf(p, wo, wi)[c] * std::abs(wi.z); }, peak, width);
+  return albedo;
+}
+
 }  // namespace
 
 LobeAlbedos lobe_albedos(const PrincipledParams& p, const glm::dvec3& wo) {
   if (wo.z <= 0.0) return {};
   const glm::dvec3 sheen = p.sheen > 0.0 ? hemisphere_albedo(sheen_brdf, p, wo) : glm::dvec3(0.0);
-  return {hemisphere_albedo(diffuse_brdf, p, wo), sheen, specular_albedo(p, wo), clearcoat_albedo(p, wo)};
+  return {hemisphere_albedo(diffuse_brdf, p, wo), sheen, specular_albedo(p, wo), clearcoat_albedo(p, wo),
+          glass_reflection_albedo(p, wo), glass_refraction_albedo(p, wo)};
 }
 
 glm::dvec3 directional_albedo(const PrincipledParams& p, const glm::dvec3& wo) {
   const LobeAlbedos albedos = lobe_albedos(p, wo);
-  return albedos.diffuse + albedos.sheen + albedos.specular + albedos.clearcoat;
+  return albedos.diffuse + albedos.sheen + albedos.specular + albedos.clearcoat + albedos.glass_reflection +
+         albedos.glass_refraction;
 }
 
 double integrate_over_sphere(const DirectionFunction& f, const glm::dvec3& peak_axis,

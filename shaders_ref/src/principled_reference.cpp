@@ -9,6 +9,9 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+// Cycles makes no closure whose average weight is below 1e-5 (CLOSURE_WEIGHT_CUTOFF).
+constexpr double kClosureWeightCutoff = 1e-5;
+
 // Schlick's weight (1 - cos)^5 for a cosine in [0, 1].
 double fifth_power_of_complement(double cos_theta) {
   const double m = 1.0 - std::clamp(cos_theta, 0.0, 1.0);
@@ -85,7 +88,7 @@ bool has_specular_lobe(const PrincipledParams& p) { return p.specular > 0.0 || p
 
 glm::dvec3 diffuse_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi) {
   if (wo.z <= 0.0 || wi.z <= 0.0) return glm::dvec3(0.0);
-  const glm::dvec3 weight = (1.0 - p.metallic) * p.base_color;
+  const glm::dvec3 weight = (1.0 - p.metallic) * (1.0 - p.transmission) * p.base_color;
   if (p.lambert_diffuse) return weight / kPi;
   const double fl = fifth_power_of_complement(wi.z);
   const double fv = fifth_power_of_complement(wo.z);
@@ -101,7 +104,7 @@ glm::dvec3 sheen_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm
   const glm::dvec3 tint = lum > 0.0 ? p.base_color / lum : glm::dvec3(1.0);
   const glm::dvec3 colour = (1.0 - p.sheen_tint) * glm::dvec3(1.0) + p.sheen_tint * tint;
   const glm::dvec3 h = glm::normalize(wo + wi);
-  return p.sheen * (1.0 - p.metallic) * colour * fifth_power_of_complement(glm::dot(wi, h));
+  return p.sheen * (1.0 - p.metallic) * (1.0 - p.transmission) * colour * fifth_power_of_complement(glm::dot(wi, h));
 }
 
 glm::dvec3 specular_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi) {
@@ -109,8 +112,47 @@ glm::dvec3 specular_brdf(const PrincipledParams& p, const glm::dvec3& wo, const 
   const double alpha = ggx_alpha(p.roughness);
   const glm::dvec3 h = glm::normalize(wo + wi);
   const double shadowing = ggx_smith_g1(wo, alpha) * ggx_smith_g1(wi, alpha);
-  return interpolated_fresnel(p, glm::dot(wi, h)) *
+  const double specular_weight = 1.0 - p.transmission * (1.0 - p.metallic);
+  return specular_weight * interpolated_fresnel(p, glm::dot(wi, h)) *
          (ggx_ndf(h, alpha) * shadowing / (4.0 * wo.z * wi.z));
+}
+
+double glass_eta(const PrincipledParams& p) { return p.front_face ? p.ior : 1.0 / p.ior; }
+
+glm::dvec3 glass_reflection_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi) {
+  if (p.transmission <= 0.0 || wo.z <= 0.0 || wi.z <= 0.0) return glm::dvec3(0.0);
+  const double eta = glass_eta(p);
+  const double alpha = ggx_alpha(p.roughness);
+  const glm::dvec3 h = glm::normalize(wo + wi);
+  const glm::dvec3 cspec0 = (1.0 - p.specular_tint) * glm::dvec3(1.0) + p.specular_tint * p.base_color;
+  const double f_normal = dielectric_fresnel(1.0, eta);
+  const double fh = (dielectric_fresnel(glm::dot(wi, h), eta) - f_normal) / (1.0 - f_normal);
+  const glm::dvec3 fresnel = cspec0 * (1.0 - fh) + glm::dvec3(fh);
+  const double weight = p.transmission * (1.0 - p.metallic) * dielectric_fresnel(wo.z, eta);
+  if (weight < kClosureWeightCutoff) return glm::dvec3(0.0);
+  const double shadowing = ggx_smith_g1(wo, alpha) * ggx_smith_g1(wi, alpha);
+  return weight * fresnel * (ggx_ndf(h, alpha) * shadowing / (4.0 * wo.z * wi.z));
+}
+
+glm::dvec3 glass_refraction_btdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi) {
+  if (p.transmission <= 0.0 || wo.z <= 0.0 || wi.z >= 0.0) return glm::dvec3(0.0);
+  const double eta = glass_eta(p);
+  const double roughness = 1.0 - (1.0 - p.roughness) * (1.0 - p.transmission_roughness);
+  const double alpha = ggx_alpha(roughness);
+  glm::dvec3 h = -(wo + eta * wi);
+  if (glm::length(h) == 0.0) return glm::dvec3(0.0);
+  h = glm::normalize(h.z < 0.0 ? -h : h);
+  const double wo_h = glm::dot(wo, h), wi_h = glm::dot(wi, h);
+  if (wo_h <= 0.0 || wi_h >= 0.0) return glm::dvec3(0.0);
+  const glm::dvec3 below(wi.x, wi.y, -wi.z);  // G1 of the transmitted direction, seen from its side
+  const double shadowing = ggx_smith_g1(wo, alpha) * ggx_smith_g1(below, alpha);
+  const double denominator = wo_h + eta * wi_h;
+  const double btdf = std::abs(wi_h) * wo_h * eta * eta * ggx_ndf(h, alpha) * shadowing /
+                      (wo.z * std::abs(wi.z) * denominator * denominator);
+  const glm::dvec3 weight =
+      p.transmission * (1.0 - p.metallic) * std::max(1e-4, 1.0 - dielectric_fresnel(wo.z, eta)) * p.base_color;
+  if ((weight.x + weight.y + weight.z) / 3.0 < kClosureWeightCutoff) return glm::dvec3(0.0);
+  return weight * btdf;
 }
 
 double gtr1_ndf(const glm::dvec3& m, double a) {
@@ -131,7 +173,8 @@ glm::dvec3 clearcoat_brdf(const PrincipledParams& p, const glm::dvec3& wo, const
 }
 
 glm::dvec3 principled_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi) {
-  return diffuse_brdf(p, wo, wi) + sheen_brdf(p, wo, wi) + specular_brdf(p, wo, wi) + clearcoat_brdf(p, wo, wi);
+  return diffuse_brdf(p, wo, wi) + sheen_brdf(p, wo, wi) + specular_brdf(p, wo, wi) + clearcoat_brdf(p, wo, wi) +
+         glass_reflection_brdf(p, wo, wi);
 }
 
 }  // namespace shaders_ref

@@ -10,17 +10,22 @@ inline glm::vec3 diffuse_value(const matrender::LobeMixture& bsdf, const glm::ve
   return bsdf.eval(wi, matrender::BxDFFlags::Diffuse, &pdf);
 }
 
-// f cos of the GGX specular lobe alone (0 for a perfect mirror, which has no density).
+// f cos of the glossy lobes, the reflecting ones (GGX specular, clearcoat, glass reflection) for
+// wi above the surface and the glass refraction below it (0 for a perfect mirror, which has no
+// density).
 inline glm::vec3 specular_value(const matrender::LobeMixture& bsdf, const glm::vec3& wi) {
   float pdf;
   return bsdf.eval(wi, matrender::BxDFFlags::Glossy | matrender::BxDFFlags::Specular, &pdf);
 }
 
 // The Principled BSDF's lobes seen from wo, in the local shading frame.
+// front_face: the viewer is outside the glass.
 inline matrender::LobeMixture principled_bsdf(
     const matrender::PrincipledInputs& inputs, const glm::vec3& wo,
-    matrender::ClearcoatEstimator estimator = matrender::ClearcoatEstimator::Integral) {
+    matrender::ClearcoatEstimator estimator = matrender::ClearcoatEstimator::Integral, bool front_face = true) {
   matrender::LobeMixture lobes;
-  matrender::add_principled_lobes(matrender::PrincipledParameters(inputs, estimator), wo, {}, &lobes);
+  matrender::ShadingGeometry geometry;
+  geometry.front_face = front_face;
+  matrender::add_principled_lobes(matrender::PrincipledParameters(inputs, estimator), wo, geometry, &lobes);
   return lobes;
 }

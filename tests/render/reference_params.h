@@ -16,6 +16,9 @@ inline shaders_ref::PrincipledParams reference_params(const matrender::Principle
   p.sheen_tint = in.scalar(matrender::MaterialParameter::SheenTint);
   p.clearcoat = in.scalar(matrender::MaterialParameter::Clearcoat);
   p.clearcoat_roughness = in.scalar(matrender::MaterialParameter::ClearcoatRoughness);
+  p.transmission = in.scalar(matrender::MaterialParameter::Transmission);
+  p.transmission_roughness = in.scalar(matrender::MaterialParameter::TransmissionRoughness);
+  p.ior = in.scalar(matrender::MaterialParameter::Ior);
   p.lambert_diffuse = in.diffuse_model == matrender::DiffuseModel::Lambert;
   return p;
 }

@@ -19,6 +19,8 @@ struct LobeAlbedos {
   glm::dvec3 sheen{0.0};
   glm::dvec3 specular{0.0};
   glm::dvec3 clearcoat{0.0};
+  glm::dvec3 glass_reflection{0.0};
+  glm::dvec3 glass_refraction{0.0};  // over the lower hemisphere
 };
 
 // Directional albedo of each lobe, a(wo) = integral over the upper hemisphere of
@@ -28,10 +30,12 @@ struct LobeAlbedos {
 // eq. 14), in the "stretched" polar angle s with tan(theta_m) = alpha tan(s): the GGX
 // distribution is spread evenly over s in [0, pi/2) whatever alpha is, and the horizon
 // wi.z > 0 becomes the closed-form limit s < s_max(phi), so the integrand is smooth. The
-// clearcoat is integrated the same way with its GTR1 width for alpha.
+// clearcoat and the glass reflection are integrated the same way (the clearcoat with its GTR1
+// width for alpha); the glass refraction over the sphere around the refracted direction
+// (integrate_over_sphere, about 1e-6 absolute).
 LobeAlbedos lobe_albedos(const PrincipledParams& p, const glm::dvec3& wo);
 
-// The sum of the lobes' albedos.
+// The sum of the lobes' albedos: reflected plus transmitted.
 glm::dvec3 directional_albedo(const PrincipledParams& p, const glm::dvec3& wo);
 
 // Integral of f(w) over the whole unit sphere (e.g. a pdf, to check it integrates to at most 1).

@@ -22,6 +22,10 @@ struct PrincipledParams {
   double sheen_tint = 0.5;
   double clearcoat = 0.0;
   double clearcoat_roughness = 0.03;
+  double transmission = 0.0;
+  double transmission_roughness = 0.0;
+  double ior = 1.45;
+  bool front_face = true;        // the viewer is outside: glass is entered with eta = ior, left with 1 / ior
   bool lambert_diffuse = false;  // Cycles' Diffuse BSDF (f = 1/pi) instead of the principled one
 };
 
@@ -76,19 +80,20 @@ glm::dvec3 interpolated_fresnel(const PrincipledParams& p, double cos_i);
 // Specular 0 and metallic 0 make no specular closure at all.
 bool has_specular_lobe(const PrincipledParams& p);
 
-// (1 - metallic) base times the principled diffuse
+// (1 - metallic)(1 - transmission) base times the principled diffuse
 // 1/pi [(1 - FV/2)(1 - FL/2) + RR (FL + FV + FL FV (RR - 1))], FL = (1 - cos_i)^5,
 // FV = (1 - cos_o)^5, RR = roughness (1 + wi.wo); or times 1/pi for the Lambert lobe.
 glm::dvec3 diffuse_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi);
 
 // Burley's sheen (Physically Based Shading at Disney, 2012, sec. 5.3) as Cycles 3.4 scales it:
-// sheen (1 - metallic) mix(1, tint, sheen_tint) (1 - wi.h)^5 with h = normalize(wo + wi) and
+// sheen (1 - metallic)(1 - transmission) mix(1, tint, sheen_tint) (1 - wi.h)^5 with h = normalize(wo + wi) and
 // the tint of specular_color_at_normal_incidence; no 1/pi. Zero below the surface.
 glm::dvec3 sheen_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi);
 
-// F(wi.h) D(h) G1(wo) G1(wi) / (4 cos_o cos_i) with h = normalize(wo + wi) (Walter et al. 2007,
-// eq. 20); zero when there is no specular lobe or either direction is below the surface. Needs
-// roughness > 0: the reference has no singular (mirror) case.
+// (1 - transmission (1 - metallic)) F(wi.h) D(h) G1(wo) G1(wi) / (4 cos_o cos_i) with
+// h = normalize(wo + wi) (Walter et al. 2007, eq. 20); zero when there is no specular lobe or
+// either direction is below the surface. Needs roughness > 0: the reference has no singular
+// (mirror) case.
 glm::dvec3 specular_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi);
 
 // Berry's distribution ("GTR1", Burley 2012, "Physically Based Shading at Disney", appendix B.2,
@@ -101,7 +106,26 @@ double gtr1_ndf(const glm::dvec3& m, double a);
 // is 0 or either direction is below the surface. Needs clearcoat_roughness > 0.
 glm::dvec3 clearcoat_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi);
 
-// diffuse_brdf + sheen_brdf + specular_brdf + clearcoat_brdf.
+// The relative index of refraction across the surface seen from the viewer: ior entering, 1 / ior leaving.
+double glass_eta(const PrincipledParams& p);
+
+// Cycles 3.4's glass reflection: transmission (1 - metallic) F_d(cos_o; eta) times a GGX
+// reflection whose Fresnel is interpolated from cspec0 = mix(1, base, specular_tint) at
+// normal incidence (interpolated_fresnel's formula with that cspec0 and eta). Needs roughness > 0.
+// Zero where the closure's weight is below Cycles' cutoff 1e-5 (it is then not made), as for
+// the refraction.
+glm::dvec3 glass_reflection_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi);
+
+// Cycles 3.4's glass refraction, wi below the surface: transmission (1 - metallic) base
+// max(1e-4, 1 - F_d(cos_o; eta)) times Walter et al.'s rough dielectric BTDF without its Fresnel
+// factor (2007, eq. 21; eta_i = 1, eta_o = eta):
+//   |wi.h| |wo.h| eta^2 D(h) G1(wo) G1(wi) / (|cos_o| |cos_i| (wo.h + eta wi.h)^2),
+// h = -(wo + eta wi) normalised toward +Z (eq. 16), zero unless wo.h > 0 > wi.h, GGX of alpha
+// (1 - (1 - roughness)(1 - transmission_roughness))^2. Needs that alpha > 0.
+glm::dvec3 glass_refraction_btdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi);
+
+// diffuse_brdf + sheen_brdf + specular_brdf + clearcoat_brdf + glass_reflection_brdf, the
+// reflecting part of the Principled BSDF.
 glm::dvec3 principled_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi);
 
 }  // namespace shaders_ref
