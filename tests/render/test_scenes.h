@@ -22,6 +22,27 @@ inline matgeom::TriangleMesh horizontal_square(double size, double height = 0.0)
   return m;
 }
 
+// Sphere of `radius` around `center`, `rings` rings of 2 rings segments, wound outward (front
+// faces outside), with smooth vertex normals.
+inline matgeom::TriangleMesh uv_sphere(double radius, int rings, const glm::dvec3& center = glm::dvec3(0.0)) {
+  matgeom::TriangleMesh m;
+  const int segments = 2 * rings;
+  for (int i = 0; i <= rings; ++i)
+    for (int j = 0; j <= segments; ++j) {
+      const double theta = M_PI * i / rings, phi = 2.0 * M_PI * j / segments;
+      const glm::dvec3 n(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+      m.positions.emplace_back(center + radius * n);
+      m.normals.emplace_back(n);
+    }
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      const uint32_t a = static_cast<uint32_t>(i * (segments + 1) + j), b = a + static_cast<uint32_t>(segments) + 1;
+      if (i > 0) m.triangles.push_back({a, b, a + 1});
+      if (i + 1 < rings) m.triangles.push_back({a + 1, b, b + 1});
+    }
+  return m;
+}
+
 inline matrender::Material lambert(float albedo) {
   matrender::Material m;
   m.diffuse_model = matrender::DiffuseModel::Lambert;
