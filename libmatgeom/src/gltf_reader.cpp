@@ -59,9 +59,11 @@ std::string lowercase_extension(const std::string& path) {
 void check_required_extensions(const GltfFile& file) {
   // Extensions that change how geometry or images are stored would be misread if ignored;
   // KHR_mesh_quantization only widens the accessor formats, which the reader handles;
-  // KHR_materials_clearcoat and KHR_materials_ior are read.
+  // KHR_materials_clearcoat, _ior and _transmission are read.
   for (const std::string& extension : file.model.extensionsRequired) {
-    if (extension == "KHR_mesh_quantization" || extension == gltf::kClearcoat || extension == gltf::kIor) continue;
+    if (extension == "KHR_mesh_quantization" || extension == gltf::kClearcoat || extension == gltf::kIor ||
+        extension == gltf::kTransmission)
+      continue;
     fail(file.path, "requires the unsupported glTF extension " + extension);
   }
 }
@@ -731,31 +733,46 @@ int extension_texture(const GltfFile& file, ImageTable& images, const tinygltf::
   return resolve_texture(file, images, info.Get("index").GetNumberAsInt(), tex_coord, where).image;
 }
 
+// One input an extension gives as factor x one channel of a texture (glTF's pattern), set on
+// `p`; the factor is glTF's default 0 when absent.
+void read_extension_input(const GltfFile& file, ImageTable& images, const tinygltf::Value& extension,
+                          const char* factor_member, const char* texture_member, int channel, MaterialParameter p,
+                          MaterialDesc& desc, const std::string& where) {
+  const double factor = extension_number(file, extension, factor_member, where).value_or(0.0);
+  desc.set(p, checked_factor(file, p, factor, concat(where, " ", factor_member)));
+  const int image = extension_texture(file, images, extension, texture_member, where);
+  if (image >= 0) desc.set_image(p, image, channel);
+}
+
 // KHR_materials_clearcoat as Blender 3.4's importer wires it: Clearcoat = clearcoatFactor x
 // clearcoatTexture.R, Clearcoat Roughness = clearcoatRoughnessFactor x clearcoatRoughnessTexture.G,
 // both factors 0 when absent (so a coat without a roughness is a mirror, not Blender's default
 // 0.03). clearcoatNormalTexture has no MaterialDesc input yet: the coat keeps the smooth normal.
 void read_clearcoat(const GltfFile& file, ImageTable& images, const tinygltf::Value& extension, MaterialDesc& desc,
                     const std::string& what) {
-  using P = MaterialParameter;
   const std::string where = concat(what, " ", gltf::kClearcoat);
-  desc.set(P::Clearcoat, checked_factor(file, P::Clearcoat, extension_number(file, extension, "clearcoatFactor", where).value_or(0.0),
-                                        where + " clearcoatFactor"));
-  desc.set(P::ClearcoatRoughness,
-           checked_factor(file, P::ClearcoatRoughness,
-                          extension_number(file, extension, "clearcoatRoughnessFactor", where).value_or(0.0),
-                          where + " clearcoatRoughnessFactor"));
-  const int coat_image = extension_texture(file, images, extension, "clearcoatTexture", where);
-  if (coat_image >= 0) desc.set_image(P::Clearcoat, coat_image, gltf::kClearcoatChannel);
-  const int roughness_image = extension_texture(file, images, extension, "clearcoatRoughnessTexture", where);
-  if (roughness_image >= 0) desc.set_image(P::ClearcoatRoughness, roughness_image, gltf::kClearcoatRoughnessChannel);
+  read_extension_input(file, images, extension, "clearcoatFactor", "clearcoatTexture", gltf::kClearcoatChannel,
+                       MaterialParameter::Clearcoat, desc, where);
+  read_extension_input(file, images, extension, "clearcoatRoughnessFactor", "clearcoatRoughnessTexture",
+                       gltf::kClearcoatRoughnessChannel, MaterialParameter::ClearcoatRoughness, desc, where);
+}
+
+// KHR_materials_transmission as Blender 3.4's importer wires it: Transmission =
+// transmissionFactor x transmissionTexture.R; a factor of 0 (the default) leaves the texture out.
+void read_transmission(const GltfFile& file, ImageTable& images, const tinygltf::Value& extension, MaterialDesc& desc,
+                       const std::string& what) {
+  const std::string where = concat(what, " ", gltf::kTransmission);
+  read_extension_input(file, images, extension, "transmissionFactor", "transmissionTexture",
+                       gltf::kTransmissionChannel, MaterialParameter::Transmission, desc, where);
+  if (desc.scalar(MaterialParameter::Transmission) == 0.0) desc[MaterialParameter::Transmission].image = -1;
 }
 
 // The Principled BSDF inputs Blender's importer sets (docs/conventions.md): base colour =
 // factor x texture, roughness = factor x texture.G, metallic = factor x texture.B, normal map
 // strength = normalTexture.scale, emission = emissiveFactor x emissiveTexture with
 // KHR_materials_emissive_strength's strength, IOR = KHR_materials_ior's (1.5 without it),
-// KHR_materials_clearcoat (read_clearcoat); specular and specular tint keep Blender's defaults. Occlusion and alpha have no MaterialDesc input yet.
+// KHR_materials_clearcoat (read_clearcoat), KHR_materials_transmission (read_transmission);
+// specular and specular tint keep Blender's defaults. Occlusion and alpha have no MaterialDesc input yet.
 MaterialDesc convert_material(const GltfFile& file, ImageTable& images, size_t index) {
   const tinygltf::Material& material = file.model.materials[index];
   const tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
@@ -792,6 +809,8 @@ MaterialDesc convert_material(const GltfFile& file, ImageTable& images, size_t i
                                     concat(what, " ", gltf::kIor, " ior")));
   const auto clearcoat = material.extensions.find(gltf::kClearcoat);
   if (clearcoat != material.extensions.end()) read_clearcoat(file, images, clearcoat->second, desc, what);
+  const auto transmission = material.extensions.find(gltf::kTransmission);
+  if (transmission != material.extensions.end()) read_transmission(file, images, transmission->second, desc, what);
   if (!std::isfinite(material.normalTexture.scale))
     fail(file.path, what + ": non-finite normal scale");
   desc.normal_strength = material.normalTexture.scale;

@@ -202,18 +202,31 @@ tinygltf::Value::Object texture_info(const MaterialDesc& desc, MaterialParameter
   return info;
 }
 
+// An input as factor x one channel of a texture into `extension`, the inverse of read_gltf's
+// read_extension_input.
+void write_extension_input(const MaterialDesc& desc, MaterialParameter p, const char* factor_member,
+                           const char* texture_member, int channel, TextureTable& textures, const std::string& what,
+                           tinygltf::Value::Object& extension) {
+  extension[factor_member] = tinygltf::Value(desc.scalar(p));
+  if (desc[p].image >= 0) extension[texture_member] = tinygltf::Value(texture_info(desc, p, channel, textures, what));
+}
+
 // KHR_materials_clearcoat, the inverse of read_gltf's read_clearcoat.
 tinygltf::Value::Object clearcoat_extension(const MaterialDesc& desc, TextureTable& textures, const std::string& what) {
-  using P = MaterialParameter;
   tinygltf::Value::Object extension;
-  extension["clearcoatFactor"] = tinygltf::Value(desc.scalar(P::Clearcoat));
-  extension["clearcoatRoughnessFactor"] = tinygltf::Value(desc.scalar(P::ClearcoatRoughness));
-  if (desc[P::Clearcoat].image >= 0)
-    extension["clearcoatTexture"] =
-        tinygltf::Value(texture_info(desc, P::Clearcoat, gltf::kClearcoatChannel, textures, what));
-  if (desc[P::ClearcoatRoughness].image >= 0)
-    extension["clearcoatRoughnessTexture"] =
-        tinygltf::Value(texture_info(desc, P::ClearcoatRoughness, gltf::kClearcoatRoughnessChannel, textures, what));
+  write_extension_input(desc, MaterialParameter::Clearcoat, "clearcoatFactor", "clearcoatTexture",
+                        gltf::kClearcoatChannel, textures, what, extension);
+  write_extension_input(desc, MaterialParameter::ClearcoatRoughness, "clearcoatRoughnessFactor",
+                        "clearcoatRoughnessTexture", gltf::kClearcoatRoughnessChannel, textures, what, extension);
+  return extension;
+}
+
+// KHR_materials_transmission, the inverse of read_gltf's read_transmission.
+tinygltf::Value::Object transmission_extension(const MaterialDesc& desc, TextureTable& textures,
+                                               const std::string& what) {
+  tinygltf::Value::Object extension;
+  write_extension_input(desc, MaterialParameter::Transmission, "transmissionFactor", "transmissionTexture",
+                        gltf::kTransmissionChannel, textures, what, extension);
   return extension;
 }
 
@@ -248,6 +261,9 @@ tinygltf::Material make_material(const MaterialDesc& desc, TextureTable& texture
   }
   if (desc.scalar(P::Clearcoat) != 0.0 || desc[P::Clearcoat].image >= 0)
     material.extensions[gltf::kClearcoat] = tinygltf::Value(clearcoat_extension(desc, textures, what));
+  // Blender's importer ignores the extension's texture when the factor is 0.
+  if (desc.scalar(P::Transmission) != 0.0)
+    material.extensions[gltf::kTransmission] = tinygltf::Value(transmission_extension(desc, textures, what));
   return material;
 }
 
@@ -263,7 +279,7 @@ tinygltf::Model make_model(const ObjectAsset& asset) {
   model.buffers.resize(1);
   TextureTable textures(model, asset.images);
   for (const MaterialDesc& desc : asset.materials) model.materials.push_back(make_material(desc, textures));
-  for (const char* extension : {gltf::kEmissiveStrength, gltf::kIor, gltf::kClearcoat})
+  for (const char* extension : {gltf::kEmissiveStrength, gltf::kIor, gltf::kClearcoat, gltf::kTransmission})
     for (const tinygltf::Material& material : model.materials)
       if (material.extensions.count(extension)) {
         model.extensionsUsed.push_back(extension);

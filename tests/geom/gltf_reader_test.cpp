@@ -269,7 +269,8 @@ std::string write_two_material_quad(const TempDir& dir, Container container) {
                                      {"metallicFactor", 0.9},
                                      {"roughnessFactor", 0.3},
                                      {"baseColorTexture", {{"index", 0}}}}},
-                                   {"normalTexture", {{"index", 1}, {"scale", 0.7}}}},
+                                   {"normalTexture", {{"index", 1}, {"scale", 0.7}}},
+                                   {"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 0.4}}}}}},
                                   {{"name", "blue"},
                                    {"pbrMetallicRoughness",
                                     {{"baseColorFactor", {0.1, 0.2, 0.9, 1.0}},
@@ -279,8 +280,10 @@ std::string write_two_material_quad(const TempDir& dir, Container container) {
                                    // A lacquer from the red channel, its roughness left out (glTF's 0).
                                    {"extensions",
                                     {{"KHR_materials_clearcoat",
-                                      {{"clearcoatFactor", 0.6}, {"clearcoatTexture", {{"index", 1}}}}}}}}});
-  doc["extensionsUsed"] = json::array({"KHR_materials_clearcoat"});
+                                      {{"clearcoatFactor", 0.6}, {"clearcoatTexture", {{"index", 1}}}}},
+                                     // A transmission texture under a factor of 0: no glass (Blender's importer).
+                                     {"KHR_materials_transmission", {{"transmissionTexture", {{"index", 0}}}}}}}}});
+  doc["extensionsUsed"] = json::array({"KHR_materials_clearcoat", "KHR_materials_transmission"});
   return writer.write();
 }
 
@@ -344,6 +347,8 @@ TEST_CASE("glTF two-material quad: transforms, axes, uvs, parts, materials, imag
   CHECK(red.scalar(P::ClearcoatRoughness) == Approx(0.03));
   // Blender's importer gives every glTF material glTF's IOR 1.5, not the node's 1.45.
   CHECK(red.scalar(P::Ior) == 1.5);
+  CHECK(red.scalar(P::Transmission) == Approx(0.4));
+  CHECK(red[P::Transmission].image == -1);
   CHECK(red[P::Clearcoat].image == -1);
   const matgeom::MaterialDesc& blue = asset.materials[1];
   CHECK(blue.name == "blue");
@@ -358,6 +363,8 @@ TEST_CASE("glTF two-material quad: transforms, axes, uvs, parts, materials, imag
   CHECK(blue[P::Clearcoat].channel == 0);
   CHECK(blue.scalar(P::ClearcoatRoughness) == 0.0);
   CHECK(blue[P::ClearcoatRoughness].image == -1);
+  CHECK(blue.scalar(P::Transmission) == 0.0);
+  CHECK(blue[P::Transmission].image == -1);
   // One image used by two materials (and by the coat) is stored once.
   CHECK(blue[P::Roughness].image == red.normal_image);
   CHECK(blue[P::Clearcoat].image == red.normal_image);

@@ -61,6 +61,9 @@ ObjectAsset two_part_asset() {
   wood.set(P::EmissionStrength, 2.5);
   // KHR_materials_ior for both: glTF's default is 1.5, the table's (brass) 1.45.
   wood.set(P::Ior, 1.33);
+  // Glass where image 0's red says (KHR_materials_transmission).
+  wood.set(P::Transmission, 0.5);
+  wood.set_image(P::Transmission, 0, 0);
   MaterialDesc brass;
   brass.name = "brass handle";
   brass.set(P::BaseColor, glm::dvec3(1.0, 0.75, 0.25));
@@ -110,6 +113,8 @@ void check_same_asset(const ObjectAsset& written, const ObjectAsset& read) {
     CHECK(b.color(P::Emission) == a.color(P::Emission));
     CHECK(b.scalar(P::EmissionStrength) == a.scalar(P::EmissionStrength));
     CHECK(b.scalar(P::Ior) == a.scalar(P::Ior));
+    CHECK(b.scalar(P::Transmission) == a.scalar(P::Transmission));
+    CHECK(b[P::Transmission].channel == a[P::Transmission].channel);
     CHECK(b.scalar(P::Clearcoat) == a.scalar(P::Clearcoat));
     CHECK(b.scalar(P::ClearcoatRoughness) == a.scalar(P::ClearcoatRoughness));
     CHECK(b[P::Clearcoat].channel == a[P::Clearcoat].channel);
@@ -120,6 +125,7 @@ void check_same_asset(const ObjectAsset& written, const ObjectAsset& read) {
                                            std::pair{a[P::Roughness].image, b[P::Roughness].image},
                                            std::pair{a[P::Emission].image, b[P::Emission].image},
                                            std::pair{a[P::Clearcoat].image, b[P::Clearcoat].image},
+                                           std::pair{a[P::Transmission].image, b[P::Transmission].image},
                                            std::pair{a[P::ClearcoatRoughness].image, b[P::ClearcoatRoughness].image},
                                            std::pair{a.normal_image, b.normal_image}}) {
       REQUIRE((image_a < 0) == (image_b < 0));

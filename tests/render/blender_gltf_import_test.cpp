@@ -45,6 +45,7 @@ matgeom::ObjectAsset two_material_quad() {
   lacquer.set(P::Clearcoat, 0.75);
   lacquer.set(P::ClearcoatRoughness, 0.2);
   lacquer.set(P::Ior, 1.33);
+  lacquer.set(P::Transmission, 0.3);
   // Every input glTF can texture, from the one image.
   MaterialDesc textured("textured");
   textured.set_image(P::BaseColor, 0);
@@ -55,6 +56,8 @@ matgeom::ObjectAsset two_material_quad() {
   textured.set_image(P::Clearcoat, 0, 0);
   textured.set(P::ClearcoatRoughness, 1.0);
   textured.set_image(P::ClearcoatRoughness, 0, 1);
+  textured.set(P::Transmission, 0.5);
+  textured.set_image(P::Transmission, 0, 0);
   asset.materials = {lacquer, textured};
   return asset;
 }

@@ -184,6 +184,7 @@ struct Case {
   float clearcoat = 0.0f, clearcoat_roughness = 0.03f;
   // Our Cycles-3.4 parity mode (RenderSettings::cycles_parity), which the clearcoat needs.
   bool cycles_parity = false;
+  float transmission = 0.0f, ior = 1.45f, transmission_roughness = 0.0f;
 };
 
 }  // namespace
@@ -210,6 +211,15 @@ TEST_CASE("Renders agree with Blender 3.4 Cycles up to noise", "[render][blender
       // 2.7 %: docs/conventions.md, "Clearcoat", lists it as open.
       {"clearcoat_1_roughness_0.05_parity", {0.3f, 0.12f, 0.05f}, 0.0f, 0.6f, 0.5f, 0.0f, 48, 0.1f, 0.0f, 0.5f,
        glm::vec3(0.0f), 1.0f, 0.05f, true},
+      // Glass: the lamps seen through the sphere and reflected in it. Smooth (only BSDF-sampled
+      // paths reach the lamps through it), rough, and half glass on a tinted base with a
+      // roughened refraction.
+      {"glass_smooth_ior_1.5", {1.0f, 1.0f, 1.0f}, 0.0f, 0.0f, 0.5f, 0.0f, 48, 0.1f, 0.0f, 0.5f, glm::vec3(0.0f), 0.0f,
+       0.03f, false, 1.0f, 1.5f},
+      {"glass_rough_0.3_ior_1.45", {0.9f, 0.95f, 1.0f}, 0.0f, 0.3f, 0.5f, 0.0f, 48, 0.1f, 0.0f, 0.5f,
+       glm::vec3(0.0f), 0.0f, 0.03f, false, 1.0f, 1.45f},
+      {"half_glass_tinted_ior_2", {0.8f, 0.5f, 0.3f}, 0.0f, 0.15f, 0.5f, 0.5f, 48, 0.1f, 0.0f, 0.5f,
+       glm::vec3(0.0f), 0.0f, 0.03f, false, 0.5f, 2.0f, 0.4f},
   };
   for (const Case& c : cases) {
     matrender::Material material;
@@ -223,6 +233,9 @@ TEST_CASE("Renders agree with Blender 3.4 Cycles up to noise", "[render][blender
     material.set(matrender::MaterialParameter::Emission, c.emission);
     material.set(matrender::MaterialParameter::Clearcoat, c.clearcoat);
     material.set(matrender::MaterialParameter::ClearcoatRoughness, c.clearcoat_roughness);
+    material.set(matrender::MaterialParameter::Transmission, c.transmission);
+    material.set(matrender::MaterialParameter::Ior, c.ior);
+    material.set(matrender::MaterialParameter::TransmissionRoughness, c.transmission_roughness);
     const shaders_ref::CyclesScene scene = paper_scene(material, c.rings, c.terminator_offset);
     std::vector<shaders_ref::CyclesRender> renders = {{kSamples, 1, "", 0.0}, {kSamples, 2, "", 0.0}};
     shaders_ref::render_with_cycles(scene, renders, 2, cycles_work_folder(c.name));

@@ -18,4 +18,8 @@ constexpr const char* kClearcoat = "KHR_materials_clearcoat";
 constexpr int kClearcoatChannel = 0;
 constexpr int kClearcoatRoughnessChannel = 1;
 
+// Glass: transmissionFactor (default 0) x transmissionTexture.R.
+constexpr const char* kTransmission = "KHR_materials_transmission";
+constexpr int kTransmissionChannel = 0;
+
 }  // namespace matgeom::gltf
