@@ -30,8 +30,9 @@ enum class MaterialParameter : unsigned {
   ClearcoatRoughness,
   Transmission,
   TransmissionRoughness,
+  Alpha,
 };
-constexpr size_t kMaterialParameterCount = 14;
+constexpr size_t kMaterialParameterCount = 15;
 
 enum class ParameterKind {
   Color,   // RGB, from the RGB of a texture
@@ -84,6 +85,10 @@ constexpr std::array<MaterialParameterInfo, kMaterialParameterCount> kMaterialPa
     {MaterialParameter::TransmissionRoughness, "transmission_roughness", "Transmission Roughness", ParameterKind::Scalar,
      0.0, 0.0, 1.0, true, ColorSpace::NonColor, 0, false,
      "roughens the refraction only: its roughness is 1 - (1 - roughness)(1 - transmission_roughness)"},
+    // Named as MatSynth's opacity maps: "alpha" is the film's coverage AOV.
+    {MaterialParameter::Alpha, "opacity", "Alpha", ParameterKind::Scalar, 1.0, 0.0, 1.0, true, ColorSpace::NonColor, 3,
+     false,
+     "Blender's Alpha: the surface scatters and emits this fraction of the light, the rest passes straight through"},
 }};
 
 constexpr const MaterialParameterInfo& material_parameter(MaterialParameter id) {

@@ -19,6 +19,7 @@ struct RenderSettings {
   int max_diffuse_bounces = 4;
   int max_glossy_bounces = 4;
   int max_transmission_bounces = 12;
+  int max_transparent_bounces = 8;  // surfaces of alpha < 1 a ray passes, camera and shadow rays alike
   bool transparent_background = false;  // camera rays that miss give 0 instead of the background
   // Reproduce Cycles 3.4's own estimators where they do not converge to the integral of its BSDF
   // (the clearcoat's sampling, docs/conventions.md), for parity with images made in Blender.

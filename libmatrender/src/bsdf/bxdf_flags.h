@@ -1,8 +1,9 @@
 #pragma once
 // What kind of scattering a lobe does, in pbrt-v4's terms (section 9.1.2, BxDFFlags): which side
 // of the surface the light leaves to (reflection or transmission) and how it spreads (diffuse,
-// glossy, or specular = a delta distribution no light sample can hit). The integrator, the light
-// sampler and the bounce counters decide from these flags alone.
+// glossy, or specular = a delta distribution no light sample can hit), and Cycles' "transparent"
+// (light passing straight through a surface's missing coverage, not scattered by it). The
+// integrator, the light sampler and the bounce counters decide from these flags alone.
 #include <cstdint>
 
 namespace matrender {
@@ -14,12 +15,15 @@ enum class BxDFFlags : uint32_t {
   Diffuse = 1u << 2,
   Glossy = 1u << 3,
   Specular = 1u << 4,
+  Transparent = 1u << 5,
   DiffuseReflection = Diffuse | Reflection,
   GlossyReflection = Glossy | Reflection,
   SpecularReflection = Specular | Reflection,
   DiffuseTransmission = Diffuse | Transmission,
   GlossyTransmission = Glossy | Transmission,
   SpecularTransmission = Specular | Transmission,
+  // Straight through: a delta transmission that is no bounce.
+  TransparentTransmission = Transparent | Specular | Transmission,
 };
 
 constexpr BxDFFlags operator|(BxDFFlags a, BxDFFlags b) {
@@ -36,6 +40,7 @@ constexpr bool is_transmissive(BxDFFlags f) { return any(f & BxDFFlags::Transmis
 constexpr bool is_diffuse(BxDFFlags f) { return any(f & BxDFFlags::Diffuse); }
 constexpr bool is_glossy(BxDFFlags f) { return any(f & BxDFFlags::Glossy); }
 constexpr bool is_specular(BxDFFlags f) { return any(f & BxDFFlags::Specular); }
+constexpr bool is_transparent(BxDFFlags f) { return any(f & BxDFFlags::Transparent); }
 // Some lobe a light sample can reach (NEE contributes).
 constexpr bool is_non_specular(BxDFFlags f) { return any(f & (BxDFFlags::Diffuse | BxDFFlags::Glossy)); }
 

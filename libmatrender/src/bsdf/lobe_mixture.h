@@ -22,10 +22,12 @@
 #include "bsdf/ggx_transmission_lobe.h"
 #include "bsdf/lobe_sample.h"
 #include "bsdf/sheen_lobe.h"
+#include "bsdf/transparent_lobe.h"
 
 namespace matrender {
 
-using Lobe = std::variant<DiffuseLobe, GgxReflectionLobe, SheenLobe, ClearcoatLobe, GgxTransmissionLobe>;
+using Lobe =
+    std::variant<DiffuseLobe, GgxReflectionLobe, SheenLobe, ClearcoatLobe, GgxTransmissionLobe, TransparentLobe>;
 
 // f(the lobe as its own type). A switch, not std::visit: GCC turns std::visit into a call through
 // a table, which keeps the lobes' small methods from being inlined at every path vertex. Forced
@@ -33,13 +35,14 @@ using Lobe = std::variant<DiffuseLobe, GgxReflectionLobe, SheenLobe, ClearcoatLo
 // more instructions on the vase, measured with callgrind).
 template <class F>
 [[gnu::always_inline]] inline decltype(auto) with_lobe(const Lobe& lobe, F&& f) {
-  static_assert(std::variant_size_v<Lobe> == 5, "a new lobe needs its case here");
+  static_assert(std::variant_size_v<Lobe> == 6, "a new lobe needs its case here");
   switch (lobe.index()) {
     case 0: return f(*std::get_if<0>(&lobe));
     case 1: return f(*std::get_if<1>(&lobe));
     case 2: return f(*std::get_if<2>(&lobe));
     case 3: return f(*std::get_if<3>(&lobe));
-    default: return f(*std::get_if<4>(&lobe));
+    case 4: return f(*std::get_if<4>(&lobe));
+    default: return f(*std::get_if<5>(&lobe));
   }
 }
 
@@ -52,10 +55,10 @@ struct BsdfSample {
 
 class LobeMixture {
  public:
-  // Room for every lobe of the Principled BSDF: diffuse, sheen, specular, clearcoat and the
-  // glass's reflection and refraction (a mixture lives on the stack of every path vertex; the
-  // room is left unconstructed, so lobes nobody has cost nothing).
-  static constexpr size_t kMaxLobes = 6;
+  // Room for every lobe of the Principled BSDF: diffuse, sheen, specular, clearcoat, the glass's
+  // reflection and refraction, and transparency (a mixture lives on the stack of every path
+  // vertex; the room is left unconstructed, so lobes nobody has cost nothing).
+  static constexpr size_t kMaxLobes = 7;
 
   // Adds a lobe (one of Lobe's alternatives); finish() must follow the last one.
   template <class LobeType>

@@ -99,6 +99,20 @@ PrincipledParameters::PrincipledParameters(const PrincipledInputs& inputs, Clear
     clearcoat_weight = 0.25f * clearcoat;
     clearcoat_alpha = clearcoat_roughness * clearcoat_roughness;
   }
+
+  // Cycles mixes the whole BSDF (emission included) with a transparent BSDF by Alpha
+  // (PrincipledBsdfNode::expand in scene/shader_nodes.cpp): every closure weight times alpha.
+  coverage = glm::clamp(inputs.scalar(MaterialParameter::Alpha), 0.0f, 1.0f);
+  transparent = 1.0f - coverage > kClosureWeightCutoff;
+  if (transparent) {
+    diffuse_weight *= coverage;
+    sheen_weight *= coverage;
+    specular_weight *= coverage;
+    clearcoat_weight *= coverage;
+    glass_weight *= coverage;
+    // Nothing is left of a surface with no coverage but its transparency.
+    if (!(coverage > kClosureWeightCutoff)) sheen_enabled = specular_enabled = clearcoat_enabled = glass_enabled = false;
+  }
 }
 
 void add_principled_lobes(const PrincipledParameters& p, const glm::vec3& wo, const ShadingGeometry& geometry,
@@ -113,6 +127,7 @@ void add_principled_lobes(const PrincipledParameters& p, const glm::vec3& wo, co
   if (p.clearcoat_enabled)
     lobes->add(
         ClearcoatLobe(p.clearcoat_weight, p.clearcoat_alpha, p.clearcoat_estimator, wo, geometry.clearcoat_normal));
+  if (p.transparent) lobes->add(TransparentLobe(glm::vec3(1.0f - p.coverage), wo));
   lobes->finish();
 }
 

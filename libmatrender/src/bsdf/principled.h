@@ -3,9 +3,10 @@
 // diffuse lobe weighted (1 - metallic)(1 - transmission) base colour, a sheen lobe on top of it,
 // a GGX specular lobe with the interpolated Fresnel, a clearcoat lobe, and glass (a GGX
 // reflection and a GGX refraction) of weight transmission (1 - metallic) (svm_closure.h,
-// CLOSURE_BSDF_PRINCIPLED_ID). A material without a lobe pays nothing for it: specular 0 and
-// metallic 0 make no specular lobe at all; sheen, clearcoat and transmission 0 (the defaults)
-// no sheen, clearcoat or glass lobes.
+// CLOSURE_BSDF_PRINCIPLED_ID), all scaled by the Alpha input, whose complement a transparent
+// lobe passes straight through. A material without a lobe pays nothing for it: specular 0 and
+// metallic 0 make no specular lobe at all; sheen, clearcoat and transmission 0 and alpha 1 (the
+// defaults) no sheen, clearcoat, glass or transparent lobes.
 #include <array>
 
 #include <glm/glm.hpp>
@@ -64,6 +65,9 @@ struct PrincipledParameters {
   float glass_f0 = 0.0f;           // fresnel_dielectric_cos(1, ior), the same for ior and 1 / ior
   glm::vec3 refraction_tint{0.0f};
   float refraction_alpha = 0.0f;   // (1 - (1 - roughness)(1 - transmission_roughness))^2
+  // Coverage: every weight above is scaled by it, and 1 - coverage passes straight through.
+  float coverage = 1.0f;           // the Alpha input
+  bool transparent;                // 1 - coverage above Cycles' cutoff 1e-5
 };
 
 // What a hit adds to the shading frame, in its local coordinates.

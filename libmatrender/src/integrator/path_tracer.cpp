@@ -55,6 +55,8 @@ glm::vec3 shadow_ray_start(const MeshData& mesh, const RayHit& hit, const Surfac
 PathTracer::PathTracer(const SceneData& scene, const LightSampler& lights, const PathSettings& settings)
     : scene_(scene), lights_(lights), settings_(settings) {
   for (const Material& material : scene.materials) {
+    const ParameterValue& alpha = material[MaterialParameter::Alpha];
+    if (alpha.texture || alpha.value.x < 1.0f) has_transparency_ = true;
     const std::optional<PrincipledInputs> inputs = constant_inputs(material);
     constant_parameters_.push_back(
         inputs ? std::optional<PrincipledParameters>(PrincipledParameters(*inputs, settings.clearcoat_estimator))
@@ -73,6 +75,30 @@ glm::vec3 PathTracer::lamps_hit(const glm::vec3& origin, const glm::vec3& dir, f
   return sum;
 }
 
+glm::vec3 PathTracer::transmittance(const glm::vec3& origin, const glm::vec3& dir, float distance,
+                                    uint32_t* rays) const {
+  ++*rays;
+  if (!has_transparency_) return glm::vec3(scene_.accel.occluded(origin, dir, distance) ? 0.0f : 1.0f);
+  // Through surfaces with transparency, each hit passes 1 - alpha, up to Cycles' limit of
+  // transparent bounces; an opaque one stops the ray.
+  const glm::vec3 target = origin + distance * dir;
+  glm::vec3 from = origin;
+  float remaining = distance;
+  glm::vec3 passed(1.0f);
+  for (int crossed = 0;; ++crossed) {
+    const RayHit hit = scene_.accel.intersect(from, dir, remaining);
+    if (!hit.hit()) return passed;
+    if (crossed >= settings_.max_transparent_bounces) return glm::vec3(0.0f);
+    const SurfacePoint sp = shade_surface(scene_, hit, -dir);
+    const float coverage = glm::clamp(sp.inputs.scalar(MaterialParameter::Alpha), 0.0f, 1.0f);
+    passed *= 1.0f - coverage;
+    if (!(max_component(passed) > 0.0f)) return glm::vec3(0.0f);
+    from = offset_ray_origin(sp.position, -sp.geometric_normal);
+    remaining = glm::length(target - from);
+    ++*rays;
+  }
+}
+
 PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& camera_dir,
                              const RayHit& camera_hit, const PixelSampler& sampler,
                              SurfacePoint* first_surface) const {
@@ -82,25 +108,33 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
   glm::vec3 dir = camera_dir;
   float bsdf_pdf = 0.0f;
   bool bsdf_delta = false;
+  int bounce = 0;  // scattering bounces; passing through a transparent surface is none
   int diffuse_bounces = 0;
   int glossy_bounces = 0;
   int transmission_bounces = 0;
+  int transparent_bounces = 0;
 
-  for (int bounce = 0;; ++bounce) {
-    const RayHit hit = bounce == 0 ? camera_hit : scene_.accel.intersect(origin, dir, kInfinity);
+  // `vertex` counts every surface met, transparent ones included, so each gets its own random
+  // numbers.
+  for (int vertex = 0;; ++vertex) {
+    const RayHit hit = vertex == 0 ? camera_hit : scene_.accel.intersect(origin, dir, kInfinity);
     ++result.rays;
+    // Still the camera's ray: it has passed only through transparent surfaces.
+    const bool camera_ray = bounce == 0;
     // Lamps are invisible to camera rays; later rays see them, weighted against NEE.
-    if (bounce > 0 && lights_.has_area_lights())
+    if (!camera_ray && lights_.has_area_lights())
       result.radiance += throughput * lamps_hit(origin, dir, hit.hit() ? hit.t : kInfinity, bsdf_pdf, bsdf_delta);
     if (!hit.hit()) {
-      if (bounce > 0 || !settings_.transparent_background)
+      if (!camera_ray || !settings_.transparent_background)
         result.radiance += throughput * lights_.escaped_radiance(dir, bsdf_pdf, bsdf_delta);
+      // What the camera sees through: the film's transparency (Cycles averages the channels).
+      if (camera_ray) result.transparency = (throughput.x + throughput.y + throughput.z) / 3.0f;
       break;
     }
 
     const glm::vec3 wo_world = -dir;
     const SurfacePoint sp = shade_surface(scene_, hit, wo_world);
-    if (bounce == 0) {
+    if (vertex == 0) {
       result.hit = true;
       result.first_distance = hit.t;
       if (first_surface) *first_surface = sp;
@@ -111,11 +145,12 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     if (emitted != glm::vec3(0.0f)) result.radiance += throughput * emitted;
     // Cycles terminates here, after the lamp and background hits of the arriving ray counted.
     if (bounce > settings_.max_bounces || diffuse_bounces > settings_.max_diffuse_bounces ||
-        glossy_bounces > settings_.max_glossy_bounces || transmission_bounces > settings_.max_transmission_bounces)
+        glossy_bounces > settings_.max_glossy_bounces || transmission_bounces > settings_.max_transmission_bounces ||
+        transparent_bounces > settings_.max_transparent_bounces)
       break;
 
-    const VertexDimensions dims(bounce);
-    if (bounce > 0) {
+    const VertexDimensions dims(vertex);
+    if (vertex > 0) {
       // Russian roulette, continuation probability min(1, sqrt(max throughput)) (Cycles 3.4).
       const float continue_probability = std::min(1.0f, std::sqrt(max_component(throughput)));
       if (!(sampler.get_2d(dims.roulette).x < continue_probability)) break;
@@ -163,11 +198,12 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
             shadow_dir = to_light / shadow_distance;
           }
           const glm::vec3 shadow_origin = offset_ray_origin(start, side);
-          ++result.rays;
           // Shorten the shadow ray by a relative margin so it cannot hit geometry touching the lamp.
-          if (!scene_.accel.occluded(shadow_origin, shadow_dir, shadow_distance * (1.0f - 1e-4f))) {
+          const glm::vec3 visible =
+              transmittance(shadow_origin, shadow_dir, shadow_distance * (1.0f - 1e-4f), &result.rays);
+          if (max_component(visible) > 0.0f) {
             const float weight = light->delta ? 1.0f : power_heuristic(light->pdf, pdf_bsdf);
-            result.radiance += throughput * f * light->radiance * (weight / light->pdf);
+            result.radiance += throughput * visible * f * light->radiance * (weight / light->pdf);
           }
         }
       }
@@ -177,6 +213,14 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     if (!bsdf.sample(sampler.get_2d(dims.bsdf), &s)) break;
     throughput *= s.weight;
     if (!(max_component(throughput) > 0.0f)) break;
+    if (is_transparent(s.flags)) {
+      // Straight on, as if the surface were not there: the ray keeps its direction and the
+      // MIS pdf of the bounce that made it.
+      ++transparent_bounces;
+      origin = offset_ray_origin(sp.position, -sp.geometric_normal);
+      continue;
+    }
+    ++bounce;
     bsdf_pdf = s.pdf;
     bsdf_delta = is_specular(s.flags);
     // Cycles counts a bounce by its label: transmission first, then diffuse, else glossy (a

@@ -19,6 +19,7 @@ struct PathSettings {
   int max_diffuse_bounces = 4;
   int max_glossy_bounces = 4;
   int max_transmission_bounces = 12;
+  int max_transparent_bounces = 8;
   bool transparent_background = false;
   ClearcoatEstimator clearcoat_estimator = ClearcoatEstimator::Integral;
 };
@@ -26,6 +27,7 @@ struct PathSettings {
 struct PathResult {
   glm::vec3 radiance{0.0f};
   bool hit = false;           // the camera ray hit a surface
+  float transparency = 0.0f;  // of the camera ray through transparent surfaces to the background (1: a miss)
   float first_distance = 0.0f;
   uint32_t rays = 0;          // closest-hit plus shadow rays traced
 };
@@ -42,6 +44,10 @@ class PathTracer {
                    const PixelSampler& sampler, SurfacePoint* first_surface = nullptr) const;
 
  private:
+  // What reaches origin + distance dir from origin: 0 behind an opaque surface, 1 - alpha through
+  // each transparent one. Counts the rays it traces into *rays.
+  glm::vec3 transmittance(const glm::vec3& origin, const glm::vec3& dir, float distance, uint32_t* rays) const;
+
   // MIS-weighted radiance of the area lamps in front of the segment [origin, origin + t_max dir].
   glm::vec3 lamps_hit(const glm::vec3& origin, const glm::vec3& dir, float t_max, float bsdf_pdf,
                       bool bsdf_delta) const;
@@ -51,6 +57,8 @@ class PathTracer {
   PathSettings settings_;
   // Per material: its lobes' parameters when no input is textured (computed once, not at every hit).
   std::vector<std::optional<PrincipledParameters>> constant_parameters_;
+  // Some material has alpha below 1 or from a texture: shadow rays must look through surfaces.
+  bool has_transparency_ = false;
 };
 
 }  // namespace matrender

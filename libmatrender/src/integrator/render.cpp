@@ -45,6 +45,7 @@ std::vector<Tile> make_tiles(int width, int height) {
 // Everything one pixel accumulates over its samples.
 struct PixelAccumulator {
   glm::dvec3 color{0.0};
+  double coverage = 0.0;  // summed 1 - transparency of the camera rays
   int hits = 0;
   std::array<glm::dvec3, matgeom::kMaterialParameterCount> parameters{};  // by MaterialParameter; scalars in x
   glm::dvec3 normal{0.0};
@@ -70,7 +71,7 @@ void validate(const Camera& camera, const RenderSettings& settings) {
   if (settings.samples_per_pixel < 1) throw std::invalid_argument("render: samples per pixel must be >= 1");
   if (settings.threads < 0) throw std::invalid_argument("render: threads must be >= 0");
   if (settings.max_bounces < 0 || settings.max_diffuse_bounces < 0 || settings.max_glossy_bounces < 0 ||
-      settings.max_transmission_bounces < 0)
+      settings.max_transmission_bounces < 0 || settings.max_transparent_bounces < 0)
     throw std::invalid_argument("render: bounce limits must be >= 0");
 }
 
@@ -84,7 +85,8 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
   const LightSampler lights(data.lights, data.background);
   const PathTracer tracer(data, lights,
                           {settings.max_bounces, settings.max_diffuse_bounces, settings.max_glossy_bounces,
-                           settings.max_transmission_bounces, settings.transparent_background,
+                           settings.max_transmission_bounces, settings.max_transparent_bounces,
+                           settings.transparent_background,
                            settings.cycles_parity ? ClearcoatEstimator::Cycles34 : ClearcoatEstimator::Integral});
   const CameraRays rays(camera);
   const PixelFilterSampler& filter = blackman_harris_sampler();
@@ -158,6 +160,7 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
         } else {
           ++tile_discarded;
         }
+        acc.coverage += 1.0 - static_cast<double>(path.transparency);
         if (!path.hit) continue;
         ++acc.hits;
         if (!surface_aovs) continue;
@@ -178,7 +181,7 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
     const size_t i = pixel_index;
     const glm::dvec3 color = acc.color / static_cast<double>(spp);
     for (int c = 0; c < 3; ++c) frame.color[3 * i + c] = static_cast<float>(color[c]);
-    if (!frame.alpha.empty()) frame.alpha[i] = static_cast<float>(acc.hits) / static_cast<float>(spp);
+    if (!frame.alpha.empty()) frame.alpha[i] = static_cast<float>(acc.coverage / static_cast<double>(spp));
     if (acc.hits == 0) return;
     const double inv_hits = 1.0 / acc.hits;
     const double normal_len = glm::length(acc.normal);

@@ -554,7 +554,7 @@ std::vector<ObjectDescription> read_objects(const Node& node, const fs::path& fo
 
 void read_render(const Node& node, SceneDescription& scene) {
   node.expect_keys({"spp", "seed", "max_bounces", "max_diffuse_bounces", "max_glossy_bounces",
-                    "max_transmission_bounces", "exposure",
+                    "max_transmission_bounces", "max_transparent_bounces", "exposure",
                     "transparent_background", "cycles_parity"});
   RenderSettings& s = scene.settings;
   if (auto n = node.find("spp")) s.samples_per_pixel = n->integer_at_least(1);
@@ -563,6 +563,7 @@ void read_render(const Node& node, SceneDescription& scene) {
   if (auto n = node.find("max_diffuse_bounces")) s.max_diffuse_bounces = n->integer_at_least(0);
   if (auto n = node.find("max_glossy_bounces")) s.max_glossy_bounces = n->integer_at_least(0);
   if (auto n = node.find("max_transmission_bounces")) s.max_transmission_bounces = n->integer_at_least(0);
+  if (auto n = node.find("max_transparent_bounces")) s.max_transparent_bounces = n->integer_at_least(0);
   if (auto n = node.find("exposure"))
     scene.exposure_stops = n->number_where([](double v) { return std::abs(v) <= kMaxExposureStops; },
                                            fmt::format("a number of stops in [{}, {}]", -kMaxExposureStops, kMaxExposureStops));
