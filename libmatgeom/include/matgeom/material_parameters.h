@@ -86,7 +86,7 @@ constexpr std::array<MaterialParameterInfo, kMaterialParameterCount> kMaterialPa
      0.0, 0.0, 1.0, true, ColorSpace::NonColor, 0, false,
      "roughens the refraction only: its roughness is 1 - (1 - roughness)(1 - transmission_roughness)"},
     // Named as MatSynth's opacity maps: "alpha" is the film's coverage AOV.
-    {MaterialParameter::Alpha, "opacity", "Alpha", ParameterKind::Scalar, 1.0, 0.0, 1.0, true, ColorSpace::NonColor, 3,
+    {MaterialParameter::Alpha, "opacity", "Alpha", ParameterKind::Scalar, 1.0, 0.0, 1.0, true, ColorSpace::NonColor, 0,
      false,
      "Blender's Alpha: the surface scatters and emits this fraction of the light, the rest passes straight through"},
 }};

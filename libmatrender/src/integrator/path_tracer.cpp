@@ -79,7 +79,7 @@ glm::vec3 PathTracer::transmittance(const glm::vec3& origin, const glm::vec3& di
                                     uint32_t* rays) const {
   ++*rays;
   if (!has_transparency_) return glm::vec3(scene_.accel.occluded(origin, dir, distance) ? 0.0f : 1.0f);
-  // Through surfaces with transparency, each hit passes 1 - alpha, up to Cycles' limit of
+  // Through surfaces with transparency, each hit passes 1 - alpha, up to the limit of
   // transparent bounces; an opaque one stops the ray.
   const glm::vec3 target = origin + distance * dir;
   glm::vec3 from = origin;
@@ -88,7 +88,9 @@ glm::vec3 PathTracer::transmittance(const glm::vec3& origin, const glm::vec3& di
   for (int crossed = 0;; ++crossed) {
     const RayHit hit = scene_.accel.intersect(from, dir, remaining);
     if (!hit.hit()) return passed;
-    if (crossed >= settings_.max_transparent_bounces) return glm::vec3(0.0f);
+    // As for a path: the limit's count of surfaces are passed, and one more (Cycles keeps every
+    // limit one above its setting).
+    if (crossed > settings_.max_transparent_bounces) return glm::vec3(0.0f);
     const SurfacePoint sp = shade_surface(scene_, hit, -dir);
     const float coverage = glm::clamp(sp.inputs.scalar(MaterialParameter::Alpha), 0.0f, 1.0f);
     passed *= 1.0f - coverage;
@@ -113,6 +115,7 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
   int glossy_bounces = 0;
   int transmission_bounces = 0;
   int transparent_bounces = 0;
+  bool passed_transparent = false;  // the ray left its last surface through its transparency
 
   // `vertex` counts every surface met, transparent ones included, so each gets its own random
   // numbers.
@@ -150,8 +153,10 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
       break;
 
     const VertexDimensions dims(vertex);
-    if (vertex > 0) {
-      // Russian roulette, continuation probability min(1, sqrt(max throughput)) (Cycles 3.4).
+    // Russian roulette, continuation probability min(1, sqrt(max throughput)), after Cycles'
+    // minimum of one bounce (its min_bounce 0, kept one above) or, on a ray that last passed a
+    // transparent surface, one transparent bounce.
+    if ((passed_transparent ? transparent_bounces : bounce) > 1) {
       const float continue_probability = std::min(1.0f, std::sqrt(max_component(throughput)));
       if (!(sampler.get_2d(dims.roulette).x < continue_probability)) break;
       throughput /= continue_probability;
@@ -213,7 +218,8 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     if (!bsdf.sample(sampler.get_2d(dims.bsdf), &s)) break;
     throughput *= s.weight;
     if (!(max_component(throughput) > 0.0f)) break;
-    if (is_transparent(s.flags)) {
+    passed_transparent = is_transparent(s.flags);
+    if (passed_transparent) {
       // Straight on, as if the surface were not there: the ray keeps its direction and the
       // MIS pdf of the bounce that made it.
       ++transparent_bounces;
