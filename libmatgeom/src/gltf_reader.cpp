@@ -772,7 +772,8 @@ void read_transmission(const GltfFile& file, ImageTable& images, const tinygltf:
 // strength = normalTexture.scale, emission = emissiveFactor x emissiveTexture with
 // KHR_materials_emissive_strength's strength, IOR = KHR_materials_ior's (1.5 without it),
 // KHR_materials_clearcoat (read_clearcoat), KHR_materials_transmission (read_transmission);
-// specular and specular tint keep Blender's defaults. Occlusion and alpha have no MaterialDesc input yet.
+// alphaMode BLEND or MASK: Alpha = baseColorFactor[3] x baseColorTexture.A; specular and
+// specular tint keep Blender's defaults. Occlusion has no MaterialDesc input.
 MaterialDesc convert_material(const GltfFile& file, ImageTable& images, size_t index) {
   const tinygltf::Material& material = file.model.materials[index];
   const tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
@@ -787,6 +788,14 @@ MaterialDesc convert_material(const GltfFile& file, ImageTable& images, size_t i
                                    what + " baseColorFactor");
   }
   desc.set(P::BaseColor, base_color);
+  // alphaMode BLEND and MASK link Alpha to baseColorFactor[3] x the base texture's A; Blender
+  // 3.4's importer turns MASK's alphaCutoff into an EEVEE clip threshold that Cycles ignores,
+  // so MASK renders with the same fractional alpha as BLEND. OPAQUE leaves Alpha at 1.
+  const bool uses_alpha = material.alphaMode == "BLEND" || material.alphaMode == "MASK";
+  if (!uses_alpha && material.alphaMode != "OPAQUE")
+    fail(file.path, concat(what, ": alphaMode \"", material.alphaMode, "\" is not OPAQUE, MASK or BLEND"));
+  if (uses_alpha)
+    desc.set(P::Alpha, checked_factor(file, P::Alpha, pbr.baseColorFactor[3], what + " baseColorFactor alpha"));
   desc.set(P::Metallic, checked_factor(file, P::Metallic, pbr.metallicFactor, what + " metallicFactor"));
   desc.set(P::Roughness, checked_factor(file, P::Roughness, pbr.roughnessFactor, what + " roughnessFactor"));
   if (material.emissiveFactor.size() != 3) fail(file.path, what + ": emissiveFactor needs 3 numbers");
@@ -828,6 +837,7 @@ MaterialDesc convert_material(const GltfFile& file, ImageTable& images, size_t i
       resolve_texture(file, images, material.emissiveTexture.index, material.emissiveTexture.texCoord,
                       what + " emissiveTexture");
   if (base.image >= 0) desc.set_image(P::BaseColor, base.image);
+  if (base.image >= 0 && uses_alpha) desc.set_image(P::Alpha, base.image, gltf::kBaseColorAlphaChannel);
   if (emissive.image >= 0) desc.set_image(P::Emission, emissive.image);
   if (metallic_roughness.image >= 0) desc.set_metallic_roughness_image(metallic_roughness.image);
   desc.normal_image = normal.image;

@@ -230,6 +230,21 @@ tinygltf::Value::Object transmission_extension(const MaterialDesc& desc, Texture
   return extension;
 }
 
+// Opacity below 1 as alphaMode BLEND: its constant in baseColorFactor[3], its image (if any)
+// the base colour texture's alpha, the only place glTF keeps it.
+void write_opacity(const MaterialDesc& desc, const std::string& what, tinygltf::Material& material) {
+  using P = MaterialParameter;
+  const MaterialInput& opacity = desc[P::Alpha];
+  if (opacity.image < 0 && opacity.value.x == 1.0) return;
+  if (opacity.image >= 0 &&
+      (opacity.image != desc[P::BaseColor].image || opacity.channel != gltf::kBaseColorAlphaChannel))
+    throw std::invalid_argument("write_gltf: " + what +
+                                " takes its opacity from an image that is not the base colour's alpha, and glTF "
+                                "keeps opacity only there");
+  material.alphaMode = "BLEND";
+  material.pbrMetallicRoughness.baseColorFactor[3] = opacity.value.x;
+}
+
 // The inverse of read_gltf's mapping (docs/conventions.md: Blender's glTF importer).
 tinygltf::Material make_material(const MaterialDesc& desc, TextureTable& textures) {
   tinygltf::Material material;
@@ -242,6 +257,7 @@ tinygltf::Material make_material(const MaterialDesc& desc, TextureTable& texture
   pbr.roughnessFactor = desc.scalar(P::Roughness);
   const std::string what = "material " + desc.name;
   pbr.baseColorTexture.index = textures.texture(desc[P::BaseColor].image, desc.wrap, what);
+  write_opacity(desc, what, material);
   pbr.metallicRoughnessTexture.index = textures.metallic_roughness_texture(desc, what);
   material.normalTexture.index = textures.texture(desc.normal_image, desc.wrap, what);
   material.normalTexture.scale = desc.normal_strength;

@@ -270,10 +270,13 @@ std::string write_two_material_quad(const TempDir& dir, Container container) {
                                      {"roughnessFactor", 0.3},
                                      {"baseColorTexture", {{"index", 0}}}}},
                                    {"normalTexture", {{"index", 1}, {"scale", 0.7}}},
+                                   {"alphaMode", "BLEND"},
                                    {"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 0.4}}}}}},
                                   {{"name", "blue"},
+                                   {"alphaMode", "MASK"},
+                                   {"alphaCutoff", 0.3},
                                    {"pbrMetallicRoughness",
-                                    {{"baseColorFactor", {0.1, 0.2, 0.9, 1.0}},
+                                    {{"baseColorFactor", {0.1, 0.2, 0.9, 0.5}},
                                      {"metallicFactor", 0.0},
                                      {"roughnessFactor", 0.6},
                                      {"metallicRoughnessTexture", {{"index", 1}}}}},
@@ -348,6 +351,10 @@ TEST_CASE("glTF two-material quad: transforms, axes, uvs, parts, materials, imag
   // Blender's importer gives every glTF material glTF's IOR 1.5, not the node's 1.45.
   CHECK(red.scalar(P::Ior) == 1.5);
   CHECK(red.scalar(P::Transmission) == Approx(0.4));
+  // BLEND: opacity = baseColorFactor[3] x the base texture's alpha.
+  CHECK(red.scalar(P::Alpha) == 1.0);
+  CHECK(red[P::Alpha].image == red[P::BaseColor].image);
+  CHECK(red[P::Alpha].channel == 3);
   CHECK(red[P::Transmission].image == -1);
   CHECK(red[P::Clearcoat].image == -1);
   const matgeom::MaterialDesc& blue = asset.materials[1];
@@ -364,6 +371,9 @@ TEST_CASE("glTF two-material quad: transforms, axes, uvs, parts, materials, imag
   CHECK(blue.scalar(P::ClearcoatRoughness) == 0.0);
   CHECK(blue[P::ClearcoatRoughness].image == -1);
   CHECK(blue.scalar(P::Transmission) == 0.0);
+  // MASK as Blender 3.4 renders it in Cycles: the cutoff is ignored, the alpha kept.
+  CHECK(blue.scalar(P::Alpha) == Approx(0.5));
+  CHECK(blue[P::Alpha].image == -1);
   CHECK(blue[P::Transmission].image == -1);
   // One image used by two materials (and by the coat) is stored once.
   CHECK(blue[P::Roughness].image == red.normal_image);

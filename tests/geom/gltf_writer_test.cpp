@@ -74,6 +74,7 @@ ObjectAsset two_part_asset() {
   brass.set(P::Clearcoat, 0.75);
   brass.set_image(P::Clearcoat, 0, 0);
   brass.set(P::ClearcoatRoughness, 0.125);
+  brass.set(P::Alpha, 0.625);  // alphaMode BLEND, baseColorFactor[3]
   brass.set_image(P::ClearcoatRoughness, 1, 1);
   brass.wrap = TextureWrap::Clamp;
   asset.materials = {wood, brass};
@@ -113,6 +114,7 @@ void check_same_asset(const ObjectAsset& written, const ObjectAsset& read) {
     CHECK(b.color(P::Emission) == a.color(P::Emission));
     CHECK(b.scalar(P::EmissionStrength) == a.scalar(P::EmissionStrength));
     CHECK(b.scalar(P::Ior) == a.scalar(P::Ior));
+    CHECK(b.scalar(P::Alpha) == a.scalar(P::Alpha));
     CHECK(b.scalar(P::Transmission) == a.scalar(P::Transmission));
     CHECK(b[P::Transmission].channel == a[P::Transmission].channel);
     CHECK(b.scalar(P::Clearcoat) == a.scalar(P::Clearcoat));
@@ -171,6 +173,10 @@ TEST_CASE("write_gltf rejects what glTF cannot hold and leaves nothing behind", 
   coat_from_blue.materials[1].set_image(P::Clearcoat, 0, 2);
   CHECK_THROWS_WITH(write_gltf(coat_from_blue, dir.file("e.glb")),
                     Catch::Matchers::Contains("clearcoat reads image channel 2"));
+  // glTF keeps opacity only in the base colour's alpha.
+  ObjectAsset separate_opacity = asset;
+  separate_opacity.materials[0].set_image(P::Alpha, 1, 0);
+  CHECK_THROWS_WITH(write_gltf(separate_opacity, dir.file("f.glb")), Catch::Matchers::Contains("opacity"));
   ObjectAsset empty;
   CHECK_THROWS_AS(write_gltf(empty, dir.file("c.glb")), std::invalid_argument);
   CHECK_THROWS_AS(write_gltf(asset, dir.file("missing_dir/d.glb")), std::runtime_error);

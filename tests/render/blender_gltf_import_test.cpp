@@ -46,9 +46,11 @@ matgeom::ObjectAsset two_material_quad() {
   lacquer.set(P::ClearcoatRoughness, 0.2);
   lacquer.set(P::Ior, 1.33);
   lacquer.set(P::Transmission, 0.3);
+  lacquer.set(P::Alpha, 0.8);
   // Every input glTF can texture, from the one image.
   MaterialDesc textured("textured");
   textured.set_image(P::BaseColor, 0);
+  textured.set_image(P::Alpha, 0, 3);  // the base colour's alpha
   textured.set_metallic_roughness_image(0);
   textured.set(P::Emission, glm::dvec3(1.0));
   textured.set_image(P::Emission, 0);

@@ -185,6 +185,7 @@ struct Case {
   // Our Cycles-3.4 parity mode (RenderSettings::cycles_parity), which the clearcoat needs.
   bool cycles_parity = false;
   float transmission = 0.0f, ior = 1.45f, transmission_roughness = 0.0f;
+  float alpha = 1.0f;
 };
 
 }  // namespace
@@ -220,6 +221,9 @@ TEST_CASE("Renders agree with Blender 3.4 Cycles up to noise", "[render][blender
        glm::vec3(0.0f), 0.0f, 0.03f, false, 1.0f, 1.45f},
       {"half_glass_tinted_ior_2", {0.8f, 0.5f, 0.3f}, 0.0f, 0.15f, 0.5f, 0.5f, 48, 0.1f, 0.0f, 0.5f,
        glm::vec3(0.0f), 0.0f, 0.03f, false, 0.5f, 2.0f, 0.4f},
+      // Half coverage: the far side of the sphere shows through its front, lit from inside too.
+      {"alpha_0.4_glossy", {0.7f, 0.3f, 0.2f}, 0.0f, 0.2f, 0.5f, 0.0f, 48, 0.1f, 0.0f, 0.5f, glm::vec3(0.0f), 0.0f,
+       0.03f, false, 0.0f, 1.45f, 0.0f, 0.4f},
   };
   for (const Case& c : cases) {
     matrender::Material material;
@@ -236,6 +240,7 @@ TEST_CASE("Renders agree with Blender 3.4 Cycles up to noise", "[render][blender
     material.set(matrender::MaterialParameter::Transmission, c.transmission);
     material.set(matrender::MaterialParameter::Ior, c.ior);
     material.set(matrender::MaterialParameter::TransmissionRoughness, c.transmission_roughness);
+    material.set(matrender::MaterialParameter::Alpha, c.alpha);
     const shaders_ref::CyclesScene scene = paper_scene(material, c.rings, c.terminator_offset);
     std::vector<shaders_ref::CyclesRender> renders = {{kSamples, 1, "", 0.0}, {kSamples, 2, "", 0.0}};
     shaders_ref::render_with_cycles(scene, renders, 2, cycles_work_folder(c.name));

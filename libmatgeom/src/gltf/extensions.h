@@ -18,6 +18,9 @@ constexpr const char* kClearcoat = "KHR_materials_clearcoat";
 constexpr int kClearcoatChannel = 0;
 constexpr int kClearcoatRoughnessChannel = 1;
 
+// Where glTF keeps opacity (alphaMode BLEND or MASK): the base colour texture's alpha.
+constexpr int kBaseColorAlphaChannel = 3;
+
 // Glass: transmissionFactor (default 0) x transmissionTexture.R.
 constexpr const char* kTransmission = "KHR_materials_transmission";
 constexpr int kTransmissionChannel = 0;
