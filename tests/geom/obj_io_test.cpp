@@ -212,6 +212,66 @@ TEST_CASE("OBJ reader maps MTL statements as Blender's importer does", "[geom]")
   }
 }
 
+TEST_CASE("OBJ reader maps Ni, d, Ke, Tf, Pc, Pcr and Ps as Blender 3.4's importer does", "[geom]") {
+  // The expected values are those Blender 3.4.1's OBJ importer (File > Import > Wavefront, the
+  // C++ one) put into the Principled inputs for these two materials: Pc is the Clearcoat input
+  // itself (no factor 0.25 in 3.4), Tr is ignored (d, absent, keeps alpha 1), Tf's mean is the
+  // transmission.
+  TempDir dir;
+  write_text(dir.file("pbr.obj"), "mtllib pbr.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                                  "usemtl lacquer\nf 1 2 3\nusemtl glass\nf 3 2 1\nusemtl bright\nf 1 3 2\n");
+  write_text(dir.file("pbr.mtl"),
+             "newmtl lacquer\nKd 0.5 0.4 0.3\nNs 250\nNi 1.33\nd 0.6\nKe 0.2 0.1 0.05\nPc 0.8\nPcr 0.2\n"
+             "Ps 0.7\nillum 2\n"
+             "newmtl glass\nKd 0.5 0.4 0.3\nNi 1.6\nTf 0.9 0.9 0.9\nTr 0.25\nillum 7\n"
+             "newmtl bright\nKe 4 2 1\n");
+  const ObjectAsset asset = read_obj(dir.file("pbr.obj"));
+  REQUIRE(asset.materials.size() == 3);
+  // Ke beyond 1 (Blender: that colour at strength 1): the same radiance as colour x strength.
+  check_color(asset.materials[2].color(P::Emission), {1.0, 0.5, 0.25});
+  CHECK(asset.materials[2].scalar(P::EmissionStrength) == 4.0);
+  const MaterialDesc& lacquer = asset.materials[0];
+  CHECK(lacquer.scalar(P::Specular) == 1.0);
+  CHECK(lacquer.scalar(P::Roughness) == Approx(0.5));
+  CHECK(lacquer.scalar(P::Ior) == Approx(1.33));
+  CHECK(lacquer.scalar(P::Alpha) == Approx(0.6));
+  check_color(lacquer.color(P::Emission), {0.2, 0.1, 0.05});
+  CHECK(lacquer.scalar(P::EmissionStrength) == 1.0);
+  CHECK(lacquer.scalar(P::Clearcoat) == Approx(0.8));
+  CHECK(lacquer.scalar(P::ClearcoatRoughness) == Approx(0.2));
+  CHECK(lacquer.scalar(P::Sheen) == Approx(0.7));
+  CHECK(lacquer.scalar(P::Transmission) == 0.0);
+  const MaterialDesc& glass = asset.materials[1];
+  CHECK(glass.scalar(P::Metallic) == 1.0);
+  CHECK(glass.scalar(P::Specular) == 0.0);
+  CHECK(glass.scalar(P::Roughness) == 1.0);
+  CHECK(glass.scalar(P::Ior) == Approx(1.6));
+  CHECK(glass.scalar(P::Transmission) == Approx(0.9));
+  CHECK(glass.scalar(P::Alpha) == 1.0);
+  check_color(glass.color(P::Emission), glm::dvec3(0.0));
+  CHECK(glass.scalar(P::Clearcoat) == 0.0);
+  CHECK(glass.scalar(P::ClearcoatRoughness) == Approx(0.03));
+  CHECK(glass.scalar(P::Sheen) == 0.0);
+}
+
+TEST_CASE("OBJ reader reads map_Ke as the emission and map_d's alpha as the opacity", "[geom]") {
+  TempDir dir;
+  const std::vector<uint8_t> rgba = {255, 128, 0, 64, 0, 0, 255, 255};
+  write_bytes(dir.file("glow.png"), encode_png(2, 1, 4, rgba));
+  write_text(dir.file("maps.obj"), "mtllib maps.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n"
+                                   "usemtl maps\nf 1/1 2/2 3/3\n");
+  write_text(dir.file("maps.mtl"), "newmtl maps\nKe 0.5 0.5 0.5\nmap_Ke glow.png\nmap_d glow.png\n");
+  const ObjectAsset asset = read_obj(dir.file("maps.obj"));
+  REQUIRE(asset.images.size() == 1);  // decoded once for both
+  const MaterialDesc& maps = asset.materials[0];
+  CHECK(maps[P::Emission].image == 0);
+  check_color(maps.color(P::Emission), glm::dvec3(1.0));  // the map replaces Ke
+  CHECK(maps.scalar(P::EmissionStrength) == 1.0);
+  CHECK(maps[P::Alpha].image == 0);
+  CHECK(maps[P::Alpha].channel == 3);  // Blender links the image's Alpha output
+  CHECK(maps.scalar(P::Alpha) == 1.0);
+}
+
 TEST_CASE("OBJ reader decodes map_Kd, packs map_Pr into G and reads map_Bump and norm", "[geom]") {
   TempDir dir;
   const std::vector<uint8_t> colors = {255, 0, 0, 0, 255, 0, 0, 0, 255, 10, 20, 30};
@@ -332,6 +392,16 @@ ObjectAsset round_trip_asset() {
   blue.set(P::Specular, 0.5);
   blue.normal_image = 2;
   blue.normal_strength = 0.75;
+  // The inputs beyond the classic statements: Ni, d, Ke (beyond 1: colour x strength), Tf, Pc,
+  // Pcr, Ps.
+  blue.set(P::Ior, 1.33);
+  blue.set(P::Alpha, 0.5);
+  blue.set(P::Emission, glm::dvec3(1.0, 0.5, 0.25));
+  blue.set(P::EmissionStrength, 2.0);
+  blue.set(P::Transmission, 0.25);
+  blue.set(P::Clearcoat, 0.75);
+  blue.set(P::ClearcoatRoughness, 0.125);
+  blue.set(P::Sheen, 0.5);
   asset.materials = {red, blue};
   return asset;
 }
@@ -372,6 +442,13 @@ TEST_CASE("OBJ written by write_obj reads back as the same asset", "[geom]") {
     CHECK(actual.name == expected.name);
     check_color(actual.color(P::BaseColor), expected.color(P::BaseColor));
     CHECK(actual.scalar(P::Roughness) == Approx(expected.scalar(P::Roughness)));
+    for (const P p : {P::Ior, P::Alpha, P::Transmission, P::Clearcoat, P::Sheen})
+      CHECK(actual.scalar(p) == Approx(expected.scalar(p)));
+    if (expected.scalar(P::Clearcoat) != 0.0)
+      CHECK(actual.scalar(P::ClearcoatRoughness) == Approx(expected.scalar(P::ClearcoatRoughness)));
+    // MTL holds only the emitted radiance.
+    check_color(actual.color(P::Emission) * actual.scalar(P::EmissionStrength),
+                expected.color(P::Emission) * expected.scalar(P::EmissionStrength));
     CHECK(actual.scalar(P::Metallic) == Approx(expected.scalar(P::Metallic)));
     CHECK(actual.scalar(P::Specular) == Approx(expected.scalar(P::Specular)));
     CHECK(actual.normal_strength == Approx(expected.normal_strength));

@@ -122,22 +122,17 @@ TEST_CASE("Reference quadrature reproduces closed forms", "[render]") {
     CHECK(a.sheen.x == Approx(closed_form).epsilon(1e-9));
     CHECK(a.diffuse.x == 0.0);
   }
-  SECTION("GGX normalisation: integral of D(m) (n.m) dm = 1") {
+  SECTION("GGX and GTR1 normalisation: integral of D(m) (n.m) dm = 1") {
     for (double roughness : roughness_values) {
       const double alpha = shaders_ref::ggx_alpha(roughness);
-      const double integral = shaders_ref::integrate_over_microfacet_normals(
-          [&](const glm::dvec3& m) { return shaders_ref::ggx_ndf(m, alpha) * m.z; }, alpha);
+      const auto integral_of = [alpha](double (*ndf)(const glm::dvec3&, double)) {
+        return shaders_ref::integrate_over_microfacet_normals(
+            [&](const glm::dvec3& m) { return ndf(m, alpha) * m.z; }, alpha);
+      };
       CAPTURE(roughness);
-      CHECK(integral == Approx(1.0).epsilon(1e-9));
-    }
-  }
-  SECTION("GTR1 normalisation: integral of D(m) (n.m) dm = 1") {
-    for (double roughness : roughness_values) {
-      const double a = shaders_ref::ggx_alpha(roughness);
-      const double integral = shaders_ref::integrate_over_microfacet_normals(
-          [&](const glm::dvec3& m) { return shaders_ref::gtr1_ndf(m, a) * m.z; }, a);
-      CAPTURE(roughness);
-      CHECK(integral == Approx(1.0).epsilon(1e-8));
+      CHECK(integral_of(shaders_ref::ggx_ndf) == Approx(1.0).epsilon(1e-9));
+      // GTR1's log-uniform tail is slower to converge in GGX's stretched angle.
+      CHECK(integral_of(shaders_ref::gtr1_ndf) == Approx(1.0).epsilon(1e-8));
     }
   }
   SECTION("Clearcoat albedo: half-vector and spherical quadratures agree") {

@@ -172,6 +172,16 @@ Agreement compare(const std::vector<float>& ours0, const std::vector<float>& our
   return a;
 }
 
+// Both renderers with seeds 1 and 2, compared; Blender's files go to cycles_work_folder(name).
+Agreement agreement_with_cycles(const shaders_ref::CyclesScene& scene, const std::string& name,
+                                bool cycles_parity = false) {
+  std::vector<shaders_ref::CyclesRender> renders = {{kSamples, 1, "", 0.0}, {kSamples, 2, "", 0.0}};
+  shaders_ref::render_with_cycles(scene, renders, 2, cycles_work_folder(name));
+  return compare(render_ours(scene, 1, cycles_parity), render_ours(scene, 2, cycles_parity),
+                 shaders_ref::read_rgb_exr(renders[0].exr_path, kResolution, kResolution),
+                 shaders_ref::read_rgb_exr(renders[1].exr_path, kResolution, kResolution));
+}
+
 struct Case {
   std::string name;
   glm::vec3 base_color;
@@ -241,13 +251,8 @@ TEST_CASE("Renders agree with Blender 3.4 Cycles up to noise", "[render][blender
     material.set(matrender::MaterialParameter::Ior, c.ior);
     material.set(matrender::MaterialParameter::TransmissionRoughness, c.transmission_roughness);
     material.set(matrender::MaterialParameter::Alpha, c.alpha);
-    const shaders_ref::CyclesScene scene = paper_scene(material, c.rings, c.terminator_offset);
-    std::vector<shaders_ref::CyclesRender> renders = {{kSamples, 1, "", 0.0}, {kSamples, 2, "", 0.0}};
-    shaders_ref::render_with_cycles(scene, renders, 2, cycles_work_folder(c.name));
     const Agreement a =
-        compare(render_ours(scene, 1, c.cycles_parity), render_ours(scene, 2, c.cycles_parity),
-                shaders_ref::read_rgb_exr(renders[0].exr_path, kResolution, kResolution),
-                shaders_ref::read_rgb_exr(renders[1].exr_path, kResolution, kResolution));
+        agreement_with_cycles(paper_scene(material, c.rings, c.terminator_offset), c.name, c.cycles_parity);
     INFO(c.name << ": mean squared difference " << a.excess.mean + a.noise << " against noise " << a.noise
                 << " (excess " << a.excess.mean << " +- " << a.excess.standard_error << "); mean pixel ours "
                 << a.mean_ours << ", Cycles " << a.mean_cycles << " (difference +- " << a.difference.standard_error
@@ -269,12 +274,7 @@ TEST_CASE("Without parity mode a glossy clearcoat is darker than Cycles' biased 
   material.set(matrender::MaterialParameter::Roughness, 0.6f);
   material.set(matrender::MaterialParameter::Clearcoat, 1.0f);
   material.set(matrender::MaterialParameter::ClearcoatRoughness, 0.05f);
-  const shaders_ref::CyclesScene scene = paper_scene(material, 48, 0.1f);
-  std::vector<shaders_ref::CyclesRender> renders = {{kSamples, 1, "", 0.0}, {kSamples, 2, "", 0.0}};
-  shaders_ref::render_with_cycles(scene, renders, 2, cycles_work_folder("clearcoat_bias"));
-  const Agreement a = compare(render_ours(scene, 1), render_ours(scene, 2),
-                              shaders_ref::read_rgb_exr(renders[0].exr_path, kResolution, kResolution),
-                              shaders_ref::read_rgb_exr(renders[1].exr_path, kResolution, kResolution));
+  const Agreement a = agreement_with_cycles(paper_scene(material, 48, 0.1f), "clearcoat_bias");
   INFO("mean pixel ours " << a.mean_ours << ", Cycles " << a.mean_cycles << " (difference +- "
                           << a.difference.standard_error << ")");
   CHECK(a.difference.mean < -4.0 * a.difference.standard_error);
@@ -292,11 +292,7 @@ TEST_CASE("The inside of a thin-walled open vessel agrees with Cycles", "[render
   grid.center = bound.center;
   grid.radius = 0.8;
   scene.camera = matrender::grid_view(grid, 0, 16, kResolution, kResolution, 0.25);
-  std::vector<shaders_ref::CyclesRender> renders = {{kSamples, 1, "", 0.0}, {kSamples, 2, "", 0.0}};
-  shaders_ref::render_with_cycles(scene, renders, 2, cycles_work_folder("open_vessel"));
-  const Agreement a = compare(render_ours(scene, 1), render_ours(scene, 2),
-                              shaders_ref::read_rgb_exr(renders[0].exr_path, kResolution, kResolution),
-                              shaders_ref::read_rgb_exr(renders[1].exr_path, kResolution, kResolution));
+  const Agreement a = agreement_with_cycles(scene, "open_vessel");
   INFO("mean pixel ours " << a.mean_ours << ", Cycles " << a.mean_cycles << " (difference +- "
                           << a.difference.standard_error << "); excess " << a.excess.mean << " +- "
                           << a.excess.standard_error);

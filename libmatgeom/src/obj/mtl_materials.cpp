@@ -15,12 +15,12 @@
 
 // Materials: MTL to the Principled BSDF as Blender's OBJ importer builds it
 // (io/wavefront_obj/importer/obj_import_mtl.cc, set_bsdf_socket_values and add_image_textures).
-// Blender 3.4 reads the classic MTL statements; the PBR extension (Pr, Pm, map_Pr, map_Pm) is
+// Blender 3.4 reads the classic MTL statements and Ni, d, Ke, Tf, Pc, Pcr, Ps, map_Ke and map_d
+// (checked by importing a file into Blender 3.4.1); the PBR extension (Pr, Pm, map_Pr, map_Pm) is
 // read as Blender 3.5 added it: its values, when given, replace the ones derived from Ns and Ka.
-// Ignored, their inputs not being in the parameter table yet: Ke/map_Ke, d/map_d, Kt, map_Ns,
-// refl, disp, sheen, clearcoat, anisotropy; also ignored: Ni (IOR changes no image until a lobe
-// transmits), map_Ks, and the texture options -o, -s (Blender adds a Mapping node for them) and
-// -type. Blender ignores -clamp, so textures repeat.
+// Ignored: Tr (Blender ignores it), map_Ns, refl, disp, anisotropy, map_Ks, and the texture
+// options -o, -s (Blender adds a Mapping node for them) and -type. Blender ignores -clamp, so
+// textures repeat. tinyobjloader reads Kt as Tf; Blender may not.
 
 namespace matgeom::obj {
 namespace {
@@ -30,10 +30,18 @@ namespace fs = std::filesystem;
 struct IllumFlags {
   bool highlight = false;
   bool reflection = false;
+  bool transparency = false;
+  bool glass = false;
 };
 
-// Blender: illum 2 turns highlights on, 3 to 8 turn reflection on.
-IllumFlags illum_flags(int illum) { return {illum == 2, illum >= 3 && illum <= 8}; }
+// Blender: illum 2 turns highlights on, 3 to 8 turn reflection on, 4, 6, 7 and 9 transparency,
+// 4 and 9 glass.
+IllumFlags illum_flags(int illum) {
+  return {illum == 2, illum >= 3 && illum <= 8, illum == 4 || illum == 6 || illum == 7 || illum == 9,
+          illum == 4 || illum == 9};
+}
+
+bool given3(const tinyobj::real_t* values) { return values[0] >= 0.0f && values[1] >= 0.0f && values[2] >= 0.0f; }
 
 // Blender passes MTL values through; here they are clamped to the parameter's range (a base
 // colour above 1 would reflect more light than arrives).
@@ -68,7 +76,10 @@ class MaterialConverter {
                         finite3(material.ambient) && std::isfinite(material.shininess) &&
                         std::isfinite(material.roughness) && std::isfinite(material.metallic) &&
                         std::isfinite(material.bump_texopt.bump_multiplier) &&
-                        std::isfinite(material.normal_texopt.bump_multiplier);
+                        std::isfinite(material.normal_texopt.bump_multiplier) && std::isfinite(material.ior) &&
+                        std::isfinite(material.dissolve) && finite3(material.emission) &&
+                        finite3(material.transmittance) && std::isfinite(material.clearcoat_thickness) &&
+                        std::isfinite(material.clearcoat_roughness) && std::isfinite(material.sheen);
     if (!finite) fail(file_.path, what + ": non-finite value");
   }
 
@@ -102,6 +113,30 @@ class MaterialConverter {
     } else {
       desc.set(P::Metallic, illum.reflection ? (ka >= 0.0 ? clamped(P::Metallic, ka) : 1.0) : 0.0);
     }
+    // IOR: Ni; without it 1.5 for glass, 1 for other transparency, else the node's default.
+    if (material.ior >= 0.0f) {
+      desc.set(P::Ior, clamped(P::Ior, material.ior));
+    } else if (illum.glass || illum.transparency) {
+      desc.set(P::Ior, illum.glass ? 1.5 : 1.0);
+    }
+    // Opacity: d (Blender's Alpha); transparency without d keeps 1.
+    if (material.dissolve >= 0.0f) desc.set(P::Alpha, clamped(P::Alpha, material.dissolve));
+    // Emission: Ke. Blender takes it as the colour at strength 1 whatever its size; the table
+    // keeps colours in [0, 1], so a brighter Ke becomes its largest component as the strength
+    // and the rest as the colour: the same radiance.
+    if (given3(material.emission)) {
+      const glm::dvec3 ke(material.emission[0], material.emission[1], material.emission[2]);
+      const double strength = std::max({ke.r, ke.g, ke.b, 1.0});
+      desc.set(P::Emission, ke / strength);
+      desc.set(P::EmissionStrength, clamped(P::EmissionStrength, strength));
+    }
+    // Transmission: the mean of Tf.
+    if (given3(material.transmittance)) desc.set(P::Transmission, clamped(P::Transmission, mean3(material.transmittance)));
+    // Blender 3.4 has no 0.25 factor on Pc: it is the Clearcoat input itself.
+    if (material.clearcoat_thickness >= 0.0f) desc.set(P::Clearcoat, clamped(P::Clearcoat, material.clearcoat_thickness));
+    if (material.clearcoat_roughness >= 0.0f)
+      desc.set(P::ClearcoatRoughness, clamped(P::ClearcoatRoughness, material.clearcoat_roughness));
+    if (material.sheen >= 0.0f) desc.set(P::Sheen, clamped(P::Sheen, material.sheen));
   }
 
   // A connected Image Texture replaces the socket value in Blender, so an input with a map has
@@ -112,6 +147,18 @@ class MaterialConverter {
       desc.set_image(MaterialParameter::BaseColor,
                      textures_.color_texture(source(material.diffuse_texname, index, what + " map_Kd")));
       desc.set(MaterialParameter::BaseColor, 1.0);
+    }
+    // map_Ke: the emission colour, at strength 1.
+    if (!material.emissive_texname.empty()) {
+      desc.set_image(MaterialParameter::Emission,
+                     textures_.color_texture(source(material.emissive_texname, index, what + " map_Ke")));
+      desc.set(MaterialParameter::Emission, 1.0).set(MaterialParameter::EmissionStrength, 1.0);
+    }
+    // map_d: Blender links the image's Alpha output (1 for an image without alpha).
+    if (!material.alpha_texname.empty()) {
+      desc.set_image(MaterialParameter::Alpha,
+                     textures_.color_texture(source(material.alpha_texname, index, what + " map_d")), 3);
+      desc.set(MaterialParameter::Alpha, 1.0);
     }
     set_metallic_roughness_texture(material, index, what, desc);
     set_normal_texture(material, index, what, desc);

@@ -98,8 +98,10 @@ constexpr size_t kMaxPolygonCorners = 10000;
 // obj_import_file_reader.cc) marks them -1 instead, and its importer then picks defaults that
 // depend on illum. Starting every material with these lines makes tinyobjloader report the same
 // markers (a value the file gives comes later and replaces its marker).
+// The d marker also keeps tinyobjloader from reading Tr as 1 - d: Blender 3.4 ignores Tr.
 constexpr const char* kNotGivenMarkers =
-    "Ns -1\nKa -1 -1 -1\nKd -1 -1 -1\nKs -1 -1 -1\nPr -1\nPm -1\n";
+    "Ns -1\nKa -1 -1 -1\nKd -1 -1 -1\nKs -1 -1 -1\nPr -1\nPm -1\nNi -1\nd -1\nKe -1 -1 -1\nTf -1 -1 -1\n"
+    "Pc -1\nPcr -1\nPs -1\n";
 
 }  // namespace
 

@@ -160,6 +160,17 @@ std::string mtl_text(const std::vector<NamedMaterial>& materials) {
     text += metallic > 0.0 ? "illum 3\n" : "illum 2\n";
     text += "Pr " + number(roughness) + "\n";
     text += "Pm " + number(metallic) + "\n";
+    // The other inputs Blender 3.4's importer reads, where they differ from its defaults.
+    text += "Ni " + number(desc.scalar(P::Ior)) + "\n";
+    if (desc.scalar(P::Alpha) != 1.0) text += "d " + number(desc.scalar(P::Alpha)) + "\n";
+    const glm::dvec3 radiance = desc.color(P::Emission) * desc.scalar(P::EmissionStrength);
+    if (radiance != glm::dvec3(0.0)) text += "Ke " + triple(radiance) + "\n";
+    if (desc.scalar(P::Transmission) != 0.0) text += "Tf " + triple(glm::dvec3(desc.scalar(P::Transmission))) + "\n";
+    if (desc.scalar(P::Clearcoat) != 0.0) {
+      text += "Pc " + number(desc.scalar(P::Clearcoat)) + "\n";
+      text += "Pcr " + number(desc.scalar(P::ClearcoatRoughness)) + "\n";
+    }
+    if (desc.scalar(P::Sheen) != 0.0) text += "Ps " + number(desc.scalar(P::Sheen)) + "\n";
     const MaterialMaps& maps = material.maps;
     if (!maps.base_color.empty()) text += "map_Kd " + maps.base_color + "\n";
     if (!maps.roughness.empty()) text += "map_Pr " + maps.roughness + "\n";
