@@ -1,10 +1,12 @@
 // Direct lighting of a Lambertian plane against closed forms: the rectangle's irradiance from
-// Lambert's polygon formula, and spot/point lamps from I a(w) cos / d^2 with Cycles' spot factor.
+// Lambert's polygon formula, and spot/point lamps from I a(w) cos / d^2 with Cycles' spot factor;
+// and what the camera sees of an area lamp made visible to it.
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <vector>
 
+#include "matgeom/camera_grid.h"
 #include "matrender/camera.h"
 #include "matrender/render.h"
 #include "matrender/scene.h"
@@ -137,4 +139,35 @@ TEST_CASE("A point lamp's intensity is P / (4 pi) per steradian", "[render]") {
   FrameBuffers frame;
   render(scene, camera_above(target), settings, frame);
   CHECK(test_scenes::channel_statistics(frame, 0).mean == Approx(expected).epsilon(2e-3));
+}
+
+TEST_CASE("An area lamp visible to the camera shows its radiance P / (4 a b), only then and only its front", "[render]") {
+  // Nothing but the lamp in the scene, facing the camera (lamps emit down their -Z), filling the
+  // view: every sample meets it, and camera rays take its radiance whole.
+  RectLight lamp;
+  lamp.light_to_world = matgeom::look_at_camera_to_world({0.0, 0.0, 1.0}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0});
+  lamp.size_x = 2.0;
+  lamp.size_y = 1.0;
+  lamp.power = 40.0;
+  lamp.color = glm::dvec3(1.0, 0.5, 0.25);
+  const double radiance = lamp.power / (4.0 * lamp.size_x * lamp.size_y);
+  struct View {
+    bool visible;
+    glm::dvec3 eye;
+    double expected;  // times the colour
+  };
+  for (const View view : {View{true, {0.0, 0.0, 0.0}, radiance}, View{false, {0.0, 0.0, 0.0}, 0.0},
+                          View{true, {0.0, 0.0, 2.0}, 0.0}}) {  // from behind: its back emits nothing
+    lamp.visible_to_camera = view.visible;
+    Scene scene;
+    scene.add_light(lamp);
+    RenderSettings settings;
+    settings.samples_per_pixel = 4;
+    settings.aovs = 0;
+    FrameBuffers frame;
+    render(scene, Camera::look_at(view.eye, {0.0, 0.0, 1.0}, {0, 1, 0}, 0.2, 6, 6), settings, frame);
+    CAPTURE(view.visible, view.eye.z);
+    for (size_t i = 0; i < frame.color.size(); ++i)
+      CHECK(frame.color[i] == Approx(view.expected * lamp.color[static_cast<int>(i % 3)]).epsilon(1e-6).margin(1e-9));
+  }
 }

@@ -1,6 +1,7 @@
 #pragma once
 // Lamps with Blender 3.4 Cycles power conventions (docs/conventions.md, "Lamps").
-// All lamps are invisible to camera rays and never occlude.
+// Lamps never occlude; camera rays see only area lamps made visible to them (Blender's default:
+// none).
 #include <variant>
 
 #include <glm/glm.hpp>
@@ -14,6 +15,8 @@ struct RectLight {
   double size_y = 1.0;
   double power = 10.0;  // Blender watts
   glm::dvec3 color{1.0};
+  // Blender's Object > Visibility > Camera: the camera sees the lamp's emitting side.
+  bool visible_to_camera = false;
 };
 
 // Radius-0 point lamp: intensity I = power * color / (4 pi) W/sr.

@@ -65,11 +65,13 @@ PathTracer::PathTracer(const SceneData& scene, const LightSampler& lights, const
 }
 
 glm::vec3 PathTracer::lamps_hit(const glm::vec3& origin, const glm::vec3& dir, float t_max,
-                                float bsdf_pdf, bool bsdf_delta) const {
+                                float bsdf_pdf, bool bsdf_delta, bool camera_ray) const {
   glm::vec3 sum(0.0f);
   lights_.for_each_area_hit(origin, dir, t_max, [&](const PreparedRectLight& lamp, float t) {
-    const float weight =
-        bsdf_delta ? 1.0f : power_heuristic(bsdf_pdf, lights_.selection_pdf() * lamp.pdf(origin, dir, t));
+    if (camera_ray && !lamp.visible_to_camera()) return;
+    const float weight = bsdf_delta || camera_ray
+                             ? 1.0f
+                             : power_heuristic(bsdf_pdf, lights_.selection_pdf() * lamp.pdf(origin, dir, t));
     sum += weight * lamp.radiance();
   });
   return sum;
@@ -124,9 +126,11 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     ++result.rays;
     // Still the camera's ray: it has passed only through transparent surfaces.
     const bool camera_ray = bounce == 0;
-    // Lamps are invisible to camera rays; later rays see them, weighted against NEE.
-    if (!camera_ray && lights_.has_area_lights())
-      result.radiance += throughput * lamps_hit(origin, dir, hit.hit() ? hit.t : kInfinity, bsdf_pdf, bsdf_delta);
+    // Later rays see the lamps, weighted against NEE; camera rays only those visible to them,
+    // whole (no light sample competes).
+    if (lights_.has_area_lights())
+      result.radiance += throughput * lamps_hit(origin, dir, hit.hit() ? hit.t : kInfinity, bsdf_pdf, bsdf_delta,
+                                                camera_ray);
     if (!hit.hit()) {
       if (!camera_ray || !settings_.transparent_background)
         result.radiance += throughput * lights_.escaped_radiance(dir, bsdf_pdf, bsdf_delta);

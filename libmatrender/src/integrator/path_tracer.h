@@ -50,7 +50,7 @@ class PathTracer {
 
   // MIS-weighted radiance of the area lamps in front of the segment [origin, origin + t_max dir].
   glm::vec3 lamps_hit(const glm::vec3& origin, const glm::vec3& dir, float t_max, float bsdf_pdf,
-                      bool bsdf_delta) const;
+                      bool bsdf_delta, bool camera_ray) const;
 
   const SceneData& scene_;
   const LightSampler& lights_;

@@ -26,6 +26,7 @@ PreparedRectLight::PreparedRectLight(const RectLight& light) {
   corners_ = {rect_.corner, rect_.corner + edge_x, rect_.corner + edge_x + edge_y, rect_.corner + edge_y};
   area_ = static_cast<float>(light.size_x * light.size_y);
   radiance_ = glm::vec3(light.power * light.color / (4.0 * light.size_x * light.size_y));
+  visible_to_camera_ = light.visible_to_camera;
 }
 
 bool PreparedRectLight::sees_emitting_side(const glm::vec3& p) const {

@@ -28,6 +28,7 @@ class PreparedRectLight {
   // at distance t.
   float pdf(const glm::vec3& p, const glm::vec3& wi, float t) const;
   glm::vec3 radiance() const { return radiance_; }
+  bool visible_to_camera() const { return visible_to_camera_; }
   // The lamp's rectangle; its z is the lamp's +Z, the side that does not emit.
   const Rectangle3& rectangle() const { return rect_; }
   glm::vec3 center() const { return center_; }
@@ -41,6 +42,7 @@ class PreparedRectLight {
   std::array<glm::vec3, 4> corners_{};
   float area_ = 0.0f;
   glm::vec3 radiance_{0.0f};
+  bool visible_to_camera_ = false;
 };
 
 }  // namespace matrender

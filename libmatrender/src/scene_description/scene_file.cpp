@@ -314,7 +314,7 @@ glm::dvec3 read_target(const Node& node, const glm::dvec3& position) {
 }
 
 Light read_area_light(const Node& node) {
-  node.expect_keys({"type", "position", "look_at", "up", "size", "power", "color"});
+  node.expect_keys({"type", "position", "look_at", "up", "size", "power", "color", "visible_to_camera"});
   RectLight light;
   const glm::dvec3 position = read_vec3(node.required("position"));
   const glm::dvec3 target = read_target(node, position);
@@ -335,6 +335,7 @@ Light read_area_light(const Node& node) {
   }
   light.power = node.required("power").non_negative();
   if (auto color = node.find("color")) light.color = read_color(*color);
+  if (auto visible = node.find("visible_to_camera")) light.visible_to_camera = visible->boolean();
   return light;
 }
 
