@@ -762,14 +762,20 @@ TEST_CASE("eval and sample stay finite at extreme inputs", "[render]") {
           for (DiffuseModel model : {DiffuseModel::Principled, DiffuseModel::Lambert})
             for (float cos_o : cos_values) {
               // The clearcoat follows the specular and roughness values, with Cycles' estimator
-              // for one diffuse model.
-              const PrincipledInputs in =
+              // for one diffuse model; the glass weighs 1 - specular, with an index from water to
+              // past diamond, left through the back face for the Lambert model (total internal
+              // reflection at grazing); the opacity is 1 - specular / 2.
+              PrincipledInputs in =
                   with_clearcoat(material(base, metallic, roughness, specular, 0.5f, model), specular, roughness);
+              in.set(MaterialParameter::Transmission, 1.0f - specular);
+              in.set(MaterialParameter::Ior, 1.0f + 2.0f * metallic + 0.33f * specular);
+              in.set(MaterialParameter::Alpha, 1.0f - 0.5f * specular);
+              const bool lambert = model == DiffuseModel::Lambert;
               const glm::vec3 wo = direction_with_cosine(cos_o);
               const LobeMixture bsdf = principled_bsdf(
-                  in, wo, model == DiffuseModel::Lambert ? ClearcoatEstimator::Cycles34 : ClearcoatEstimator::Integral);
+                  in, wo, lambert ? ClearcoatEstimator::Cycles34 : ClearcoatEstimator::Integral, !lambert);
               INFO("roughness " << roughness << ", metallic " << metallic << ", specular "
-                                << specular << ", cos_o " << cos_o);
+                                << specular << ", cos_o " << cos_o << (lambert ? ", leaving glass" : ""));
               std::vector<glm::vec3> directions = {direction_with_cosine(1.0f),
                                                    direction_with_cosine(1e-6f),
                                                    direction_with_cosine(0.0f),
