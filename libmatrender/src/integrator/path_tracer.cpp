@@ -128,7 +128,7 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     const bool camera_ray = bounce == 0;
     // Later rays see the lamps, weighted against NEE; camera rays only those visible to them,
     // whole (no light sample competes).
-    if (lights_.has_area_lights())
+    if (lights_.has_area_lights() && (!camera_ray || lights_.has_camera_visible_lamps()))
       result.radiance += throughput * lamps_hit(origin, dir, hit.hit() ? hit.t : kInfinity, bsdf_pdf, bsdf_delta,
                                                 camera_ray);
     if (!hit.hit()) {

@@ -22,6 +22,7 @@ LightSampler::LightSampler(const std::vector<Light>& lights, const glm::vec3& ba
   const std::vector<PreparedRectLight> rects = prepare_rect_lights(lights);
   area_hits_ = RectLightHits(rects);
   lights_.assign(rects.begin(), rects.end());
+  for (const PreparedRectLight& rect : rects) camera_visible_lamps_ = camera_visible_lamps_ || rect.visible_to_camera();
   for (const Light& light : lights) {
     std::visit(
         [this](const auto& l) {

@@ -43,6 +43,9 @@ class LightSampler {
   std::optional<LightSample> sample(const glm::vec3& p, const ReceivingDirections& receiving, glm::vec2 u) const;
 
   bool has_area_lights() const { return !area_hits_.empty(); }
+  // Some area lamp is visible to camera rays (most scenes have none, and their camera rays then
+  // look for no lamp).
+  bool has_camera_visible_lamps() const { return camera_visible_lamps_; }
   // Calls visit(area_light, t) for each area light whose emitting side the ray meets at a
   // distance t in (0, t_max), in order.
   template <class Visit>
@@ -61,6 +64,7 @@ class LightSampler {
   size_t sampled_count_ = 0;
   std::vector<size_t> infinite_;  // indices of the infinite lights
   RectLightHits area_hits_;       // over lights(0 .. area count - 1)
+  bool camera_visible_lamps_ = false;
 };
 
 }  // namespace matrender
