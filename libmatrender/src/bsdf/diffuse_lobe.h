@@ -9,6 +9,7 @@
 #include "bsdf/lobe_sample.h"
 #include "bsdf/principled_diffuse.h"
 #include "matrender/material.h"
+#include "util/channel_average.h"
 
 namespace matrender {
 
@@ -27,7 +28,7 @@ class DiffuseLobe {
         bump_shadowing_(smooth_normal != glm::vec3(0.0f, 0.0f, 1.0f)) {}
 
   static constexpr BxDFFlags flags() { return BxDFFlags::DiffuseReflection; }
-  float sample_weight() const { return (weight_.x + weight_.y + weight_.z) / 3.0f; }
+  float sample_weight() const { return channel_average(weight_); }
 
   glm::vec3 eval(const glm::vec3& wi, float* pdf) const {
     *pdf = diffuse_pdf(wo_, wi);

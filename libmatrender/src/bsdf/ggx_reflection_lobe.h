@@ -11,6 +11,7 @@
 #include "bsdf/fresnel.h"
 #include "bsdf/lobe_sample.h"
 #include "bsdf/microfacet_ggx.h"
+#include "util/channel_average.h"
 
 namespace matrender {
 
@@ -30,7 +31,7 @@ class GgxReflectionLobe {
   // Cycles weights the pick by the Fresnel reflectance toward the viewer.
   float sample_weight() const {
     const glm::vec3 f = fresnel_(std::max(wo_.z, 0.0f));
-    return weight_ * (f.x + f.y + f.z) / 3.0f;
+    return weight_ * channel_average(f);
   }
 
   glm::vec3 eval(const glm::vec3& wi, float* pdf) const {

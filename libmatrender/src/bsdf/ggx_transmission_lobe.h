@@ -17,6 +17,7 @@
 #include "bsdf/bxdf_flags.h"
 #include "bsdf/lobe_sample.h"
 #include "bsdf/microfacet_ggx.h"
+#include "util/channel_average.h"
 
 namespace matrender {
 
@@ -33,7 +34,7 @@ class GgxTransmissionLobe {
         g1_wo_(singular_ ? 0.0f : ggx_g1(wo, alpha)) {}
 
   BxDFFlags flags() const { return singular_ ? BxDFFlags::SpecularTransmission : BxDFFlags::GlossyTransmission; }
-  float sample_weight() const { return wo_.z > 0.0f ? (weight_.x + weight_.y + weight_.z) / 3.0f : 0.0f; }
+  float sample_weight() const { return wo_.z > 0.0f ? channel_average(weight_) : 0.0f; }
 
   glm::vec3 eval(const glm::vec3& wi, float* pdf) const {
     *pdf = 0.0f;

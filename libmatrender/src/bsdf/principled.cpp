@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "bsdf/microfacet_ggx.h"
+#include "util/channel_average.h"
 
 namespace matrender {
 namespace {
@@ -25,7 +26,7 @@ void add_glass_lobes(const PrincipledParameters& p, const glm::vec3& wo, bool fr
     lobes->add(
         GgxReflectionLobe(reflection_weight, InterpolatedFresnel(p.glass_cspec0, eta, p.glass_f0), p.alpha, p.singular, wo));
   const glm::vec3 refraction_weight = p.refraction_tint * (p.glass_weight * std::max(1e-4f, 1.0f - reflectance));
-  if ((refraction_weight.x + refraction_weight.y + refraction_weight.z) / 3.0f >= kClosureWeightCutoff)
+  if (channel_average(refraction_weight) >= kClosureWeightCutoff)
     lobes->add(GgxTransmissionLobe(refraction_weight, eta, p.refraction_alpha, wo));
 }
 
@@ -102,7 +103,7 @@ PrincipledParameters::PrincipledParameters(const PrincipledInputs& inputs, Clear
 
   // Cycles mixes the whole BSDF (emission included) with a transparent BSDF by Alpha
   // (PrincipledBsdfNode::expand in scene/shader_nodes.cpp): every closure weight times alpha.
-  coverage = glm::clamp(inputs.scalar(MaterialParameter::Alpha), 0.0f, 1.0f);
+  coverage = inputs.coverage();
   transparent = 1.0f - coverage > kClosureWeightCutoff;
   if (transparent) {
     diffuse_weight *= coverage;

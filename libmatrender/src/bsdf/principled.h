@@ -34,6 +34,8 @@ struct PrincipledInputs {
     return *this;
   }
   PrincipledInputs& set(MaterialParameter p, float value) { return set(p, glm::vec3(value)); }
+  // The Alpha input in [0, 1]: the fraction of the light the surface scatters and emits.
+  float coverage() const { return glm::clamp(scalar(MaterialParameter::Alpha), 0.0f, 1.0f); }
 };
 
 // What the lobes take from the material inputs alone, before any view direction: computed once

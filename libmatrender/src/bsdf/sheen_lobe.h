@@ -9,6 +9,7 @@
 #include "bsdf/bxdf_flags.h"
 #include "bsdf/lobe_sample.h"
 #include "bsdf/principled_diffuse.h"
+#include "util/channel_average.h"
 
 namespace matrender {
 
@@ -20,7 +21,7 @@ class SheenLobe {
 
   static constexpr BxDFFlags flags() { return BxDFFlags::DiffuseReflection; }
   float sample_weight() const {
-    const float average = (weight_.x + weight_.y + weight_.z) / 3.0f;
+    const float average = channel_average(weight_);
     return wo_.z > 0.0f ? average * schlick_weight(wo_.z) * wo_.z : 0.0f;
   }
 

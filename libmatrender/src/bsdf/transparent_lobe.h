@@ -7,6 +7,7 @@
 
 #include "bsdf/bxdf_flags.h"
 #include "bsdf/lobe_sample.h"
+#include "util/channel_average.h"
 
 namespace matrender {
 
@@ -16,7 +17,7 @@ class TransparentLobe {
   explicit TransparentLobe(const glm::vec3& weight, const glm::vec3& wo) : weight_(weight), wo_(wo) {}
 
   static constexpr BxDFFlags flags() { return BxDFFlags::TransparentTransmission; }
-  float sample_weight() const { return (weight_.x + weight_.y + weight_.z) / 3.0f; }
+  float sample_weight() const { return channel_average(weight_); }
 
   glm::vec3 eval(const glm::vec3& /*wi*/, float* pdf) const {
     *pdf = 0.0f;

@@ -12,6 +12,7 @@
 #include "integrator/shadow_terminator.h"
 #include "sampling/warp.h"
 #include "util/finite.h"
+#include "util/channel_average.h"
 
 namespace matrender {
 namespace {
@@ -94,8 +95,7 @@ glm::vec3 PathTracer::transmittance(const glm::vec3& origin, const glm::vec3& di
     // limit one above its setting).
     if (crossed > settings_.max_transparent_bounces) return glm::vec3(0.0f);
     const SurfacePoint sp = shade_surface(scene_, hit, -dir);
-    const float coverage = glm::clamp(sp.inputs.scalar(MaterialParameter::Alpha), 0.0f, 1.0f);
-    passed *= 1.0f - coverage;
+    passed *= 1.0f - sp.inputs.coverage();
     if (!(max_component(passed) > 0.0f)) return glm::vec3(0.0f);
     from = offset_ray_origin(sp.position, -sp.geometric_normal);
     remaining = glm::length(target - from);
@@ -135,7 +135,7 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
       if (!camera_ray || !settings_.transparent_background)
         result.radiance += throughput * lights_.escaped_radiance(dir, bsdf_pdf, bsdf_delta);
       // What the camera sees through: the film's transparency (Cycles averages the channels).
-      if (camera_ray) result.transparency = (throughput.x + throughput.y + throughput.z) / 3.0f;
+      if (camera_ray) result.transparency = channel_average(throughput);
       break;
     }
 

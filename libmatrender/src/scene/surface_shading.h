@@ -34,8 +34,8 @@ struct SurfacePoint {
   // Radiance the surface emits toward the viewer: Cycles' emission closure, the same from both
   // sides (kernel/closure/emissive.h), scaled like every closure by the coverage (Alpha).
   glm::vec3 emitted() const {
-    return inputs.color(MaterialParameter::Emission) * (inputs.scalar(MaterialParameter::EmissionStrength) *
-                                                        glm::clamp(inputs.scalar(MaterialParameter::Alpha), 0.0f, 1.0f));
+    return inputs.color(MaterialParameter::Emission) *
+           (inputs.scalar(MaterialParameter::EmissionStrength) * inputs.coverage());
   }
 
 };
