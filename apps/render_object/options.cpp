@@ -121,6 +121,31 @@ void add_scene_options(CLI::App& app, Options& o) {
                      ->group(group);
   scene->excludes(mesh)->excludes(object);
   mesh->excludes(object);
+  app.add_option("--environment", o.environment,
+                 "light the scene with this equirectangular (latitude-longitude) image, as Blender's World > "
+                 "Environment Texture; camera rays that miss see it (replaces the scene's background)")
+      ->check(existing_file())
+      ->type_name("FILE.exr|hdr|png")
+      ->group(group);
+  app.add_option_function<double>(
+         "--environment-strength",
+         [&o](const double& strength) {
+           require(strength >= 0.0 && std::isfinite(strength), "--environment-strength", "a finite number >= 0");
+           o.environment_strength = strength;
+         },
+         "the environment's strength (World > Background > Strength)")
+      ->default_str("1")
+      ->group(group);
+  app.add_option_function<double>(
+         "--environment-rotation",
+         [&o](const double& degrees) {
+           require(std::isfinite(degrees), "--environment-rotation", "a finite angle in degrees");
+           o.environment_rotation_deg = degrees;
+         },
+         "turn the environment about +Z by this many degrees (a Mapping node's Rotation Z)")
+      ->type_name("DEG")
+      ->default_str("0")
+      ->group(group);
   app.add_flag("--list-objects", o.list_objects, "print the built-in object names and exit")->group(group);
   app.add_flag("--list-parameters", o.list_parameters,
                "print the material parameters scene files take (a markdown table) and exit")
@@ -341,6 +366,22 @@ void apply_render_options(const Options& o, SceneDescription& scene) {
   s.aovs = o.aovs;
 }
 
+void apply_environment_options(const Options& o, matrender::BackgroundDescription& background) {
+  if (o.environment) {
+    matrender::EnvironmentDescription environment;
+    environment.path = *o.environment;
+    environment.origin = Origin{"--environment", std::nullopt};
+    background = environment;
+  }
+  if (!o.environment_strength && !o.environment_rotation_deg) return;
+  auto* environment = std::get_if<matrender::EnvironmentDescription>(&background);
+  if (!environment)
+    throw InputError(std::string(o.environment_strength ? "--environment-strength" : "--environment-rotation") +
+                     ": the scene has no environment map (give --environment or a scene file with one)");
+  if (o.environment_strength) environment->strength = *o.environment_strength;
+  if (o.environment_rotation_deg) environment->rotation_z = glm::radians(*o.environment_rotation_deg);
+}
+
 void apply_illuminance(const Options& o, LightsDescription& lights) {
   if (o.paper_powers) {
     if (auto* rig = std::get_if<LightRigDescription>(&lights)) rig->target_illuminance_lux.reset();
@@ -367,6 +408,7 @@ SceneDescription describe_scene(const Options& options) {
   apply_camera_options(options, scene.camera);
   apply_render_options(options, scene);
   apply_illuminance(options, scene.lights);
+  apply_environment_options(options, scene.background);
   return scene;
 }
 

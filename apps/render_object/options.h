@@ -23,6 +23,9 @@ struct Options {
   std::optional<std::string> object;  // NAME[:SEED]
   bool list_objects = false;
   bool list_parameters = false;
+  std::optional<std::string> environment;  // replaces the scene's background
+  std::optional<double> environment_strength;
+  std::optional<double> environment_rotation_deg;
 
   // Each set value overrides the scene's (the scene file's camera and render block).
   std::optional<int> spp;

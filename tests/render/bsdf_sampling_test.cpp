@@ -241,7 +241,6 @@ class RefractionChart {
 constexpr int kBinsX = 32;
 constexpr int kBinsY = 64;
 constexpr int kSampleCount = 1000000;
-constexpr double kMinExpectedCount = 5.0;
 
 // Gauss-Legendre 4-point rule on [-1, 1].
 constexpr std::array<double, 4> kGaussNodes = {-0.8611363115940526, -0.3399810435848563,
@@ -322,9 +321,7 @@ struct ChiSquareResult {
 // Draws kSampleCount directions with sample(rng) (std::nullopt when the sampler fails), bins
 // them on the chart's kBinsX x kBinsY grid plus one cell for failures, and compares with the
 // counts expected from pdf: N times its integral over each cell, N times the mass it leaves
-// outside the chart for the failure cell. Cells expected to get fewer than 5 samples are pooled
-// (with the next smallest until the pool reaches 5), then Pearson's statistic
-// sum (O - E)^2 / E has cells - 1 degrees of freedom.
+// outside the chart for the failure cell (pearson_chi_square).
 template <class Chart, class Sampler, class Pdf>
 ChiSquareResult chi_square_test(const Chart& chart, Sampler&& sample, const Pdf& pdf,
                                 std::uint64_t seed) {
@@ -359,34 +356,11 @@ ChiSquareResult chi_square_test(const Chart& chart, Sampler&& sample, const Pdf&
   }
   expected[failure_cell] = kSampleCount * std::max(0.0, 1.0 - total_probability);
 
-  std::vector<std::size_t> order(observed.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(),
-            [&](std::size_t l, std::size_t r) { return expected[l] < expected[r]; });
   ChiSquareResult result;
-  double pooled_observed = 0.0;
-  double pooled_expected = 0.0;
-  bool pool_used = false;
-  int cells = 0;
-  for (std::size_t i : order) {
-    if (expected[i] < kMinExpectedCount || (pool_used && pooled_expected < kMinExpectedCount)) {
-      pooled_observed += observed[i];
-      pooled_expected += expected[i];
-      pool_used = true;
-      continue;
-    }
-    result.statistic += (observed[i] - expected[i]) * (observed[i] - expected[i]) / expected[i];
-    ++cells;
-  }
-  if (pool_used && pooled_expected > 0.0) {
-    result.statistic +=
-        (pooled_observed - pooled_expected) * (pooled_observed - pooled_expected) / pooled_expected;
-    ++cells;
-  } else if (pool_used && pooled_observed > 0.0) {
-    result.statistic = std::numeric_limits<double>::infinity();  // samples where the pdf is 0
-  }
-  result.degrees_of_freedom = cells - 1;
-  result.p_value = chi_square_survival(result.statistic, result.degrees_of_freedom);
+  const PearsonTest pearson = pearson_chi_square(observed, expected);
+  result.statistic = pearson.statistic;
+  result.degrees_of_freedom = pearson.degrees_of_freedom;
+  result.p_value = pearson.p_value;
   result.failed_fraction = observed[failure_cell] / kSampleCount;
   result.missing_mass = 1.0 - total_probability;
   return result;

@@ -21,7 +21,7 @@ RectLight rect_at(double x) {
 
 TEST_CASE("The distribution holds area lamps, then delta lamps, and not the uniform background", "[render]") {
   const std::vector<Light> lights = {PointLight{}, rect_at(0.0), SpotLight{}, rect_at(2.0)};
-  const LightSampler sampler(lights, glm::vec3(0.1f, 0.2f, 0.3f));
+  const LightSampler sampler(lights, UniformBackground(glm::vec3(0.1f, 0.2f, 0.3f)));
   REQUIRE(sampler.sampled_count() == 4);
   CHECK(light_type(sampler.light(0)) == LightType::Area);
   CHECK(light_type(sampler.light(1)) == LightType::Area);
@@ -34,7 +34,7 @@ TEST_CASE("The distribution holds area lamps, then delta lamps, and not the unif
 }
 
 TEST_CASE("A pick chooses each light of the distribution over an equal interval and rescales u", "[render]") {
-  const LightSampler sampler({rect_at(0.0), PointLight{}, SpotLight{}}, glm::vec3(0.0f));
+  const LightSampler sampler({rect_at(0.0), PointLight{}, SpotLight{}}, UniformBackground(glm::vec3(0.0f)));
   for (int k = 0; k < 3; ++k)
     for (double within : {0.0, 0.25, 0.5, 0.75}) {
       float u = static_cast<float>((k + within) / 3.0);
@@ -52,7 +52,7 @@ TEST_CASE("A pick chooses each light of the distribution over an equal interval 
 }
 
 TEST_CASE("Without lamps nothing is drawn, and a black background is no light", "[render]") {
-  const LightSampler dark({}, glm::vec3(0.0f));
+  const LightSampler dark({}, UniformBackground(glm::vec3(0.0f)));
   float u = 0.5f;
   CHECK(dark.empty());
   CHECK_FALSE(dark.pick(&u));
@@ -64,7 +64,7 @@ TEST_CASE("Without lamps nothing is drawn, and a black background is no light", 
 TEST_CASE("A ray leaving the scene sees the uniform background with MIS weight 1", "[render]") {
   // The background is never drawn by light sampling, so BSDF sampling is its only strategy.
   const glm::vec3 background(0.1f, 0.2f, 0.3f);
-  const LightSampler sampler({rect_at(0.0)}, background);
+  const LightSampler sampler({rect_at(0.0)}, UniformBackground(background));
   for (float bsdf_pdf : {0.0f, 1e-30f, 0.3f, 1e30f})
     for (bool specular : {false, true})
       CHECK(sampler.escaped_radiance(glm::normalize(glm::vec3(0.3f, -0.2f, 0.9f)), bsdf_pdf, specular) == background);
@@ -72,7 +72,7 @@ TEST_CASE("A ray leaving the scene sees the uniform background with MIS weight 1
 
 TEST_CASE("A light sample's pdf includes the probability of picking the light", "[render]") {
   const LightSampler sampler({PointLight{glm::dvec3(0.0, 0.0, 2.0), 10.0, glm::dvec3(1.0)}, PointLight{}},
-                             glm::vec3(0.0f));
+                             UniformBackground(glm::vec3(0.0f)));
   const auto s = sampler.sample(glm::vec3(0.0f, 0.0f, 1.0f), {}, glm::vec2(0.25f, 0.5f));
   REQUIRE(s);
   CHECK(s->delta);

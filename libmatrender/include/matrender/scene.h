@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "matgeom/mesh.h"
+#include "matrender/background.h"
 #include "matrender/light.h"
 #include "matrender/material.h"
 
@@ -58,9 +59,12 @@ class Scene {
   void clear_lights();
   const std::vector<Light>& lights() const;
 
-  // Uniform background radiance seen by camera rays that miss and lighting the scene.
-  void set_background(const glm::vec3& radiance);
-  glm::vec3 background() const;
+  // What camera rays that miss see and what lights the scene from every direction: a uniform
+  // radiance or an environment map (matrender/background.h). An environment map's sampling
+  // density is built here, once for every render. Throws std::invalid_argument for a negative or
+  // non-finite radiance, strength or rotation, a missing image, or a map too bright for floats.
+  void set_background(const Background& background);
+  const Background& background() const;
 
   // Builds the BVH (Embree, build quality high). Idempotent; render() calls it when needed.
   void commit();

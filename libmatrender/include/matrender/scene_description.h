@@ -84,6 +84,18 @@ struct LightRigDescription {
 };
 using LightsDescription = std::variant<std::vector<Light>, LightRigDescription>;
 
+// World > Environment Texture: an equirectangular image file times a strength, turned about Z
+// (matrender/background.h).
+struct EnvironmentDescription {
+  std::string path;                       // resolved against the scene file's folder
+  std::optional<ColorSpace> color_space;  // none: Blender's default for the file (texture.h)
+  double strength = 1.0;
+  double rotation_z = 0.0;  // radians
+  Origin origin;
+};
+// A uniform radiance or an environment map.
+using BackgroundDescription = std::variant<glm::vec3, EnvironmentDescription>;
+
 struct LookAtPlacement {
   glm::dvec3 position{0.0};
   glm::dvec3 target{0.0};
@@ -109,7 +121,7 @@ struct CameraDescription {
 struct SceneDescription {
   CameraDescription camera;
   LightsDescription lights = LightRigDescription{};
-  glm::vec3 background{0.0f};
+  BackgroundDescription background = glm::vec3(0.0f);
   std::map<std::string, MaterialDescription> materials;
   std::vector<ObjectDescription> objects;
   // Samples, seed, bounces and background transparency; threads, AOVs, progress and

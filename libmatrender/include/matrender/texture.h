@@ -55,4 +55,9 @@ class Texture {
 
 using TexturePtr = std::shared_ptr<const Texture>;
 
+// The colour space Blender gives an image file it loads: scene-linear for float data (EXR, HDR,
+// float TIFF), which is then not converted (NonColor), and sRGB for 8- and 16-bit integer data.
+// Reads only the file's header; throws std::runtime_error naming the path when it cannot.
+ColorSpace blender_default_color_space(const std::string& path);
+
 }  // namespace matrender

@@ -83,8 +83,10 @@ glm::vec3 PathTracer::transmittance(const glm::vec3& origin, const glm::vec3& di
   ++*rays;
   if (!has_transparency_) return glm::vec3(scene_.accel.occluded(origin, dir, distance) ? 0.0f : 1.0f);
   // Through surfaces with transparency, each hit passes 1 - alpha, up to the limit of
-  // transparent bounces; an opaque one stops the ray.
-  const glm::vec3 target = origin + distance * dir;
+  // transparent bounces; an opaque one stops the ray. A ray toward an infinite light never runs
+  // out of length.
+  const bool unbounded = std::isinf(distance);
+  const glm::vec3 target = unbounded ? origin : origin + distance * dir;
   glm::vec3 from = origin;
   float remaining = distance;
   glm::vec3 passed(1.0f);
@@ -98,7 +100,7 @@ glm::vec3 PathTracer::transmittance(const glm::vec3& origin, const glm::vec3& di
     passed *= 1.0f - sp.inputs.coverage();
     if (!(max_component(passed) > 0.0f)) return glm::vec3(0.0f);
     from = offset_ray_origin(sp.position, -sp.geometric_normal);
-    remaining = glm::length(target - from);
+    if (!unbounded) remaining = glm::length(target - from);
     ++*rays;
   }
 }
@@ -133,7 +135,7 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
                                                 camera_ray);
     if (!hit.hit()) {
       if (!camera_ray || !settings_.transparent_background)
-        result.radiance += throughput * lights_.escaped_radiance(dir, bsdf_pdf, bsdf_delta);
+        result.radiance += throughput * lights_.escaped_radiance(dir, bsdf_pdf, bsdf_delta || camera_ray);
       // What the camera sees through: the film's transparency (Cycles averages the channels).
       if (camera_ray) result.transparency = channel_average(throughput);
       break;
@@ -197,11 +199,12 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
           // the far one for transmission, whichever side of the triangle the lamp is on. A lamp
           // beyond the triangle's plane is then reached only around the surface, never through it.
           const glm::vec3 side = is_reflective(lobes) ? sp.geometric_normal : -sp.geometric_normal;
-          // From a start lifted off the triangle the ray aims again at the same lamp point.
+          // From a start lifted off the triangle the ray aims again at the same lamp point (toward
+          // an infinite light, in the same direction).
           const glm::vec3 start = shadow_ray_start(scene_.meshes[hit.mesh], hit, sp, light->wi, side);
           glm::vec3 shadow_dir = light->wi;
           float shadow_distance = light->distance;
-          if (start != sp.position) {
+          if (start != sp.position && !std::isinf(light->distance)) {
             const glm::vec3 to_light = sp.position + light->distance * light->wi - start;
             shadow_distance = glm::length(to_light);
             shadow_dir = to_light / shadow_distance;

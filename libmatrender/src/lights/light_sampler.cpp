@@ -18,7 +18,7 @@ std::vector<PreparedRectLight> prepare_rect_lights(const std::vector<Light>& lig
 
 }  // namespace
 
-LightSampler::LightSampler(const std::vector<Light>& lights, const glm::vec3& background) {
+LightSampler::LightSampler(const std::vector<Light>& lights, const WorldLight& world) {
   const std::vector<PreparedRectLight> rects = prepare_rect_lights(lights);
   area_hits_ = RectLightHits(rects);
   lights_.assign(rects.begin(), rects.end());
@@ -31,10 +31,18 @@ LightSampler::LightSampler(const std::vector<Light>& lights, const glm::vec3& ba
         },
         light);
   }
+  if (const auto* map = std::get_if<PreparedEnvironmentLight>(&world)) {
+    if (!map->black()) {
+      infinite_.push_back(lights_.size());
+      lights_.emplace_back(*map);
+    }
+  }
   sampled_count_ = lights_.size();
-  if (background != glm::vec3(0.0f)) {
-    infinite_.push_back(lights_.size());
-    lights_.emplace_back(UniformBackground(background));
+  if (const auto* uniform = std::get_if<UniformBackground>(&world)) {
+    if (uniform->radiance(glm::vec3(0.0f, 0.0f, 1.0f)) != glm::vec3(0.0f)) {
+      infinite_.push_back(lights_.size());
+      lights_.emplace_back(*uniform);
+    }
   }
 }
 
@@ -56,13 +64,13 @@ std::optional<LightSample> LightSampler::sample(const glm::vec3& p, const Receiv
   return s;
 }
 
-glm::vec3 LightSampler::escaped_radiance(const glm::vec3& dir, float bsdf_pdf, bool bsdf_specular) const {
+glm::vec3 LightSampler::escaped_radiance(const glm::vec3& dir, float bsdf_pdf, bool unweighted) const {
   glm::vec3 sum(0.0f);
   for (size_t index : infinite_) {
     with_light(lights_[index], [&](const auto& light) {
       if constexpr (std::decay_t<decltype(light)>::type() == LightType::Infinite) {
         const float light_pdf = index < sampled_count_ ? selection_pdf() * light.pdf(dir) : 0.0f;
-        const float weight = bsdf_specular ? 1.0f : power_heuristic(bsdf_pdf, light_pdf);
+        const float weight = unweighted ? 1.0f : power_heuristic(bsdf_pdf, light_pdf);
         sum += weight * light.radiance(dir);
       }
     });

@@ -1,6 +1,7 @@
 #pragma once
 // The scene's lights and how next-event estimation chooses among them: uniformly, one light per
 // shading point, as Cycles 3.4 does (it has no light tree; only noise depends on this choice).
+// An environment map is one of them; a uniform background is not (uniform_background.h).
 // Also the two ways a ray finds light without sampling it: the one query for the area lights it
 // hits, and the infinite lights it sees when it leaves the scene.
 #include <cstddef>
@@ -12,17 +13,18 @@
 #include "lights/light_sample.h"
 #include "lights/rect_light_hits.h"
 #include "lights/scene_light.h"
+#include "lights/world_light.h"
 #include "matrender/light.h"
 
 namespace matrender {
 
 class LightSampler {
  public:
-  // background: the uniform background radiance; black is no light at all.
-  LightSampler(const std::vector<Light>& lights, const glm::vec3& background);
+  // A uniform black world is no light at all.
+  LightSampler(const std::vector<Light>& lights, const WorldLight& world);
 
   // The lights next-event estimation draws from are lights(0 .. sampled_count() - 1): area
-  // lamps first, then delta lamps, each in scene order.
+  // lamps first, then delta lamps, each in scene order, then an environment map.
   size_t sampled_count() const { return sampled_count_; }
   bool empty() const { return sampled_count_ == 0; }
   // The probability of drawing each light of the distribution.
@@ -56,8 +58,9 @@ class LightSampler {
   }
 
   // What a ray leaving the scene along dir sees of the infinite lights, each MIS-weighted
-  // against light sampling (power heuristic) unless the ray came from a specular lobe.
-  glm::vec3 escaped_radiance(const glm::vec3& dir, float bsdf_pdf, bool bsdf_specular) const;
+  // against light sampling (power heuristic) unless `unweighted`: the ray came from a specular
+  // lobe or from the camera, where no light sample competes.
+  glm::vec3 escaped_radiance(const glm::vec3& dir, float bsdf_pdf, bool unweighted) const;
 
  private:
   std::vector<SceneLight> lights_;

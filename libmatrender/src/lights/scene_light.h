@@ -8,9 +8,10 @@
 // Which lights next-event estimation draws from is LightSampler's choice (light_sampler.h).
 // Area lights, which rays hit (found by RectLightHits): pdf(p, wi, t), the solid-angle density
 // of sample() giving wi, and radiance(). Infinite lights, which rays that leave the scene see:
-// pdf(direction) and radiance(direction).
+// pdf(direction) and radiance(direction); those that sample() can draw are in the distribution.
 #include <variant>
 
+#include "lights/environment_light.h"
 #include "lights/light_type.h"
 #include "lights/rect_light.h"
 #include "lights/spot_light.h"
@@ -18,17 +19,18 @@
 
 namespace matrender {
 
-using SceneLight = std::variant<PreparedRectLight, PreparedDeltaLight, UniformBackground>;
+using SceneLight = std::variant<PreparedRectLight, PreparedDeltaLight, UniformBackground, PreparedEnvironmentLight>;
 
 // f(the light as its own type). A switch, not std::visit, so that the lights' methods inline
 // (GCC calls std::visit's alternatives through a table).
 template <class F>
 decltype(auto) with_light(const SceneLight& light, F&& f) {
-  static_assert(std::variant_size_v<SceneLight> == 3, "a new light needs its case here");
+  static_assert(std::variant_size_v<SceneLight> == 4, "a new light needs its case here");
   switch (light.index()) {
     case 0: return f(*std::get_if<0>(&light));
     case 1: return f(*std::get_if<1>(&light));
-    default: return f(*std::get_if<2>(&light));
+    case 2: return f(*std::get_if<2>(&light));
+    default: return f(*std::get_if<3>(&light));
   }
 }
 

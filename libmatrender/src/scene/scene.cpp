@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -122,8 +123,15 @@ void Scene::add_light(const Light& light) {
 void Scene::clear_lights() { data_->lights.clear(); }
 const std::vector<Light>& Scene::lights() const { return data_->lights; }
 
-void Scene::set_background(const glm::vec3& radiance) { data_->background = radiance; }
-glm::vec3 Scene::background() const { return data_->background; }
+void Scene::set_background(const Background& background) {
+  if (const auto* uniform = std::get_if<glm::vec3>(&background))
+    for (int c = 0; c < 3; ++c)
+      if (!(std::isfinite((*uniform)[c]) && (*uniform)[c] >= 0.0f))
+        throw std::invalid_argument("background: a uniform radiance must be finite and >= 0");
+  data_->world = prepare_world(background);
+  data_->background = background;
+}
+const Background& Scene::background() const { return data_->background; }
 
 void Scene::commit() {
   if (data_->committed) return;

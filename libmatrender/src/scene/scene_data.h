@@ -7,6 +7,8 @@
 #include <glm/glm.hpp>
 
 #include "accel/embree_scene.h"
+#include "lights/world_light.h"
+#include "matrender/background.h"
 #include "matrender/light.h"
 #include "matrender/material.h"
 
@@ -28,7 +30,8 @@ class SceneData {
   std::vector<Material> materials;
   std::vector<MeshData> meshes;
   std::vector<Light> lights;
-  glm::vec3 background{0.0f};
+  Background background = glm::vec3(0.0f);
+  WorldLight world = UniformBackground(glm::vec3(0.0f));  // prepared from background
   EmbreeScene accel;
   bool committed = false;
   double build_seconds = 0.0;

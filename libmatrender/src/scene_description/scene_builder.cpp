@@ -198,6 +198,19 @@ std::string frame_stem(const CameraDescription& camera) {
   return grid ? view_name(grid->i, grid->j) : "view";
 }
 
+Background load_background(const BackgroundDescription& description) {
+  const auto* environment = std::get_if<EnvironmentDescription>(&description);
+  if (!environment) return std::get<glm::vec3>(description);
+  try {
+    const ColorSpace space = environment->color_space ? *environment->color_space
+                                                      : blender_default_color_space(environment->path);
+    return EnvironmentMap{Texture::load(environment->path, space, Wrap::Repeat), environment->strength,
+                          environment->rotation_z};
+  } catch (const std::exception& e) {
+    throw environment->origin.error("/environment", e.what());
+  }
+}
+
 }  // namespace
 
 BuiltScene build_scene(const SceneDescription& description) {
@@ -216,7 +229,7 @@ BuiltScene build_scene(const SceneDescription& description) {
     built.object_meshes.push_back(static_cast<uint32_t>(built.scene.mesh_count() - 1));
   }
   add_lights(description.lights, built);
-  built.scene.set_background(description.background);
+  built.scene.set_background(load_background(description.background));
   built.camera = make_camera(description.camera, matgeom::surface_centroid(surface));
   if (const std::optional<std::string> problem = scene_point_problem(glm::dvec3(built.camera.camera_to_world[3]), "the camera"))
     throw InputError("camera: " + *problem);

@@ -386,6 +386,21 @@ LightsDescription read_lights(const Node& node) {
   return lights;
 }
 
+// [r, g, b], or {"environment": path, "strength", "rotation_z_deg", "color_space"}.
+BackgroundDescription read_background(const Node& node, const fs::path& folder) {
+  if (!node.is_object()) return glm::vec3(read_color(node));
+  node.expect_keys({"environment", "strength", "rotation_z_deg", "color_space"});
+  EnvironmentDescription environment;
+  environment.path = read_existing_file(node.required("environment"), folder);
+  environment.origin = node.origin();
+  if (auto strength = node.find("strength"))
+    environment.strength = strength->non_negative();
+  if (auto rotation = node.find("rotation_z_deg")) environment.rotation_z = glm::radians(rotation->number());
+  if (auto space = node.find("color_space"))
+    environment.color_space = space->choice({"sRGB", "non-color"}) == 0 ? ColorSpace::SRGB : ColorSpace::NonColor;
+  return environment;
+}
+
 // ---- materials ------------------------------------------------------------------------------
 
 // {"texture": path, ...}: the keys every texture reference shares.
@@ -646,7 +661,7 @@ SceneDescription read_scene_file(const std::string& path) {
   if (auto description = root.find("description")) description->string();  // free text; only its type matters
   scene.camera = read_camera(root.required("camera"));
   scene.lights = read_lights(root.required("lights"));
-  if (auto background = root.find("background")) scene.background = glm::vec3(read_color(*background));
+  if (auto background = root.find("background")) scene.background = read_background(*background, folder);
   if (auto materials = root.find("materials")) scene.materials = read_materials(*materials, folder);
   scene.objects = read_objects(root.required("objects"), folder, scene.materials);
   if (auto render = root.find("render")) read_render(*render, scene);

@@ -118,6 +118,16 @@ std::shared_ptr<const Texture> Texture::load(const std::string& path, ColorSpace
   return from_pixelsf(spec.width, spec.height, channels, pixels.data(), space, wrap, path);
 }
 
+ColorSpace blender_default_color_space(const std::string& path) {
+  matgeom::require_input_file(path);
+  auto input = OIIO::ImageInput::open(path);
+  if (!input) throw std::runtime_error(path + ": cannot read image: " + OIIO::geterror());
+  const OIIO::TypeDesc::BASETYPE type = static_cast<OIIO::TypeDesc::BASETYPE>(input->spec().format.basetype);
+  input->close();
+  const bool float_data = type == OIIO::TypeDesc::FLOAT || type == OIIO::TypeDesc::HALF || type == OIIO::TypeDesc::DOUBLE;
+  return float_data ? ColorSpace::NonColor : ColorSpace::SRGB;
+}
+
 glm::vec4 Texture::sample(glm::vec2 uv) const {
   // Texel centres sit at (i + 0.5) / W.
   const float x = uv.x * width_ - 0.5f;

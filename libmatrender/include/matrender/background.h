@@ -1,0 +1,24 @@
+#pragma once
+// What a scene's world is, as Blender's World shader would be: a uniform colour, or an
+// equirectangular environment texture times a strength (docs/conventions.md, "Environment").
+// Either is seen by camera rays that miss and lights the scene.
+#include <variant>
+
+#include <glm/glm.hpp>
+
+#include "matrender/texture.h"
+
+namespace matrender {
+
+// World > Background with an Environment Texture (equirectangular, Linear interpolation) on its
+// Color, Strength on its strength, and a Mapping node's Z rotation on the texture's Vector.
+struct EnvironmentMap {
+  TexturePtr image;         // latitude-longitude, scene-linear RGB; v = 1 is straight up (+Z)
+  double strength = 1.0;
+  double rotation_z = 0.0;  // radians: the map is looked up along R_z(rotation_z) d
+};
+
+// A uniform radiance (black: no world light), or an environment map.
+using Background = std::variant<glm::vec3, EnvironmentMap>;
+
+}  // namespace matrender

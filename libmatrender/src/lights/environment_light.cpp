@@ -1,0 +1,125 @@
+#include "lights/environment_light.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sampling/warp.h"
+#include "util/channel_average.h"
+
+namespace matrender {
+namespace {
+
+constexpr float kTwoPiSquared = 2.0f * kPi * kPi;
+
+// Over one texel's cell, the bilinear lookup (texel centres at cell centres) integrates to
+// 1/8, 3/4, 1/8 of the previous, own and next texel in each axis. Every texel the lookup blends
+// into a cell thus gives it weight, so the density is positive wherever the radiance is.
+std::vector<float> cell_integrals(const std::vector<float>& texels, int width, int height) {
+  const auto wrap = [](int i, int n) { return (i % n + n) % n; };
+  const auto at = [&](const std::vector<float>& grid, int x, int y) {
+    return grid[static_cast<size_t>(wrap(y, height)) * width + wrap(x, width)];
+  };
+  std::vector<float> along_u(texels.size()), both(texels.size());
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      along_u[static_cast<size_t>(y) * width + x] =
+          0.125f * at(texels, x - 1, y) + 0.75f * at(texels, x, y) + 0.125f * at(texels, x + 1, y);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      both[static_cast<size_t>(y) * width + x] =
+          0.125f * at(along_u, x, y - 1) + 0.75f * at(along_u, x, y) + 0.125f * at(along_u, x, y + 1);
+  return both;
+}
+
+float sin_polar(float v) { return std::sin(kPi * (1.0f - v)); }
+
+}  // namespace
+
+glm::vec2 equirectangular_uv(const glm::vec3& d) {
+  const float u = 0.5f - std::atan2(d.y, d.x) / (2.0f * kPi);
+  const float v = 1.0f - std::acos(std::clamp(d.z, -1.0f, 1.0f)) / kPi;
+  return {u, v};
+}
+
+glm::vec3 equirectangular_direction(glm::vec2 uv) {
+  const float phi = kPi * (1.0f - 2.0f * uv.x);
+  const float theta = kPi * (1.0f - uv.y);
+  const float sin_theta = std::sin(theta);
+  return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), std::cos(theta)};
+}
+
+PreparedEnvironmentLight::PreparedEnvironmentLight(const EnvironmentMap& map) : image_(map.image) {
+  if (!image_) throw std::invalid_argument("environment map: no image");
+  if (!(map.strength >= 0.0 && map.strength <= std::numeric_limits<float>::max()))
+    throw std::invalid_argument(image_->name() + ": environment strength " + std::to_string(map.strength) +
+                                " must be >= 0 and fit single precision");
+  if (!std::isfinite(map.rotation_z))
+    throw std::invalid_argument(image_->name() + ": environment rotation must be finite");
+  strength_ = static_cast<float>(map.strength);
+  cos_rotation_ = static_cast<float>(std::cos(map.rotation_z));
+  sin_rotation_ = static_cast<float>(std::sin(map.rotation_z));
+
+  const int width = image_->width();
+  const int height = image_->height();
+  std::vector<float> means(static_cast<size_t>(width) * height);
+  float brightest = 0.0f;
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const glm::vec3 texel = image_->sample({(x + 0.5f) / width, (y + 0.5f) / height});
+      brightest = std::max(brightest, std::max(texel.x, std::max(texel.y, texel.z)));
+      means[static_cast<size_t>(y) * width + x] = std::max(0.0f, channel_average(texel));
+    }
+  }
+  if (static_cast<double>(brightest) * map.strength > std::numeric_limits<float>::max())
+    throw std::invalid_argument(image_->name() + ": its brightest texel times the strength " +
+                                std::to_string(map.strength) + " exceeds single precision; lower the strength");
+  std::vector<float> weights = cell_integrals(means, width, height);
+  for (int y = 0; y < height; ++y) {
+    const float sine = sin_polar((y + 0.5f) / height);
+    for (int x = 0; x < width; ++x) weights[static_cast<size_t>(y) * width + x] *= sine;
+  }
+  distribution_ = std::make_shared<PiecewiseConstant2D>(weights, width, height);
+}
+
+glm::vec3 PreparedEnvironmentLight::to_map(const glm::vec3& d) const {
+  return {cos_rotation_ * d.x - sin_rotation_ * d.y, sin_rotation_ * d.x + cos_rotation_ * d.y, d.z};
+}
+
+glm::vec3 PreparedEnvironmentLight::from_map(const glm::vec3& d) const {
+  return {cos_rotation_ * d.x + sin_rotation_ * d.y, -sin_rotation_ * d.x + cos_rotation_ * d.y, d.z};
+}
+
+std::optional<LightSample> PreparedEnvironmentLight::sample(const glm::vec3& /*p*/,
+                                                            const ReceivingDirections& /*receiving*/,
+                                                            glm::vec2 u) const {
+  if (black()) return std::nullopt;
+  float pdf_uv;
+  const glm::vec2 uv = distribution_->sample(u, &pdf_uv);
+  const float sine = sin_polar(uv.y);
+  // pdf by solid angle: d omega = sin(theta) d theta d phi = 2 pi^2 sin(theta) du dv.
+  if (!(pdf_uv > 0.0f) || !(sine > 0.0f)) return std::nullopt;
+  LightSample s;
+  s.wi = from_map(equirectangular_direction(uv));
+  s.distance = std::numeric_limits<float>::infinity();
+  s.radiance = strength_ * glm::vec3(image_->sample(uv));
+  s.pdf = pdf_uv / (kTwoPiSquared * sine);
+  return s;
+}
+
+float PreparedEnvironmentLight::pdf(const glm::vec3& d) const {
+  if (black()) return 0.0f;
+  const glm::vec3 m = to_map(d);
+  const float sine = std::sqrt(std::max(0.0f, 1.0f - m.z * m.z));
+  if (!(sine > 0.0f)) return 0.0f;
+  return distribution_->pdf(equirectangular_uv(m)) / (kTwoPiSquared * sine);
+}
+
+glm::vec3 PreparedEnvironmentLight::radiance(const glm::vec3& d) const {
+  return strength_ * glm::vec3(image_->sample(equirectangular_uv(to_map(d))));
+}
+
+}  // namespace matrender
