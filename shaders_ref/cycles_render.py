@@ -75,12 +75,28 @@ def add_camera(scene, camera):
     scene.render.resolution_percentage = 100
 
 
-def set_world(scene, background):
+def set_world(scene, background, environment):
+    """A uniform colour, or an equirectangular EXR looked up along a Mapping node's Z rotation of
+    the ray direction (Generated coordinates of a world are its direction)."""
     world = bpy.data.worlds.new("world")
     world.use_nodes = True
-    node = world.node_tree.nodes["Background"]
+    nodes, links = world.node_tree.nodes, world.node_tree.links
+    node = nodes["Background"]
     node.inputs["Color"].default_value = (*background, 1.0)
     node.inputs["Strength"].default_value = 1.0
+    if environment:
+        texture = nodes.new("ShaderNodeTexEnvironment")
+        texture.image = bpy.data.images.load(environment["path"])
+        texture.interpolation = "Linear"
+        texture.projection = "EQUIRECTANGULAR"
+        mapping = nodes.new("ShaderNodeMapping")
+        mapping.vector_type = "VECTOR"
+        mapping.inputs["Rotation"].default_value = (0.0, 0.0, environment["rotation_z"])
+        coordinates = nodes.new("ShaderNodeTexCoord")
+        links.new(coordinates.outputs["Generated"], mapping.inputs["Vector"])
+        links.new(mapping.outputs["Vector"], texture.inputs["Vector"])
+        links.new(texture.outputs["Color"], node.inputs["Color"])
+        node.inputs["Strength"].default_value = environment["strength"]
     scene.world = world
 
 
@@ -116,7 +132,7 @@ def main():
     add_mesh(scene, description["mesh"], make_material(description["material"]))
     add_lamps(scene, description["lamps"])
     add_camera(scene, description["camera"])
-    set_world(scene, description["background"])
+    set_world(scene, description["background"], description.get("environment"))
     set_cycles(scene, description["threads"])
 
     timings = {}

@@ -60,6 +60,11 @@ json describe(const CyclesScene& scene) {
                      {"power", lamp.power},
                      {"color", {lamp.color.r, lamp.color.g, lamp.color.b}}});
   const matrender::Camera& c = scene.camera;
+  json environment = nullptr;
+  if (scene.environment)
+    environment = {{"path", scene.environment->exr_path},
+                   {"strength", scene.environment->strength},
+                   {"rotation_z", scene.environment->rotation_z}};
   return {{"mesh",
            {{"positions", positions},
             {"normals", normals},
@@ -72,7 +77,8 @@ json describe(const CyclesScene& scene) {
             {"vertical_fov", c.vertical_fov},
             {"width", c.width},
             {"height", c.height}}},
-          {"background", {scene.background.r, scene.background.g, scene.background.b}}};
+          {"background", {scene.background.r, scene.background.g, scene.background.b}},
+          {"environment", environment}};
 }
 
 std::string quoted(const std::string& s) { return "'" + s + "'"; }

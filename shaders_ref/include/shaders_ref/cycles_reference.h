@@ -5,6 +5,7 @@
 // only by the optional tests and the bench (docs/conventions.md, "Checked against Blender 3.4.1").
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,14 +16,22 @@
 
 namespace shaders_ref {
 
+// World > Environment Texture from an EXR file, its strength, and a Mapping node's Z rotation.
+struct CyclesEnvironment {
+  std::string exr_path;
+  double strength = 1.0;
+  double rotation_z = 0.0;  // radians
+};
+
 // What Blender rebuilds: one smooth mesh (vertex normals) in one untextured Principled material,
-// rectangle lamps, a camera and a uniform background.
+// rectangle lamps, a camera and a uniform background or an environment map.
 struct CyclesScene {
   matgeom::TriangleMesh mesh;
   matrender::Material material;
   std::vector<matrender::RectLight> lamps;
   matrender::Camera camera;
   glm::vec3 background{0.0f};
+  std::optional<CyclesEnvironment> environment;  // replaces the background
   float shadow_terminator_geometry_offset = 0.1f;  // Cycles' default, as matrender::MeshOptions
 };
 
