@@ -3,9 +3,10 @@
 need a real environment map file: a blue gradient above the horizon, grey ground below it and a
 small bright sun.
 
-usage: sky_hdr.py WIDTH HEIGHT OUT.hdr
+usage: sky_hdr.py WIDTH HEIGHT OUT.hdr   (OUT's folder is created if needed)
 """
 import math
+import os
 import sys
 
 
@@ -36,6 +37,7 @@ def main():
     if len(sys.argv) != 4:
         sys.exit(__doc__)
     width, height, path = int(sys.argv[1]), int(sys.argv[2]), sys.argv[3]
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
     with open(path, "wb") as out:
         out.write(b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n")
         out.write(f"-Y {height} +X {width}\n".encode())
