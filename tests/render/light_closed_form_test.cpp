@@ -171,3 +171,162 @@ TEST_CASE("An area lamp visible to the camera shows its radiance P / (4 a b), on
       CHECK(frame.color[i] == Approx(view.expected * lamp.color[static_cast<int>(i % 3)]).epsilon(1e-6).margin(1e-9));
   }
 }
+
+namespace {
+
+// Irradiance at x (normal n) by a midpoint rule over a disk of `radius` around `center` whose
+// normal is `disk_normal`: E = integral of radiance(q) cos(n, q - x) cos(disk, x - q) / |q - x|^2 dA.
+template <class Radiance>
+double disk_irradiance(const glm::dvec3& center, const glm::dvec3& disk_normal, double radius, const glm::dvec3& x,
+                       const glm::dvec3& n, Radiance&& radiance) {
+  const glm::dvec3 a = glm::normalize(glm::cross(disk_normal, std::abs(disk_normal.z) < 0.9 ? glm::dvec3(0, 0, 1)
+                                                                                            : glm::dvec3(1, 0, 0)));
+  const glm::dvec3 b = glm::cross(disk_normal, a);
+  constexpr int kRings = 400, kSectors = 400;
+  double sum = 0.0;
+  for (int i = 0; i < kRings; ++i)
+    for (int j = 0; j < kSectors; ++j) {
+      const double r = radius * (i + 0.5) / kRings, phi = 2.0 * kPi * (j + 0.5) / kSectors;
+      const glm::dvec3 q = center + r * (std::cos(phi) * a + std::sin(phi) * b);
+      const glm::dvec3 to_q = q - x;
+      const double d2 = glm::dot(to_q, to_q);
+      const glm::dvec3 w = to_q / std::sqrt(d2);
+      const double area = r * (radius / kRings) * (2.0 * kPi / kSectors);
+      sum += radiance(q) * std::max(0.0, glm::dot(n, w)) * std::abs(glm::dot(disk_normal, w)) / d2 * area;
+    }
+  return sum;
+}
+
+}  // namespace
+
+TEST_CASE("A point lamp of radius R is a disk facing each point: E = P h / (4 pi d (d^2 + R^2))", "[render]") {
+  // The disk's radiance P / (4 pi^2 R^2) over its cone, of projected solid angle
+  // pi sin^2(alpha) cos(beta) with sin^2(alpha) = R^2 / (d^2 + R^2) and cos(beta) = h / d.
+  const float albedo = 0.8f;
+  Scene scene;
+  scene.add_mesh(test_scenes::horizontal_square(40.0), {scene.add_material(test_scenes::lambert(albedo))});
+  PointLight point;
+  point.position = glm::dvec3(0.0, 0.0, 0.5);
+  point.power = 50.0;
+  point.radius = 0.3;
+  scene.add_light(point);
+  RenderSettings settings;
+  settings.samples_per_pixel = 64;
+  settings.seed = 3;
+  for (const glm::dvec3 target : {glm::dvec3(0.0, 0.0, 0.0), glm::dvec3(0.4, 0.1, 0.0), glm::dvec3(-1.2, 0.9, 0.0)}) {
+    const double h = point.position.z, d = glm::length(target - point.position);
+    const double expected = albedo / kPi * point.power * h / (4.0 * kPi * d * (d * d + point.radius * point.radius));
+    FrameBuffers frame;
+    REQUIRE(render(scene, camera_above(target), settings, frame).discarded_samples == 0);
+    const auto s = test_scenes::channel_statistics(frame, 0);
+    INFO("target " << target.x << "," << target.y << ": " << s.mean << " +- " << s.standard_error << ", expected "
+                   << expected << " (a radius-0 lamp: " << albedo / kPi * point.power / (4 * kPi) * h / (d * d * d)
+                   << ")");
+    CHECK(std::abs(s.mean - expected) < 4.0 * s.standard_error + 1e-4 * expected);
+  }
+}
+
+TEST_CASE("A spot lamp of radius R weighs each point of its disk by the cone factor toward the lit point", "[render]") {
+  const float albedo = 0.5f;
+  Scene scene;
+  scene.add_mesh(test_scenes::horizontal_square(40.0), {scene.add_material(test_scenes::lambert(albedo))});
+  SpotLight spot;
+  spot.position = glm::dvec3(0.2, 0.0, 0.8);
+  spot.direction = glm::normalize(glm::dvec3(0.3, 0.0, -1.0));
+  spot.spot_angle = 70.0 * kPi / 180.0;
+  spot.blend = 0.5;
+  spot.power = 80.0;
+  spot.radius = 0.25;
+  scene.add_light(spot);
+  const double cos_half = std::cos(0.5 * spot.spot_angle);
+  const auto cone_factor = [&](const glm::dvec3& from_lamp) {
+    const double cos_t = glm::dot(glm::normalize(from_lamp), spot.direction);
+    if (cos_t <= cos_half) return 0.0;
+    const double s = glm::clamp((cos_t - cos_half) / ((1.0 - cos_half) * spot.blend), 0.0, 1.0);
+    return cos_t * s * s * (3.0 - 2.0 * s);
+  };
+  RenderSettings settings;
+  settings.samples_per_pixel = 64;
+  settings.seed = 4;
+  // Under the axis, and where the disk's edge straddles the cone's smooth edge.
+  for (const glm::dvec3 target : {glm::dvec3(0.44, 0.0, 0.0), glm::dvec3(0.95, 0.2, 0.0)}) {
+    const double disk_radiance = spot.power / (4.0 * kPi * kPi * spot.radius * spot.radius);
+    const double irradiance = disk_irradiance(spot.position, glm::normalize(target - spot.position), spot.radius,
+                                              target, glm::dvec3(0, 0, 1), [&](const glm::dvec3& q) {
+                                                return disk_radiance * cone_factor(target - q);
+                                              });
+    const double expected = albedo / kPi * irradiance;
+    FrameBuffers frame;
+    REQUIRE(render(scene, camera_above(target), settings, frame).discarded_samples == 0);
+    const auto s = test_scenes::channel_statistics(frame, 1);
+    INFO("target " << target.x << ": " << s.mean << " +- " << s.standard_error << ", expected " << expected);
+    CHECK(std::abs(s.mean - expected) < 4.0 * s.standard_error + 1e-3 * expected);
+  }
+}
+
+TEST_CASE("A sun gives E = S cos on a plane; with an angle, the mean cosine over its disk of directions", "[render]") {
+  const float albedo = 0.7f;
+  const glm::dvec3 to_sun = glm::normalize(glm::dvec3(0.5, -0.3, 0.6));
+  for (const double angle_deg : {0.0, 12.0}) {
+    Scene scene;
+    scene.add_mesh(test_scenes::horizontal_square(40.0), {scene.add_material(test_scenes::lambert(albedo))});
+    SunLight sun;
+    sun.direction = -to_sun;
+    sun.strength = 3.0;
+    sun.color = glm::dvec3(1.0, 0.9, 0.8);
+    sun.angle = angle_deg * kPi / 180.0;
+    scene.add_light(sun);
+    // A disk of radius tan(angle / 2) at distance 1 toward the sun, of radiance S / (pi r^2 cos^3):
+    // the quadrature's cos(disk, x - q) / |q - x|^2 is that cos^3, so E = S / (pi r^2) times the
+    // integral of the cosine to the plane over the disk.
+    const double r = std::tan(0.5 * sun.angle);
+    const double expected_irradiance =
+        r == 0.0 ? sun.strength * to_sun.z
+                 : disk_irradiance(to_sun, to_sun, r, glm::dvec3(0.0), glm::dvec3(0, 0, 1), [&](const glm::dvec3& q) {
+                     const double cos_t = glm::dot(glm::normalize(q), to_sun);
+                     return sun.strength / (kPi * r * r * cos_t * cos_t * cos_t);
+                   });
+    RenderSettings settings;
+    settings.samples_per_pixel = 16;
+    settings.seed = 9;
+    FrameBuffers frame;
+    REQUIRE(render(scene, camera_above(glm::dvec3(0.3, 0.2, 0.0)), settings, frame).discarded_samples == 0);
+    for (int c = 0; c < 3; ++c) {
+      const double expected = albedo / kPi * expected_irradiance * sun.color[c];
+      const auto s = test_scenes::channel_statistics(frame, c);
+      INFO("angle " << angle_deg << " channel " << c << ": " << s.mean << " +- " << s.standard_error << ", expected "
+                    << expected);
+      CHECK(std::abs(s.mean - expected) < 4.0 * s.standard_error + 1e-4 * expected);
+    }
+  }
+}
+
+TEST_CASE("Camera rays do not see a sun, a mirror shows it with radiance S / (pi r^2 cos^3)", "[render]") {
+  SunLight sun;
+  sun.direction = glm::dvec3(0, 0, -1);
+  sun.strength = 2.0;
+  sun.angle = 20.0 * kPi / 180.0;
+  RenderSettings settings;
+  settings.samples_per_pixel = 4;
+  settings.aovs = 0;
+  {
+    Scene empty;
+    empty.add_light(sun);
+    FrameBuffers frame;
+    render(empty, Camera::look_at({0, 0, 0}, {0, 0, 1}, {0, 1, 0}, 0.01, 4, 4), settings, frame);
+    for (const float v : frame.color) CHECK(v == 0.0f);
+  }
+  // A perfect mirror (metallic 1, roughness 0, base colour 1: F = 1) seen straight from above
+  // reflects the centre of the sun's disk.
+  Scene scene;
+  Material mirror;
+  mirror.set(MaterialParameter::BaseColor, glm::vec3(1.0f));
+  mirror.set(MaterialParameter::Metallic, 1.0f);
+  mirror.set(MaterialParameter::Roughness, 0.0f);
+  scene.add_mesh(test_scenes::horizontal_square(40.0), {scene.add_material(mirror)});
+  scene.add_light(sun);
+  FrameBuffers frame;
+  render(scene, camera_above(glm::dvec3(0.0)), settings, frame);
+  const double r = std::tan(0.5 * sun.angle);
+  CHECK(test_scenes::channel_statistics(frame, 0).mean == Approx(sun.strength / (kPi * r * r)).epsilon(1e-4));
+}

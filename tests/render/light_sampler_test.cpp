@@ -2,6 +2,7 @@
 // rays find by themselves, and what a ray that leaves the scene sees.
 #include <catch2/catch.hpp>
 
+#include <variant>
 #include <vector>
 
 #include "lights/light_sampler.h"
@@ -19,18 +20,45 @@ RectLight rect_at(double x) {
 
 }  // namespace
 
-TEST_CASE("The distribution holds area lamps, then delta lamps, and not the uniform background", "[render]") {
-  const std::vector<Light> lights = {PointLight{}, rect_at(0.0), SpotLight{}, rect_at(2.0)};
+TEST_CASE("The distribution holds rectangles, disks, delta lamps and suns, not the uniform background", "[render]") {
+  PointLight soft_point;
+  soft_point.radius = 0.1;
+  SpotLight soft_spot;
+  soft_spot.radius = 0.2;
+  const std::vector<Light> lights = {PointLight{}, SunLight{}, rect_at(0.0), soft_spot, SpotLight{}, rect_at(2.0),
+                                     soft_point};
   const LightSampler sampler(lights, UniformBackground(glm::vec3(0.1f, 0.2f, 0.3f)));
-  REQUIRE(sampler.sampled_count() == 4);
-  CHECK(light_type(sampler.light(0)) == LightType::Area);
-  CHECK(light_type(sampler.light(1)) == LightType::Area);
-  CHECK(light_type(sampler.light(2)) == LightType::DeltaPosition);
-  CHECK(light_type(sampler.light(3)) == LightType::DeltaPosition);
-  // The background is a fifth light, outside the distribution.
-  CHECK(light_type(sampler.light(4)) == LightType::Infinite);
-  CHECK(sampler.selection_pdf() == 0.25f);
+  REQUIRE(sampler.sampled_count() == 7);
+  CHECK(std::holds_alternative<PreparedRectLight>(sampler.light(0)));
+  CHECK(std::holds_alternative<PreparedRectLight>(sampler.light(1)));
+  CHECK(std::holds_alternative<PreparedDiskLamp>(sampler.light(2)));
+  CHECK(std::holds_alternative<PreparedDiskLamp>(sampler.light(3)));
+  CHECK(light_type(sampler.light(3)) == LightType::Area);
+  CHECK(light_type(sampler.light(4)) == LightType::DeltaPosition);
+  CHECK(light_type(sampler.light(5)) == LightType::DeltaPosition);
+  CHECK(std::holds_alternative<PreparedSunLight>(sampler.light(6)));
+  // The background is an eighth light, outside the distribution.
+  CHECK(std::holds_alternative<UniformBackground>(sampler.light(7)));
+  CHECK(sampler.selection_pdf() == Approx(1.0 / 7.0));
   CHECK(sampler.has_area_lights());
+}
+
+TEST_CASE("Rays find the disks of lamps with a radius, facing their origin, within their length", "[render]") {
+  PointLight soft;
+  soft.position = glm::dvec3(0.0, 0.0, 1.0);
+  soft.radius = 0.2;
+  const LightSampler sampler({soft}, UniformBackground(glm::vec3(0.0f)));
+  const auto hits = [&](glm::vec3 origin, glm::vec3 dir, float t_max) {
+    std::vector<float> ts;
+    sampler.for_each_area_hit(origin, glm::normalize(dir), t_max, [&](const auto&, float t) { ts.push_back(t); });
+    return ts;
+  };
+  CHECK(hits({0, 0, 0}, {0, 0, 1}, 10.0f) == std::vector<float>{1.0f});
+  // The disk turns to face the origin: from the side it is still 0.2 wide.
+  CHECK(hits({3, 0, 1}, {-1, 0.06f, 0}, 10.0f).size() == 1);
+  CHECK(hits({3, 0, 1}, {-1, 0.07f, 0}, 10.0f).empty());
+  CHECK(hits({0, 0, 0}, {0, 0, 1}, 0.99f).empty());
+  CHECK(hits({0, 0, 0}, {0, 0, -1}, 10.0f).empty());
 }
 
 TEST_CASE("A pick chooses each light of the distribution over an equal interval and rescales u", "[render]") {

@@ -1,7 +1,7 @@
 #pragma once
 // Lamps with Blender 3.4 Cycles power conventions (docs/conventions.md, "Lamps").
 // Lamps never occlude; camera rays see only area lamps made visible to them (Blender's default:
-// none).
+// none). Radius-0 point and spot lamps and suns of angle 0 are reached by light sampling only.
 #include <variant>
 
 #include <glm/glm.hpp>
@@ -19,15 +19,18 @@ struct RectLight {
   bool visible_to_camera = false;
 };
 
-// Radius-0 point lamp: intensity I = power * color / (4 pi) W/sr.
+// Point lamp: intensity I = power * color / (4 pi) W/sr. With a radius R > 0, Cycles 3.4's soft
+// point lamp: a disk of radius R facing the lit point, radiance I / (pi R^2), which rays also hit.
 struct PointLight {
   glm::dvec3 position{0.0};
   double power = 10.0;
   glm::dvec3 color{1.0};
+  double radius = 0.0;  // metres (Blender's Radius)
 };
 
-// Radius-0 spot lamp along `direction`: I = power * color / (4 pi) on the axis, times
-// cos t * smoothstep((cos t - cos(angle/2)) / ((1 - cos(angle/2)) * blend)) inside the cone.
+// Spot lamp along `direction`: a point lamp's I on the axis, times
+// cos t * smoothstep((cos t - cos(angle/2)) / ((1 - cos(angle/2)) * blend)) inside the cone, for t
+// the angle from the axis to the lit point (from the sampled point of the disk when R > 0).
 struct SpotLight {
   glm::dvec3 position{0.0};
   glm::dvec3 direction{0.0, 0.0, -1.0};
@@ -35,8 +38,19 @@ struct SpotLight {
   double blend = 0.15;
   double power = 10.0;
   glm::dvec3 color{1.0};
+  double radius = 0.0;  // metres (Blender's Radius)
 };
 
-using Light = std::variant<RectLight, PointLight, SpotLight>;
+// Sun: parallel light from one direction; irradiance strength * color (W/m^2) on a surface facing
+// it. With an angular diameter > 0, Cycles 3.4's soft sun: the directions of a disk of radius
+// tan(angle / 2) at distance 1, radiance E / (pi tan^2(angle / 2) cos^3 t) at angle t off its axis.
+struct SunLight {
+  glm::dvec3 direction{0.0, 0.0, -1.0};  // the way its light travels (the lamp's -Z)
+  double strength = 1.0;                  // W/m^2 (Blender's Strength)
+  glm::dvec3 color{1.0};
+  double angle = 0.0;  // angular diameter, radians (Blender's Angle), below 180 degrees
+};
+
+using Light = std::variant<RectLight, PointLight, SpotLight, SunLight>;
 
 }  // namespace matrender

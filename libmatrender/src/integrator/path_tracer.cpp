@@ -68,12 +68,12 @@ PathTracer::PathTracer(const SceneData& scene, const LightSampler& lights, const
 glm::vec3 PathTracer::lamps_hit(const glm::vec3& origin, const glm::vec3& dir, float t_max,
                                 float bsdf_pdf, bool bsdf_delta, bool camera_ray) const {
   glm::vec3 sum(0.0f);
-  lights_.for_each_area_hit(origin, dir, t_max, [&](const PreparedRectLight& lamp, float t) {
+  lights_.for_each_area_hit(origin, dir, t_max, [&](const auto& lamp, float t) {
     if (camera_ray && !lamp.visible_to_camera()) return;
     const float weight = bsdf_delta || camera_ray
                              ? 1.0f
                              : power_heuristic(bsdf_pdf, lights_.selection_pdf() * lamp.pdf(origin, dir, t));
-    sum += weight * lamp.radiance();
+    sum += weight * lamp.radiance(dir);
   });
   return sum;
 }
@@ -135,7 +135,7 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
                                                 camera_ray);
     if (!hit.hit()) {
       if (!camera_ray || !settings_.transparent_background)
-        result.radiance += throughput * lights_.escaped_radiance(dir, bsdf_pdf, bsdf_delta || camera_ray);
+        result.radiance += throughput * lights_.escaped_radiance(dir, bsdf_pdf, bsdf_delta, camera_ray);
       // What the camera sees through: the film's transparency (Cycles averages the channels).
       if (camera_ray) result.transparency = channel_average(throughput);
       break;

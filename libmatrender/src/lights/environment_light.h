@@ -29,6 +29,7 @@ class PreparedEnvironmentLight {
   explicit PreparedEnvironmentLight(const EnvironmentMap& map);
 
   static constexpr LightType type() { return LightType::Infinite; }
+  static constexpr bool visible_to_camera() { return true; }
 
   // A direction drawn from the density; nothing when the map is black. `receiving` plays no
   // part: most directions of a map are seen from any side.

@@ -62,20 +62,50 @@ void check_rect(const RectLight& light) {
   check_emission(light.power * light.color / (4.0 * area), "radiance", "lower the power or enlarge the lamp");
 }
 
-void check_point(const glm::dvec3& position, double power, const glm::dvec3& color) {
+void check_direction(const glm::dvec3& direction) {
+  if (!(glm::length(direction) > 0.0) || !std::isfinite(glm::length(direction)))
+    refuse("its direction must be a finite non-zero vector");
+}
+
+// A point or spot lamp; with a radius, the disk's area and radiance must fit floats too.
+void check_point(const glm::dvec3& position, double power, const glm::dvec3& color, double radius) {
   check_point_within_limit(position, "position");
   check_color(color);
   check_power(power);
   check_emission(power * color / (4.0 * M_PI), "intensity", "lower the power");
+  if (!(std::isfinite(radius) && radius >= 0.0)) refuse(fmt::format("radius {} m must be finite and >= 0", radius));
+  if (radius > kMaxSceneCoordinate) refuse(fmt::format("radius {} m exceeds the scene's {} m", radius, kMaxSceneCoordinate));
+  if (radius == 0.0) return;
+  const double area = M_PI * radius * radius;
+  if (!(area >= kMinNormalFloat))
+    refuse(fmt::format("its disk's area {:g} m^2 (radius {} m) is below the {:g} single precision holds", area, radius,
+                       kMinNormalFloat));
+  check_emission(power * color / (4.0 * M_PI * area), "radiance", "lower the power or enlarge the radius");
 }
 
 void check_spot(const SpotLight& spot) {
-  check_point(spot.position, spot.power, spot.color);
-  if (!(glm::length(spot.direction) > 0.0) || !std::isfinite(glm::length(spot.direction)))
-    refuse("its direction must be a finite non-zero vector");
+  check_point(spot.position, spot.power, spot.color, spot.radius);
+  check_direction(spot.direction);
   if (!(spot.spot_angle > 0.0 && spot.spot_angle <= M_PI))
     refuse(fmt::format("spot angle {} rad must lie in (0, pi]", spot.spot_angle));
   if (!(spot.blend >= 0.0 && spot.blend <= 1.0)) refuse(fmt::format("blend {} must lie in [0, 1]", spot.blend));
+}
+
+void check_sun(const SunLight& sun) {
+  check_direction(sun.direction);
+  check_color(sun.color);
+  if (!(std::isfinite(sun.strength) && sun.strength >= 0.0))
+    refuse(fmt::format("strength {} W/m^2 must be finite and non-negative", sun.strength));
+  check_emission(sun.strength * sun.color, "irradiance", "lower the strength");
+  if (!(sun.angle >= 0.0 && sun.angle <= kMaxSunAngle))
+    refuse(fmt::format("angle {} rad must lie in [0, {}]", sun.angle, kMaxSunAngle));
+  if (sun.angle == 0.0) return;
+  // The radiance E / (pi tan^2(angle / 2)) at the centre of the disk of directions.
+  const double tangent = std::tan(0.5 * sun.angle);
+  if (!(M_PI * tangent * tangent >= kMinNormalFloat))
+    refuse(fmt::format("angle {:g} rad is too small for single precision; use 0 for a single direction", sun.angle));
+  check_emission(sun.strength * sun.color / (M_PI * tangent * tangent), "radiance",
+                 "lower the strength or widen the angle");
 }
 
 }  // namespace
@@ -83,8 +113,10 @@ void check_spot(const SpotLight& spot) {
 std::optional<std::string> light_problem(const Light& light) {
   try {
     if (const auto* rect = std::get_if<RectLight>(&light)) check_rect(*rect);
-    if (const auto* point = std::get_if<PointLight>(&light)) check_point(point->position, point->power, point->color);
+    if (const auto* point = std::get_if<PointLight>(&light))
+      check_point(point->position, point->power, point->color, point->radius);
     if (const auto* spot = std::get_if<SpotLight>(&light)) check_spot(*spot);
+    if (const auto* sun = std::get_if<SunLight>(&light)) check_sun(*sun);
   } catch (const Refusal& refusal) {
     return refusal.reason;
   }

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <type_traits>
-#include <variant>
 
 #include "sampling/warp.h"
 
@@ -22,14 +21,26 @@ LightSampler::LightSampler(const std::vector<Light>& lights, const WorldLight& w
   const std::vector<PreparedRectLight> rects = prepare_rect_lights(lights);
   area_hits_ = RectLightHits(rects);
   lights_.assign(rects.begin(), rects.end());
+  rect_count_ = rects.size();
   for (const PreparedRectLight& rect : rects) camera_visible_lamps_ = camera_visible_lamps_ || rect.visible_to_camera();
   for (const Light& light : lights) {
-    std::visit(
-        [this](const auto& l) {
-          using T = std::decay_t<decltype(l)>;
-          if constexpr (!std::is_same_v<T, RectLight>) lights_.emplace_back(PreparedDeltaLight(l));
-        },
-        light);
+    if (const auto* point = std::get_if<PointLight>(&light); point && point->radius > 0.0)
+      lights_.emplace_back(PreparedDiskLamp(*point));
+    if (const auto* spot = std::get_if<SpotLight>(&light); spot && spot->radius > 0.0)
+      lights_.emplace_back(PreparedDiskLamp(*spot));
+  }
+  disk_count_ = lights_.size() - rect_count_;
+  for (const Light& light : lights) {
+    if (const auto* point = std::get_if<PointLight>(&light); point && point->radius == 0.0)
+      lights_.emplace_back(PreparedDeltaLight(*point));
+    if (const auto* spot = std::get_if<SpotLight>(&light); spot && spot->radius == 0.0)
+      lights_.emplace_back(PreparedDeltaLight(*spot));
+  }
+  for (const Light& light : lights) {
+    if (const auto* sun = std::get_if<SunLight>(&light)) {
+      infinite_.push_back(lights_.size());
+      lights_.emplace_back(PreparedSunLight(*sun));
+    }
   }
   if (const auto* map = std::get_if<PreparedEnvironmentLight>(&world)) {
     if (!map->black()) {
@@ -64,13 +75,14 @@ std::optional<LightSample> LightSampler::sample(const glm::vec3& p, const Receiv
   return s;
 }
 
-glm::vec3 LightSampler::escaped_radiance(const glm::vec3& dir, float bsdf_pdf, bool unweighted) const {
+glm::vec3 LightSampler::escaped_radiance(const glm::vec3& dir, float bsdf_pdf, bool unweighted, bool camera_ray) const {
   glm::vec3 sum(0.0f);
   for (size_t index : infinite_) {
     with_light(lights_[index], [&](const auto& light) {
       if constexpr (std::decay_t<decltype(light)>::type() == LightType::Infinite) {
+        if (camera_ray && !light.visible_to_camera()) return;
         const float light_pdf = index < sampled_count_ ? selection_pdf() * light.pdf(dir) : 0.0f;
-        const float weight = unweighted ? 1.0f : power_heuristic(bsdf_pdf, light_pdf);
+        const float weight = unweighted || camera_ray ? 1.0f : power_heuristic(bsdf_pdf, light_pdf);
         sum += weight * light.radiance(dir);
       }
     });

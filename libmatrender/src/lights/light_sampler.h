@@ -23,8 +23,9 @@ class LightSampler {
   // A uniform black world is no light at all.
   LightSampler(const std::vector<Light>& lights, const WorldLight& world);
 
-  // The lights next-event estimation draws from are lights(0 .. sampled_count() - 1): area
-  // lamps first, then delta lamps, each in scene order, then an environment map.
+  // The lights next-event estimation draws from are lights(0 .. sampled_count() - 1): rectangles
+  // first, then point and spot lamps with a radius (disks), radius-0 ones, suns, each in scene
+  // order, then an environment map.
   size_t sampled_count() const { return sampled_count_; }
   bool empty() const { return sampled_count_ == 0; }
   // The probability of drawing each light of the distribution.
@@ -44,29 +45,35 @@ class LightSampler {
   // the pick. Lights wholly outside `receiving` give no sample.
   std::optional<LightSample> sample(const glm::vec3& p, const ReceivingDirections& receiving, glm::vec2 u) const;
 
-  bool has_area_lights() const { return !area_hits_.empty(); }
+  bool has_area_lights() const { return !area_hits_.empty() || disk_count_ > 0; }
   // Some area lamp is visible to camera rays (most scenes have none, and their camera rays then
   // look for no lamp).
   bool has_camera_visible_lamps() const { return camera_visible_lamps_; }
-  // Calls visit(area_light, t) for each area light whose emitting side the ray meets at a
-  // distance t in (0, t_max), in order.
+  // Calls visit(area_light, t) for each area light (a PreparedRectLight or a PreparedDiskLamp)
+  // whose emitting side the ray meets at a distance t in (0, t_max), in order.
   template <class Visit>
   void for_each_area_hit(const glm::vec3& origin, const glm::vec3& dir, float t_max, Visit&& visit) const {
     area_hits_.for_each_hit(origin, dir, t_max, [&](size_t index, float t) {
       visit(*std::get_if<PreparedRectLight>(&lights_[index]), t);
     });
+    for (size_t i = rect_count_; i < rect_count_ + disk_count_; ++i) {
+      const PreparedDiskLamp& disk = *std::get_if<PreparedDiskLamp>(&lights_[i]);
+      if (const std::optional<float> t = disk.intersect(origin, dir, t_max)) visit(disk, *t);
+    }
   }
 
   // What a ray leaving the scene along dir sees of the infinite lights, each MIS-weighted
   // against light sampling (power heuristic) unless `unweighted`: the ray came from a specular
-  // lobe or from the camera, where no light sample competes.
-  glm::vec3 escaped_radiance(const glm::vec3& dir, float bsdf_pdf, bool unweighted) const;
+  // lobe, where no light sample competes. A camera ray sees those visible to the camera, whole.
+  glm::vec3 escaped_radiance(const glm::vec3& dir, float bsdf_pdf, bool unweighted, bool camera_ray = false) const;
 
  private:
   std::vector<SceneLight> lights_;
   size_t sampled_count_ = 0;
   std::vector<size_t> infinite_;  // indices of the infinite lights
-  RectLightHits area_hits_;       // over lights(0 .. area count - 1)
+  RectLightHits area_hits_;       // over lights(0 .. rect_count_ - 1)
+  size_t rect_count_ = 0;
+  size_t disk_count_ = 0;         // lights(rect_count_ .. rect_count_ + disk_count_ - 1)
   bool camera_visible_lamps_ = false;
 };
 

@@ -27,7 +27,8 @@ class PreparedRectLight {
   // Solid-angle pdf of sample() producing direction wi from p, given that the ray hits the lamp
   // at distance t.
   float pdf(const glm::vec3& p, const glm::vec3& wi, float t) const;
-  glm::vec3 radiance() const { return radiance_; }
+  // The same toward every ray that meets the emitting side.
+  glm::vec3 radiance(const glm::vec3& /*dir*/) const { return radiance_; }
   bool visible_to_camera() const { return visible_to_camera_; }
   // The lamp's rectangle; its z is the lamp's +Z, the side that does not emit.
   const Rectangle3& rectangle() const { return rect_; }

@@ -6,31 +6,38 @@
 //   static LightType type();   what it is (light_type.h)
 //   std::optional<LightSample> sample(p, ReceivingDirections, glm::vec2 u) const;
 // Which lights next-event estimation draws from is LightSampler's choice (light_sampler.h).
-// Area lights, which rays hit (found by RectLightHits): pdf(p, wi, t), the solid-angle density
-// of sample() giving wi, and radiance(). Infinite lights, which rays that leave the scene see:
-// pdf(direction) and radiance(direction); those that sample() can draw are in the distribution.
+// Area lights, which rays hit (LightSampler::for_each_area_hit finds them): pdf(p, wi, t), the
+// solid-angle density of sample() giving wi, radiance(dir) toward a ray along dir, and
+// visible_to_camera(). Infinite lights, which rays that leave the scene see: pdf(direction),
+// radiance(direction) and visible_to_camera(); those that sample() can draw are in the
+// distribution.
 #include <variant>
 
+#include "lights/disk_lamp.h"
 #include "lights/environment_light.h"
 #include "lights/light_type.h"
 #include "lights/rect_light.h"
 #include "lights/spot_light.h"
+#include "lights/sun_light.h"
 #include "lights/uniform_background.h"
 
 namespace matrender {
 
-using SceneLight = std::variant<PreparedRectLight, PreparedDeltaLight, UniformBackground, PreparedEnvironmentLight>;
+using SceneLight = std::variant<PreparedRectLight, PreparedDiskLamp, PreparedDeltaLight, PreparedSunLight,
+                                UniformBackground, PreparedEnvironmentLight>;
 
 // f(the light as its own type). A switch, not std::visit, so that the lights' methods inline
 // (GCC calls std::visit's alternatives through a table).
 template <class F>
 decltype(auto) with_light(const SceneLight& light, F&& f) {
-  static_assert(std::variant_size_v<SceneLight> == 4, "a new light needs its case here");
+  static_assert(std::variant_size_v<SceneLight> == 6, "a new light needs its case here");
   switch (light.index()) {
     case 0: return f(*std::get_if<0>(&light));
     case 1: return f(*std::get_if<1>(&light));
     case 2: return f(*std::get_if<2>(&light));
-    default: return f(*std::get_if<3>(&light));
+    case 3: return f(*std::get_if<3>(&light));
+    case 4: return f(*std::get_if<4>(&light));
+    default: return f(*std::get_if<5>(&light));
   }
 }
 

@@ -340,16 +340,17 @@ Light read_area_light(const Node& node) {
 }
 
 Light read_point_light(const Node& node) {
-  node.expect_keys({"type", "position", "power", "color"});
+  node.expect_keys({"type", "position", "power", "color", "radius"});
   PointLight light;
   light.position = read_vec3(node.required("position"));
   light.power = node.required("power").non_negative();
   if (auto color = node.find("color")) light.color = read_color(*color);
+  if (auto radius = node.find("radius")) light.radius = radius->non_negative();
   return light;
 }
 
 Light read_spot_light(const Node& node) {
-  node.expect_keys({"type", "position", "look_at", "spot_angle_deg", "blend", "power", "color"});
+  node.expect_keys({"type", "position", "look_at", "spot_angle_deg", "blend", "power", "color", "radius"});
   SpotLight light;
   light.position = read_vec3(node.required("position"));
   light.direction = glm::normalize(read_target(node, light.position) - light.position);
@@ -359,6 +360,21 @@ Light read_spot_light(const Node& node) {
   if (auto blend = node.find("blend")) light.blend = blend->unit_interval();
   light.power = node.required("power").non_negative();
   if (auto color = node.find("color")) light.color = read_color(*color);
+  if (auto radius = node.find("radius")) light.radius = radius->non_negative();
+  return light;
+}
+
+// A sun shines from `position` toward `look_at`: only the direction between them matters.
+Light read_sun_light(const Node& node) {
+  node.expect_keys({"type", "position", "look_at", "strength", "color", "angle_deg"});
+  SunLight light;
+  const glm::dvec3 position = read_vec3(node.required("position"));
+  light.direction = glm::normalize(read_target(node, position) - position);
+  light.strength = node.required("strength").non_negative();
+  if (auto color = node.find("color")) light.color = read_color(*color);
+  if (auto angle = node.find("angle_deg"))
+    light.angle = glm::radians(angle->number_where([](double v) { return v >= 0.0 && v <= glm::degrees(kMaxSunAngle); },
+                                                   fmt::format("an angle in [0, {:g}] degrees", glm::degrees(kMaxSunAngle))));
   return light;
 }
 
@@ -375,10 +391,11 @@ LightsDescription read_lights(const Node& node) {
   std::vector<Light> lights;
   for (size_t k = 0; k < node.array_size("an array of lights"); ++k) {
     const Node light = node.item(k);
-    switch (light.required("type").choice({"area", "point", "spot"})) {
+    switch (light.required("type").choice({"area", "point", "spot", "sun"})) {
       case 0: lights.push_back(read_area_light(light)); break;
       case 1: lights.push_back(read_point_light(light)); break;
-      default: lights.push_back(read_spot_light(light)); break;
+      case 2: lights.push_back(read_spot_light(light)); break;
+      default: lights.push_back(read_sun_light(light)); break;
     }
     // Values each valid alone may still not render: a lamp 1e-300 m wide, a power of 1e308 W.
     if (const std::optional<std::string> problem = light_problem(lights.back())) light.fail(*problem);

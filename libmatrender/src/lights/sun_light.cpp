@@ -1,0 +1,57 @@
+#include "lights/sun_light.h"
+
+#include <cmath>
+#include <limits>
+
+#include "bsdf/shading_frame.h"
+#include "sampling/warp.h"
+
+namespace matrender {
+
+PreparedSunLight::PreparedSunLight(const SunLight& light)
+    : to_sun_(-glm::normalize(light.direction)), irradiance_(light.strength * light.color) {
+  const double radius = std::tan(0.5 * light.angle);
+  disk_radius_ = static_cast<float>(radius);
+  inverse_disk_area_ = radius > 0.0 ? static_cast<float>(1.0 / (M_PI * radius * radius)) : 0.0f;
+}
+
+float PreparedSunLight::density(const glm::vec3& direction) const {
+  const float cos_t = glm::dot(direction, to_sun_);
+  if (!(cos_t > 0.0f)) return 0.0f;
+  const float sin_t = glm::length(glm::cross(direction, to_sun_));
+  // A relative 1e-6 wider than the disk, so that rounding in sample() never drops a direction
+  // drawn on its rim; the light is this cone throughout.
+  if (!(sin_t <= disk_radius_ * cos_t * (1.0f + 1e-6f))) return 0.0f;
+  return inverse_disk_area_ / (cos_t * cos_t * cos_t);
+}
+
+std::optional<LightSample> PreparedSunLight::sample(const glm::vec3& /*p*/, const ReceivingDirections& receiving,
+                                                    glm::vec2 u) const {
+  LightSample s;
+  s.distance = std::numeric_limits<float>::infinity();
+  if (disk_radius_ == 0.0f) {
+    if (!receiving.every_direction && !(glm::dot(to_sun_, receiving.normal) > 0.0f)) return std::nullopt;
+    s.wi = to_sun_;
+    s.radiance = irradiance_;
+    s.pdf = 1.0f;
+    s.delta = true;
+    return s;
+  }
+  const ShadingFrame disk = ShadingFrame::from_normal(to_sun_);
+  const glm::vec2 on_disk = disk_radius_ * sample_uniform_disk_concentric(u);
+  s.wi = glm::normalize(to_sun_ + disk.x * on_disk.x + disk.y * on_disk.y);
+  s.pdf = density(s.wi);
+  if (!(s.pdf > 0.0f)) return std::nullopt;
+  s.radiance = irradiance_ * s.pdf;
+  return s;
+}
+
+float PreparedSunLight::pdf(const glm::vec3& direction) const {
+  return disk_radius_ > 0.0f ? density(direction) : 0.0f;
+}
+
+glm::vec3 PreparedSunLight::radiance(const glm::vec3& direction) const {
+  return disk_radius_ > 0.0f ? irradiance_ * density(direction) : glm::vec3(0.0f);
+}
+
+}  // namespace matrender

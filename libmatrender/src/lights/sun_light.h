@@ -1,0 +1,43 @@
+#pragma once
+// The sun, Cycles 3.4's distant lamp (scene/light.cpp and kernel/light/light.h, LIGHT_DISTANT):
+// parallel light of irradiance E = S c. With an angular diameter a > 0 it is a disk of radius
+// r = tan(a / 2) seen at distance 1: directions are drawn uniformly over that disk, so the
+// solid-angle pdf is 1 / (pi r^2 cos^3 t) at angle t off the axis, and the radiance is E times the
+// same, which makes every light sample carry exactly E. Rays that leave the scene inside the cone
+// see it, weighed against light sampling by MIS; camera rays do not (lamps are invisible to them).
+// Of angle 0 it is one direction (a delta light): light sampling is then its only strategy.
+#include <optional>
+
+#include <glm/glm.hpp>
+
+#include "lights/light_sample.h"
+#include "lights/light_type.h"
+#include "matrender/light.h"
+
+namespace matrender {
+
+class PreparedSunLight {
+ public:
+  explicit PreparedSunLight(const SunLight& light);
+
+  // What rays that leave the scene may see; a sun of angle 0 gives them nothing and samples as a
+  // delta light.
+  static constexpr LightType type() { return LightType::Infinite; }
+  static constexpr bool visible_to_camera() { return false; }
+
+  std::optional<LightSample> sample(const glm::vec3& p, const ReceivingDirections& receiving, glm::vec2 u) const;
+  float pdf(const glm::vec3& direction) const;
+  glm::vec3 radiance(const glm::vec3& direction) const;
+
+ private:
+  // 1 / (pi r^2 cos^3 t) inside the cone, 0 outside; the cone test compares tan t with r, from
+  // the cross product, which stays exact for suns far smaller than float's cosines resolve.
+  float density(const glm::vec3& direction) const;
+
+  glm::vec3 to_sun_;
+  glm::vec3 irradiance_;
+  float disk_radius_ = 0.0f;  // tan(angle / 2)
+  float inverse_disk_area_ = 0.0f;
+};
+
+}  // namespace matrender
