@@ -73,11 +73,7 @@ int main(int argc, char** argv) {
   shaders_ref::CyclesScene cycles_scene;
   cycles_scene.mesh = bench::displaced_sphere(triangles);
   cycles_scene.material = bench::bench_material();
-  for (const matrender::Light& light : matrender::rig_lights(matrender::paper_rig(cycles_scene.mesh))) {
-    const auto* rect = std::get_if<matrender::RectLight>(&light);
-    if (!rect) throw std::runtime_error("cycles_side_by_side: the rig has a spot; only rectangles go to Blender");
-    cycles_scene.lamps.push_back(*rect);
-  }
+  cycles_scene.lamps = matrender::rig_lights(matrender::paper_rig(cycles_scene.mesh));
   cycles_scene.camera = matrender::paper_view(cycles_scene.mesh, resolution, resolution);
   const matgeom::TriangleMesh& mesh = cycles_scene.mesh;
   const matrender::Camera& camera = cycles_scene.camera;
@@ -96,7 +92,7 @@ int main(int argc, char** argv) {
 
   matrender::Scene scene;
   scene.add_mesh(mesh, {scene.add_material(cycles_scene.material)});
-  for (const matrender::RectLight& lamp : cycles_scene.lamps) scene.add_light(lamp);
+  for (const matrender::Light& lamp : cycles_scene.lamps) scene.add_light(lamp);
   scene.commit();
   const auto render_ours = [&](int spp, double* seconds) {
     matrender::RenderSettings settings;

@@ -15,6 +15,7 @@ import sys
 import time
 
 import bpy
+import mathutils
 from mathutils import Matrix
 
 
@@ -49,16 +50,38 @@ def make_material(description):
     return material
 
 
+def aimed_along(position, direction):
+    """The world matrix of a lamp at `position` whose -Z (where Blender lamps shine) is `direction`."""
+    rotation = mathutils.Vector(direction).to_track_quat("-Z", "Y").to_matrix().to_4x4()
+    return Matrix.Translation(position) @ rotation
+
+
 def add_lamps(scene, lamps):
     for k, lamp in enumerate(lamps):
-        light = bpy.data.lights.new(f"lamp_{k}", "AREA")
-        light.shape = "RECTANGLE"
-        light.size = lamp["size_x"]
-        light.size_y = lamp["size_y"]
-        light.energy = lamp["power"]
+        kind = lamp["type"]
+        light = bpy.data.lights.new(f"lamp_{k}", {"area": "AREA", "point": "POINT", "spot": "SPOT", "sun": "SUN"}[kind])
         light.color = lamp["color"]
+        if kind == "area":
+            light.shape = "RECTANGLE"
+            light.size = lamp["size_x"]
+            light.size_y = lamp["size_y"]
+            light.energy = lamp["power"]
+            matrix = matrix_from_columns(lamp["light_to_world"])
+        elif kind == "sun":
+            light.energy = lamp["strength"]
+            light.angle = lamp["angle"]
+            matrix = aimed_along((0.0, 0.0, 0.0), lamp["direction"])
+        else:
+            light.energy = lamp["power"]
+            light.shadow_soft_size = lamp["radius"]
+            if kind == "spot":
+                light.spot_size = lamp["spot_angle"]
+                light.spot_blend = lamp["blend"]
+                matrix = aimed_along(lamp["position"], lamp["direction"])
+            else:
+                matrix = Matrix.Translation(lamp["position"])
         obj = bpy.data.objects.new(f"lamp_{k}", light)
-        obj.matrix_world = matrix_from_columns(lamp["light_to_world"])
+        obj.matrix_world = matrix
         scene.collection.objects.link(obj)
 
 

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <memory>
 #include <stdexcept>
+#include <variant>
 
 #include <OpenImageIO/imageio.h>
 #include <nlohmann/json.hpp>
@@ -42,6 +43,35 @@ json principled_inputs(const matrender::Material& m) {
   return inputs;
 }
 
+json rgb(const glm::dvec3& c) { return {c.r, c.g, c.b}; }
+json xyz(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
+
+json describe_lamp(const matrender::Light& light) {
+  if (const auto* rect = std::get_if<matrender::RectLight>(&light))
+    return {{"type", "area"},
+            {"light_to_world", column_major(rect->light_to_world)},
+            {"size_x", rect->size_x},
+            {"size_y", rect->size_y},
+            {"power", rect->power},
+            {"color", rgb(rect->color)}};
+  if (const auto* point = std::get_if<matrender::PointLight>(&light))
+    return {{"type", "point"},
+            {"position", xyz(point->position)},
+            {"radius", point->radius},
+            {"power", point->power},
+            {"color", rgb(point->color)}};
+  if (const auto* spot = std::get_if<matrender::SpotLight>(&light))
+    return {{"type", "spot"},          {"position", xyz(spot->position)}, {"direction", xyz(spot->direction)},
+            {"radius", spot->radius},  {"spot_angle", spot->spot_angle},  {"blend", spot->blend},
+            {"power", spot->power},    {"color", rgb(spot->color)}};
+  const auto& sun = std::get<matrender::SunLight>(light);
+  return {{"type", "sun"},
+          {"direction", xyz(sun.direction)},
+          {"angle", sun.angle},
+          {"strength", sun.strength},
+          {"color", rgb(sun.color)}};
+}
+
 json describe(const CyclesScene& scene) {
   json positions = json::array(), normals = json::array(), triangles = json::array();
   for (const glm::vec3& p : scene.mesh.positions) positions.push_back({p.x, p.y, p.z});
@@ -53,12 +83,7 @@ json describe(const CyclesScene& scene) {
   if (scene.mesh.normals.size() != scene.mesh.positions.size())
     throw std::invalid_argument("render_with_cycles: the mesh needs one normal per vertex");
   json lamps = json::array();
-  for (const matrender::RectLight& lamp : scene.lamps)
-    lamps.push_back({{"light_to_world", column_major(lamp.light_to_world)},
-                     {"size_x", lamp.size_x},
-                     {"size_y", lamp.size_y},
-                     {"power", lamp.power},
-                     {"color", {lamp.color.r, lamp.color.g, lamp.color.b}}});
+  for (const matrender::Light& lamp : scene.lamps) lamps.push_back(describe_lamp(lamp));
   const matrender::Camera& c = scene.camera;
   json environment = nullptr;
   if (scene.environment)

@@ -24,11 +24,11 @@ struct CyclesEnvironment {
 };
 
 // What Blender rebuilds: one smooth mesh (vertex normals) in one untextured Principled material,
-// rectangle lamps, a camera and a uniform background or an environment map.
+// lamps of every kind, a camera and a uniform background or an environment map.
 struct CyclesScene {
   matgeom::TriangleMesh mesh;
   matrender::Material material;
-  std::vector<matrender::RectLight> lamps;
+  std::vector<matrender::Light> lamps;
   matrender::Camera camera;
   glm::vec3 background{0.0f};
   std::optional<CyclesEnvironment> environment;  // replaces the background
