@@ -15,24 +15,13 @@
 #include <fmt/core.h>
 
 #include "bench_scenes.h"
+#include "image_error.h"
 #include "matrender/paper_setup.h"
 #include "matrender/render.h"
 #include "matrender/rig_lights.h"
 #include "shaders_ref/cycles_reference.h"
 
 namespace {
-
-double rmse(const std::vector<float>& a, const std::vector<float>& b) {
-  double sum = 0.0;
-  for (size_t i = 0; i < a.size(); ++i) sum += (double(a[i]) - b[i]) * (double(a[i]) - b[i]);
-  return std::sqrt(sum / a.size());
-}
-
-double mean(const std::vector<float>& a) {
-  double sum = 0.0;
-  for (const float v : a) sum += v;
-  return sum / a.size();
-}
 
 struct Curve {
   std::vector<double> seconds, error;  // by increasing sample count
@@ -119,10 +108,10 @@ int main(int argc, char** argv) {
     double seconds;
     const std::vector<float> image = render_ours(spp, &seconds);
     ours.seconds.push_back(seconds + scene.bvh_build_seconds());
-    ours.error.push_back(rmse(image, ours_reference));
+    ours.error.push_back(bench::rmse(image, ours_reference));
     cycles.seconds.push_back(cycles_renders[k].seconds);
     cycles.error.push_back(
-        rmse(shaders_ref::read_rgb_exr(cycles_renders[k].exr_path, resolution, resolution), cycles_reference));
+        bench::rmse(shaders_ref::read_rgb_exr(cycles_renders[k].exr_path, resolution, resolution), cycles_reference));
     fmt::print("| {} | {:.3f} | {:.5f} | {:.3f} | {:.5f} |\n", spp, ours.seconds.back(), ours.error.back(),
                cycles.seconds.back(), cycles.error.back());
   }
@@ -135,8 +124,8 @@ int main(int argc, char** argv) {
     const double a = seconds_to_reach(ours, target), b = seconds_to_reach(cycles, target);
     fmt::print("| {:.5f} | {:.3f} | {:.3f} | {:.2f} |\n", target, a, b, b / a);
   }
-  const double mean_ours = mean(ours_reference), mean_cycles = mean(cycles_reference);
+  const double mean_ours = bench::mean(ours_reference), mean_cycles = bench::mean(cycles_reference);
   fmt::print("\nConverged images: RMSE between them {:.5f} (mean pixel {:.5f} ours, {:.5f} Cycles, ratio {:.4f}).\n",
-             rmse(ours_reference, cycles_reference), mean_ours, mean_cycles, mean_ours / mean_cycles);
+             bench::rmse(ours_reference, cycles_reference), mean_ours, mean_cycles, mean_ours / mean_cycles);
   return 0;
 }

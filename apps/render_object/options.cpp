@@ -262,6 +262,16 @@ void add_render_options(CLI::App& app, Options& o) {
       ->excludes("--illuminance")
       ->group(group);
   app.add_flag("--transparent", o.transparent, "background pixels get alpha 0 and colour 0")->group(group);
+  app.add_option_function<std::string>(
+         "--light-selection",
+         [&o](const std::string& how) {
+           o.light_selection = how == "uniform" ? matrender::LightSelection::Uniform : matrender::LightSelection::Importance;
+         },
+         "how each shading point picks the light it samples: importance (by a bound on the irradiance each "
+         "can give it) or uniform (each equally, as Cycles 3.4); only the noise differs")
+      ->check(CLI::IsMember({"importance", "uniform"}))
+      ->default_str("importance")
+      ->group(group);
   app.add_flag("--cycles-parity", o.cycles_parity,
                "reproduce Blender 3.4 Cycles' own estimators where they are biased (clearcoat: lamp "
                "reflections up to 1.76x too bright), for parity with images made in Blender")
@@ -361,6 +371,7 @@ void apply_render_options(const Options& o, SceneDescription& scene) {
   if (o.seed) s.seed = *o.seed;
   if (o.transparent) s.transparent_background = true;
   if (o.cycles_parity) s.cycles_parity = true;
+  if (o.light_selection) s.light_selection = *o.light_selection;
   if (o.exposure) scene.exposure_stops = *o.exposure;
   s.threads = app_support::announced_worker_threads("render_object", "--threads", o.threads);
   s.aovs = o.aovs;

@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "matrender/frame.h"
+#include "matrender/render.h"
 #include "matrender/scene_description.h"
 
 namespace CLI {
@@ -43,6 +44,7 @@ struct Options {
   bool paper_powers = false;
   bool transparent = false;
   bool cycles_parity = false;
+  std::optional<matrender::LightSelection> light_selection;
 
   // The run itself.
   int threads = 0;  // 0 = all hardware threads

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "lights/light_sampler.h"
+#include "uniform_floats.h"
 
 using namespace matrender;
 
@@ -39,7 +40,6 @@ TEST_CASE("The distribution holds rectangles, disks, delta lamps and suns, not t
   CHECK(std::holds_alternative<PreparedSunLight>(sampler.light(6)));
   // The background is an eighth light, outside the distribution.
   CHECK(std::holds_alternative<UniformBackground>(sampler.light(7)));
-  CHECK(sampler.selection_pdf() == Approx(1.0 / 7.0));
   CHECK(sampler.has_area_lights());
 }
 
@@ -61,31 +61,105 @@ TEST_CASE("Rays find the disks of lamps with a radius, facing their origin, with
   CHECK(hits({0, 0, 0}, {0, 0, -1}, 10.0f).empty());
 }
 
-TEST_CASE("A pick chooses each light of the distribution over an equal interval and rescales u", "[render]") {
-  const LightSampler sampler({rect_at(0.0), PointLight{}, SpotLight{}}, UniformBackground(glm::vec3(0.0f)));
+TEST_CASE("A uniform pick chooses each light over an equal interval and rescales u", "[render]") {
+  const LightSampler sampler({rect_at(0.0), PointLight{}, SpotLight{}}, UniformBackground(glm::vec3(0.0f)),
+                             LightSelection::Uniform);
+  const PickSite site = sampler.site(glm::vec3(0.0f), {});
   for (int k = 0; k < 3; ++k)
     for (double within : {0.0, 0.25, 0.5, 0.75}) {
       float u = static_cast<float>((k + within) / 3.0);
-      const auto picked = sampler.pick(&u);
+      const auto picked = sampler.pick(site, &u);
       REQUIRE(picked);
       CHECK(picked->index == static_cast<size_t>(k));
       CHECK(picked->probability == Approx(1.0 / 3.0));
       CHECK(u == Approx(within).margin(1e-6));
     }
   float last = 0x1.fffffep-1f;
-  const auto picked = sampler.pick(&last);
+  const auto picked = sampler.pick(site, &last);
   REQUIRE(picked);
   CHECK(picked->index == 2);
   CHECK(last < 1.0f);
 }
 
+TEST_CASE("An importance pick chooses each light in proportion to its importance and rescales u", "[render]") {
+  // Two point lamps, one four times as far from the site: 16 times less irradiance; a rectangle
+  // facing away from the site can give it nothing and is never picked.
+  RectLight away = rect_at(0.0);  // emits down -Z, the site is above it
+  const std::vector<Light> lights = {away, PointLight{glm::dvec3(0.0, 0.0, 2.0), 10.0, glm::dvec3(1.0)},
+                                     PointLight{glm::dvec3(0.0, 0.0, 5.0), 10.0, glm::dvec3(1.0)}};
+  const LightSampler sampler(lights, UniformBackground(glm::vec3(0.0f)));
+  const PickSite site = sampler.site(glm::vec3(0.0f, 0.0f, 1.0f), {glm::vec3(0.0f, 0.0f, 1.0f), false});
+  const double near = 10.0 / (4.0 * M_PI) / 1.0, far = 10.0 / (4.0 * M_PI) / 16.0;
+  CHECK(site.total_importance == Approx(near + far).epsilon(1e-5));
+  const auto& rect = std::get<PreparedRectLight>(sampler.light(0));
+  CHECK(sampler.pick_probability(rect, site) == 0.0f);
+  CHECK(sampler.pick_probability(std::get<PreparedDeltaLight>(sampler.light(1)), site) == Approx(16.0 / 17.0));
+  for (double within : {0.0, 0.3, 0.9}) {
+    float u = static_cast<float>(within * 16.0 / 17.0);
+    auto picked = sampler.pick(site, &u);
+    REQUIRE(picked);
+    CHECK(picked->index == 1);
+    CHECK(u == Approx(within).margin(1e-5));
+    u = static_cast<float>((16.0 + within) / 17.0);
+    picked = sampler.pick(site, &u);
+    REQUIRE(picked);
+    CHECK(picked->index == 2);
+    CHECK(picked->probability == Approx(1.0 / 17.0));
+    CHECK(u == Approx(within).margin(1e-4));
+  }
+  // Below the plane of a reflecting BSDF nothing can light it: no pick.
+  const PickSite under = sampler.site(glm::vec3(0.0f, 0.0f, 1.0f), {glm::vec3(0.0f, 0.0f, -1.0f), false});
+  float u = 0.5f;
+  CHECK(under.total_importance == 0.0f);
+  CHECK_FALSE(sampler.pick(under, &u));
+}
+
+TEST_CASE("Importance is positive wherever a light can light a point", "[render]") {
+  // For random points and normals around lamps of every kind, any light sample that arrives above
+  // the receiving plane with radiance comes from a light of positive importance there: light
+  // selection never leaves out light the image needs.
+  SpotLight spot;
+  spot.position = glm::dvec3(0.2, -0.3, 1.0);
+  spot.direction = glm::normalize(glm::dvec3(0.1, 0.2, -1.0));
+  spot.spot_angle = 0.6;
+  SpotLight soft_spot = spot;
+  soft_spot.radius = 0.3;
+  PointLight soft_point{glm::dvec3(-0.5, 0.4, 0.3), 20.0, glm::dvec3(1.0), 0.4};
+  RectLight tilted = rect_at(0.3);
+  tilted.light_to_world = glm::dmat4(glm::dvec4(glm::normalize(glm::dvec3(1, 0, 1)), 0), glm::dvec4(0, 1, 0, 0),
+                                     glm::dvec4(glm::normalize(glm::dvec3(-1, 0, 1)), 0), glm::dvec4(0.3, 0, 0.5, 1));
+  tilted.size_x = 2.0;
+  SunLight sun;
+  sun.direction = glm::normalize(glm::dvec3(0.3, 0.1, -1.0));
+  sun.angle = 0.4;
+  const std::vector<Light> lights = {tilted, soft_point, soft_spot, spot, sun};
+  const LightSampler sampler(lights, UniformBackground(glm::vec3(0.0f)));
+  UniformFloats rng(17);
+  int lit = 0;
+  for (int n = 0; n < 20000; ++n) {
+    const glm::vec3 p = 2.0f * glm::vec3(rng.next(), rng.next(), rng.next()) - glm::vec3(1.0f);
+    const ReceivingDirections receiving{random_unit_vector(rng), n % 5 == 0};
+    for (size_t i = 0; i < sampler.sampled_count(); ++i)
+      with_light(sampler.light(i), [&](const auto& light) {
+        const auto s = light.sample(p, receiving, glm::vec2(rng.next(), rng.next()));
+        if (!s || !(s->radiance.x + s->radiance.y + s->radiance.z > 0.0f)) return;
+        if (!receiving.every_direction && !(glm::dot(s->wi, receiving.normal) > 0.0f)) return;
+        ++lit;
+        INFO("light " << i << " at (" << p.x << ", " << p.y << ", " << p.z << ")");
+        CHECK(light.importance(p, receiving) > 0.0f);
+      });
+  }
+  CHECK(lit > 10000);
+}
+
 TEST_CASE("Without lamps nothing is drawn, and a black background is no light", "[render]") {
   const LightSampler dark({}, UniformBackground(glm::vec3(0.0f)));
   float u = 0.5f;
+  const PickSite site = dark.site(glm::vec3(0.0f), {});
   CHECK(dark.empty());
-  CHECK_FALSE(dark.pick(&u));
-  CHECK_FALSE(dark.sample(glm::vec3(0.0f), {}, glm::vec2(0.5f)));
-  CHECK(dark.escaped_radiance(glm::vec3(0, 0, 1), 1.0f, false) == glm::vec3(0.0f));
+  CHECK_FALSE(dark.pick(site, &u));
+  CHECK_FALSE(dark.sample(site, glm::vec2(0.5f)));
+  CHECK(dark.escaped_radiance(glm::vec3(0, 0, 1), 1.0f, false, false, site) == glm::vec3(0.0f));
   CHECK_FALSE(dark.has_area_lights());
 }
 
@@ -93,15 +167,17 @@ TEST_CASE("A ray leaving the scene sees the uniform background with MIS weight 1
   // The background is never drawn by light sampling, so BSDF sampling is its only strategy.
   const glm::vec3 background(0.1f, 0.2f, 0.3f);
   const LightSampler sampler({rect_at(0.0)}, UniformBackground(background));
+  const PickSite site = sampler.site(glm::vec3(0.0f), {});
   for (float bsdf_pdf : {0.0f, 1e-30f, 0.3f, 1e30f})
     for (bool specular : {false, true})
-      CHECK(sampler.escaped_radiance(glm::normalize(glm::vec3(0.3f, -0.2f, 0.9f)), bsdf_pdf, specular) == background);
+      CHECK(sampler.escaped_radiance(glm::normalize(glm::vec3(0.3f, -0.2f, 0.9f)), bsdf_pdf, specular, false, site) ==
+            background);
 }
 
 TEST_CASE("A light sample's pdf includes the probability of picking the light", "[render]") {
   const LightSampler sampler({PointLight{glm::dvec3(0.0, 0.0, 2.0), 10.0, glm::dvec3(1.0)}, PointLight{}},
-                             UniformBackground(glm::vec3(0.0f)));
-  const auto s = sampler.sample(glm::vec3(0.0f, 0.0f, 1.0f), {}, glm::vec2(0.25f, 0.5f));
+                             UniformBackground(glm::vec3(0.0f)), LightSelection::Uniform);
+  const auto s = sampler.sample(sampler.site(glm::vec3(0.0f, 0.0f, 1.0f), {}), glm::vec2(0.25f, 0.5f));
   REQUIRE(s);
   CHECK(s->delta);
   CHECK(s->pdf == 0.5f);

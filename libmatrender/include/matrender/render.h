@@ -10,6 +10,11 @@
 
 namespace matrender {
 
+// How next-event estimation picks one light per shading point: in proportion to a bound on the
+// irradiance each light can give there (0 where it can give none), or uniformly as Cycles 3.4
+// does. Only the noise differs.
+enum class LightSelection { Importance, Uniform };
+
 struct RenderSettings {
   int samples_per_pixel = 64;
   uint32_t seed = 0;
@@ -24,6 +29,7 @@ struct RenderSettings {
   // Reproduce Cycles 3.4's own estimators where they do not converge to the integral of its BSDF
   // (the clearcoat's sampling, docs/conventions.md), for parity with images made in Blender.
   bool cycles_parity = false;
+  LightSelection light_selection = LightSelection::Importance;
   uint32_t aovs = default_aovs();
   // Called with the finished fraction of all samples in [0, 1], from a render thread, every 65,536
   // samples a thread takes and when a tile ends; calls are serialised and the fraction increases.

@@ -65,14 +65,17 @@ PathTracer::PathTracer(const SceneData& scene, const LightSampler& lights, const
   }
 }
 
-glm::vec3 PathTracer::lamps_hit(const glm::vec3& origin, const glm::vec3& dir, float t_max,
-                                float bsdf_pdf, bool bsdf_delta, bool camera_ray) const {
+glm::vec3 PathTracer::lamps_hit(const glm::vec3& origin, const glm::vec3& dir, float t_max, float bsdf_pdf,
+                                bool bsdf_delta, bool camera_ray, const PickSite& from) const {
   glm::vec3 sum(0.0f);
   lights_.for_each_area_hit(origin, dir, t_max, [&](const auto& lamp, float t) {
     if (camera_ray && !lamp.visible_to_camera()) return;
-    const float weight = bsdf_delta || camera_ray
-                             ? 1.0f
-                             : power_heuristic(bsdf_pdf, lights_.selection_pdf() * lamp.pdf(origin, dir, t));
+    // The lamp's density from where the ray left: the scattering vertex `from`, not a surface the
+    // ray passed through since (origin).
+    const float weight =
+        bsdf_delta || camera_ray
+            ? 1.0f
+            : power_heuristic(bsdf_pdf, lights_.pick_probability(lamp, from) * lamp.pdf(from.p, dir, t + glm::length(origin - from.p)));
     sum += weight * lamp.radiance(dir);
   });
   return sum;
@@ -120,6 +123,8 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
   int transmission_bounces = 0;
   int transparent_bounces = 0;
   bool passed_transparent = false;  // the ray left its last surface through its transparency
+  PickSite site;       // where this vertex picks a light
+  PickSite scattered;  // the site of the vertex that scattered the ray, for MIS at what it finds
 
   // `vertex` counts every surface met, transparent ones included, so each gets its own random
   // numbers.
@@ -132,10 +137,10 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     // whole (no light sample competes).
     if (lights_.has_area_lights() && (!camera_ray || lights_.has_camera_visible_lamps()))
       result.radiance += throughput * lamps_hit(origin, dir, hit.hit() ? hit.t : kInfinity, bsdf_pdf, bsdf_delta,
-                                                camera_ray);
+                                                camera_ray, scattered);
     if (!hit.hit()) {
       if (!camera_ray || !settings_.transparent_background)
-        result.radiance += throughput * lights_.escaped_radiance(dir, bsdf_pdf, bsdf_delta, camera_ray);
+        result.radiance += throughput * lights_.escaped_radiance(dir, bsdf_pdf, bsdf_delta, camera_ray, scattered);
       // What the camera sees through: the film's transparency (Cycles averages the channels).
       if (camera_ray) result.transparency = channel_average(throughput);
       break;
@@ -188,8 +193,8 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
 
     // Next-event estimation: one lamp, one point on it.
     if (!lights_.empty() && is_non_specular(bsdf.flags())) {
-      const ReceivingDirections receiving{sp.shading_normal, is_transmissive(bsdf.flags())};
-      const auto light = lights_.sample(sp.position, receiving, sampler.get_2d(dims.light));
+      site = lights_.site(sp.position, {sp.shading_normal, is_transmissive(bsdf.flags())});
+      const auto light = lights_.sample(site, sampler.get_2d(dims.light));
       if (light) {
         float pdf_bsdf;
         BxDFFlags lobes;
@@ -235,6 +240,7 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     }
     ++bounce;
     bsdf_pdf = s.pdf;
+    scattered = site;
     bsdf_delta = is_specular(s.flags);
     // Cycles counts a bounce by its label: transmission first, then diffuse, else glossy (a
     // mirror included).

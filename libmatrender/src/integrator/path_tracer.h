@@ -49,8 +49,10 @@ class PathTracer {
   glm::vec3 transmittance(const glm::vec3& origin, const glm::vec3& dir, float distance, uint32_t* rays) const;
 
   // MIS-weighted radiance of the area lamps in front of the segment [origin, origin + t_max dir].
+  // The radiance of the area lamps the ray from origin along dir meets before t_max, each
+  // weighed by MIS against light sampling at `from`, the vertex that scattered the ray.
   glm::vec3 lamps_hit(const glm::vec3& origin, const glm::vec3& dir, float t_max, float bsdf_pdf,
-                      bool bsdf_delta, bool camera_ray) const;
+                      bool bsdf_delta, bool camera_ray, const PickSite& from) const;
 
   const SceneData& scene_;
   const LightSampler& lights_;

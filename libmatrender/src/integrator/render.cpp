@@ -82,7 +82,7 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
   const auto start = std::chrono::steady_clock::now();
   scene.commit();
   const SceneData& data = scene.data();
-  const LightSampler lights(data.lights, data.world);
+  const LightSampler lights(data.lights, data.world, settings.light_selection);
   const PathTracer tracer(data, lights,
                           {settings.max_bounces, settings.max_diffuse_bounces, settings.max_glossy_bounces,
                            settings.max_transmission_bounces, settings.max_transparent_bounces,

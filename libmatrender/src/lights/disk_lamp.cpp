@@ -3,8 +3,10 @@
 #include <cmath>
 
 #include "bsdf/shading_frame.h"
+#include "lights/light_importance.h"
 #include "lights/spot_light.h"
 #include "sampling/warp.h"
+#include "util/channel_average.h"
 
 namespace matrender {
 namespace {
@@ -18,12 +20,14 @@ glm::vec3 disk_radiance(double power, const glm::dvec3& color, double radius) {
 PreparedDiskLamp::PreparedDiskLamp(const PointLight& light)
     : center_(light.position),
       radius_(static_cast<float>(light.radius)),
-      radiance_(disk_radiance(light.power, light.color, light.radius)) {}
+      radiance_(disk_radiance(light.power, light.color, light.radius)),
+      intensity_(static_cast<float>(light.power / (4.0 * M_PI)) * channel_average(glm::vec3(light.color))) {}
 
 PreparedDiskLamp::PreparedDiskLamp(const SpotLight& light)
     : center_(light.position),
       radius_(static_cast<float>(light.radius)),
       radiance_(disk_radiance(light.power, light.color, light.radius)),
+      intensity_(static_cast<float>(light.power / (4.0 * M_PI)) * channel_average(glm::vec3(light.color))),
       axis_(glm::normalize(light.direction)),
       cos_half_angle_(static_cast<float>(std::cos(0.5 * light.spot_angle))),
       blend_(static_cast<float>(light.blend)),
@@ -54,6 +58,16 @@ std::optional<LightSample> PreparedDiskLamp::sample(const glm::vec3& p, const Re
   s.pdf = pdf(p, s.wi, s.distance);
   if (!(s.pdf > 0.0f) || std::isinf(s.pdf)) return std::nullopt;
   return s;
+}
+
+float PreparedDiskLamp::importance(const glm::vec3& p, const ReceivingDirections& receiving) const {
+  const glm::vec3 to_center = center_ - p;
+  const float distance2 = glm::dot(to_center, to_center);
+  const float distance = std::sqrt(distance2);
+  if (!(distance > 0.0f)) return 0.0f;
+  const SubtendedCone cone(radius_, distance);
+  return intensity_ * receiving_bound(receiving, to_center / distance, cone.cos_s, cone.sin_s) /
+         std::max(distance2, radius_ * radius_);
 }
 
 float PreparedDiskLamp::pdf(const glm::vec3& p, const glm::vec3& wi, float t) const {

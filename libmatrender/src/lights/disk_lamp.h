@@ -29,6 +29,8 @@ class PreparedDiskLamp {
   // Solid-angle pdf of sample() from p producing direction wi, given that the ray along it hits
   // the disk at distance t.
   float pdf(const glm::vec3& p, const glm::vec3& wi, float t) const;
+  // Light selection's weight at p (light_importance.h); a spot's cone is left out of the bound.
+  float importance(const glm::vec3& p, const ReceivingDirections& receiving) const;
   // What a ray along `dir` that hits the disk receives (the spot's cone factor for -dir).
   glm::vec3 radiance(const glm::vec3& dir) const;
   // Lamps other than rectangles stay invisible to camera rays, Blender's default.
@@ -40,6 +42,7 @@ class PreparedDiskLamp {
   glm::vec3 center_;
   float radius_;
   glm::vec3 radiance_;  // on the axis of a spot
+  float intensity_;     // channel mean of the point lamp's I
   glm::vec3 axis_{0.0f, 0.0f, -1.0f};
   float cos_half_angle_ = -1.0f;
   float blend_ = 0.0f;

@@ -83,6 +83,9 @@ PreparedEnvironmentLight::PreparedEnvironmentLight(const EnvironmentMap& map) : 
     for (int x = 0; x < width; ++x) weights[static_cast<size_t>(y) * width + x] *= sine;
   }
   distribution_ = std::make_shared<PiecewiseConstant2D>(weights, width, height);
+  // The density's integral over (u, v) is that of L sin(theta), so the mean radiance over the
+  // sphere, the integral of L d omega / 4 pi, is 2 pi^2 integral / 4 pi.
+  importance_ = static_cast<float>(M_PI * strength_ * 0.5 * M_PI * distribution_->integral());
 }
 
 glm::vec3 PreparedEnvironmentLight::to_map(const glm::vec3& d) const {

@@ -36,6 +36,9 @@ class PreparedEnvironmentLight {
   std::optional<LightSample> sample(const glm::vec3& p, const ReceivingDirections& receiving, glm::vec2 u) const;
   // Solid-angle density of sample() drawing the world direction d.
   float pdf(const glm::vec3& d) const;
+  // Light selection's weight: the irradiance a plane would get from the map's mean radiance, pi
+  // times it (the map may light any point from some side).
+  float importance(const glm::vec3& /*p*/, const ReceivingDirections& /*receiving*/) const { return importance_; }
   glm::vec3 radiance(const glm::vec3& d) const;
   // The map is black: nothing to sample.
   bool black() const { return !(distribution_->integral() > 0.0); }
@@ -48,6 +51,7 @@ class PreparedEnvironmentLight {
   float strength_ = 1.0f;
   float cos_rotation_ = 1.0f;
   float sin_rotation_ = 0.0f;
+  float importance_ = 0.0f;
   std::shared_ptr<const PiecewiseConstant2D> distribution_;  // over (u, v), shared by copies
 };
 

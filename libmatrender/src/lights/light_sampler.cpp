@@ -17,7 +17,8 @@ std::vector<PreparedRectLight> prepare_rect_lights(const std::vector<Light>& lig
 
 }  // namespace
 
-LightSampler::LightSampler(const std::vector<Light>& lights, const WorldLight& world) {
+LightSampler::LightSampler(const std::vector<Light>& lights, const WorldLight& world, LightSelection selection)
+    : selection_(selection) {
   const std::vector<PreparedRectLight> rects = prepare_rect_lights(lights);
   area_hits_ = RectLightHits(rects);
   lights_.assign(rects.begin(), rects.end());
@@ -57,31 +58,62 @@ LightSampler::LightSampler(const std::vector<Light>& lights, const WorldLight& w
   }
 }
 
-std::optional<LightSampler::Pick> LightSampler::pick(float* u) const {
-  if (empty()) return std::nullopt;
-  const float scaled = *u * static_cast<float>(sampled_count_);
-  const size_t index = std::min(static_cast<size_t>(scaled), sampled_count_ - 1);
-  *u = std::min(scaled - static_cast<float>(index), 0x1.fffffep-1f);
-  return Pick{index, selection_pdf()};
+PickSite LightSampler::site(const glm::vec3& p, const ReceivingDirections& receiving) const {
+  PickSite site{p, receiving, 0.0f};
+  if (selection_ == LightSelection::Importance)
+    for (size_t i = 0; i < sampled_count_; ++i)
+      site.total_importance += with_light(lights_[i], [&](const auto& light) { return light.importance(p, receiving); });
+  return site;
 }
 
-std::optional<LightSample> LightSampler::sample(const glm::vec3& p, const ReceivingDirections& receiving,
-                                                glm::vec2 u) const {
-  const std::optional<Pick> picked = pick(&u.x);
+std::optional<LightSampler::Pick> LightSampler::pick(const PickSite& site, float* u) const {
+  if (empty()) return std::nullopt;
+  if (selection_ == LightSelection::Uniform) {
+    const float scaled = *u * static_cast<float>(sampled_count_);
+    const size_t index = std::min(static_cast<size_t>(scaled), sampled_count_ - 1);
+    *u = std::min(scaled - static_cast<float>(index), 0x1.fffffep-1f);
+    return Pick{index, 1.0f / static_cast<float>(sampled_count_)};
+  }
+  if (!(site.total_importance > 0.0f)) return std::nullopt;
+  // Walk the lights' intervals of the total until u's falls in one; the weights are recomputed
+  // rather than stored, as they are as cheap as reading them back.
+  const float target = *u * site.total_importance;
+  float below = 0.0f;
+  size_t last_lit = sampled_count_;
+  for (size_t i = 0; i < sampled_count_; ++i) {
+    const float weight = with_light(lights_[i], [&](const auto& light) { return light.importance(site.p, site.receiving); });
+    if (!(weight > 0.0f)) continue;
+    last_lit = i;
+    if (target < below + weight || i + 1 == sampled_count_) {
+      *u = std::clamp((target - below) / weight, 0.0f, 0x1.fffffep-1f);
+      return Pick{i, weight / site.total_importance};
+    }
+    below += weight;
+  }
+  // Rounding left u past the last interval: it belongs to the last light that has one.
+  if (last_lit == sampled_count_) return std::nullopt;
+  const float weight = with_light(lights_[last_lit], [&](const auto& light) { return light.importance(site.p, site.receiving); });
+  *u = 0x1.fffffep-1f;
+  return Pick{last_lit, weight / site.total_importance};
+}
+
+std::optional<LightSample> LightSampler::sample(const PickSite& site, glm::vec2 u) const {
+  const std::optional<Pick> picked = pick(site, &u.x);
   if (!picked) return std::nullopt;
-  std::optional<LightSample> s =
-      with_light(lights_[picked->index], [&](const auto& light) { return light.sample(p, receiving, u); });
+  std::optional<LightSample> s = with_light(lights_[picked->index],
+                                            [&](const auto& light) { return light.sample(site.p, site.receiving, u); });
   if (s) s->pdf *= picked->probability;
   return s;
 }
 
-glm::vec3 LightSampler::escaped_radiance(const glm::vec3& dir, float bsdf_pdf, bool unweighted, bool camera_ray) const {
+glm::vec3 LightSampler::escaped_radiance(const glm::vec3& dir, float bsdf_pdf, bool unweighted, bool camera_ray,
+                                         const PickSite& from) const {
   glm::vec3 sum(0.0f);
   for (size_t index : infinite_) {
     with_light(lights_[index], [&](const auto& light) {
       if constexpr (std::decay_t<decltype(light)>::type() == LightType::Infinite) {
         if (camera_ray && !light.visible_to_camera()) return;
-        const float light_pdf = index < sampled_count_ ? selection_pdf() * light.pdf(dir) : 0.0f;
+        const float light_pdf = index < sampled_count_ ? pick_probability(light, from) * light.pdf(dir) : 0.0f;
         const float weight = unweighted || camera_ray ? 1.0f : power_heuristic(bsdf_pdf, light_pdf);
         sum += weight * light.radiance(dir);
       }

@@ -1,7 +1,9 @@
 #pragma once
-// The scene's lights and how next-event estimation chooses among them: uniformly, one light per
-// shading point, as Cycles 3.4 does (it has no light tree; only noise depends on this choice).
-// An environment map is one of them; a uniform background is not (uniform_background.h).
+// The scene's lights and how next-event estimation chooses one of them per shading point: by
+// each light's importance there (light_importance.h: its bounded irradiance, 0 where it cannot
+// light the point), or uniformly, as Cycles 3.4 does (it has no light tree). Only noise depends on
+// the choice. An environment map is one of the lights; a uniform background is not
+// (uniform_background.h).
 // Also the two ways a ray finds light without sampling it: the one query for the area lights it
 // hits, and the infinite lights it sees when it leaves the scene.
 #include <cstddef>
@@ -15,35 +17,55 @@
 #include "lights/scene_light.h"
 #include "lights/world_light.h"
 #include "matrender/light.h"
+#include "matrender/render.h"
 
 namespace matrender {
+
+// Where a light is picked: the shading point, the directions it receives from, and the sum of
+// every light's importance there. A ray that leaves it and finds a light weighs that light's
+// pick by the same site (MIS).
+struct PickSite {
+  glm::vec3 p{0.0f};
+  ReceivingDirections receiving;
+  float total_importance = 0.0f;
+};
 
 class LightSampler {
  public:
   // A uniform black world is no light at all.
-  LightSampler(const std::vector<Light>& lights, const WorldLight& world);
+  LightSampler(const std::vector<Light>& lights, const WorldLight& world,
+               LightSelection selection = LightSelection::Importance);
 
   // The lights next-event estimation draws from are lights(0 .. sampled_count() - 1): rectangles
   // first, then point and spot lamps with a radius (disks), radius-0 ones, suns, each in scene
   // order, then an environment map.
   size_t sampled_count() const { return sampled_count_; }
   bool empty() const { return sampled_count_ == 0; }
-  // The probability of drawing each light of the distribution.
-  float selection_pdf() const { return empty() ? 0.0f : 1.0f / static_cast<float>(sampled_count_); }
   const SceneLight& light(size_t i) const { return lights_[i]; }
+  LightSelection selection() const { return selection_; }
+
+  // The site at p, its total importance summed (for importance selection).
+  PickSite site(const glm::vec3& p, const ReceivingDirections& receiving) const;
+  // The probability that a pick at `site` draws `light`, one of the distribution's lights.
+  template <class L>
+  float pick_probability(const L& light, const PickSite& site) const {
+    if (selection_ == LightSelection::Uniform) return empty() ? 0.0f : 1.0f / static_cast<float>(sampled_count_);
+    return site.total_importance > 0.0f ? light.importance(site.p, site.receiving) / site.total_importance : 0.0f;
+  }
 
   struct Pick {
     size_t index;       // into light()
     float probability;  // of drawing it
   };
-  // The light u picks. *u is then rescaled to [0, 1) within the light's interval, so it can be
-  // reused for the point on the light with its 2-D stratification kept (Cycles 3.4,
-  // kernel/light/light.h, light_distribution_sample: "rescale to reuse random number").
-  std::optional<Pick> pick(float* u) const;
+  // The light u picks at `site`, each with its pick_probability. *u is then rescaled to [0, 1)
+  // within the light's interval, so it can be reused for the point on the light with its 2-D
+  // stratification kept (Cycles 3.4, kernel/light/light.h, light_distribution_sample: "rescale
+  // to reuse random number"). Nothing when no light can light the site.
+  std::optional<Pick> pick(const PickSite& site, float* u) const;
 
   // A sample of the light u.x picks, with u.x reused (pick); its pdf includes the probability of
-  // the pick. Lights wholly outside `receiving` give no sample.
-  std::optional<LightSample> sample(const glm::vec3& p, const ReceivingDirections& receiving, glm::vec2 u) const;
+  // the pick. Lights wholly outside the site's receiving directions give no sample.
+  std::optional<LightSample> sample(const PickSite& site, glm::vec2 u) const;
 
   bool has_area_lights() const { return !area_hits_.empty() || disk_count_ > 0; }
   // Some area lamp is visible to camera rays (most scenes have none, and their camera rays then
@@ -63,9 +85,11 @@ class LightSampler {
   }
 
   // What a ray leaving the scene along dir sees of the infinite lights, each MIS-weighted
-  // against light sampling (power heuristic) unless `unweighted`: the ray came from a specular
-  // lobe, where no light sample competes. A camera ray sees those visible to the camera, whole.
-  glm::vec3 escaped_radiance(const glm::vec3& dir, float bsdf_pdf, bool unweighted, bool camera_ray = false) const;
+  // against light sampling from the site it left (power heuristic) unless `unweighted`: the ray
+  // came from a specular lobe, where no light sample competes. A camera ray sees those visible
+  // to the camera, whole.
+  glm::vec3 escaped_radiance(const glm::vec3& dir, float bsdf_pdf, bool unweighted, bool camera_ray,
+                             const PickSite& from) const;
 
  private:
   std::vector<SceneLight> lights_;
@@ -75,6 +99,7 @@ class LightSampler {
   size_t rect_count_ = 0;
   size_t disk_count_ = 0;         // lights(rect_count_ .. rect_count_ + disk_count_ - 1)
   bool camera_visible_lamps_ = false;
+  LightSelection selection_ = LightSelection::Importance;
 };
 
 }  // namespace matrender

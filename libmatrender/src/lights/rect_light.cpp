@@ -2,6 +2,9 @@
 
 #include <cmath>
 
+#include "lights/light_importance.h"
+#include "util/channel_average.h"
+
 namespace matrender {
 namespace {
 
@@ -27,6 +30,21 @@ PreparedRectLight::PreparedRectLight(const RectLight& light) {
   area_ = static_cast<float>(light.size_x * light.size_y);
   radiance_ = glm::vec3(light.power * light.color / (4.0 * light.size_x * light.size_y));
   visible_to_camera_ = light.visible_to_camera;
+  bounding_radius_ = static_cast<float>(0.5 * std::sqrt(light.size_x * light.size_x + light.size_y * light.size_y));
+  power_ = channel_average(radiance_) * area_;
+}
+
+float PreparedRectLight::importance(const glm::vec3& p, const ReceivingDirections& receiving) const {
+  if (!sees_emitting_side(p)) return 0.0f;
+  const glm::vec3 to_center = center_ - p;
+  const float distance2 = glm::dot(to_center, to_center);
+  const float distance = std::sqrt(distance2);
+  const glm::vec3 direction = to_center / distance;
+  const SubtendedCone cone(bounding_radius_, distance);
+  // The lamp emits down -z: the cosine at the lamp is between -z and the way to p.
+  const float emitting = cone_cosine_bound(rect_.z, direction, cone.cos_s, cone.sin_s);
+  const float receiving_factor = receiving_bound(receiving, direction, cone.cos_s, cone.sin_s);
+  return power_ * emitting * receiving_factor / std::max(distance2, bounding_radius_ * bounding_radius_);
 }
 
 bool PreparedRectLight::sees_emitting_side(const glm::vec3& p) const {

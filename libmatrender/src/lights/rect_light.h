@@ -27,6 +27,9 @@ class PreparedRectLight {
   // Solid-angle pdf of sample() producing direction wi from p, given that the ray hits the lamp
   // at distance t.
   float pdf(const glm::vec3& p, const glm::vec3& wi, float t) const;
+  // Light selection's weight at p (light_importance.h): 0 behind the lamp or wholly below the
+  // receiving plane.
+  float importance(const glm::vec3& p, const ReceivingDirections& receiving) const;
   // The same toward every ray that meets the emitting side.
   glm::vec3 radiance(const glm::vec3& /*dir*/) const { return radiance_; }
   bool visible_to_camera() const { return visible_to_camera_; }
@@ -42,6 +45,8 @@ class PreparedRectLight {
   glm::vec3 center_{0.0f};
   std::array<glm::vec3, 4> corners_{};
   float area_ = 0.0f;
+  float bounding_radius_ = 0.0f;  // half the diagonal
+  float power_ = 0.0f;            // channel mean of radiance times area
   glm::vec3 radiance_{0.0f};
   bool visible_to_camera_ = false;
 };

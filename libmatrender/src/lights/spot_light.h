@@ -11,6 +11,7 @@
 #include "lights/light_type.h"
 #include "matrender/light.h"
 #include "sampling/warp.h"
+#include "util/channel_average.h"
 
 namespace matrender {
 
@@ -30,16 +31,30 @@ inline float spot_attenuation(float cos_t, float cos_half_angle, float blend) {
 class PreparedDeltaLight {
  public:
   explicit PreparedDeltaLight(const PointLight& light)
-      : position_(light.position), intensity_(light.power * light.color / (4.0 * M_PI)) {}
+      : position_(light.position),
+        intensity_(light.power * light.color / (4.0 * M_PI)),
+        mean_intensity_(channel_average(intensity_)) {}
   explicit PreparedDeltaLight(const SpotLight& light)
       : position_(light.position),
         intensity_(light.power * light.color / (4.0 * M_PI)),
+        mean_intensity_(channel_average(intensity_)),
         axis_(glm::normalize(light.direction)),
         cos_half_angle_(static_cast<float>(std::cos(0.5 * light.spot_angle))),
         blend_(static_cast<float>(light.blend)),
         is_spot_(true) {}
 
   static constexpr LightType type() { return LightType::DeltaPosition; }
+
+  // Light selection's weight at p: the irradiance I a(w) cos / d^2 it gives, exactly (light_importance.h).
+  float importance(const glm::vec3& p, const ReceivingDirections& receiving) const {
+    const glm::vec3 to_light = position_ - p;
+    const float dist2 = glm::dot(to_light, to_light);
+    if (!(dist2 > 0.0f)) return 0.0f;
+    const glm::vec3 wi = to_light / std::sqrt(dist2);
+    const float cosine = receiving.every_direction ? 1.0f : std::max(0.0f, glm::dot(wi, receiving.normal));
+    const float cone = is_spot_ ? spot_attenuation(glm::dot(-wi, axis_), cos_half_angle_, blend_) : 1.0f;
+    return mean_intensity_ * cone * cosine / dist2;
+  }
 
   // The one direction toward the lamp; `receiving` and u play no part.
   std::optional<LightSample> sample(const glm::vec3& p, const ReceivingDirections& /*receiving*/,
@@ -63,6 +78,7 @@ class PreparedDeltaLight {
  private:
   glm::vec3 position_;
   glm::vec3 intensity_;
+  float mean_intensity_;
   glm::vec3 axis_{0.0f, 0.0f, -1.0f};
   float cos_half_angle_ = -1.0f;
   float blend_ = 0.0f;

@@ -4,6 +4,8 @@
 #include <limits>
 
 #include "bsdf/shading_frame.h"
+#include "lights/light_importance.h"
+#include "util/channel_average.h"
 #include "sampling/warp.h"
 
 namespace matrender {
@@ -13,6 +15,13 @@ PreparedSunLight::PreparedSunLight(const SunLight& light)
   const double radius = std::tan(0.5 * light.angle);
   disk_radius_ = static_cast<float>(radius);
   inverse_disk_area_ = radius > 0.0 ? static_cast<float>(1.0 / (M_PI * radius * radius)) : 0.0f;
+  cos_half_angle_ = static_cast<float>(std::cos(0.5 * light.angle));
+  sin_half_angle_ = static_cast<float>(std::sin(0.5 * light.angle));
+  mean_irradiance_ = channel_average(irradiance_);
+}
+
+float PreparedSunLight::importance(const glm::vec3& /*p*/, const ReceivingDirections& receiving) const {
+  return mean_irradiance_ * receiving_bound(receiving, to_sun_, cos_half_angle_, sin_half_angle_);
 }
 
 float PreparedSunLight::density(const glm::vec3& direction) const {

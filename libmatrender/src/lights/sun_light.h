@@ -27,6 +27,8 @@ class PreparedSunLight {
 
   std::optional<LightSample> sample(const glm::vec3& p, const ReceivingDirections& receiving, glm::vec2 u) const;
   float pdf(const glm::vec3& direction) const;
+  // Light selection's weight: E times the receiving plane's largest cosine into the sun's cone.
+  float importance(const glm::vec3& p, const ReceivingDirections& receiving) const;
   glm::vec3 radiance(const glm::vec3& direction) const;
 
  private:
@@ -38,6 +40,8 @@ class PreparedSunLight {
   glm::vec3 irradiance_;
   float disk_radius_ = 0.0f;  // tan(angle / 2)
   float inverse_disk_area_ = 0.0f;
+  float cos_half_angle_ = 1.0f, sin_half_angle_ = 0.0f;
+  float mean_irradiance_ = 0.0f;
 };
 
 }  // namespace matrender

@@ -24,6 +24,7 @@ class UniformBackground {
     return std::nullopt;
   }
   float pdf(const glm::vec3& /*direction*/) const { return 0.0f; }
+  float importance(const glm::vec3&, const ReceivingDirections&) const { return 0.0f; }
   glm::vec3 radiance(const glm::vec3& /*direction*/) const { return radiance_; }
 
  private:
