@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <vector>
 
 #include "matrender/camera.h"
 #include "matrender/render.h"
@@ -71,4 +72,95 @@ TEST_CASE("Inside a closed emitting box of albedo a the radiance is E / (1 - a)"
     CHECK(std::abs(s.mean - expected) <= 4.0 * s.standard_error + 1e-6);
   }
   CHECK(test_scenes::all_finite(frame.color));
+}
+
+namespace {
+
+// Irradiance at the origin (normal +Z) from a horizontal a x b rectangle of radiance L centred
+// at height h above it (Lambert's polygon formula, as light_closed_form_test.cpp).
+double rectangle_irradiance_below(double a, double b, double h, double radiance) {
+  const std::vector<glm::dvec3> corners = {{-a / 2, -b / 2, h}, {a / 2, -b / 2, h}, {a / 2, b / 2, h}, {-a / 2, b / 2, h}};
+  double sum = 0.0;
+  for (size_t i = 0; i < corners.size(); ++i) {
+    const glm::dvec3 u = glm::normalize(corners[i]), v = glm::normalize(corners[(i + 1) % corners.size()]);
+    sum += std::acos(glm::clamp(glm::dot(u, v), -1.0, 1.0)) * glm::normalize(glm::cross(u, v)).z;
+  }
+  return 0.5 * radiance * std::abs(sum);
+}
+
+// A quad of emission `radiance` (albedo 0) 0.6 x 0.4 m at height 1.5 over a large plane.
+void add_emissive_quad(Scene& scene, float radiance) {
+  matgeom::TriangleMesh quad = test_scenes::horizontal_square(1.0, 1.5);
+  for (glm::vec3& p : quad.positions) p *= glm::vec3(0.6f, 0.4f, 1.0f);
+  scene.add_mesh(quad, {scene.add_material(emitter(0.0f, glm::vec3(1.0f), radiance))});
+}
+
+}  // namespace
+
+TEST_CASE("Next-event estimation reaches emissive meshes: a plane under an emitting quad gets its polygon irradiance",
+          "[render]") {
+  Scene scene;
+  const float albedo = 0.6f;
+  scene.add_mesh(test_scenes::horizontal_square(40.0), {scene.add_material(test_scenes::lambert(albedo))});
+  add_emissive_quad(scene, 5.0f);
+  // Looked at from below the quad, straight down at the origin.
+  const Camera camera = Camera::look_at({0, 0, 1}, {0, 0, 0}, {0, 1, 0}, 0.002, 16, 16);
+  RenderSettings settings;
+  settings.samples_per_pixel = 16;
+  settings.max_bounces = 0;  // direct light only
+  FrameBuffers frame;
+  REQUIRE(render(scene, camera, settings, frame).discarded_samples == 0);
+  const double expected = albedo / M_PI * rectangle_irradiance_below(0.6, 0.4, 1.5, 5.0);
+  const auto s = test_scenes::channel_statistics(frame, 0);
+  INFO(s.mean << " +- " << s.standard_error << ", expected " << expected);
+  CHECK(std::abs(s.mean - expected) < 4.0 * s.standard_error + 1e-4 * expected);
+  // Light sampling does nearly all the work: 16 samples leave under 1 % noise.
+  CHECK(s.standard_error < 0.01 * expected);
+}
+
+TEST_CASE("An emitting quad and a rectangle lamp of the same radiance light a glossy plane alike", "[render]") {
+  // The quad is sampled by area and weighed against BSDF hits on it; the lamp by solid angle
+  // against hits on it: two MIS estimators of one integral, pixel by pixel.
+  const auto render_plane = [](bool emissive_mesh, uint32_t seed) {
+    Scene scene;
+    Material glossy;
+    glossy.set(MaterialParameter::BaseColor, glm::vec3(0.7f));
+    glossy.set(MaterialParameter::Metallic, 1.0f);
+    glossy.set(MaterialParameter::Roughness, 0.25f);
+    scene.add_mesh(test_scenes::horizontal_square(40.0), {scene.add_material(glossy)});
+    if (emissive_mesh) {
+      add_emissive_quad(scene, 5.0f);
+    } else {
+      RectLight lamp;
+      // Its +Z points up, so it emits down its -Z toward the plane.
+      lamp.light_to_world[3] = glm::dvec4(0.0, 0.0, 1.5, 1.0);
+      lamp.size_x = 0.6;
+      lamp.size_y = 0.4;
+      lamp.power = 5.0 * 4.0 * 0.6 * 0.4;  // L = P / (4 a b)
+      scene.add_light(lamp);
+    }
+    RenderSettings settings;
+    settings.samples_per_pixel = 64;
+    settings.seed = seed;
+    settings.max_bounces = 0;
+    settings.aovs = 0;
+    FrameBuffers frame;
+    const Camera camera = Camera::look_at({0.0, -1.2, 1.0}, {0.0, 0.2, 0.0}, {0, 0, 1}, 0.8, 32, 32);
+    REQUIRE(render(scene, camera, settings, frame).discarded_samples == 0);
+    return frame.color;
+  };
+  const std::vector<float> mesh = render_plane(true, 1), lamp = render_plane(false, 2);
+  double sum = 0.0, sum2 = 0.0, level = 0.0;
+  const size_t pixels = mesh.size() / 3;
+  for (size_t p = 0; p < pixels; ++p) {
+    const double d = double(mesh[3 * p]) - lamp[3 * p];
+    sum += d;
+    sum2 += d * d;
+    level += lamp[3 * p];
+  }
+  const double n = static_cast<double>(pixels), mean = sum / n;
+  const double standard_error = std::sqrt((sum2 / n - mean * mean) / (n - 1.0));
+  INFO("mean difference " << mean << " +- " << standard_error << ", mean pixel " << level / n);
+  CHECK(level / n > 0.01);
+  CHECK(std::abs(mean) <= 4.0 * standard_error);
 }

@@ -153,10 +153,19 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
       result.first_distance = hit.t;
       if (first_surface) *first_surface = sp;
     }
-    // Emission, seen by every ray including the camera's. No light sample aims at emissive
-    // surfaces yet, so a hit takes it whole: the estimator Cycles has with the mesh's MIS off.
+    // Emission, seen by every ray including the camera's; rays a BSDF sampled weigh it against
+    // the light sample the vertex that scattered them took of the same emitter.
     const glm::vec3 emitted = sp.emitted();
-    if (emitted != glm::vec3(0.0f)) result.radiance += throughput * emitted;
+    if (emitted != glm::vec3(0.0f)) {
+      float weight = 1.0f;
+      const PreparedMeshEmitter* emitter = lights_.emitter_of(hit.mesh);
+      if (!camera_ray && !bsdf_delta && emitter) {
+        const float t = glm::length(sp.position - scattered.p);
+        weight = power_heuristic(bsdf_pdf, lights_.pick_probability(*emitter, scattered) *
+                                               emitter->pdf(scattered.p, dir, t, hit.triangle));
+      }
+      result.radiance += throughput * emitted * weight;
+    }
     // Cycles terminates here, after the lamp and background hits of the arriving ray counted.
     if (bounce > settings_.max_bounces || diffuse_bounces > settings_.max_diffuse_bounces ||
         glossy_bounces > settings_.max_glossy_bounces || transmission_bounces > settings_.max_transmission_bounces ||

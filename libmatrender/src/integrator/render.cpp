@@ -82,7 +82,11 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
   const auto start = std::chrono::steady_clock::now();
   scene.commit();
   const SceneData& data = scene.data();
-  const LightSampler lights(data.lights, data.world, settings.light_selection);
+  std::vector<PreparedMeshEmitter> emitters;
+  for (uint32_t mesh = 0; mesh < data.meshes.size(); ++mesh)
+    if (std::optional<PreparedMeshEmitter> emitter = PreparedMeshEmitter::of_mesh(data, mesh))
+      emitters.push_back(std::move(*emitter));
+  const LightSampler lights(data.lights, data.world, settings.light_selection, emitters);
   const PathTracer tracer(data, lights,
                           {settings.max_bounces, settings.max_diffuse_bounces, settings.max_glossy_bounces,
                            settings.max_transmission_bounces, settings.max_transparent_bounces,

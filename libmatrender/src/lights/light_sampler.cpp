@@ -17,7 +17,8 @@ std::vector<PreparedRectLight> prepare_rect_lights(const std::vector<Light>& lig
 
 }  // namespace
 
-LightSampler::LightSampler(const std::vector<Light>& lights, const WorldLight& world, LightSelection selection)
+LightSampler::LightSampler(const std::vector<Light>& lights, const WorldLight& world, LightSelection selection,
+                           const std::vector<PreparedMeshEmitter>& emitters)
     : selection_(selection) {
   const std::vector<PreparedRectLight> rects = prepare_rect_lights(lights);
   area_hits_ = RectLightHits(rects);
@@ -31,6 +32,11 @@ LightSampler::LightSampler(const std::vector<Light>& lights, const WorldLight& w
       lights_.emplace_back(PreparedDiskLamp(*spot));
   }
   disk_count_ = lights_.size() - rect_count_;
+  for (const PreparedMeshEmitter& emitter : emitters) {
+    if (emitter.mesh() >= emitter_of_mesh_.size()) emitter_of_mesh_.resize(emitter.mesh() + 1, -1);
+    emitter_of_mesh_[emitter.mesh()] = static_cast<int32_t>(lights_.size());
+    lights_.emplace_back(emitter);
+  }
   for (const Light& light : lights) {
     if (const auto* point = std::get_if<PointLight>(&light); point && point->radius == 0.0)
       lights_.emplace_back(PreparedDeltaLight(*point));

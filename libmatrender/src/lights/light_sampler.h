@@ -34,11 +34,12 @@ class LightSampler {
  public:
   // A uniform black world is no light at all.
   LightSampler(const std::vector<Light>& lights, const WorldLight& world,
-               LightSelection selection = LightSelection::Importance);
+               LightSelection selection = LightSelection::Importance,
+               const std::vector<PreparedMeshEmitter>& emitters = {});
 
   // The lights next-event estimation draws from are lights(0 .. sampled_count() - 1): rectangles
-  // first, then point and spot lamps with a radius (disks), radius-0 ones, suns, each in scene
-  // order, then an environment map.
+  // first, then point and spot lamps with a radius (disks), emissive meshes, radius-0 lamps,
+  // suns, each in scene order, then an environment map.
   size_t sampled_count() const { return sampled_count_; }
   bool empty() const { return sampled_count_ == 0; }
   const SceneLight& light(size_t i) const { return lights_[i]; }
@@ -68,6 +69,12 @@ class LightSampler {
   std::optional<LightSample> sample(const PickSite& site, glm::vec2 u) const;
 
   bool has_area_lights() const { return !area_hits_.empty() || disk_count_ > 0; }
+  // The emitter of a mesh's emitting triangles, or null.
+  const PreparedMeshEmitter* emitter_of(uint32_t mesh) const {
+    return mesh < emitter_of_mesh_.size() && emitter_of_mesh_[mesh] >= 0
+               ? std::get_if<PreparedMeshEmitter>(&lights_[static_cast<size_t>(emitter_of_mesh_[mesh])])
+               : nullptr;
+  }
   // Some area lamp is visible to camera rays (most scenes have none, and their camera rays then
   // look for no lamp).
   bool has_camera_visible_lamps() const { return camera_visible_lamps_; }
@@ -98,6 +105,7 @@ class LightSampler {
   RectLightHits area_hits_;       // over lights(0 .. rect_count_ - 1)
   size_t rect_count_ = 0;
   size_t disk_count_ = 0;         // lights(rect_count_ .. rect_count_ + disk_count_ - 1)
+  std::vector<int32_t> emitter_of_mesh_;  // index into lights_ by mesh, -1 for none
   bool camera_visible_lamps_ = false;
   LightSelection selection_ = LightSelection::Importance;
 };
