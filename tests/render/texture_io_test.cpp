@@ -10,6 +10,7 @@
 #include <OpenImageIO/imageio.h>
 #include <unistd.h>
 
+#include "matgeom/srgb.h"
 #include "matrender/image_io.h"
 #include "matrender/texture.h"
 
@@ -171,5 +172,31 @@ TEST_CASE("write_frame writes EXR values exactly and leaves no temporary files",
   std::vector<uint16_t> ids(6);
   REQUIRE(label->read_image(0, 0, 0, 1, OIIO::TypeDesc::UINT16, ids.data()));
   CHECK(ids[4] == 7);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("sRGB images with alpha filter premultiplied, as Blender's Straight alpha mode", "[render]") {
+  // The texels Blender 3.4 was probed with (docs/conventions.md, "Alpha"): red of alpha 0 beside
+  // green of alpha 1. Cycles renders, along the row, the premultiplied colour when the alpha is not
+  // used, and that colour divided by the filtered alpha when it is; the red never shows.
+  const fs::path dir = temp_dir();
+  const std::vector<uint8_t> pixels = {255, 0, 0, 0, 0, 255, 0, 255};
+  write_image(dir / "edge.png", 2, 1, 4, OIIO::TypeDesc::UINT8, pixels);
+  const TexturePtr image = Texture::load((dir / "edge.png").string(), ColorSpace::SRGB);
+  CHECK(image->associated_alpha());
+  // A quarter of the way from the red texel's centre to the green one's.
+  const glm::vec2 uv(0.25f + 0.125f, 0.5f);
+  const glm::vec4 premultiplied = image->sample(uv);
+  CHECK(premultiplied.x == 0.0f);
+  CHECK(premultiplied.y == Approx(matgeom::srgb_to_linear(0.25f)).epsilon(1e-5));
+  CHECK(premultiplied.w == Approx(0.25f));
+  const glm::vec4 unassociated = image->sample(uv, true);
+  CHECK(unassociated.x == 0.0f);
+  CHECK(unassociated.y == Approx(1.0f).epsilon(1e-5));
+  CHECK(unassociated.w == Approx(0.25f));
+  // The same file as data keeps its channels as stored, red included.
+  const TexturePtr data = Texture::load((dir / "edge.png").string(), ColorSpace::NonColor);
+  CHECK_FALSE(data->associated_alpha());
+  CHECK(data->sample(uv).x == Approx(0.75f).epsilon(1e-5));
   fs::remove_all(dir);
 }

@@ -1,6 +1,13 @@
 #pragma once
 // Image textures: float RGBA texels in scene-linear or non-colour data, sampled bilinearly like
 // Cycles' "Linear" interpolation (texel centres at (i + 0.5) / W, no mipmaps).
+//
+// Alpha, as Blender 3.4 treats an image of alpha mode Straight (its default): an 8- or 16-bit
+// sRGB image with an alpha channel is premultiplied by its alpha when loaded (on the encoded
+// values) and filtered so, which keeps the colour of fully transparent texels out of their
+// neighbours. Its colour comes back premultiplied, unless the material takes its alpha from the
+// same image (Blender: the Alpha output is linked), when it is divided by the filtered alpha
+// again. Non-colour (data) images keep their channels as stored: channel-packed maps.
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -34,8 +41,11 @@ class Texture {
 
   // Bilinear lookup at (u, v), v = 0 at the bottom row (OpenGL/Blender UV convention).
   // Returns linear RGBA: sRGB textures are interpolated on the encoded values and converted
-  // afterwards, as Cycles does for 8-bit images.
-  glm::vec4 sample(glm::vec2 uv) const;
+  // afterwards, as Cycles does for 8-bit images. `unassociate`: divide a premultiplied colour by
+  // the alpha again (the material uses this image's alpha).
+  glm::vec4 sample(glm::vec2 uv, bool unassociate = false) const;
+  // Stored premultiplied by alpha (the Straight images above).
+  bool associated_alpha() const { return associated_alpha_; }
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -44,11 +54,13 @@ class Texture {
 
  private:
   Texture() = default;
+  void associate_alpha();
   int width_ = 0;
   int height_ = 0;
   ColorSpace space_ = ColorSpace::SRGB;
   Wrap wrap_ = Wrap::Repeat;
   bool convert_srgb_after_filtering_ = false;
+  bool associated_alpha_ = false;
   std::string name_;
   std::vector<glm::vec4> texels_;  // rows bottom to top after loading
 };

@@ -30,15 +30,18 @@ glm::vec3 apply_normal_map(const Material& material, glm::vec2 uv, const glm::ve
 }
 
 // The textured parameters at uv, in table order; parameters sharing one image (a packed
-// metallic-roughness texture) take one lookup.
+// metallic-roughness texture) take one lookup. The image the alpha comes from gives its colour
+// unpremultiplied (texture.h).
 void look_up_textures(const Material& material, glm::vec2 uv, PrincipledInputs& inputs) {
+  const ParameterValue& alpha = material[MaterialParameter::Alpha];
+  const Texture* alpha_source = alpha.channel == 3 ? alpha.texture.get() : nullptr;
   const Texture* looked_up = nullptr;
   glm::vec4 texel(0.0f);
   for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) {
     const ParameterValue& p = material[info.id];
     if (!p.texture) continue;
     if (p.texture.get() != looked_up) {
-      texel = p.texture->sample(uv);
+      texel = p.texture->sample(uv, p.texture.get() == alpha_source);
       looked_up = p.texture.get();
     }
     inputs.set(info.id, info.kind == matgeom::ParameterKind::Color ? p.value * glm::vec3(texel)

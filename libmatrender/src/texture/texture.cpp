@@ -78,7 +78,13 @@ std::shared_ptr<const Texture> Texture::from_pixels8(int width, int height, int 
   auto mutable_texture = std::const_pointer_cast<Texture>(texture);
   mutable_texture->space_ = space;
   mutable_texture->convert_srgb_after_filtering_ = space == ColorSpace::SRGB;
+  if (space == ColorSpace::SRGB && channels == 4) mutable_texture->associate_alpha();
   return texture;
+}
+
+void Texture::associate_alpha() {
+  for (glm::vec4& t : texels_) t = glm::vec4(glm::vec3(t) * t.w, t.w);
+  associated_alpha_ = true;
 }
 
 std::shared_ptr<const Texture> Texture::load(const std::string& path, ColorSpace space, Wrap wrap) {
@@ -107,6 +113,7 @@ std::shared_ptr<const Texture> Texture::load(const std::string& path, ColorSpace
     auto mutable_texture = std::const_pointer_cast<Texture>(texture);
     mutable_texture->space_ = space;
     mutable_texture->convert_srgb_after_filtering_ = true;
+    if (channels == 4) mutable_texture->associate_alpha();
     return texture;
   }
   if (space == ColorSpace::SRGB) {
@@ -128,7 +135,7 @@ ColorSpace blender_default_color_space(const std::string& path) {
   return float_data ? ColorSpace::NonColor : ColorSpace::SRGB;
 }
 
-glm::vec4 Texture::sample(glm::vec2 uv) const {
+glm::vec4 Texture::sample(glm::vec2 uv, bool unassociate) const {
   // Texel centres sit at (i + 0.5) / W.
   const float x = uv.x * width_ - 0.5f;
   const float y = uv.y * height_ - 0.5f;
@@ -150,6 +157,11 @@ glm::vec4 Texture::sample(glm::vec2 uv) const {
   const auto texel = [&](int ix, int iy) { return texels_[static_cast<size_t>(iy) * width_ + ix]; };
   glm::vec4 value = (1.0f - ty) * ((1.0f - tx) * texel(x0, y0) + tx * texel(x1, y0)) +
                     ty * ((1.0f - tx) * texel(x0, y1) + tx * texel(x1, y1));
+  if (unassociate && associated_alpha_ && value.w > 0.0f) {
+    value.x /= value.w;
+    value.y /= value.w;
+    value.z /= value.w;
+  }
   if (convert_srgb_after_filtering_) {
     value.x = matgeom::srgb_to_linear(value.x);
     value.y = matgeom::srgb_to_linear(value.y);
