@@ -39,11 +39,11 @@ def add_mesh(scene, description, material):
     scene.collection.objects.link(obj)
 
 
-def make_material(description):
+def make_material(description, distribution):
     material = bpy.data.materials.new("material")
     material.use_nodes = True
     bsdf = material.node_tree.nodes["Principled BSDF"]
-    bsdf.distribution = "GGX"  # single-scatter GGX, as ours
+    bsdf.distribution = distribution  # "GGX" (single scatter) or "MULTI_GGX", as ours
     # Principled BSDF input name -> value, one per row of the material table.
     for name, value in description.items():
         bsdf.inputs[name].default_value = (*value, 1.0) if isinstance(value, list) else value
@@ -152,7 +152,7 @@ def main():
         description = json.load(f)
     bpy.ops.wm.read_factory_settings(use_empty=True)
     scene = bpy.context.scene
-    add_mesh(scene, description["mesh"], make_material(description["material"]))
+    add_mesh(scene, description["mesh"], make_material(description["material"], description["distribution"]))
     add_lamps(scene, description["lamps"])
     add_camera(scene, description["camera"])
     set_world(scene, description["background"], description.get("environment"))

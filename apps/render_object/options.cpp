@@ -274,7 +274,7 @@ void add_render_options(CLI::App& app, Options& o) {
       ->group(group);
   app.add_flag("--cycles-parity", o.cycles_parity,
                "reproduce Blender 3.4 Cycles' own estimators where they are biased (clearcoat: lamp "
-               "reflections up to 1.76x too bright), for parity with images made in Blender")
+               "reflections up to 1.76x too bright; the multiscatter GGX walk), for parity with images made in Blender")
       ->group(group);
 }
 

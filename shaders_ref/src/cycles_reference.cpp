@@ -96,6 +96,7 @@ json describe(const CyclesScene& scene) {
             {"triangles", triangles},
             {"shadow_terminator_geometry_offset", scene.shadow_terminator_geometry_offset}}},
           {"material", principled_inputs(m)},
+          {"distribution", m.distribution == matrender::SpecularDistribution::MultiscatterGGX ? "MULTI_GGX" : "GGX"},
           {"lamps", lamps},
           {"camera",
            {{"camera_to_world", column_major(c.camera_to_world)},

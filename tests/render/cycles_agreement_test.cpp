@@ -203,6 +203,7 @@ struct Case {
   bool cycles_parity = false;
   float transmission = 0.0f, ior = 1.45f, transmission_roughness = 0.0f;
   float alpha = 1.0f;
+  matrender::SpecularDistribution distribution = matrender::SpecularDistribution::GGX;
 };
 
 }  // namespace
@@ -241,6 +242,11 @@ TEST_CASE("Renders agree with Blender 3.4 Cycles up to noise", "[render][blender
       // Half coverage: the far side of the sphere shows through its front, lit from inside too.
       {"alpha_0.4_glossy", {0.7f, 0.3f, 0.2f}, 0.0f, 0.2f, 0.5f, 0.0f, 48, 0.1f, 0.0f, 0.5f, glm::vec3(0.0f), 0.0f,
        0.03f, false, 0.0f, 1.45f, 0.0f, 0.4f},
+      // Multiscatter GGX on a rough gold metal and a rough dielectric, with Cycles' walk (parity).
+      {"multiscatter_metal_0.6_parity", {0.95f, 0.7f, 0.35f}, 1.0f, 0.6f, 0.5f, 0.0f, 48, 0.1f, 0.0f, 0.5f,
+       glm::vec3(0.0f), 0.0f, 0.03f, true, 0.0f, 1.45f, 0.0f, 1.0f, matrender::SpecularDistribution::MultiscatterGGX},
+      {"multiscatter_dielectric_0.4_parity", {0.3f, 0.5f, 0.7f}, 0.0f, 0.4f, 0.8f, 0.0f, 48, 0.1f, 0.0f, 0.5f,
+       glm::vec3(0.0f), 0.0f, 0.03f, true, 0.0f, 1.45f, 0.0f, 1.0f, matrender::SpecularDistribution::MultiscatterGGX},
   };
   for (const Case& c : cases) {
     matrender::Material material;
@@ -258,6 +264,7 @@ TEST_CASE("Renders agree with Blender 3.4 Cycles up to noise", "[render][blender
     material.set(matrender::MaterialParameter::Ior, c.ior);
     material.set(matrender::MaterialParameter::TransmissionRoughness, c.transmission_roughness);
     material.set(matrender::MaterialParameter::Alpha, c.alpha);
+    material.distribution = c.distribution;
     const Agreement a =
         agreement_with_cycles(paper_scene(material, c.rings, c.terminator_offset), c.name, c.cycles_parity);
     INFO(c.name << ": mean squared difference " << a.excess.mean + a.noise << " against noise " << a.noise

@@ -26,6 +26,11 @@ enum class DiffuseModel {
   Lambert,     // Cycles' Diffuse BSDF at roughness 0 (closed-form tests, simple scenes)
 };
 
+// The Principled BSDF's Distribution for its specular lobe: Cycles 3.4's single-scatter GGX
+// (Blender's default) or Multiscatter GGX, which also reflects the light that bounces between
+// microfacets (rough metals lose less energy). Glass stays single-scatter either way.
+enum class SpecularDistribution { GGX, MultiscatterGGX };
+
 struct Material {
   // Every parameter at Blender's default; scalar texture channels at their place in a packed
   // metallic-roughness image.
@@ -34,6 +39,7 @@ struct Material {
   std::string name = "material";
   int label_id = 0;  // material family id written to the label AOV
   DiffuseModel diffuse_model = DiffuseModel::Principled;
+  SpecularDistribution distribution = SpecularDistribution::GGX;
   std::array<ParameterValue, matgeom::kMaterialParameterCount> parameters;
   TexturePtr normal_map;  // tangent space, OpenGL convention (+Y = +v), Non-Color
   float normal_strength = 1.0f;

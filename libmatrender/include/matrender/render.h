@@ -27,7 +27,9 @@ struct RenderSettings {
   int max_transparent_bounces = 8;  // surfaces of alpha < 1 a ray passes, camera and shadow rays alike
   bool transparent_background = false;  // camera rays that miss give 0 instead of the background
   // Reproduce Cycles 3.4's own estimators where they do not converge to the integral of its BSDF
-  // (the clearcoat's sampling, docs/conventions.md), for parity with images made in Blender.
+  // (the clearcoat's sampling, the multiscatter walk; docs/conventions.md), for parity with images
+  // made in Blender. Lights are then picked uniformly whatever light_selection says: a biased
+  // estimator's image depends on the MIS weights.
   bool cycles_parity = false;
   LightSelection light_selection = LightSelection::Importance;
   uint32_t aovs = default_aovs();

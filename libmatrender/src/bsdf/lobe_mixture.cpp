@@ -30,8 +30,12 @@ bool LobeMixture::sample_lobe(size_t i, glm::vec2 u, BsdfSample* out) const {
     return true;
   }
   float pdf;
-  const glm::vec3 value =
-      eval(s.wi, is_reflective(flags) ? BxDFFlags::Reflection : BxDFFlags::Transmission, &pdf);
+  const BxDFFlags side = is_reflective(flags) ? BxDFFlags::Reflection : BxDFFlags::Transmission;
+  glm::vec3 value = eval(s.wi, side, &pdf, s.has_value ? i : kMaxLobes);
+  if (s.has_value) {
+    value += s.value;
+    pdf += probability_[i] * s.pdf;
+  }
   if (!(pdf > 0.0f)) return false;
   out->weight = value * (1.0f / pdf);
   out->pdf = pdf;

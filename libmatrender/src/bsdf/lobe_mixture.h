@@ -21,13 +21,14 @@
 #include "bsdf/ggx_reflection_lobe.h"
 #include "bsdf/ggx_transmission_lobe.h"
 #include "bsdf/lobe_sample.h"
+#include "bsdf/multiscatter_ggx_lobe.h"
 #include "bsdf/sheen_lobe.h"
 #include "bsdf/transparent_lobe.h"
 
 namespace matrender {
 
-using Lobe =
-    std::variant<DiffuseLobe, GgxReflectionLobe, SheenLobe, ClearcoatLobe, GgxTransmissionLobe, TransparentLobe>;
+using Lobe = std::variant<DiffuseLobe, GgxReflectionLobe, SheenLobe, ClearcoatLobe, GgxTransmissionLobe,
+                          TransparentLobe, MultiscatterGgxLobe>;
 
 // f(the lobe as its own type). A switch, not std::visit: GCC turns std::visit into a call through
 // a table, which keeps the lobes' small methods from being inlined at every path vertex. Forced
@@ -35,14 +36,15 @@ using Lobe =
 // more instructions on the vase, measured with callgrind).
 template <class F>
 [[gnu::always_inline]] inline decltype(auto) with_lobe(const Lobe& lobe, F&& f) {
-  static_assert(std::variant_size_v<Lobe> == 6, "a new lobe needs its case here");
+  static_assert(std::variant_size_v<Lobe> == 7, "a new lobe needs its case here");
   switch (lobe.index()) {
     case 0: return f(*std::get_if<0>(&lobe));
     case 1: return f(*std::get_if<1>(&lobe));
     case 2: return f(*std::get_if<2>(&lobe));
     case 3: return f(*std::get_if<3>(&lobe));
     case 4: return f(*std::get_if<4>(&lobe));
-    default: return f(*std::get_if<5>(&lobe));
+    case 5: return f(*std::get_if<5>(&lobe));
+    default: return f(*std::get_if<6>(&lobe));
   }
 }
 
@@ -72,7 +74,8 @@ class LobeMixture {
   // Sum of f cos over the lobes whose flags share a bit with `selected` (Reflection for the
   // reflecting lobes, Diffuse for the diffuse ones, ...), and in *pdf the mixture pdf of
   // sampling wi through those lobes.
-  glm::vec3 eval(const glm::vec3& wi, BxDFFlags selected, float* pdf) const;
+  // `skip`: a lobe left out of both sums.
+  glm::vec3 eval(const glm::vec3& wi, BxDFFlags selected, float* pdf, size_t skip = kMaxLobes) const;
   glm::vec3 eval(const glm::vec3& wi, float* pdf) const {
     return eval(wi, BxDFFlags::Reflection | BxDFFlags::Transmission, pdf);
   }
@@ -134,11 +137,12 @@ inline void LobeMixture::finish() {
   }
 }
 
-[[gnu::always_inline]] inline glm::vec3 LobeMixture::eval(const glm::vec3& wi, BxDFFlags selected, float* pdf) const {
+[[gnu::always_inline]] inline glm::vec3 LobeMixture::eval(const glm::vec3& wi, BxDFFlags selected, float* pdf,
+                                                          size_t skip) const {
   glm::vec3 value(0.0f);
   float mixture_pdf = 0.0f;
   for (size_t i = 0; i < count_; ++i) {
-    if (!any(lobe_flags_[i] & selected)) continue;
+    if (i == skip || !any(lobe_flags_[i] & selected)) continue;
     float lobe_pdf;
     value += with_lobe(slots_[i].lobe, [&](const auto& l) { return l.eval(wi, &lobe_pdf); });
     mixture_pdf += probability_[i] * lobe_pdf;

@@ -43,12 +43,14 @@ PrincipledInputs::PrincipledInputs() {
   values = defaults;
 }
 
-PrincipledInputs::PrincipledInputs(const Material& material) : diffuse_model(material.diffuse_model) {
+PrincipledInputs::PrincipledInputs(const Material& material)
+    : diffuse_model(material.diffuse_model), distribution(material.distribution) {
   for (size_t i = 0; i < values.size(); ++i) values[i] = material.parameters[i].value;
 }
 
-PrincipledParameters::PrincipledParameters(const PrincipledInputs& inputs, ClearcoatEstimator estimator)
-    : diffuse_model(inputs.diffuse_model), clearcoat_estimator(estimator) {
+PrincipledParameters::PrincipledParameters(const PrincipledInputs& inputs, ClearcoatEstimator estimator,
+                                           MultiscatterWalk walk)
+    : diffuse_model(inputs.diffuse_model), multiscatter_walk(walk), clearcoat_estimator(estimator) {
   const glm::vec3 base = glm::max(inputs.color(MaterialParameter::BaseColor), glm::vec3(0.0f));
   const float metallic = glm::clamp(inputs.scalar(MaterialParameter::Metallic), 0.0f, 1.0f);
   const float specular = glm::clamp(inputs.scalar(MaterialParameter::Specular), 0.0f, 1.0f);
@@ -63,6 +65,8 @@ PrincipledParameters::PrincipledParameters(const PrincipledInputs& inputs, Clear
   glass_weight = transmission * (1.0f - metallic);
   specular_weight = 1.0f - glass_weight;
   specular_enabled = (specular > 0.0f || metallic > 0.0f) && specular_weight > kClosureWeightCutoff;
+  // svm_closure.h: "roughness <= 0.075f" keeps single-scatter GGX.
+  multiscatter = inputs.distribution == SpecularDistribution::MultiscatterGGX && roughness > 0.075f;
 
   // The base colour's hue: tint = base / lum (white for black), for the specular and sheen tints.
   const float lum = luminance(base);
@@ -117,13 +121,16 @@ PrincipledParameters::PrincipledParameters(const PrincipledInputs& inputs, Clear
 }
 
 void add_principled_lobes(const PrincipledParameters& p, const glm::vec3& wo, const ShadingGeometry& geometry,
-                          LobeMixture* lobes) {
+                          LobeMixture* lobes, uint32_t walk_seed) {
   const DiffuseLobe diffuse(p.diffuse_weight, p.diffuse_model, p.roughness, wo, geometry.smooth_normal);
   if (diffuse.sample_weight() > 0.0f) lobes->add(diffuse);
   // Added even where its sample weight is 0 (seen head-on): like Cycles' closure it then still
   // counts in every evaluation, only BSDF sampling never picks it.
   if (p.sheen_enabled) lobes->add(SheenLobe(p.sheen_weight, wo));
-  if (p.specular_enabled) lobes->add(GgxReflectionLobe(p.specular_weight, p.fresnel, p.alpha, p.singular, wo));
+  if (p.specular_enabled && p.multiscatter)
+    lobes->add(MultiscatterGgxLobe(p.specular_weight, p.fresnel, p.alpha, wo, walk_seed, p.multiscatter_walk));
+  else if (p.specular_enabled)
+    lobes->add(GgxReflectionLobe(p.specular_weight, p.fresnel, p.alpha, p.singular, wo));
   if (p.glass_enabled) add_glass_lobes(p, wo, geometry.front_face, lobes);
   if (p.clearcoat_enabled)
     lobes->add(

@@ -8,11 +8,13 @@
 // metallic 0 make no specular lobe at all; sheen, clearcoat and transmission 0 and alpha 1 (the
 // defaults) no sheen, clearcoat, glass or transparent lobes.
 #include <array>
+#include <cstdint>
 
 #include <glm/glm.hpp>
 
 #include "bsdf/fresnel.h"
 #include "bsdf/lobe_mixture.h"
+#include "bsdf/microfacet_multiscatter.h"
 #include "matrender/material.h"
 
 namespace matrender {
@@ -26,6 +28,7 @@ struct PrincipledInputs {
 
   std::array<glm::vec3, matgeom::kMaterialParameterCount> values;  // by MaterialParameter; scalars in x
   DiffuseModel diffuse_model = DiffuseModel::Principled;
+  SpecularDistribution distribution = SpecularDistribution::GGX;
 
   glm::vec3 color(MaterialParameter p) const { return values[static_cast<size_t>(p)]; }
   float scalar(MaterialParameter p) const { return values[static_cast<size_t>(p)].x; }
@@ -41,8 +44,11 @@ struct PrincipledInputs {
 // What the lobes take from the material inputs alone, before any view direction: computed once
 // per material when no input is textured, once per shading point otherwise.
 struct PrincipledParameters {
+  // The estimator and walk: Cycles 3.4's own (cycles_parity) or those that converge to the
+  // integral (the defaults).
   explicit PrincipledParameters(const PrincipledInputs& inputs,
-                                ClearcoatEstimator estimator = ClearcoatEstimator::Integral);
+                                ClearcoatEstimator estimator = ClearcoatEstimator::Integral,
+                                MultiscatterWalk walk = MultiscatterWalk::Exact);
 
   glm::vec3 diffuse_weight{0.0f};  // (1 - metallic)(1 - transmission) base colour
   glm::vec3 sheen_weight{0.0f};    // sheen (1 - metallic)(1 - transmission) mix(1, base tint, sheen_tint)
@@ -53,6 +59,9 @@ struct PrincipledParameters {
   bool singular;                   // a perfect mirror
   float specular_weight;           // 1 - transmission (1 - metallic)
   bool specular_enabled;           // specular > 0 or metallic > 0, and a specular weight
+  // Multiscatter GGX asked for and roughness above Cycles' 0.075, below which it stays single.
+  bool multiscatter = false;
+  MultiscatterWalk multiscatter_walk;
   InterpolatedFresnel fresnel;
   float clearcoat_weight = 0.0f;   // 0.25 clearcoat
   float clearcoat_alpha = 0.0f;    // GTR1 alpha = clearcoat_roughness^2
@@ -85,8 +94,8 @@ struct ShadingGeometry {
 };
 
 // Adds the lobes seen from wo (local shading frame, +Z = shading normal) to the empty `lobes`
-// and finishes it.
+// and finishes it. walk_seed: the random numbers of a multiscatter lobe's walk.
 void add_principled_lobes(const PrincipledParameters& parameters, const glm::vec3& wo, const ShadingGeometry& geometry,
-                          LobeMixture* lobes);
+                          LobeMixture* lobes, uint32_t walk_seed = 0);
 
 }  // namespace matrender

@@ -20,8 +20,8 @@ namespace {
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 // Random-number pairs of one path vertex: the lamp (its choice reused for the point on it), the
-// BSDF (its lobe choice reused for the direction), and (Russian roulette, unused). Pair 0 is the
-// pixel filter's.
+// BSDF (its lobe choice reused for the direction), and (Russian roulette, a multiscatter walk's
+// seed). Pair 0 is the pixel filter's.
 struct VertexDimensions {
   uint32_t light, bsdf, roulette;
   explicit VertexDimensions(int bounce)
@@ -29,6 +29,12 @@ struct VertexDimensions {
 };
 
 float max_component(const glm::vec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
+
+// The seed of a vertex's multiscatter walk: the roulette pair's second number, which nothing
+// else uses, as bits.
+uint32_t walk_seed(const PixelSampler& sampler, const VertexDimensions& dims) {
+  return static_cast<uint32_t>(sampler.get_2d(dims.roulette).y * 0x1p32f);
+}
 
 // Where a shadow ray toward unit direction wi starts before the usual ray offset: the hit point,
 // lifted toward the smooth surface near the terminator of a smooth-shaded triangle (Cycles'
@@ -60,7 +66,8 @@ PathTracer::PathTracer(const SceneData& scene, const LightSampler& lights, const
     if (alpha.texture || alpha.value.x < 1.0f) has_transparency_ = true;
     const std::optional<PrincipledInputs> inputs = constant_inputs(material);
     constant_parameters_.push_back(
-        inputs ? std::optional<PrincipledParameters>(PrincipledParameters(*inputs, settings.clearcoat_estimator))
+        inputs ? std::optional<PrincipledParameters>(PrincipledParameters(*inputs, settings.clearcoat_estimator,
+                                                                           settings.multiscatter_walk))
                : std::nullopt);
   }
 }
@@ -186,7 +193,7 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     const glm::vec3 wo = frame.to_local(wo_world);
     const std::optional<PrincipledParameters>& constant = constant_parameters_[sp.material];
     const PrincipledParameters parameters =
-        constant ? *constant : PrincipledParameters(sp.inputs, settings_.clearcoat_estimator);
+        constant ? *constant : PrincipledParameters(sp.inputs, settings_.clearcoat_estimator, settings_.multiscatter_walk);
     ShadingGeometry geometry;
     geometry.front_face = sp.front_face;
     if (sp.smooth_normal != sp.shading_normal) {
@@ -198,7 +205,7 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
             frame.to_local(ensure_valid_reflection(sp.geometric_normal, wo_world, sp.smooth_normal));
     }
     Bsdf bsdf(frame, sp.geometric_normal);
-    add_principled_lobes(parameters, wo, geometry, &bsdf.lobes());
+    add_principled_lobes(parameters, wo, geometry, &bsdf.lobes(), parameters.multiscatter ? walk_seed(sampler, dims) : 0);
 
     // Next-event estimation: one lamp, one point on it.
     if (!lights_.empty() && is_non_specular(bsdf.flags())) {

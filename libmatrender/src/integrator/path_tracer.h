@@ -22,6 +22,7 @@ struct PathSettings {
   int max_transparent_bounces = 8;
   bool transparent_background = false;
   ClearcoatEstimator clearcoat_estimator = ClearcoatEstimator::Integral;
+  MultiscatterWalk multiscatter_walk = MultiscatterWalk::Exact;
 };
 
 struct PathResult {

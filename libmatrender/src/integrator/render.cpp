@@ -86,12 +86,16 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
   for (uint32_t mesh = 0; mesh < data.meshes.size(); ++mesh)
     if (std::optional<PreparedMeshEmitter> emitter = PreparedMeshEmitter::of_mesh(data, mesh))
       emitters.push_back(std::move(*emitter));
-  const LightSampler lights(data.lights, data.world, settings.light_selection, emitters);
+  // Cycles' biased estimators (the clearcoat's) converge to an image that depends on the MIS
+  // weights, so parity picks lights as Cycles does too.
+  const LightSelection selection = settings.cycles_parity ? LightSelection::Uniform : settings.light_selection;
+  const LightSampler lights(data.lights, data.world, selection, emitters);
   const PathTracer tracer(data, lights,
                           {settings.max_bounces, settings.max_diffuse_bounces, settings.max_glossy_bounces,
                            settings.max_transmission_bounces, settings.max_transparent_bounces,
                            settings.transparent_background,
-                           settings.cycles_parity ? ClearcoatEstimator::Cycles34 : ClearcoatEstimator::Integral});
+                           settings.cycles_parity ? ClearcoatEstimator::Cycles34 : ClearcoatEstimator::Integral,
+                           settings.cycles_parity ? MultiscatterWalk::Cycles34 : MultiscatterWalk::Exact});
   const CameraRays rays(camera);
   const PixelFilterSampler& filter = blackman_harris_sampler();
   const glm::mat3 world_to_camera = glm::transpose(glm::mat3(rays.right(), rays.up(), rays.back()));

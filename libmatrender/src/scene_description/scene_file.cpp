@@ -466,7 +466,7 @@ void read_parameter(const Node& node, const matgeom::MaterialParameterInfo& info
 }
 
 MaterialDescription read_material(const Node& node, const std::string& name, const fs::path& folder) {
-  std::vector<const char*> keys = {"normal_map", "label_id", "diffuse_model"};
+  std::vector<const char*> keys = {"normal_map", "label_id", "diffuse_model", "distribution"};
   for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) keys.push_back(info.name);
   node.expect_keys(keys);
   MaterialDescription material;
@@ -482,6 +482,9 @@ MaterialDescription read_material(const Node& node, const std::string& name, con
   }
   // Label AOVs are 16-bit PNGs.
   if (auto n = node.find("label_id")) m.label_id = n->integer_in(0, 65535);
+  if (auto n = node.find("distribution"))
+    m.distribution = n->choice({"ggx", "multiscatter_ggx"}) == 0 ? SpecularDistribution::GGX
+                                                                 : SpecularDistribution::MultiscatterGGX;
   if (auto n = node.find("diffuse_model"))
     m.diffuse_model = n->choice({"principled", "lambert"}) == 0 ? DiffuseModel::Principled
                                                                 : DiffuseModel::Lambert;
