@@ -272,6 +272,10 @@ void add_render_options(CLI::App& app, Options& o) {
       ->check(CLI::IsMember({"importance", "uniform"}))
       ->default_str("importance")
       ->group(group);
+  app.add_flag("--no-mipmaps", o.no_mipmaps,
+               "look textures up bilinearly at the hit point only, as Cycles 3.4 on the CPU, instead of "
+               "filtering them over each camera ray's footprint")
+      ->group(group);
   app.add_flag("--cycles-parity", o.cycles_parity,
                "reproduce Blender 3.4 Cycles' own estimators where they are biased (clearcoat: lamp "
                "reflections up to 1.76x too bright; the multiscatter GGX walk), for parity with images made in Blender")
@@ -372,6 +376,7 @@ void apply_render_options(const Options& o, SceneDescription& scene) {
   if (o.transparent) s.transparent_background = true;
   if (o.cycles_parity) s.cycles_parity = true;
   if (o.light_selection) s.light_selection = *o.light_selection;
+  if (o.no_mipmaps) s.mipmaps = false;
   if (o.exposure) scene.exposure_stops = *o.exposure;
   s.threads = app_support::announced_worker_threads("render_object", "--threads", o.threads);
   s.aovs = o.aovs;

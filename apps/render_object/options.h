@@ -44,6 +44,7 @@ struct Options {
   bool paper_powers = false;
   bool transparent = false;
   bool cycles_parity = false;
+  bool no_mipmaps = false;
   std::optional<matrender::LightSelection> light_selection;
 
   // The run itself.

@@ -32,6 +32,10 @@ struct RenderSettings {
   // estimator's image depends on the MIS weights.
   bool cycles_parity = false;
   LightSelection light_selection = LightSelection::Importance;
+  // Filter textures over each camera ray's footprint (a ray cone, continued through mirrors and
+  // glass) from their mip levels, so a 4k map seen from afar does not alias; off: bilinear at the
+  // hit point only, as Cycles 3.4 on the CPU (and always in cycles_parity).
+  bool mipmaps = true;
   uint32_t aovs = default_aovs();
   // Called with the finished fraction of all samples in [0, 1], from a render thread, every 65,536
   // samples a thread takes and when a tile ends; calls are serialised and the fraction increases.

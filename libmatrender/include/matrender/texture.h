@@ -1,6 +1,9 @@
 #pragma once
 // Image textures: float RGBA texels in scene-linear or non-colour data, sampled bilinearly like
-// Cycles' "Linear" interpolation (texel centres at (i + 0.5) / W, no mipmaps).
+// Cycles' "Linear" interpolation (texel centres at (i + 0.5) / W). Given a footprint (the width
+// in UV units a ray cone covers), trilinearly from a mip pyramid of 2 x 2 box-filtered levels,
+// built the first time a lookup needs it (Cycles 3.4 on the CPU has no mipmaps; the renderer
+// asks for footprints only when RenderSettings::mipmaps is on).
 //
 // Alpha, as Blender 3.4 treats an image of alpha mode Straight (its default): an 8- or 16-bit
 // sRGB image with an alpha channel is premultiplied by its alpha when loaded (on the encoded
@@ -10,6 +13,7 @@
 // again. Non-colour (data) images keep their channels as stored: channel-packed maps.
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -43,7 +47,8 @@ class Texture {
   // Returns linear RGBA: sRGB textures are interpolated on the encoded values and converted
   // afterwards, as Cycles does for 8-bit images. `unassociate`: divide a premultiplied colour by
   // the alpha again (the material uses this image's alpha).
-  glm::vec4 sample(glm::vec2 uv, bool unassociate = false) const;
+  // footprint: the lookup's width in UV units; at or below one texel, the plain bilinear lookup.
+  glm::vec4 sample(glm::vec2 uv, bool unassociate = false, float footprint = 0.0f) const;
   // Stored premultiplied by alpha (the Straight images above).
   bool associated_alpha() const { return associated_alpha_; }
 
@@ -55,6 +60,15 @@ class Texture {
  private:
   Texture() = default;
   void associate_alpha();
+
+  struct Level {
+    int width = 0, height = 0;
+    const glm::vec4* texels = nullptr;
+  };
+  glm::vec4 bilinear(const Level& level, glm::vec2 uv) const;
+  // Level 0 is texels_; the others come from mips_, made once by the first lookup needing them.
+  Level level(size_t i) const;
+  size_t level_count() const;
   int width_ = 0;
   int height_ = 0;
   ColorSpace space_ = ColorSpace::SRGB;
@@ -63,6 +77,13 @@ class Texture {
   bool associated_alpha_ = false;
   std::string name_;
   std::vector<glm::vec4> texels_;  // rows bottom to top after loading
+  struct MipLevel {
+    int width, height;
+    std::vector<glm::vec4> texels;
+  };
+  mutable std::vector<MipLevel> mips_;  // levels 1.. of the pyramid
+  mutable std::once_flag mips_built_;
+  void build_mips() const;
 };
 
 using TexturePtr = std::shared_ptr<const Texture>;

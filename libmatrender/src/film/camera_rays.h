@@ -25,6 +25,9 @@ class CameraRays {
   }
 
   glm::vec3 origin() const { return origin_; }
+  // The angle one pixel subtends at the image centre: a camera ray cone's spread (Akenine-Moller
+  // et al. 2019, "Texture Level of Detail Strategies for Real-Time Ray Tracing", eq. 30).
+  float pixel_spread_angle() const { return std::atan(scale_y_); }
   glm::vec3 forward() const { return -back_; }
   const glm::vec3& right() const { return right_; }
   const glm::vec3& up() const { return up_; }

@@ -130,6 +130,8 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
   int transmission_bounces = 0;
   int transparent_bounces = 0;
   bool passed_transparent = false;  // the ray left its last surface through its transparency
+  float cone_width = 0.0f;                         // of the ray cone at its origin
+  float cone_spread = settings_.pixel_spread_angle;  // 0: no cone (after a non-specular bounce)
   PickSite site;       // where this vertex picks a light
   PickSite scattered;  // the site of the vertex that scattered the ray, for MIS at what it finds
 
@@ -154,7 +156,8 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     }
 
     const glm::vec3 wo_world = -dir;
-    const SurfacePoint sp = shade_surface(scene_, hit, wo_world);
+    cone_width += cone_spread * hit.t;
+    const SurfacePoint sp = shade_surface(scene_, hit, wo_world, cone_spread > 0.0f ? cone_width : 0.0f);
     if (vertex == 0) {
       result.hit = true;
       result.first_distance = hit.t;
@@ -257,6 +260,7 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     ++bounce;
     bsdf_pdf = s.pdf;
     scattered = site;
+    if (!is_specular(s.flags)) cone_spread = 0.0f;
     bsdf_delta = is_specular(s.flags);
     // Cycles counts a bounce by its label: transmission first, then diffuse, else glossy (a
     // mirror included).

@@ -23,6 +23,9 @@ struct PathSettings {
   bool transparent_background = false;
   ClearcoatEstimator clearcoat_estimator = ClearcoatEstimator::Integral;
   MultiscatterWalk multiscatter_walk = MultiscatterWalk::Exact;
+  // The angle a camera ray's cone spreads by (about a pixel's); 0 turns mip-mapping off. Cones
+  // continue through specular bounces and transparent passes, and end at any other bounce.
+  float pixel_spread_angle = 0.0f;
 };
 
 struct PathResult {

@@ -90,13 +90,16 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
   // weights, so parity picks lights as Cycles does too.
   const LightSelection selection = settings.cycles_parity ? LightSelection::Uniform : settings.light_selection;
   const LightSampler lights(data.lights, data.world, selection, emitters);
+  const CameraRays rays(camera);
+  // Cycles 3.4 on the CPU does not mip-map: parity looks textures up bilinearly.
+  const bool mipmaps = settings.mipmaps && !settings.cycles_parity;
   const PathTracer tracer(data, lights,
                           {settings.max_bounces, settings.max_diffuse_bounces, settings.max_glossy_bounces,
                            settings.max_transmission_bounces, settings.max_transparent_bounces,
                            settings.transparent_background,
                            settings.cycles_parity ? ClearcoatEstimator::Cycles34 : ClearcoatEstimator::Integral,
-                           settings.cycles_parity ? MultiscatterWalk::Cycles34 : MultiscatterWalk::Exact});
-  const CameraRays rays(camera);
+                           settings.cycles_parity ? MultiscatterWalk::Cycles34 : MultiscatterWalk::Exact,
+                           mipmaps ? rays.pixel_spread_angle() : 0.0f});
   const PixelFilterSampler& filter = blackman_harris_sampler();
   const glm::mat3 world_to_camera = glm::transpose(glm::mat3(rays.right(), rays.up(), rays.back()));
 

@@ -32,7 +32,7 @@ glm::vec3 apply_normal_map(const Material& material, glm::vec2 uv, const glm::ve
 // The textured parameters at uv, in table order; parameters sharing one image (a packed
 // metallic-roughness texture) take one lookup. The image the alpha comes from gives its colour
 // unpremultiplied (texture.h).
-void look_up_textures(const Material& material, glm::vec2 uv, PrincipledInputs& inputs) {
+void look_up_textures(const Material& material, glm::vec2 uv, float footprint, PrincipledInputs& inputs) {
   const ParameterValue& alpha = material[MaterialParameter::Alpha];
   const Texture* alpha_source = alpha.channel == 3 ? alpha.texture.get() : nullptr;
   const Texture* looked_up = nullptr;
@@ -41,7 +41,7 @@ void look_up_textures(const Material& material, glm::vec2 uv, PrincipledInputs& 
     const ParameterValue& p = material[info.id];
     if (!p.texture) continue;
     if (p.texture.get() != looked_up) {
-      texel = p.texture->sample(uv, p.texture.get() == alpha_source);
+      texel = p.texture->sample(uv, p.texture.get() == alpha_source, footprint);
       looked_up = p.texture.get();
     }
     inputs.set(info.id, info.kind == matgeom::ParameterKind::Color ? p.value * glm::vec3(texel)
@@ -49,9 +49,25 @@ void look_up_textures(const Material& material, glm::vec2 uv, PrincipledInputs& 
   }
 }
 
+// The UV width a ray cone of `cone_width` covers where it meets the triangle: the cone's width
+// over the cosine of incidence (stretched along the surface), times the triangle's UV-to-world
+// length ratio sqrt(UV area / world area) (Akenine-Moller et al. 2021, "Improved Shader and
+// Texture Level of Detail Using Ray Cones", eq. 8; the cosine bounded at 0.01, 100x stretch).
+float uv_footprint(const MeshData& mesh, const glm::uvec3& tri, const glm::vec3& ng, const glm::vec3& wo,
+                   float cone_width) {
+  const glm::vec3 p0 = mesh.positions[tri.x], p1 = mesh.positions[tri.y], p2 = mesh.positions[tri.z];
+  const glm::vec2 t0 = mesh.uvs[tri.x], t1 = mesh.uvs[tri.y], t2 = mesh.uvs[tri.z];
+  const float world_area = glm::length(glm::cross(p1 - p0, p2 - p0));
+  const glm::vec2 e1 = t1 - t0, e2 = t2 - t0;
+  const float uv_area = std::abs(e1.x * e2.y - e1.y * e2.x);
+  if (!(world_area > 0.0f) || !(uv_area > 0.0f)) return 0.0f;
+  const float footprint = cone_width / std::max(std::abs(glm::dot(ng, wo)), 0.01f) * std::sqrt(uv_area / world_area);
+  return std::isfinite(footprint) ? footprint : 0.0f;
+}
+
 }  // namespace
 
-SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm::vec3& wo) {
+SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm::vec3& wo, float cone_width) {
   const MeshData& mesh = scene.meshes[hit.mesh];
   const glm::uvec3 tri = mesh.triangles[hit.triangle];
   const float b1 = hit.u, b2 = hit.v, b0 = 1.0f - hit.u - hit.v;
@@ -95,7 +111,11 @@ SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm:
   if (!is_finite(n)) n = sp.geometric_normal;
   sp.shading_normal = ensure_valid_reflection(sp.geometric_normal, wo, n);
 
-  if (textured_parameters) look_up_textures(material, sp.uv, sp.inputs);
+  if (textured_parameters) {
+    const float footprint =
+        cone_width > 0.0f && !mesh.uvs.empty() ? uv_footprint(mesh, tri, sp.geometric_normal, wo, cone_width) : 0.0f;
+    look_up_textures(material, sp.uv, footprint, sp.inputs);
+  }
   return sp;
 }
 

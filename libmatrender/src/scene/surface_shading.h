@@ -40,8 +40,9 @@ struct SurfacePoint {
 
 };
 
-// wo = unit direction from the hit back toward the ray origin.
-SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm::vec3& wo);
+// wo = unit direction from the hit back toward the ray origin. cone_width: the width of the ray's
+// cone at the hit (world units), for mip-mapped texture lookups; 0 looks textures up bilinearly.
+SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm::vec3& wo, float cone_width = 0.0f);
 
 // The inputs shade_surface gives every point of `material` when none of them is textured.
 std::optional<PrincipledInputs> constant_inputs(const Material& material);

@@ -591,7 +591,7 @@ std::vector<ObjectDescription> read_objects(const Node& node, const fs::path& fo
 void read_render(const Node& node, SceneDescription& scene) {
   node.expect_keys({"spp", "seed", "max_bounces", "max_diffuse_bounces", "max_glossy_bounces",
                     "max_transmission_bounces", "max_transparent_bounces", "exposure",
-                    "transparent_background", "cycles_parity", "light_selection"});
+                    "transparent_background", "cycles_parity", "light_selection", "mipmaps"});
   RenderSettings& s = scene.settings;
   if (auto n = node.find("spp")) s.samples_per_pixel = n->integer_at_least(1);
   if (auto n = node.find("seed")) s.seed = n->uint32();
@@ -605,6 +605,7 @@ void read_render(const Node& node, SceneDescription& scene) {
                                            fmt::format("a number of stops in [{}, {}]", -kMaxExposureStops, kMaxExposureStops));
   if (auto n = node.find("transparent_background")) s.transparent_background = n->boolean();
   if (auto n = node.find("cycles_parity")) s.cycles_parity = n->boolean();
+  if (auto n = node.find("mipmaps")) s.mipmaps = n->boolean();
   if (auto n = node.find("light_selection"))
     s.light_selection = n->choice({"importance", "uniform"}) == 0 ? LightSelection::Importance : LightSelection::Uniform;
 }

@@ -135,11 +135,41 @@ ColorSpace blender_default_color_space(const std::string& path) {
   return float_data ? ColorSpace::NonColor : ColorSpace::SRGB;
 }
 
-glm::vec4 Texture::sample(glm::vec2 uv, bool unassociate) const {
+Texture::Level Texture::level(size_t i) const {
+  if (i == 0) return {width_, height_, texels_.data()};
+  const MipLevel& m = mips_[i - 1];
+  return {m.width, m.height, m.texels.data()};
+}
+
+size_t Texture::level_count() const { return 1 + mips_.size(); }
+
+void Texture::build_mips() const {
+  // Each level halves the sides (rounding up) and averages the 2 x 2 texels below each texel,
+  // edge texels repeated on odd sides, down to 1 x 1.
+  Level parent = level(0);
+  require_texture_memory(name_ + " (mip levels)", width_, height_, 0.0);
+  while (parent.width > 1 || parent.height > 1) {
+    MipLevel next{std::max(1, (parent.width + 1) / 2), std::max(1, (parent.height + 1) / 2), {}};
+    next.texels.resize(static_cast<size_t>(next.width) * next.height);
+    for (int y = 0; y < next.height; ++y)
+      for (int x = 0; x < next.width; ++x) {
+        const auto at = [&](int px, int py) {
+          return parent.texels[static_cast<size_t>(std::min(py, parent.height - 1)) * parent.width +
+                               std::min(px, parent.width - 1)];
+        };
+        next.texels[static_cast<size_t>(y) * next.width + x] =
+            0.25f * (at(2 * x, 2 * y) + at(2 * x + 1, 2 * y) + at(2 * x, 2 * y + 1) + at(2 * x + 1, 2 * y + 1));
+      }
+    mips_.push_back(std::move(next));
+    parent = level(mips_.size());
+  }
+}
+
+glm::vec4 Texture::bilinear(const Level& level, glm::vec2 uv) const {
   // Texel centres sit at (i + 0.5) / W.
-  const float x = uv.x * width_ - 0.5f;
-  const float y = uv.y * height_ - 0.5f;
-  if (!std::isfinite(x) || !std::isfinite(y)) return texels_[0];
+  const float x = uv.x * level.width - 0.5f;
+  const float y = uv.y * level.height - 0.5f;
+  if (!std::isfinite(x) || !std::isfinite(y)) return level.texels[0];
   const float fx = std::floor(x);
   const float fy = std::floor(y);
   const float tx = x - fx;
@@ -150,13 +180,29 @@ glm::vec4 Texture::sample(glm::vec2 uv, bool unassociate) const {
                                                 : std::clamp(f, -1.0f, static_cast<float>(n));
     return wrap_index(static_cast<int>(reduced) + offset, n, wrap_);
   };
-  const int x0 = index(fx, 0, width_);
-  const int x1 = index(fx, 1, width_);
-  const int y0 = index(fy, 0, height_);
-  const int y1 = index(fy, 1, height_);
-  const auto texel = [&](int ix, int iy) { return texels_[static_cast<size_t>(iy) * width_ + ix]; };
-  glm::vec4 value = (1.0f - ty) * ((1.0f - tx) * texel(x0, y0) + tx * texel(x1, y0)) +
-                    ty * ((1.0f - tx) * texel(x0, y1) + tx * texel(x1, y1));
+  const int x0 = index(fx, 0, level.width);
+  const int x1 = index(fx, 1, level.width);
+  const int y0 = index(fy, 0, level.height);
+  const int y1 = index(fy, 1, level.height);
+  const auto texel = [&](int ix, int iy) { return level.texels[static_cast<size_t>(iy) * level.width + ix]; };
+  return (1.0f - ty) * ((1.0f - tx) * texel(x0, y0) + tx * texel(x1, y0)) +
+         ty * ((1.0f - tx) * texel(x0, y1) + tx * texel(x1, y1));
+}
+
+glm::vec4 Texture::sample(glm::vec2 uv, bool unassociate, float footprint) const {
+  // The level whose texels are as wide as the footprint: lod = log2(footprint in level-0 texels).
+  const float texels_across = footprint * static_cast<float>(std::max(width_, height_));
+  glm::vec4 value;
+  if (!(texels_across > 1.0f)) {
+    value = bilinear(level(0), uv);
+  } else {
+    std::call_once(mips_built_, [this] { build_mips(); });
+    const float lod = std::min(std::log2(texels_across), static_cast<float>(level_count() - 1));
+    const size_t fine = static_cast<size_t>(lod);
+    const float t = lod - static_cast<float>(fine);
+    value = bilinear(level(fine), uv);
+    if (t > 0.0f && fine + 1 < level_count()) value = (1.0f - t) * value + t * bilinear(level(fine + 1), uv);
+  }
   if (unassociate && associated_alpha_ && value.w > 0.0f) {
     value.x /= value.w;
     value.y /= value.w;
