@@ -8,6 +8,7 @@
 // has d_i. Both means are tested against their standard errors over the 4096 pixels.
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 #include <string>
 #include <variant>
 #include <vector>
@@ -179,6 +180,24 @@ Agreement compare(const std::vector<float>& ours0, const std::vector<float>& our
   return a;
 }
 
+// What an agreement says, for a failing check's message.
+std::string describe(const std::string& name, const Agreement& a) {
+  std::ostringstream out;
+  out << name << ": mean squared difference " << a.excess.mean + a.noise << " against noise " << a.noise << " (excess "
+      << a.excess.mean << " +- " << a.excess.standard_error << "); mean pixel ours " << a.mean_ours << ", Cycles "
+      << a.mean_cycles << " (difference +- " << a.difference.standard_error << ")";
+  return out.str();
+}
+
+// The two images compute the same integral: where and how much, pixel by pixel, the difference
+// is within the noise (excess), and in total within four standard errors (difference). Four
+// standard errors: a false alarm about once in 30000 runs of a check.
+void check_agreement(const std::string& name, const Agreement& a) {
+  INFO(describe(name, a));
+  CHECK(a.excess.mean <= 4.0 * a.excess.standard_error);
+  CHECK(std::abs(a.difference.mean) <= 4.0 * a.difference.standard_error);
+}
+
 // Both renderers with seeds 1 and 2, compared; Blender's files go to cycles_work_folder(name).
 Agreement agreement_with_cycles(const shaders_ref::CyclesScene& scene, const std::string& name,
                                 bool cycles_parity = false) {
@@ -265,15 +284,8 @@ TEST_CASE("Renders agree with Blender 3.4 Cycles up to noise", "[render][blender
     material.set(matrender::MaterialParameter::TransmissionRoughness, c.transmission_roughness);
     material.set(matrender::MaterialParameter::Alpha, c.alpha);
     material.distribution = c.distribution;
-    const Agreement a =
-        agreement_with_cycles(paper_scene(material, c.rings, c.terminator_offset), c.name, c.cycles_parity);
-    INFO(c.name << ": mean squared difference " << a.excess.mean + a.noise << " against noise " << a.noise
-                << " (excess " << a.excess.mean << " +- " << a.excess.standard_error << "); mean pixel ours "
-                << a.mean_ours << ", Cycles " << a.mean_cycles << " (difference +- " << a.difference.standard_error
-                << ")");
-    // Four standard errors: a false alarm about once in 30000 runs of a test case.
-    CHECK(a.excess.mean <= 4.0 * a.excess.standard_error);
-    CHECK(std::abs(a.difference.mean) <= 4.0 * a.difference.standard_error);
+    check_agreement(c.name,
+                    agreement_with_cycles(paper_scene(material, c.rings, c.terminator_offset), c.name, c.cycles_parity));
   }
 }
 
@@ -306,12 +318,7 @@ TEST_CASE("The inside of a thin-walled open vessel agrees with Cycles", "[render
   grid.center = bound.center;
   grid.radius = 0.8;
   scene.camera = matrender::grid_view(grid, 0, 16, kResolution, kResolution, 0.25);
-  const Agreement a = agreement_with_cycles(scene, "open_vessel");
-  INFO("mean pixel ours " << a.mean_ours << ", Cycles " << a.mean_cycles << " (difference +- "
-                          << a.difference.standard_error << "); excess " << a.excess.mean << " +- "
-                          << a.excess.standard_error);
-  CHECK(a.excess.mean <= 4.0 * a.excess.standard_error);
-  CHECK(std::abs(a.difference.mean) <= 4.0 * a.difference.standard_error);
+  check_agreement("open_vessel", agreement_with_cycles(scene, "open_vessel"));
 }
 
 // A 256 x 128 sky written as an EXR: a blue gradient, a brown ground and a sun 4 degrees across
@@ -357,12 +364,7 @@ TEST_CASE("Under an environment map, alone or with lamps and turned, renders agr
     shaders_ref::CyclesScene scene = paper_scene(material, 48, 0.1f);
     if (!c.lamps) scene.lamps.clear();
     scene.environment = shaders_ref::CyclesEnvironment{sky, c.strength, c.rotation_z};
-    const Agreement a = agreement_with_cycles(scene, c.name);
-    INFO(c.name << ": mean pixel ours " << a.mean_ours << ", Cycles " << a.mean_cycles << " (difference +- "
-                << a.difference.standard_error << "); excess " << a.excess.mean << " +- " << a.excess.standard_error
-                << " against noise " << a.noise);
-    CHECK(a.excess.mean <= 4.0 * a.excess.standard_error);
-    CHECK(std::abs(a.difference.mean) <= 4.0 * a.difference.standard_error);
+    check_agreement(c.name, agreement_with_cycles(scene, c.name));
   }
 }
 
@@ -393,12 +395,8 @@ TEST_CASE("Point and spot lamps with a radius and a sun with an angle agree with
     shaders_ref::CyclesScene scene = paper_scene(glossy, 48, 0.1f);
     scene.lamps = lamps;
     const Agreement a = agreement_with_cycles(scene, name);
-    INFO(name << ": mean pixel ours " << a.mean_ours << ", Cycles " << a.mean_cycles << " (difference +- "
-              << a.difference.standard_error << "); excess " << a.excess.mean << " +- " << a.excess.standard_error
-              << " against noise " << a.noise);
     CHECK(a.mean_cycles > 0.0);
-    CHECK(a.excess.mean <= 4.0 * a.excess.standard_error);
-    CHECK(std::abs(a.difference.mean) <= 4.0 * a.difference.standard_error);
+    check_agreement(name, a);
   }
 }
 
@@ -433,13 +431,7 @@ TEST_CASE("The shadow terminator geometry offset changes renders as it does in C
     render_both(offset, ours, cycles);
     const Agreement a = compare(minus(ours[0], ours_off[0]), minus(ours[1], ours_off[1]),
                                 minus(cycles[0], cycles_off[0]), minus(cycles[1], cycles_off[1]));
-    INFO("offset " << offset << ": mean change ours " << a.mean_ours << ", Cycles " << a.mean_cycles
-                   << " (difference +- " << a.difference.standard_error << "); excess " << a.excess.mean << " +- "
-                   << a.excess.standard_error);
     CHECK(a.mean_ours > 0.0);  // the offset brightens the terminator
-    // Where and how much, pixel by pixel: within the noise.
-    CHECK(a.excess.mean <= 4.0 * a.excess.standard_error);
-    // And in total: within four standard errors of the difference.
-    CHECK(std::abs(a.difference.mean) <= 4.0 * a.difference.standard_error);
+    check_agreement("terminator offset " + std::to_string(offset) + ", change", a);
   }
 }

@@ -150,17 +150,9 @@ TEST_CASE("An emitting quad and a rectangle lamp of the same radiance light a gl
     return frame.color;
   };
   const std::vector<float> mesh = render_plane(true, 1), lamp = render_plane(false, 2);
-  double sum = 0.0, sum2 = 0.0, level = 0.0;
-  const size_t pixels = mesh.size() / 3;
-  for (size_t p = 0; p < pixels; ++p) {
-    const double d = double(mesh[3 * p]) - lamp[3 * p];
-    sum += d;
-    sum2 += d * d;
-    level += lamp[3 * p];
-  }
-  const double n = static_cast<double>(pixels), mean = sum / n;
-  const double standard_error = std::sqrt((sum2 / n - mean * mean) / (n - 1.0));
-  INFO("mean difference " << mean << " +- " << standard_error << ", mean pixel " << level / n);
-  CHECK(level / n > 0.01);
-  CHECK(std::abs(mean) <= 4.0 * standard_error);
+  const test_scenes::PixelStatistics d = test_scenes::difference_statistics(mesh, lamp, 0, mesh.size() / 3);
+  const double level = test_scenes::mean_of(lamp);
+  INFO("mean difference " << d.mean << " +- " << d.standard_error << ", mean value " << level);
+  CHECK(level > 0.01);
+  CHECK(std::abs(d.mean) <= 4.0 * d.standard_error);
 }

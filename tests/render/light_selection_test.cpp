@@ -74,25 +74,13 @@ TEST_CASE("Importance and uniform light selection converge to the same image", "
   const std::vector<float> importance = render_with(scene, LightSelection::Importance, 1);
   const std::vector<float> uniform = render_with(scene, LightSelection::Uniform, 2);
   const size_t pixels = importance.size() / 3;
+  CHECK(test_scenes::mean_of(importance) > 0.1);
   // Thirds of the image by rows: the wall the 10 lamps light, the sphere, the floor.
   for (size_t third = 0; third < 4; ++third) {
     const size_t first = third == 3 ? 0 : third * pixels / 3, last = third == 3 ? pixels : (third + 1) * pixels / 3;
-    double sum = 0.0, sum2 = 0.0, level = 0.0;
-    for (size_t p = first; p < last; ++p) {
-      double d = 0.0;
-      for (int c = 0; c < 3; ++c) {
-        d += double(importance[3 * p + c]) - uniform[3 * p + c];
-        level += importance[3 * p + c];
-      }
-      sum += d;
-      sum2 += d * d;
-    }
-    const double n = static_cast<double>(last - first);
-    const double mean = sum / n, standard_error = std::sqrt((sum2 / n - mean * mean) / (n - 1.0));
-    INFO((third == 3 ? "whole image" : "third " + std::to_string(third)) << ": mean difference " << mean << " +- "
-                                                                          << standard_error << ", mean pixel "
-                                                                          << level / n);
-    CHECK(level > 0.0);
-    CHECK(std::abs(mean) <= 4.0 * standard_error);
+    const test_scenes::PixelStatistics d = test_scenes::difference_statistics(importance, uniform, first, last);
+    INFO((third == 3 ? "whole image" : "third " + std::to_string(third)) << ": mean difference " << d.mean << " +- "
+                                                                          << d.standard_error);
+    CHECK(std::abs(d.mean) <= 4.0 * d.standard_error);
   }
 }

@@ -73,6 +73,30 @@ inline PixelStatistics channel_statistics(const matrender::FrameBuffers& frame, 
   return s;
 }
 
+// Mean and standard error of the per-pixel difference a - b (channels summed) over RGB pixels
+// [first, last) of two renders of one image: pixels are independent, so two estimators of the
+// same image have a mean difference within a few standard errors of 0.
+inline PixelStatistics difference_statistics(const std::vector<float>& a, const std::vector<float>& b, size_t first,
+                                             size_t last) {
+  double sum = 0.0, sum2 = 0.0;
+  for (size_t p = first; p < last; ++p) {
+    const double d = (double(a[3 * p]) + a[3 * p + 1] + a[3 * p + 2]) - (double(b[3 * p]) + b[3 * p + 1] + b[3 * p + 2]);
+    sum += d;
+    sum2 += d * d;
+  }
+  const double n = static_cast<double>(last - first);
+  PixelStatistics s;
+  s.mean = sum / n;
+  s.standard_error = std::sqrt(std::max(0.0, sum2 / n - s.mean * s.mean) / (n - 1.0));
+  return s;
+}
+
+inline double mean_of(const std::vector<float>& values) {
+  double sum = 0.0;
+  for (const float v : values) sum += v;
+  return sum / static_cast<double>(values.size());
+}
+
 inline bool all_finite(const std::vector<float>& values) {
   for (float v : values)
     if (!std::isfinite(v)) return false;
