@@ -65,10 +65,17 @@ LightSampler::LightSampler(const std::vector<Light>& lights, const WorldLight& w
 }
 
 PickSite LightSampler::site(const glm::vec3& p, const ReceivingDirections& receiving) const {
-  PickSite site{p, receiving, 0.0f};
-  if (selection_ == LightSelection::Importance)
-    for (size_t i = 0; i < sampled_count_; ++i)
-      site.total_importance += with_light(lights_[i], [&](const auto& light) { return light.importance(p, receiving); });
+  PickSite site;
+  site.p = p;
+  site.receiving = receiving;
+  if (selection_ == LightSelection::Importance) {
+    const bool keep = sampled_count_ <= PickSite::kKeptWeights;
+    for (size_t i = 0; i < sampled_count_; ++i) {
+      const float weight = with_light(lights_[i], [&](const auto& light) { return light.importance(p, receiving); });
+      if (keep) site.weights[i] = weight;
+      site.total_importance += weight;
+    }
+  }
   return site;
 }
 
@@ -81,13 +88,17 @@ std::optional<LightSampler::Pick> LightSampler::pick(const PickSite& site, float
     return Pick{index, 1.0f / static_cast<float>(sampled_count_)};
   }
   if (!(site.total_importance > 0.0f)) return std::nullopt;
-  // Walk the lights' intervals of the total until u's falls in one; the weights are recomputed
-  // rather than stored, as they are as cheap as reading them back.
+  // Walk the lights' intervals of the total until u's falls in one.
+  const bool kept = sampled_count_ <= PickSite::kKeptWeights;
+  const auto weight_of = [&](size_t i) {
+    return kept ? site.weights[i]
+                : with_light(lights_[i], [&](const auto& light) { return light.importance(site.p, site.receiving); });
+  };
   const float target = *u * site.total_importance;
   float below = 0.0f;
   size_t last_lit = sampled_count_;
   for (size_t i = 0; i < sampled_count_; ++i) {
-    const float weight = with_light(lights_[i], [&](const auto& light) { return light.importance(site.p, site.receiving); });
+    const float weight = weight_of(i);
     if (!(weight > 0.0f)) continue;
     last_lit = i;
     if (target < below + weight || i + 1 == sampled_count_) {
@@ -98,7 +109,7 @@ std::optional<LightSampler::Pick> LightSampler::pick(const PickSite& site, float
   }
   // Rounding left u past the last interval: it belongs to the last light that has one.
   if (last_lit == sampled_count_) return std::nullopt;
-  const float weight = with_light(lights_[last_lit], [&](const auto& light) { return light.importance(site.p, site.receiving); });
+  const float weight = weight_of(last_lit);
   *u = 0x1.fffffep-1f;
   return Pick{last_lit, weight / site.total_importance};
 }

@@ -6,6 +6,7 @@
 // (uniform_background.h).
 // Also the two ways a ray finds light without sampling it: the one query for the area lights it
 // hits, and the infinite lights it sees when it leaves the scene.
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -25,9 +26,14 @@ namespace matrender {
 // every light's importance there. A ray that leaves it and finds a light weighs that light's
 // pick by the same site (MIS).
 struct PickSite {
+  // Scenes of up to this many lights keep each light's importance here, so that the pick does
+  // not evaluate them again (the paper's rig has 6 to 12 lamps).
+  static constexpr size_t kKeptWeights = 16;
+
   glm::vec3 p{0.0f};
   ReceivingDirections receiving;
   float total_importance = 0.0f;
+  std::array<float, kKeptWeights> weights;  // filled when the distribution has at most kKeptWeights
 };
 
 class LightSampler {
