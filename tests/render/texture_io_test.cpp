@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -198,5 +199,38 @@ TEST_CASE("sRGB images with alpha filter premultiplied, as Blender's Straight al
   const TexturePtr data = Texture::load((dir / "edge.png").string(), ColorSpace::NonColor);
   CHECK_FALSE(data->associated_alpha());
   CHECK(data->sample(uv).x == Approx(0.75f).epsilon(1e-5));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("A UDIM set looks each UV up in its own tile, on both sides of a border, loading tiles when hit", "[render]") {
+  // Tiles 1001 (u in [0, 1)) red, 1002 ([1, 2)) green, 1011 (v in [1, 2)) blue, each 4 x 4 and
+  // one colour, so a lookup's colour says which tile it read.
+  const fs::path dir = temp_dir();
+  const auto write_tile = [&](int number, uint8_t r, uint8_t g, uint8_t b) {
+    std::vector<uint8_t> pixels;
+    for (int i = 0; i < 16; ++i) pixels.insert(pixels.end(), {r, g, b});
+    write_image(dir / ("wood." + std::to_string(number) + ".png"), 4, 4, 3, OIIO::TypeDesc::UINT8, pixels);
+  };
+  write_tile(1001, 255, 0, 0);
+  write_tile(1002, 0, 255, 0);
+  write_tile(1011, 0, 0, 255);
+  write_image(dir / "wood.png", 1, 1, 3, OIIO::TypeDesc::UINT8, std::vector<uint8_t>{9, 9, 9});  // not a tile
+  const TexturePtr set = Texture::load((dir / "wood.<UDIM>.png").string(), ColorSpace::NonColor);
+  CHECK(set->udim_tiles() == std::vector<int>{1001, 1002, 1011});
+  CHECK(set->loaded_udim_tiles() == 0);
+  CHECK(set->sample({0.999f, 0.5f}) == glm::vec4(1.0f, 0.0f, 0.0f, 1.0f));
+  CHECK(set->loaded_udim_tiles() == 1);
+  CHECK(set->sample({1.001f, 0.5f}) == glm::vec4(0.0f, 1.0f, 0.0f, 1.0f));
+  CHECK(set->sample({0.5f, 1.001f}) == glm::vec4(0.0f, 0.0f, 1.0f, 1.0f));
+  CHECK(set->loaded_udim_tiles() == 3);
+  // A tile the set does not have, and UVs left of the first column: black.
+  CHECK(set->sample({2.5f, 0.5f}) == glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+  CHECK(set->sample({-0.5f, 0.5f}) == glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+  // A pattern with no tiles, and a tile that is no image, are errors naming the files.
+  CHECK_THROWS_WITH(Texture::load((dir / "oak.<UDIM>.png").string(), ColorSpace::SRGB),
+                    Catch::Contains("oak.<UDIM>.png: no UDIM tile files (oak.1001.png, ...) found"));
+  std::ofstream(dir / "bad.1001.png") << "not an image";
+  CHECK_THROWS_WITH(Texture::load((dir / "bad.<UDIM>.png").string(), ColorSpace::SRGB),
+                    Catch::Contains("bad.1001.png: cannot read image"));
   fs::remove_all(dir);
 }

@@ -29,7 +29,11 @@ enum class Wrap { Repeat, Clamp };
 class Texture {
  public:
   // Loads any format OpenImageIO reads (PNG, JPEG, EXR, TIFF, ...). Throws std::runtime_error
-  // naming the path and the problem.
+  // naming the path and the problem. A path with the token <UDIM> names a UDIM set: the files
+  // with a four-digit tile number there (name.1001.png, name.1002.png, ...), tile 1001 + floor(u)
+  // + 10 floor(v) covering [floor(u), floor(u) + 1) x [floor(v), floor(v) + 1), as Blender's UDIM
+  // images and the UV pass's tiles; every tile's header is read here, its pixels when a lookup
+  // first lands in it. UVs outside the tiles read black.
   static std::shared_ptr<const Texture> load(const std::string& path, ColorSpace space,
                                              Wrap wrap = Wrap::Repeat);
   // From 8-bit pixels in memory, rows top to bottom.
@@ -51,6 +55,9 @@ class Texture {
   glm::vec4 sample(glm::vec2 uv, bool unassociate = false, float footprint = 0.0f) const;
   // Stored premultiplied by alpha (the Straight images above).
   bool associated_alpha() const { return associated_alpha_; }
+  // A UDIM set: its tile numbers, and how many of them have been loaded so far.
+  std::vector<int> udim_tiles() const;
+  size_t loaded_udim_tiles() const;
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -82,6 +89,15 @@ class Texture {
     std::vector<glm::vec4> texels;
   };
   mutable std::vector<MipLevel> mips_;  // levels 1.. of the pyramid
+  struct UdimTile {
+    int number;
+    std::string path;
+    std::once_flag loaded;
+    std::shared_ptr<const Texture> texture;  // set once, by the first lookup in the tile
+  };
+  std::vector<std::unique_ptr<UdimTile>> udim_;  // by tile number; empty for a single image
+  static std::shared_ptr<const Texture> load_udim(const std::string& pattern, ColorSpace space, Wrap wrap);
+  glm::vec4 sample_udim(glm::vec2 uv, bool unassociate, float footprint) const;
   mutable std::once_flag mips_built_;
   void build_mips() const;
 };

@@ -421,9 +421,21 @@ BackgroundDescription read_background(const Node& node, const fs::path& folder) 
 // ---- materials ------------------------------------------------------------------------------
 
 // {"texture": path, ...}: the keys every texture reference shares.
+// A texture file, or a UDIM set's pattern (name.<UDIM>.png), whose folder must exist; its tiles
+// are found when it is loaded.
+std::string read_texture_path(const Node& node, const fs::path& folder) {
+  const std::string text = node.string();
+  if (text.find("<UDIM>") == std::string::npos) return read_existing_file(node, folder);
+  const fs::path path = fs::path(text).is_absolute() ? fs::path(text) : (folder / text).lexically_normal();
+  std::error_code ec;
+  if (!fs::is_directory(path.parent_path().empty() ? fs::path(".") : path.parent_path(), ec))
+    node.fail("folder not found: " + path.parent_path().string());
+  return path.string();
+}
+
 TextureFile read_texture_file(const Node& node, const fs::path& folder, ColorSpace default_space) {
   TextureFile file;
-  file.path = read_existing_file(node.required("texture"), folder);
+  file.path = read_texture_path(node.required("texture"), folder);
   file.origin = node.origin();
   file.color_space = default_space;
   if (auto space = node.find("color_space"))

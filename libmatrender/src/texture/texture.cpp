@@ -1,7 +1,10 @@
 #include "matrender/texture.h"
 
 #include <algorithm>
+#include <atomic>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <stdexcept>
 
 #include <OpenImageIO/imageio.h>
@@ -12,6 +15,10 @@
 
 namespace matrender {
 namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kUdimToken = "<UDIM>";
 
 // Expands 1..4 interleaved channels to RGBA (grey to RGB, alpha 1 when absent).
 glm::vec4 to_rgba(const float* p, int channels) {
@@ -88,6 +95,7 @@ void Texture::associate_alpha() {
 }
 
 std::shared_ptr<const Texture> Texture::load(const std::string& path, ColorSpace space, Wrap wrap) {
+  if (path.find(kUdimToken) != std::string::npos) return load_udim(path, space, wrap);
   matgeom::require_input_file(path);
   // Straight colour as stored (Cycles' default alpha mode); OpenImageIO would premultiply.
   OIIO::ImageSpec config;
@@ -189,7 +197,74 @@ glm::vec4 Texture::bilinear(const Level& level, glm::vec2 uv) const {
          ty * ((1.0f - tx) * texel(x0, y1) + tx * texel(x1, y1));
 }
 
+std::shared_ptr<const Texture> Texture::load_udim(const std::string& pattern, ColorSpace space, Wrap wrap) {
+  const size_t token = pattern.find(kUdimToken);
+  const fs::path folder = fs::path(pattern.substr(0, token)).parent_path();
+  const std::string prefix = fs::path(pattern.substr(0, token)).filename().string();
+  const std::string suffix = pattern.substr(token + kUdimToken.size());
+  auto texture = std::shared_ptr<Texture>(new Texture());
+  texture->name_ = pattern;
+  texture->space_ = space;
+  texture->wrap_ = wrap;
+  std::error_code error;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder.empty() ? fs::path(".") : folder, error)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() != prefix.size() + 4 + suffix.size() || name.compare(0, prefix.size(), prefix) != 0 ||
+        name.compare(prefix.size() + 4, suffix.size(), suffix) != 0)
+      continue;
+    const std::string digits = name.substr(prefix.size(), 4);
+    if (!std::all_of(digits.begin(), digits.end(), [](unsigned char c) { return std::isdigit(c); })) continue;
+    const int number = std::stoi(digits);
+    if (number < 1001) continue;
+    // Every tile's header now, so that a broken one is an error before rendering, not during.
+    auto input = OIIO::ImageInput::open(entry.path().string());
+    if (!input) throw std::runtime_error(entry.path().string() + ": cannot read image: " + OIIO::geterror());
+    auto tile = std::make_unique<UdimTile>();
+    tile->number = number;
+    tile->path = entry.path().string();
+    texture->udim_.push_back(std::move(tile));
+  }
+  if (error) throw std::runtime_error(pattern + ": cannot list its folder: " + error.message());
+  if (texture->udim_.empty())
+    throw std::runtime_error(pattern + ": no UDIM tile files (" + prefix + "1001" + suffix + ", ...) found");
+  std::sort(texture->udim_.begin(), texture->udim_.end(),
+            [](const auto& a, const auto& b) { return a->number < b->number; });
+  // The set reports its first tile's size.
+  const OIIO::ImageSpec first = [&] {
+    auto input = OIIO::ImageInput::open(texture->udim_.front()->path);
+    return input->spec();
+  }();
+  texture->width_ = first.width;
+  texture->height_ = first.height;
+  return texture;
+}
+
+std::vector<int> Texture::udim_tiles() const {
+  std::vector<int> numbers;
+  for (const auto& tile : udim_) numbers.push_back(tile->number);
+  return numbers;
+}
+
+size_t Texture::loaded_udim_tiles() const {
+  size_t loaded = 0;
+  for (const auto& tile : udim_) loaded += std::atomic_load(&tile->texture) != nullptr;
+  return loaded;
+}
+
+glm::vec4 Texture::sample_udim(glm::vec2 uv, bool unassociate, float footprint) const {
+  const float fu = std::floor(uv.x), fv = std::floor(uv.y);
+  if (!(fu >= 0.0f && fu < 10.0f && fv >= 0.0f && fv < 1000.0f)) return glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  const int number = 1001 + static_cast<int>(fu) + 10 * static_cast<int>(fv);
+  const auto it = std::lower_bound(udim_.begin(), udim_.end(), number,
+                                   [](const auto& tile, int n) { return tile->number < n; });
+  if (it == udim_.end() || (*it)->number != number) return glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  UdimTile& tile = **it;
+  std::call_once(tile.loaded, [&] { std::atomic_store(&tile.texture, load(tile.path, space_, wrap_)); });
+  return tile.texture->sample(uv - glm::vec2(fu, fv), unassociate, footprint);
+}
+
 glm::vec4 Texture::sample(glm::vec2 uv, bool unassociate, float footprint) const {
+  if (!udim_.empty()) return sample_udim(uv, unassociate, footprint);
   // The level whose texels are as wide as the footprint: lod = log2(footprint in level-0 texels).
   const float texels_across = footprint * static_cast<float>(std::max(width_, height_));
   glm::vec4 value;
