@@ -30,11 +30,12 @@ glm::vec4 to_rgba(const float* p, int channels) {
   }
 }
 
-// Refuses, before anything is allocated, a texture whose texels (RGBA floats) and the
-// `staging_bytes_per_texel` of its decoding do not fit in memory.
-void require_texture_memory(const std::string& name, int width, int height, double staging_bytes_per_texel) {
+// Refuses, before anything is allocated, a texture whose texels (`texel_bytes` each: RGBA floats
+// or bytes) and the `staging_bytes_per_texel` of its decoding do not fit in memory.
+void require_texture_memory(const std::string& name, int width, int height, double staging_bytes_per_texel,
+                            double texel_bytes = sizeof(glm::vec4)) {
   const double texels = static_cast<double>(width) * static_cast<double>(height);
-  matgeom::require_memory(texels * (sizeof(glm::vec4) + staging_bytes_per_texel),
+  matgeom::require_memory(texels * (texel_bytes + staging_bytes_per_texel),
                           "its " + std::to_string(width) + " x " + std::to_string(height) + " texels", name);
 }
 
@@ -76,6 +77,30 @@ std::shared_ptr<const Texture> Texture::from_pixels8(int width, int height, int 
                                                      const uint8_t* pixels, ColorSpace space, Wrap wrap,
                                                      std::string name) {
   if (pixels == nullptr) throw std::invalid_argument(name + ": no pixel data");
+  if (width <= 0 || height <= 0 || channels < 1 || channels > 4)
+    throw std::invalid_argument(name + ": texture needs a positive size and 1 to 4 channels");
+  if (!(space == ColorSpace::SRGB && channels == 4)) {
+    // Kept as bytes, expanded to RGBA (grey to RGB, alpha 255 when absent), bottom row first.
+    require_texture_memory(name, width, height, 0.0, 4.0);
+    auto texture = std::shared_ptr<Texture>(new Texture());
+    texture->width_ = width;
+    texture->height_ = height;
+    texture->space_ = space;
+    texture->wrap_ = wrap;
+    texture->name_ = std::move(name);
+    texture->convert_srgb_after_filtering_ = space == ColorSpace::SRGB;
+    texture->bytes_.resize(static_cast<size_t>(width) * height * 4);
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        const uint8_t* p = pixels + (static_cast<size_t>(height - 1 - y) * width + x) * channels;
+        uint8_t* t = &texture->bytes_[(static_cast<size_t>(y) * width + x) * 4];
+        t[0] = p[0];
+        t[1] = channels >= 3 ? p[1] : p[0];
+        t[2] = channels >= 3 ? p[2] : p[0];
+        t[3] = channels == 4 ? p[3] : channels == 2 ? p[1] : 255;
+      }
+    return texture;
+  }
   require_texture_memory(name, width, height, 4.0 * channels);
   std::vector<float> values(static_cast<size_t>(width) * height * channels);
   for (size_t i = 0; i < values.size(); ++i) values[i] = pixels[i] / 255.0f;
@@ -106,6 +131,14 @@ std::shared_ptr<const Texture> Texture::load(const std::string& path, ColorSpace
   const int channels = std::min(spec.nchannels, 4);
   if (spec.width <= 0 || spec.height <= 0 || channels < 1)
     throw std::runtime_error(path + ": image has no pixels");
+  if (spec.format.basetype == OIIO::TypeDesc::UINT8) {
+    require_texture_memory(path, spec.width, spec.height, channels, 4.0);
+    std::vector<uint8_t> bytes(static_cast<size_t>(spec.width) * spec.height * channels);
+    if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, bytes.data()))
+      throw std::runtime_error(path + ": cannot decode image: " + input->geterror());
+    input->close();
+    return from_pixels8(spec.width, spec.height, channels, bytes.data(), space, wrap, path);
+  }
   require_texture_memory(path, spec.width, spec.height, 4.0 * channels);
   std::vector<float> pixels(static_cast<size_t>(spec.width) * spec.height * channels);
   if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
@@ -144,9 +177,12 @@ ColorSpace blender_default_color_space(const std::string& path) {
 }
 
 Texture::Level Texture::level(size_t i) const {
-  if (i == 0) return {width_, height_, texels_.data()};
+  const auto stored = [](int w, int h, const std::vector<glm::vec4>& floats, const std::vector<uint8_t>& bytes) {
+    return Level{w, h, floats.data(), bytes.empty() ? nullptr : bytes.data()};
+  };
+  if (i == 0) return stored(width_, height_, texels_, bytes_);
   const MipLevel& m = mips_[i - 1];
-  return {m.width, m.height, m.texels.data()};
+  return stored(m.width, m.height, m.floats, m.bytes);
 }
 
 size_t Texture::level_count() const { return 1 + mips_.size(); }
@@ -154,19 +190,28 @@ size_t Texture::level_count() const { return 1 + mips_.size(); }
 void Texture::build_mips() const {
   // Each level halves the sides (rounding up) and averages the 2 x 2 texels below each texel,
   // edge texels repeated on odd sides, down to 1 x 1.
+  // Levels are stored as level 0 is (byte levels round to the nearest byte); together they take
+  // a third of its memory.
   Level parent = level(0);
-  require_texture_memory(name_ + " (mip levels)", width_, height_, 0.0);
+  const bool bytes = !bytes_.empty();
+  require_texture_memory(name_ + " (mip levels)", width_, height_, 0.0, bytes ? 4.0 / 3.0 : 16.0 / 3.0);
   while (parent.width > 1 || parent.height > 1) {
-    MipLevel next{std::max(1, (parent.width + 1) / 2), std::max(1, (parent.height + 1) / 2), {}};
-    next.texels.resize(static_cast<size_t>(next.width) * next.height);
+    MipLevel next{std::max(1, (parent.width + 1) / 2), std::max(1, (parent.height + 1) / 2), {}, {}};
+    const size_t count = static_cast<size_t>(next.width) * next.height;
+    if (bytes) next.bytes.resize(4 * count); else next.floats.resize(count);
     for (int y = 0; y < next.height; ++y)
       for (int x = 0; x < next.width; ++x) {
         const auto at = [&](int px, int py) {
-          return parent.texels[static_cast<size_t>(std::min(py, parent.height - 1)) * parent.width +
-                               std::min(px, parent.width - 1)];
+          return parent.texel(std::min(px, parent.width - 1), std::min(py, parent.height - 1));
         };
-        next.texels[static_cast<size_t>(y) * next.width + x] =
+        const glm::vec4 mean =
             0.25f * (at(2 * x, 2 * y) + at(2 * x + 1, 2 * y) + at(2 * x, 2 * y + 1) + at(2 * x + 1, 2 * y + 1));
+        const size_t i = static_cast<size_t>(y) * next.width + x;
+        if (!bytes) {
+          next.floats[i] = mean;
+          continue;
+        }
+        for (int c = 0; c < 4; ++c) next.bytes[4 * i + c] = static_cast<uint8_t>(std::lround(mean[c] * 255.0f));
       }
     mips_.push_back(std::move(next));
     parent = level(mips_.size());
@@ -177,7 +222,7 @@ glm::vec4 Texture::bilinear(const Level& level, glm::vec2 uv) const {
   // Texel centres sit at (i + 0.5) / W.
   const float x = uv.x * level.width - 0.5f;
   const float y = uv.y * level.height - 0.5f;
-  if (!std::isfinite(x) || !std::isfinite(y)) return level.texels[0];
+  if (!std::isfinite(x) || !std::isfinite(y)) return level.texel(0, 0);
   const float fx = std::floor(x);
   const float fy = std::floor(y);
   const float tx = x - fx;
@@ -192,7 +237,7 @@ glm::vec4 Texture::bilinear(const Level& level, glm::vec2 uv) const {
   const int x1 = index(fx, 1, level.width);
   const int y0 = index(fy, 0, level.height);
   const int y1 = index(fy, 1, level.height);
-  const auto texel = [&](int ix, int iy) { return level.texels[static_cast<size_t>(iy) * level.width + ix]; };
+  const auto texel = [&](int ix, int iy) { return level.texel(ix, iy); };
   return (1.0f - ty) * ((1.0f - tx) * texel(x0, y0) + tx * texel(x1, y0)) +
          ty * ((1.0f - tx) * texel(x0, y1) + tx * texel(x1, y1));
 }
