@@ -67,6 +67,8 @@ class Texture {
 
  private:
   Texture() = default;
+  // A texture of that size and kind whose texels the caller fills in.
+  static std::shared_ptr<Texture> without_texels(int width, int height, ColorSpace space, Wrap wrap, std::string name);
   void associate_alpha();
 
   // A level's texels as stored: float RGBA, or 8-bit RGBA for 8-bit images whose colour is not

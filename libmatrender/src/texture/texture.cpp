@@ -47,17 +47,22 @@ int wrap_index(int i, int n, Wrap wrap) {
 
 }  // namespace
 
-std::shared_ptr<const Texture> Texture::from_pixelsf(int width, int height, int channels,
-                                                     const float* pixels, ColorSpace space, Wrap wrap,
-                                                     std::string name) {
-  if (width <= 0 || height <= 0 || channels < 1 || channels > 4 || pixels == nullptr)
-    throw std::invalid_argument(name + ": texture needs a positive size and 1 to 4 channels");
+std::shared_ptr<Texture> Texture::without_texels(int width, int height, ColorSpace space, Wrap wrap, std::string name) {
   auto texture = std::shared_ptr<Texture>(new Texture());
   texture->width_ = width;
   texture->height_ = height;
   texture->space_ = space;
   texture->wrap_ = wrap;
   texture->name_ = std::move(name);
+  return texture;
+}
+
+std::shared_ptr<const Texture> Texture::from_pixelsf(int width, int height, int channels,
+                                                     const float* pixels, ColorSpace space, Wrap wrap,
+                                                     std::string name) {
+  if (width <= 0 || height <= 0 || channels < 1 || channels > 4 || pixels == nullptr)
+    throw std::invalid_argument(name + ": texture needs a positive size and 1 to 4 channels");
+  auto texture = without_texels(width, height, space, wrap, std::move(name));
   texture->texels_.resize(static_cast<size_t>(width) * height);
   for (int y = 0; y < height; ++y) {
     // Stored bottom row first so that v = 0 is row 0.
@@ -82,12 +87,7 @@ std::shared_ptr<const Texture> Texture::from_pixels8(int width, int height, int 
   if (!(space == ColorSpace::SRGB && channels == 4)) {
     // Kept as bytes, expanded to RGBA (grey to RGB, alpha 255 when absent), bottom row first.
     require_texture_memory(name, width, height, 0.0, 4.0);
-    auto texture = std::shared_ptr<Texture>(new Texture());
-    texture->width_ = width;
-    texture->height_ = height;
-    texture->space_ = space;
-    texture->wrap_ = wrap;
-    texture->name_ = std::move(name);
+    auto texture = without_texels(width, height, space, wrap, std::move(name));
     texture->convert_srgb_after_filtering_ = space == ColorSpace::SRGB;
     texture->bytes_.resize(static_cast<size_t>(width) * height * 4);
     for (int y = 0; y < height; ++y)
@@ -247,10 +247,7 @@ std::shared_ptr<const Texture> Texture::load_udim(const std::string& pattern, Co
   const fs::path folder = fs::path(pattern.substr(0, token)).parent_path();
   const std::string prefix = fs::path(pattern.substr(0, token)).filename().string();
   const std::string suffix = pattern.substr(token + kUdimToken.size());
-  auto texture = std::shared_ptr<Texture>(new Texture());
-  texture->name_ = pattern;
-  texture->space_ = space;
-  texture->wrap_ = wrap;
+  auto texture = without_texels(0, 0, space, wrap, pattern);
   std::error_code error;
   for (const fs::directory_entry& entry : fs::directory_iterator(folder.empty() ? fs::path(".") : folder, error)) {
     const std::string name = entry.path().filename().string();
