@@ -106,6 +106,7 @@ class Texture {
   struct UdimTile {
     int number;
     std::string path;
+    int width, height;  // from the header read at load
     std::once_flag loaded;
     std::shared_ptr<const Texture> texture;  // set once, by the first lookup in the tile
   };

@@ -264,6 +264,8 @@ std::shared_ptr<const Texture> Texture::load_udim(const std::string& pattern, Co
     auto tile = std::make_unique<UdimTile>();
     tile->number = number;
     tile->path = entry.path().string();
+    tile->width = input->spec().width;
+    tile->height = input->spec().height;
     texture->udim_.push_back(std::move(tile));
   }
   if (error) throw std::runtime_error(pattern + ": cannot list its folder: " + error.message());
@@ -272,12 +274,8 @@ std::shared_ptr<const Texture> Texture::load_udim(const std::string& pattern, Co
   std::sort(texture->udim_.begin(), texture->udim_.end(),
             [](const auto& a, const auto& b) { return a->number < b->number; });
   // The set reports its first tile's size.
-  const OIIO::ImageSpec first = [&] {
-    auto input = OIIO::ImageInput::open(texture->udim_.front()->path);
-    return input->spec();
-  }();
-  texture->width_ = first.width;
-  texture->height_ = first.height;
+  texture->width_ = texture->udim_.front()->width;
+  texture->height_ = texture->udim_.front()->height;
   return texture;
 }
 
