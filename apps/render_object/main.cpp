@@ -13,8 +13,10 @@
 #include "common/interrupt.h"
 #include "matgeom/builtin_objects.h"
 #include "matgeom/material_parameters.h"
+#include "matgeom/memory_limit.h"
 #include "matrender/image_io.h"
 #include "matrender/render.h"
+#include "matrender/texture_cache.h"
 #include "options.h"
 #include "common/progress_bar.h"
 #include "matrender/scene_builder.h"
@@ -57,8 +59,18 @@ void report_summary(const matrender::RenderStats& stats, const BuiltScene& built
              stats.rays / seconds * 1e-6, stats.discarded_samples, built.scene.bvh_build_seconds() * 1e3);
 }
 
+// Only scenes with image textures have texels to report.
+void report_textures() {
+  const matrender::TextureCacheStats cache = matrender::texture_cache_stats();
+  if (cache.peak_bytes == 0) return;
+  fmt::print("textures: at most {} of texels in memory (limit {}), {} mip levels dropped, {} made again\n",
+             matgeom::byte_size_text(static_cast<double>(cache.peak_bytes)),
+             matgeom::byte_size_text(static_cast<double>(cache.limit_bytes)), cache.evictions, cache.reloads);
+}
+
 int render_and_write(const Options& options) {
   const std::atomic<bool>* cancel = app_support::cancel_on_interrupt();
+  matrender::set_texture_memory_limit(options.texture_memory_mib << 20);
   const SceneDescription description = render_object::describe_scene(options);
   BuiltScene built = matrender::build_scene(description);
 
@@ -76,6 +88,7 @@ int render_and_write(const Options& options) {
   report_files(files, options.output_folder);
   report_rig(built);
   report_summary(stats, built, settings.samples_per_pixel);
+  report_textures();
   // A signal that came while the files were written let them finish: they are complete, and the
   // exit code still says the run was asked to stop.
   if (cancel->load()) return report_error("interrupted while writing; the files above are complete",

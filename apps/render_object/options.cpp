@@ -290,6 +290,13 @@ void add_run_options(CLI::App& app, Options& o) {
       ->check(app_support::whole_number_in(0, app_support::kMaxThreadRequest))
       ->default_str("0")
       ->group(group);
+  app.add_option("--texture-memory", o.texture_memory_mib,
+                 "most memory the textures' texels may take, in MiB; past it the least recently used mip "
+                 "levels are dropped and made again when needed (0 = half of this process's memory)")
+      ->check(CLI::Range(uint64_t{0}, uint64_t{1} << 30))
+      ->type_name("MIB")
+      ->default_str("0")
+      ->group(group);
   app.add_option_function<std::string>(
          "--aovs", [&o](const std::string& list) { o.aovs = parse_aov_list(list); },
          aov_help())

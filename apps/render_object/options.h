@@ -49,6 +49,7 @@ struct Options {
 
   // The run itself.
   int threads = 0;  // 0 = all hardware threads
+  uint64_t texture_memory_mib = 0;  // 0 = matrender::default_texture_memory_limit()
   uint32_t aovs = matrender::default_aovs();
   std::string output_folder = "./render_out";
 };

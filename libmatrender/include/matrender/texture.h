@@ -3,8 +3,9 @@
 // whose colour is not premultiplied here, as floats otherwise), sampled bilinearly like
 // Cycles' "Linear" interpolation (texel centres at (i + 0.5) / W). Given a footprint (the width
 // in UV units a ray cone covers), trilinearly from a mip pyramid of 2 x 2 box-filtered levels,
-// built the first time a lookup needs it (Cycles 3.4 on the CPU has no mipmaps; the renderer
-// asks for footprints only when RenderSettings::mipmaps is on).
+// each made the first time a lookup needs it (Cycles 3.4 on the CPU has no mipmaps; the
+// renderer asks for footprints only when RenderSettings::mipmaps is on). Every level is an entry
+// of the bounded texture cache (matrender/texture_cache.h).
 //
 // Alpha, as Blender 3.4 treats an image of alpha mode Straight (its default): an 8- or 16-bit
 // sRGB image with an alpha channel is premultiplied by its alpha when loaded (on the encoded
@@ -13,6 +14,7 @@
 // same image (Blender: the Alpha output is linked), when it is divided by the filtered alpha
 // again. Non-colour (data) images keep their channels as stored: channel-packed maps.
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -27,8 +29,12 @@ namespace matrender {
 using matgeom::ColorSpace;
 enum class Wrap { Repeat, Clamp };
 
+struct TexelLevel;
+class TexelPage;
+
 class Texture {
  public:
+  ~Texture();
   // Loads any format OpenImageIO reads (PNG, JPEG, EXR, TIFF, ...). Throws std::runtime_error
   // naming the path and the problem. A path with the token <UDIM> names a UDIM set: the files
   // with a four-digit tile number there (name.1001.png, name.1002.png, ...), tile 1001 + floor(u)
@@ -67,27 +73,21 @@ class Texture {
 
  private:
   Texture() = default;
-  // A texture of that size and kind whose texels the caller fills in.
-  static std::shared_ptr<Texture> without_texels(int width, int height, ColorSpace space, Wrap wrap, std::string name);
-  void associate_alpha();
+  // What decoding gives: level 0 and how its lookups finish.
+  struct Decoded;
+  static Decoded decode_floats(int width, int height, int channels, const float* pixels, const std::string& name);
+  static Decoded decode_bytes(int width, int height, int channels, const uint8_t* pixels, ColorSpace space,
+                              const std::string& name);
+  static Decoded decode_file(const std::string& path, ColorSpace space);
+  // A texture of these texels. `remake`, when given, makes level 0 again after the texture
+  // cache dropped it; without it level 0 stays in memory.
+  static std::shared_ptr<const Texture> with_texels(Decoded decoded, ColorSpace space, Wrap wrap, std::string name,
+                                                    std::function<TexelLevel()> remake);
 
-  // A level's texels as stored: float RGBA, or 8-bit RGBA for 8-bit images whose colour is not
-  // premultiplied here (a quarter of the memory: 64 MiB for a 4k map instead of 256).
-  struct Level {
-    int width = 0, height = 0;
-    const glm::vec4* floats = nullptr;
-    const uint8_t* bytes = nullptr;
-    glm::vec4 texel(int x, int y) const {
-      const size_t i = static_cast<size_t>(y) * width + x;
-      if (!bytes) return floats[i];
-      const uint8_t* b = bytes + 4 * i;
-      return glm::vec4(b[0], b[1], b[2], b[3]) * (1.0f / 255.0f);
-    }
-  };
-  glm::vec4 bilinear(const Level& level, glm::vec2 uv) const;
-  // Level 0 is texels_; the others come from mips_, made once by the first lookup needing them.
-  Level level(size_t i) const;
-  size_t level_count() const;
+  glm::vec4 bilinear(const TexelLevel& level, glm::vec2 uv) const;
+  // A level's texels, pinned by this thread (texel_cache.h): made the first time a lookup needs
+  // them, or again after the cache dropped them.
+  const TexelLevel& texels(size_t level) const;
   int width_ = 0;
   int height_ = 0;
   ColorSpace space_ = ColorSpace::SRGB;
@@ -95,14 +95,8 @@ class Texture {
   bool convert_srgb_after_filtering_ = false;
   bool associated_alpha_ = false;
   std::string name_;
-  std::vector<glm::vec4> texels_;  // rows bottom to top after loading; empty when bytes_ holds them
-  std::vector<uint8_t> bytes_;      // RGBA, rows bottom to top
-  struct MipLevel {
-    int width, height;
-    std::vector<glm::vec4> floats;  // one of the two, as level 0
-    std::vector<uint8_t> bytes;
-  };
-  mutable std::vector<MipLevel> mips_;  // levels 1.. of the pyramid
+  // The mip pyramid, level 0 first, each level an entry of the texture cache.
+  std::vector<std::unique_ptr<TexelPage>> levels_;
   struct UdimTile {
     int number;
     std::string path;
@@ -113,8 +107,6 @@ class Texture {
   std::vector<std::unique_ptr<UdimTile>> udim_;  // by tile number; empty for a single image
   static std::shared_ptr<const Texture> load_udim(const std::string& pattern, ColorSpace space, Wrap wrap);
   glm::vec4 sample_udim(glm::vec2 uv, bool unassociate, float footprint) const;
-  mutable std::once_flag mips_built_;
-  void build_mips() const;
 };
 
 using TexturePtr = std::shared_ptr<const Texture>;

@@ -130,8 +130,8 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
   int transmission_bounces = 0;
   int transparent_bounces = 0;
   bool passed_transparent = false;  // the ray left its last surface through its transparency
-  float cone_width = 0.0f;                         // of the ray cone at its origin
-  float cone_spread = settings_.pixel_spread_angle;  // 0: no cone (after a non-specular bounce)
+  float cone_width = 0.0f;  // of the ray cone at its origin
+  bool cone_followed = true;  // until a non-specular bounce
   PickSite site;       // where this vertex picks a light
   PickSite scattered;  // the site of the vertex that scattered the ray, for MIS at what it finds
 
@@ -156,8 +156,13 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     }
 
     const glm::vec3 wo_world = -dir;
-    cone_width += cone_spread * hit.t;
-    const SurfacePoint sp = shade_surface(scene_, hit, wo_world, cone_spread > 0.0f ? cone_width : 0.0f);
+    cone_width += settings_.pixel_spread_angle * hit.t;
+    // After a non-specular bounce the footprint a camera pixel would have here (pbrt-v4,
+    // Camera::Approximate_dp_dxy): the detail a camera could see, and the mip levels it reads.
+    const float footprint =
+        cone_followed ? cone_width
+                      : settings_.pixel_spread_angle * glm::length(origin + hit.t * dir - camera_origin);
+    const SurfacePoint sp = shade_surface(scene_, hit, wo_world, footprint);
     if (vertex == 0) {
       result.hit = true;
       result.first_distance = hit.t;
@@ -260,7 +265,7 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     ++bounce;
     bsdf_pdf = s.pdf;
     scattered = site;
-    if (!is_specular(s.flags)) cone_spread = 0.0f;
+    if (!is_specular(s.flags)) cone_followed = false;
     bsdf_delta = is_specular(s.flags);
     // Cycles counts a bounce by its label: transmission first, then diffuse, else glossy (a
     // mirror included).

@@ -24,7 +24,8 @@ struct PathSettings {
   ClearcoatEstimator clearcoat_estimator = ClearcoatEstimator::Integral;
   MultiscatterWalk multiscatter_walk = MultiscatterWalk::Exact;
   // The angle a camera ray's cone spreads by (about a pixel's); 0 turns mip-mapping off. Cones
-  // continue through specular bounces and transparent passes, and end at any other bounce.
+  // continue through specular bounces and transparent passes; after any other bounce a lookup's
+  // footprint is a camera pixel's at that distance from the camera.
   float pixel_spread_angle = 0.0f;
 };
 

@@ -23,6 +23,7 @@
 #include "matrender/scene_limits.h"
 #include "sampling/pixel_sampler.h"
 #include "scene/scene_data.h"
+#include "texture/texel_cache.h"
 #include "util/finite.h"
 
 namespace matrender {
@@ -223,6 +224,8 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
     ray_count += tile_rays;
     discarded += tile_discarded;
     count_samples(uncounted_samples);
+    // So that the texture levels the cache has dropped meanwhile are freed.
+    release_pinned_texels();
   };
 
   tbb::task_arena arena(matgeom::worker_threads(settings.threads));

@@ -12,6 +12,8 @@
 #include "matgeom/input_file.h"
 #include "matgeom/memory_limit.h"
 #include "matgeom/srgb.h"
+#include "texture/texel_cache.h"
+#include "texture/texel_level.h"
 
 namespace matrender {
 namespace {
@@ -47,80 +49,84 @@ int wrap_index(int i, int n, Wrap wrap) {
 
 }  // namespace
 
-std::shared_ptr<Texture> Texture::without_texels(int width, int height, ColorSpace space, Wrap wrap, std::string name) {
-  auto texture = std::shared_ptr<Texture>(new Texture());
-  texture->width_ = width;
-  texture->height_ = height;
-  texture->space_ = space;
-  texture->wrap_ = wrap;
-  texture->name_ = std::move(name);
-  return texture;
+struct Texture::Decoded {
+  TexelLevel level0;
+  bool convert_srgb_after_filtering = false;  // 8- and 16-bit sRGB data: decoded after filtering
+  bool associated_alpha = false;              // premultiplied at load
+};
+
+namespace {
+
+// Premultiplies an sRGB image with alpha on its encoded values (Blender's Straight alpha mode).
+void associate_alpha(TexelLevel& level) {
+  for (glm::vec4& t : level.floats) t = glm::vec4(glm::vec3(t) * t.w, t.w);
 }
 
-std::shared_ptr<const Texture> Texture::from_pixelsf(int width, int height, int channels,
-                                                     const float* pixels, ColorSpace space, Wrap wrap,
-                                                     std::string name) {
+}  // namespace
+
+Texture::~Texture() = default;
+
+Texture::Decoded Texture::decode_floats(int width, int height, int channels, const float* pixels,
+                                        const std::string& name) {
   if (width <= 0 || height <= 0 || channels < 1 || channels > 4 || pixels == nullptr)
     throw std::invalid_argument(name + ": texture needs a positive size and 1 to 4 channels");
-  auto texture = without_texels(width, height, space, wrap, std::move(name));
-  texture->texels_.resize(static_cast<size_t>(width) * height);
+  require_texture_memory(name, width, height, 0.0);
+  Decoded decoded;
+  TexelLevel& level = decoded.level0;
+  level.width = width;
+  level.height = height;
+  level.floats.resize(static_cast<size_t>(width) * height);
   for (int y = 0; y < height; ++y) {
     // Stored bottom row first so that v = 0 is row 0.
     const float* row = pixels + static_cast<size_t>(height - 1 - y) * width * channels;
     for (int x = 0; x < width; ++x) {
       glm::vec4 t = to_rgba(row + static_cast<size_t>(x) * channels, channels);
       if (!std::isfinite(t.x) || !std::isfinite(t.y) || !std::isfinite(t.z) || !std::isfinite(t.w))
-        throw std::runtime_error(texture->name_ + ": texel (" + std::to_string(x) + ", " +
-                                 std::to_string(height - 1 - y) + ") is not finite");
-      texture->texels_[static_cast<size_t>(y) * width + x] = t;
+        throw std::runtime_error(name + ": texel (" + std::to_string(x) + ", " + std::to_string(height - 1 - y) +
+                                 ") is not finite");
+      level.floats[static_cast<size_t>(y) * width + x] = t;
     }
   }
-  return texture;
+  return decoded;
 }
 
-std::shared_ptr<const Texture> Texture::from_pixels8(int width, int height, int channels,
-                                                     const uint8_t* pixels, ColorSpace space, Wrap wrap,
-                                                     std::string name) {
+Texture::Decoded Texture::decode_bytes(int width, int height, int channels, const uint8_t* pixels,
+                                       ColorSpace space, const std::string& name) {
   if (pixels == nullptr) throw std::invalid_argument(name + ": no pixel data");
   if (width <= 0 || height <= 0 || channels < 1 || channels > 4)
     throw std::invalid_argument(name + ": texture needs a positive size and 1 to 4 channels");
-  if (!(space == ColorSpace::SRGB && channels == 4)) {
-    // Kept as bytes, expanded to RGBA (grey to RGB, alpha 255 when absent), bottom row first.
-    require_texture_memory(name, width, height, 0.0, 4.0);
-    auto texture = without_texels(width, height, space, wrap, std::move(name));
-    texture->convert_srgb_after_filtering_ = space == ColorSpace::SRGB;
-    texture->bytes_.resize(static_cast<size_t>(width) * height * 4);
-    for (int y = 0; y < height; ++y)
-      for (int x = 0; x < width; ++x) {
-        const uint8_t* p = pixels + (static_cast<size_t>(height - 1 - y) * width + x) * channels;
-        uint8_t* t = &texture->bytes_[(static_cast<size_t>(y) * width + x) * 4];
-        t[0] = p[0];
-        t[1] = channels >= 3 ? p[1] : p[0];
-        t[2] = channels >= 3 ? p[2] : p[0];
-        t[3] = channels == 4 ? p[3] : channels == 2 ? p[1] : 255;
-      }
-    return texture;
+  if (space == ColorSpace::SRGB && channels == 4) {
+    // Premultiplied, so kept as floats; 8-bit sRGB images are filtered on the encoded values
+    // and decoded afterwards (Cycles).
+    require_texture_memory(name, width, height, 4.0 * channels);
+    std::vector<float> values(static_cast<size_t>(width) * height * channels);
+    for (size_t i = 0; i < values.size(); ++i) values[i] = pixels[i] / 255.0f;
+    Decoded decoded = decode_floats(width, height, channels, values.data(), name);
+    associate_alpha(decoded.level0);
+    decoded.convert_srgb_after_filtering = decoded.associated_alpha = true;
+    return decoded;
   }
-  require_texture_memory(name, width, height, 4.0 * channels);
-  std::vector<float> values(static_cast<size_t>(width) * height * channels);
-  for (size_t i = 0; i < values.size(); ++i) values[i] = pixels[i] / 255.0f;
-  // 8-bit sRGB images are filtered on the encoded values and decoded afterwards (Cycles).
-  auto texture = from_pixelsf(width, height, channels, values.data(), ColorSpace::NonColor, wrap,
-                              std::move(name));
-  auto mutable_texture = std::const_pointer_cast<Texture>(texture);
-  mutable_texture->space_ = space;
-  mutable_texture->convert_srgb_after_filtering_ = space == ColorSpace::SRGB;
-  if (space == ColorSpace::SRGB && channels == 4) mutable_texture->associate_alpha();
-  return texture;
+  // Kept as bytes, expanded to RGBA (grey to RGB, alpha 255 when absent), bottom row first.
+  require_texture_memory(name, width, height, 0.0, 4.0);
+  Decoded decoded;
+  decoded.convert_srgb_after_filtering = space == ColorSpace::SRGB;
+  TexelLevel& level = decoded.level0;
+  level.width = width;
+  level.height = height;
+  level.bytes.resize(static_cast<size_t>(width) * height * 4);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const uint8_t* p = pixels + (static_cast<size_t>(height - 1 - y) * width + x) * channels;
+      uint8_t* t = &level.bytes[(static_cast<size_t>(y) * width + x) * 4];
+      t[0] = p[0];
+      t[1] = channels >= 3 ? p[1] : p[0];
+      t[2] = channels >= 3 ? p[2] : p[0];
+      t[3] = channels == 4 ? p[3] : channels == 2 ? p[1] : 255;
+    }
+  return decoded;
 }
 
-void Texture::associate_alpha() {
-  for (glm::vec4& t : texels_) t = glm::vec4(glm::vec3(t) * t.w, t.w);
-  associated_alpha_ = true;
-}
-
-std::shared_ptr<const Texture> Texture::load(const std::string& path, ColorSpace space, Wrap wrap) {
-  if (path.find(kUdimToken) != std::string::npos) return load_udim(path, space, wrap);
+Texture::Decoded Texture::decode_file(const std::string& path, ColorSpace space) {
   matgeom::require_input_file(path);
   // Straight colour as stored (Cycles' default alpha mode); OpenImageIO would premultiply.
   OIIO::ImageSpec config;
@@ -137,7 +143,7 @@ std::shared_ptr<const Texture> Texture::load(const std::string& path, ColorSpace
     if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, bytes.data()))
       throw std::runtime_error(path + ": cannot decode image: " + input->geterror());
     input->close();
-    return from_pixels8(spec.width, spec.height, channels, bytes.data(), space, wrap, path);
+    return decode_bytes(spec.width, spec.height, channels, bytes.data(), space, path);
   }
   require_texture_memory(path, spec.width, spec.height, 4.0 * channels);
   std::vector<float> pixels(static_cast<size_t>(spec.width) * spec.height * channels);
@@ -145,17 +151,15 @@ std::shared_ptr<const Texture> Texture::load(const std::string& path, ColorSpace
     throw std::runtime_error(path + ": cannot decode image: " + input->geterror());
   input->close();
 
-  const bool integer_format = spec.format.basetype == OIIO::TypeDesc::UINT8 ||
-                              spec.format.basetype == OIIO::TypeDesc::UINT16;
-  if (space == ColorSpace::SRGB && integer_format) {
+  if (space == ColorSpace::SRGB && spec.format.basetype == OIIO::TypeDesc::UINT16) {
     // As for 8-bit images: interpolate encoded values, decode after filtering.
-    auto texture = from_pixelsf(spec.width, spec.height, channels, pixels.data(),
-                                ColorSpace::NonColor, wrap, path);
-    auto mutable_texture = std::const_pointer_cast<Texture>(texture);
-    mutable_texture->space_ = space;
-    mutable_texture->convert_srgb_after_filtering_ = true;
-    if (channels == 4) mutable_texture->associate_alpha();
-    return texture;
+    Decoded decoded = decode_floats(spec.width, spec.height, channels, pixels.data(), path);
+    decoded.convert_srgb_after_filtering = true;
+    if (channels == 4) {
+      associate_alpha(decoded.level0);
+      decoded.associated_alpha = true;
+    }
+    return decoded;
   }
   if (space == ColorSpace::SRGB) {
     // Float images tagged sRGB are decoded once at load time (Cycles converts float images
@@ -163,7 +167,58 @@ std::shared_ptr<const Texture> Texture::load(const std::string& path, ColorSpace
     for (size_t i = 0; i < pixels.size(); ++i)
       if (channels < 4 || i % 4 != 3) pixels[i] = matgeom::srgb_to_linear(pixels[i]);
   }
-  return from_pixelsf(spec.width, spec.height, channels, pixels.data(), space, wrap, path);
+  return decode_floats(spec.width, spec.height, channels, pixels.data(), path);
+}
+
+std::shared_ptr<const Texture> Texture::with_texels(Decoded decoded, ColorSpace space, Wrap wrap, std::string name,
+                                                    std::function<TexelLevel()> remake) {
+  auto texture = std::shared_ptr<Texture>(new Texture());
+  texture->width_ = decoded.level0.width;
+  texture->height_ = decoded.level0.height;
+  texture->space_ = space;
+  texture->wrap_ = wrap;
+  texture->name_ = std::move(name);
+  texture->convert_srgb_after_filtering_ = decoded.convert_srgb_after_filtering;
+  texture->associated_alpha_ = decoded.associated_alpha;
+  const bool evictable = static_cast<bool>(remake);
+  if (!remake) remake = [] () -> TexelLevel { throw std::logic_error("a texture cache entry that stays was dropped"); };
+  texture->levels_.push_back(std::make_unique<TexelPage>(std::move(remake), evictable));
+  // Each mip level is made from the finer one, whose texels it pins only while filtering.
+  Texture* const self = texture.get();
+  for (size_t i = 1; i < mip_level_count(texture->width_, texture->height_); ++i)
+    texture->levels_.push_back(
+        std::make_unique<TexelPage>([self, i] { return box_filtered_half(*self->levels_[i - 1]->acquire()); }, true));
+  texture->levels_.front()->install(std::move(decoded.level0));
+  return texture;
+}
+
+std::shared_ptr<const Texture> Texture::from_pixelsf(int width, int height, int channels,
+                                                     const float* pixels, ColorSpace space, Wrap wrap,
+                                                     std::string name) {
+  Decoded decoded = decode_floats(width, height, channels, pixels, name);
+  return with_texels(std::move(decoded), space, wrap, std::move(name), nullptr);
+}
+
+std::shared_ptr<const Texture> Texture::from_pixels8(int width, int height, int channels,
+                                                     const uint8_t* pixels, ColorSpace space, Wrap wrap,
+                                                     std::string name) {
+  Decoded decoded = decode_bytes(width, height, channels, pixels, space, name);
+  return with_texels(std::move(decoded), space, wrap, std::move(name), nullptr);
+}
+
+std::shared_ptr<const Texture> Texture::load(const std::string& path, ColorSpace space, Wrap wrap) {
+  if (path.find(kUdimToken) != std::string::npos) return load_udim(path, space, wrap);
+  Decoded decoded = decode_file(path, space);
+  const int width = decoded.level0.width, height = decoded.level0.height;
+  auto remake = [path, space, width, height] {
+    TexelLevel level = decode_file(path, space).level0;
+    if (level.width != width || level.height != height)
+      throw std::runtime_error(path + ": changed while rendering: " + std::to_string(width) + " x " +
+                               std::to_string(height) + " texels when loaded, now " + std::to_string(level.width) +
+                               " x " + std::to_string(level.height));
+    return level;
+  };
+  return with_texels(std::move(decoded), space, wrap, path, std::move(remake));
 }
 
 ColorSpace blender_default_color_space(const std::string& path) {
@@ -176,49 +231,9 @@ ColorSpace blender_default_color_space(const std::string& path) {
   return float_data ? ColorSpace::NonColor : ColorSpace::SRGB;
 }
 
-Texture::Level Texture::level(size_t i) const {
-  const auto stored = [](int w, int h, const std::vector<glm::vec4>& floats, const std::vector<uint8_t>& bytes) {
-    return Level{w, h, floats.data(), bytes.empty() ? nullptr : bytes.data()};
-  };
-  if (i == 0) return stored(width_, height_, texels_, bytes_);
-  const MipLevel& m = mips_[i - 1];
-  return stored(m.width, m.height, m.floats, m.bytes);
-}
+const TexelLevel& Texture::texels(size_t level) const { return pinned_texels(*levels_[level]); }
 
-size_t Texture::level_count() const { return 1 + mips_.size(); }
-
-void Texture::build_mips() const {
-  // Each level halves the sides (rounding up) and averages the 2 x 2 texels below each texel,
-  // edge texels repeated on odd sides, down to 1 x 1.
-  // Levels are stored as level 0 is (byte levels round to the nearest byte); together they take
-  // a third of its memory.
-  Level parent = level(0);
-  const bool bytes = !bytes_.empty();
-  require_texture_memory(name_ + " (mip levels)", width_, height_, 0.0, bytes ? 4.0 / 3.0 : 16.0 / 3.0);
-  while (parent.width > 1 || parent.height > 1) {
-    MipLevel next{std::max(1, (parent.width + 1) / 2), std::max(1, (parent.height + 1) / 2), {}, {}};
-    const size_t count = static_cast<size_t>(next.width) * next.height;
-    if (bytes) next.bytes.resize(4 * count); else next.floats.resize(count);
-    for (int y = 0; y < next.height; ++y)
-      for (int x = 0; x < next.width; ++x) {
-        const auto at = [&](int px, int py) {
-          return parent.texel(std::min(px, parent.width - 1), std::min(py, parent.height - 1));
-        };
-        const glm::vec4 mean =
-            0.25f * (at(2 * x, 2 * y) + at(2 * x + 1, 2 * y) + at(2 * x, 2 * y + 1) + at(2 * x + 1, 2 * y + 1));
-        const size_t i = static_cast<size_t>(y) * next.width + x;
-        if (!bytes) {
-          next.floats[i] = mean;
-          continue;
-        }
-        for (int c = 0; c < 4; ++c) next.bytes[4 * i + c] = static_cast<uint8_t>(std::lround(mean[c] * 255.0f));
-      }
-    mips_.push_back(std::move(next));
-    parent = level(mips_.size());
-  }
-}
-
-glm::vec4 Texture::bilinear(const Level& level, glm::vec2 uv) const {
+glm::vec4 Texture::bilinear(const TexelLevel& level, glm::vec2 uv) const {
   // Texel centres sit at (i + 0.5) / W.
   const float x = uv.x * level.width - 0.5f;
   const float y = uv.y * level.height - 0.5f;
@@ -247,7 +262,10 @@ std::shared_ptr<const Texture> Texture::load_udim(const std::string& pattern, Co
   const fs::path folder = fs::path(pattern.substr(0, token)).parent_path();
   const std::string prefix = fs::path(pattern.substr(0, token)).filename().string();
   const std::string suffix = pattern.substr(token + kUdimToken.size());
-  auto texture = without_texels(0, 0, space, wrap, pattern);
+  auto texture = std::shared_ptr<Texture>(new Texture());
+  texture->space_ = space;
+  texture->wrap_ = wrap;
+  texture->name_ = pattern;
   std::error_code error;
   for (const fs::directory_entry& entry : fs::directory_iterator(folder.empty() ? fs::path(".") : folder, error)) {
     const std::string name = entry.path().filename().string();
@@ -309,14 +327,13 @@ glm::vec4 Texture::sample(glm::vec2 uv, bool unassociate, float footprint) const
   const float texels_across = footprint * static_cast<float>(std::max(width_, height_));
   glm::vec4 value;
   if (!(texels_across > 1.0f)) {
-    value = bilinear(level(0), uv);
+    value = bilinear(texels(0), uv);
   } else {
-    std::call_once(mips_built_, [this] { build_mips(); });
-    const float lod = std::min(std::log2(texels_across), static_cast<float>(level_count() - 1));
+    const float lod = std::min(std::log2(texels_across), static_cast<float>(levels_.size() - 1));
     const size_t fine = static_cast<size_t>(lod);
     const float t = lod - static_cast<float>(fine);
-    value = bilinear(level(fine), uv);
-    if (t > 0.0f && fine + 1 < level_count()) value = (1.0f - t) * value + t * bilinear(level(fine + 1), uv);
+    value = bilinear(texels(fine), uv);
+    if (t > 0.0f && fine + 1 < levels_.size()) value = (1.0f - t) * value + t * bilinear(texels(fine + 1), uv);
   }
   if (unassociate && associated_alpha_ && value.w > 0.0f) {
     value.x /= value.w;
