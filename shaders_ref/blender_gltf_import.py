@@ -1,5 +1,6 @@
 # Imports a glTF file with the glTF importer Blender 3.4 ships and writes, for every material it
-# made, the Principled BSDF's inputs: each input's default value and whether a node feeds it.
+# made, the Principled BSDF's inputs: each input's default value, whether a node feeds it, and
+# the Mapping node (KHR_texture_transform) in front of the image that feeds it, if any.
 # The optional tests compare this with what read_gltf makes of the same file.
 #
 #   blender -b --factory-startup -noaudio --python-exit-code 1 -P blender_gltf_import.py -- FILE.glb OUT.json
@@ -15,6 +16,38 @@ if not hasattr(numpy, "bool"):
     numpy.bool = bool
 
 
+def upstream_image(socket):
+    """The first Image Texture node found walking the links up from `socket`."""
+    pending = [link.from_node for link in socket.links]
+    seen = set()
+    while pending:
+        node = pending.pop(0)
+        if node.name in seen:
+            continue
+        seen.add(node.name)
+        if node.type == "TEX_IMAGE":
+            return node
+        for upstream in node.inputs:
+            pending.extend(link.from_node for link in upstream.links)
+    return None
+
+
+def uv_mapping(socket):
+    """The Mapping node feeding the image behind `socket`: location, Z rotation, scale (x, y)."""
+    image = upstream_image(socket)
+    if image is None or not image.inputs["Vector"].is_linked:
+        return None
+    mapping = image.inputs["Vector"].links[0].from_node
+    if mapping.type != "MAPPING":
+        return None
+    return {
+        "vector_type": mapping.vector_type,
+        "location": list(mapping.inputs["Location"].default_value)[:2],
+        "rotation_z": mapping.inputs["Rotation"].default_value[2],
+        "scale": list(mapping.inputs["Scale"].default_value)[:2],
+    }
+
+
 def principled_inputs(material):
     nodes = [n for n in material.node_tree.nodes if n.type == "BSDF_PRINCIPLED"]
     if len(nodes) != 1:
@@ -25,7 +58,8 @@ def principled_inputs(material):
             continue
         value = socket.default_value
         value = list(value)[:3] if hasattr(value, "__len__") else value
-        inputs[socket.name] = {"value": value, "linked": socket.is_linked}
+        inputs[socket.name] = {"value": value, "linked": socket.is_linked,
+                               "mapping": uv_mapping(socket) if socket.is_linked else None}
     return inputs
 
 

@@ -59,10 +59,10 @@ std::string lowercase_extension(const std::string& path) {
 void check_required_extensions(const GltfFile& file) {
   // Extensions that change how geometry or images are stored would be misread if ignored;
   // KHR_mesh_quantization only widens the accessor formats, which the reader handles;
-  // KHR_materials_clearcoat, _ior and _transmission are read.
+  // KHR_materials_clearcoat, _ior, _transmission and KHR_texture_transform are read.
   for (const std::string& extension : file.model.extensionsRequired) {
     if (extension == "KHR_mesh_quantization" || extension == gltf::kClearcoat || extension == gltf::kIor ||
-        extension == gltf::kTransmission)
+        extension == gltf::kTransmission || extension == gltf::kTextureTransform)
       continue;
     fail(file.path, "requires the unsupported glTF extension " + extension);
   }
@@ -664,6 +664,7 @@ class ImageTable {
 struct TextureRef {
   int image = -1;  // index into the asset's images
   TextureWrap wrap = TextureWrap::Repeat;
+  TextureTransform transform;  // KHR_texture_transform's
 };
 
 // MaterialDesc has one wrap mode. Blender 3.4's Image Texture offers REPEAT and EXTEND per image
@@ -680,10 +681,47 @@ TextureWrap sampler_wrap(const GltfFile& file, int sampler_index, const std::str
   return clamp ? TextureWrap::Clamp : TextureWrap::Repeat;
 }
 
-TextureRef resolve_texture(const GltfFile& file, ImageTable& images, int texture_index,
-                           int tex_coord, const std::string& what) {
+// Two numbers of a KHR_texture_transform member, `fallback` when absent.
+glm::dvec2 transform_pair(const GltfFile& file, const tinygltf::Value& transform, const char* member,
+                          glm::dvec2 fallback, const std::string& what) {
+  if (!transform.Has(member)) return fallback;
+  const tinygltf::Value& value = transform.Get(member);
+  if (!value.IsArray() || value.ArrayLen() != 2 || !value.Get(0).IsNumber() || !value.Get(1).IsNumber())
+    fail(file.path, concat(what, ": ", gltf::kTextureTransform, " ", member, " needs 2 numbers"));
+  const glm::dvec2 pair(value.Get(0).GetNumberAsDouble(), value.Get(1).GetNumberAsDouble());
+  if (!std::isfinite(pair.x) || !std::isfinite(pair.y))
+    fail(file.path, concat(what, ": ", gltf::kTextureTransform, " ", member, " is not finite"));
+  return pair;
+}
+
+// A textureInfo's KHR_texture_transform, whose texCoord (when given) replaces the textureInfo's.
+TextureTransform read_texture_transform(const GltfFile& file, const tinygltf::Value& transform, int& tex_coord,
+                                        const std::string& what) {
+  if (!transform.IsObject()) fail(file.path, concat(what, ": ", gltf::kTextureTransform, " is not an object"));
+  TextureTransform t;
+  t.offset = transform_pair(file, transform, "offset", t.offset, what);
+  t.scale = transform_pair(file, transform, "scale", t.scale, what);
+  if (transform.Has("rotation")) {
+    const tinygltf::Value& rotation = transform.Get("rotation");
+    if (!rotation.IsNumber() || !std::isfinite(rotation.GetNumberAsDouble()))
+      fail(file.path, concat(what, ": ", gltf::kTextureTransform, " rotation is not a finite number"));
+    t.rotation = rotation.GetNumberAsDouble();
+  }
+  if (transform.Has("texCoord")) {
+    if (!transform.Get("texCoord").IsInt())
+      fail(file.path, concat(what, ": ", gltf::kTextureTransform, " texCoord is not an integer"));
+    tex_coord = transform.Get("texCoord").GetNumberAsInt();
+  }
+  return t;
+}
+
+// `extensions`: the textureInfo's, where a KHR_texture_transform may be.
+TextureRef resolve_texture(const GltfFile& file, ImageTable& images, int texture_index, int tex_coord,
+                           const tinygltf::ExtensionMap& extensions, const std::string& what) {
   TextureRef ref;
   if (texture_index < 0) return ref;
+  const auto transform = extensions.find(gltf::kTextureTransform);
+  if (transform != extensions.end()) ref.transform = read_texture_transform(file, transform->second, tex_coord, what);
   if (static_cast<size_t>(texture_index) >= file.model.textures.size()) {
     fail(file.path, concat(what, ": texture ", texture_index, " does not exist"));
   }
@@ -717,10 +755,10 @@ std::optional<double> extension_number(const GltfFile& file, const tinygltf::Val
   return value.GetNumberAsDouble();
 }
 
-// A textureInfo member of an extension object: the texture's image, or -1 when absent.
-int extension_texture(const GltfFile& file, ImageTable& images, const tinygltf::Value& extension, const char* member,
-                      const std::string& what) {
-  if (!extension.Has(member)) return -1;
+// A textureInfo member of an extension object: the texture, without an image when absent.
+TextureRef extension_texture(const GltfFile& file, ImageTable& images, const tinygltf::Value& extension,
+                             const char* member, const std::string& what) {
+  if (!extension.Has(member)) return {};
   const tinygltf::Value& info = extension.Get(member);
   const std::string where = concat(what, " ", member);
   if (!info.IsObject() || !info.Has("index") || !info.Get("index").IsInt())
@@ -730,7 +768,13 @@ int extension_texture(const GltfFile& file, ImageTable& images, const tinygltf::
     if (!info.Get("texCoord").IsInt()) fail(file.path, where + ": texCoord is not an integer");
     tex_coord = info.Get("texCoord").GetNumberAsInt();
   }
-  return resolve_texture(file, images, info.Get("index").GetNumberAsInt(), tex_coord, where).image;
+  tinygltf::ExtensionMap extensions;
+  if (info.Has("extensions")) {
+    const tinygltf::Value& all = info.Get("extensions");
+    if (!all.IsObject()) fail(file.path, where + ": extensions is not an object");
+    for (const std::string& name : all.Keys()) extensions.emplace(name, all.Get(name));
+  }
+  return resolve_texture(file, images, info.Get("index").GetNumberAsInt(), tex_coord, extensions, where);
 }
 
 // One input an extension gives as factor x one channel of a texture (glTF's pattern), set on
@@ -740,8 +784,8 @@ void read_extension_input(const GltfFile& file, ImageTable& images, const tinygl
                           MaterialDesc& desc, const std::string& where) {
   const double factor = extension_number(file, extension, factor_member, where).value_or(0.0);
   desc.set(p, checked_factor(file, p, factor, concat(where, " ", factor_member)));
-  const int image = extension_texture(file, images, extension, texture_member, where);
-  if (image >= 0) desc.set_image(p, image, channel);
+  const TextureRef texture = extension_texture(file, images, extension, texture_member, where);
+  if (texture.image >= 0) desc.set_image(p, texture.image, channel, texture.transform);
 }
 
 // KHR_materials_clearcoat as Blender 3.4's importer wires it: Clearcoat = clearcoatFactor x
@@ -824,23 +868,23 @@ MaterialDesc convert_material(const GltfFile& file, ImageTable& images, size_t i
     fail(file.path, what + ": non-finite normal scale");
   desc.normal_strength = material.normalTexture.scale;
 
-  const TextureRef base =
-      resolve_texture(file, images, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
-                      what + " baseColorTexture");
+  const TextureRef base = resolve_texture(file, images, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
+                                         pbr.baseColorTexture.extensions, what + " baseColorTexture");
   const TextureRef metallic_roughness =
-      resolve_texture(file, images, pbr.metallicRoughnessTexture.index,
-                      pbr.metallicRoughnessTexture.texCoord, what + " metallicRoughnessTexture");
-  const TextureRef normal =
-      resolve_texture(file, images, material.normalTexture.index, material.normalTexture.texCoord,
-                      what + " normalTexture");
+      resolve_texture(file, images, pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+                      pbr.metallicRoughnessTexture.extensions, what + " metallicRoughnessTexture");
+  const TextureRef normal = resolve_texture(file, images, material.normalTexture.index, material.normalTexture.texCoord,
+                                           material.normalTexture.extensions, what + " normalTexture");
   const TextureRef emissive =
       resolve_texture(file, images, material.emissiveTexture.index, material.emissiveTexture.texCoord,
-                      what + " emissiveTexture");
-  if (base.image >= 0) desc.set_image(P::BaseColor, base.image);
-  if (base.image >= 0 && uses_alpha) desc.set_image(P::Alpha, base.image, gltf::kBaseColorAlphaChannel);
-  if (emissive.image >= 0) desc.set_image(P::Emission, emissive.image);
-  if (metallic_roughness.image >= 0) desc.set_metallic_roughness_image(metallic_roughness.image);
+                      material.emissiveTexture.extensions, what + " emissiveTexture");
+  if (base.image >= 0) desc.set_image(P::BaseColor, base.image, 0, base.transform);
+  if (base.image >= 0 && uses_alpha) desc.set_image(P::Alpha, base.image, gltf::kBaseColorAlphaChannel, base.transform);
+  if (emissive.image >= 0) desc.set_image(P::Emission, emissive.image, 0, emissive.transform);
+  if (metallic_roughness.image >= 0)
+    desc.set_metallic_roughness_image(metallic_roughness.image, metallic_roughness.transform);
   desc.normal_image = normal.image;
+  desc.normal_transform = normal.transform;
   // The wrap mode follows the most visible texture: base colour, else roughness, else normal.
   for (const TextureRef& ref : {base, metallic_roughness, normal}) {
     if (ref.image < 0) continue;

@@ -49,11 +49,13 @@ Material material_from_desc(const matgeom::MaterialDesc& desc, AssetTextures& te
     value.value = glm::vec3(input.value);
     value.texture = textures.texture(input.image, info.texture_space, desc.wrap, desc.name);
     value.channel = input.channel;
+    value.uv_transform = matgeom::uv_affine(input.transform);
     if (value.texture && !info.texturable)
       throw std::invalid_argument("material " + desc.name + ": " + info.name + " cannot come from an image");
   }
   m.normal_map = textures.texture(desc.normal_image, ColorSpace::NonColor, desc.wrap, desc.name);
   m.normal_strength = static_cast<float>(desc.normal_strength);
+  m.normal_map_uv_transform = matgeom::uv_affine(desc.normal_transform);
   return m;
 }
 

@@ -166,6 +166,14 @@ BlenderMaterials import_gltf_with_blender(const std::string& gltf_path, const st
         out.value = value.get<std::vector<double>>();
       else if (value.is_number())
         out.value = {value.get<double>()};
+      const json& mapping = state.at("mapping");
+      if (mapping.is_null()) continue;
+      if (mapping.at("vector_type").get<std::string>() != "POINT")
+        throw std::runtime_error(gltf_path + ": Blender's Mapping node for " + input + " is not of type Point");
+      const auto location = mapping.at("location").get<std::vector<double>>();
+      const auto scale = mapping.at("scale").get<std::vector<double>>();
+      out.mapping = BlenderUvMapping{{location.at(0), location.at(1)}, mapping.at("rotation_z").get<double>(),
+                                     {scale.at(0), scale.at(1)}};
     }
   return result;
 }

@@ -601,6 +601,25 @@ TEST_CASE("glTF reader errors name the file and the problem", "[geom]") {
     const std::string path = writer.write();
     CHECK_THAT(read_error(path), Contains(path) && Contains("run past the end"));
   }
+  SECTION("texture transforms that cannot be read") {
+    for (const auto& [transform, problem] :
+         {std::pair{json{{"offset", {1.0, 2.0, 3.0}}}, "KHR_texture_transform offset needs 2 numbers"},
+          std::pair{json{{"rotation", "quarter"}}, "KHR_texture_transform rotation is not a finite number"},
+          std::pair{json{{"texCoord", 1}}, "uses TEXCOORD_1; only TEXCOORD_0 is read"}}) {
+      GltfWriter writer(dir, "placed", Container::Glb);
+      const int positions = writer.add_vec3(kTriangle);
+      writer.doc()["meshes"] = json::array(
+          {{{"primitives", json::array({{{"attributes", {{"POSITION", positions}}}, {"material", 0}}})}}});
+      writer.doc()["nodes"] = json::array({{{"mesh", 0}}});
+      const int image = writer.add_image(encode_png(2, 2, 3, 8, kBaseColorPixels), "base.png");
+      writer.doc()["textures"] = json::array({{{"source", image}}});
+      writer.doc()["materials"] = json::array({{{"pbrMetallicRoughness",
+                                                 {{"baseColorTexture",
+                                                   {{"index", 0}, {"extensions", {{"KHR_texture_transform", transform}}}}}}}}});
+      const std::string path = writer.write();
+      CHECK_THAT(read_error(path), Contains(path) && Contains("baseColorTexture") && Contains(problem));
+    }
+  }
   SECTION("missing external image") {
     GltfWriter writer(dir, "lost_image", Container::ExternalFiles);
     const int positions = writer.add_vec3(kTriangle);

@@ -55,9 +55,11 @@ ObjectAsset two_part_asset() {
   wood.set(P::Roughness, 0.75);
   wood.normal_image = 1;
   wood.normal_strength = 0.5;
+  // Each texture placed on the UVs its own way (KHR_texture_transform).
+  wood.normal_transform = {{0.25, -0.5}, 0.75, {2.0, 3.0}};
   // A glow beyond glTF's [0, 1] factor: KHR_materials_emissive_strength carries the rest.
   wood.set(P::Emission, glm::dvec3(0.25, 0.5, 1.0));
-  wood.set_image(P::Emission, 0);
+  wood.set_image(P::Emission, 0, 0, {{0.0, 0.125}, -1.0, {1.0, 1.0}});
   wood.set(P::EmissionStrength, 2.5);
   // KHR_materials_ior for both: glTF's default is 1.5, the table's (brass) 1.45.
   wood.set(P::Ior, 1.33);
@@ -69,7 +71,7 @@ ObjectAsset two_part_asset() {
   brass.set(P::BaseColor, glm::dvec3(1.0, 0.75, 0.25));
   brass.set(P::Metallic, 1.0);
   brass.set(P::Roughness, 0.25);
-  brass.set_metallic_roughness_image(1);
+  brass.set_metallic_roughness_image(1, {{1.5, 0.0}, 0.0, {0.5, 0.25}});
   // Lacquered: the coat from image 0's red, its roughness from image 1's green (glTF's channels).
   brass.set(P::Clearcoat, 0.75);
   brass.set_image(P::Clearcoat, 0, 0);
@@ -122,6 +124,10 @@ void check_same_asset(const ObjectAsset& written, const ObjectAsset& read) {
     CHECK(b[P::Clearcoat].channel == a[P::Clearcoat].channel);
     CHECK(b[P::ClearcoatRoughness].channel == a[P::ClearcoatRoughness].channel);
     CHECK(b.normal_strength == a.normal_strength);
+    CHECK(b.normal_transform == a.normal_transform);
+    for (const P p : {P::BaseColor, P::Roughness, P::Metallic, P::Emission, P::Clearcoat, P::ClearcoatRoughness,
+                      P::Transmission})
+      CHECK(b[p].transform == a[p].transform);
     CHECK(b.wrap == a.wrap);
     for (const auto& [image_a, image_b] : {std::pair{a[P::BaseColor].image, b[P::BaseColor].image},
                                            std::pair{a[P::Roughness].image, b[P::Roughness].image},
@@ -272,4 +278,13 @@ TEST_CASE("glTF reader survives truncated and bit-flipped files", "[geom]") {
       check_reads_or_rejects(damaged_path, damaged);
     }
   }
+}
+
+TEST_CASE("write_gltf refuses inputs glTF reads through one texture but placed apart", "[geom]") {
+  const TempDir dir;
+  ObjectAsset asset = two_part_asset();
+  asset.materials[1][P::Metallic].transform.rotation = 0.5;  // roughness keeps the other placement
+  CHECK_THROWS_WITH(write_gltf(asset, dir.file("object.glb")),
+                    Catch::Contains("places the images of roughness and metallic differently on the UVs"));
+  CHECK(std::filesystem::is_empty(dir.path()));
 }

@@ -4,6 +4,7 @@
 // constant, or an image where read_gltf has one. That holds the writer and the reader to
 // Blender's mapping at once (docs/conventions.md, "What Blender's glTF importer makes of a
 // metallic-roughness material").
+#include <cmath>
 #include <filesystem>
 #include <string>
 
@@ -14,6 +15,7 @@
 #include "matgeom/material_parameters.h"
 #include "matgeom/mesh.h"
 #include "matgeom/tangents.h"
+#include "matgeom/texture_transform.h"
 #include "shaders_ref/cycles_reference.h"
 
 namespace {
@@ -47,21 +49,52 @@ matgeom::ObjectAsset two_material_quad() {
   lacquer.set(P::Ior, 1.33);
   lacquer.set(P::Transmission, 0.3);
   lacquer.set(P::Alpha, 0.8);
-  // Every input glTF can texture, from the one image.
+  // Every input glTF can texture, from the one image, each textureInfo placed on the UVs its own
+  // way (KHR_texture_transform; the identity for the base colour).
+  const auto placed = [](double k) {
+    return matgeom::TextureTransform{{0.1 * k, -0.2 + 0.05 * k}, 0.3 * k - 0.5, {1.0 + 0.5 * k, 2.0 - 0.25 * k}};
+  };
   MaterialDesc textured("textured");
   textured.set_image(P::BaseColor, 0);
   textured.set_image(P::Alpha, 0, 3);  // the base colour's alpha
-  textured.set_metallic_roughness_image(0);
+  textured.set_metallic_roughness_image(0, placed(1));
   textured.set(P::Emission, glm::dvec3(1.0));
-  textured.set_image(P::Emission, 0);
+  textured.set_image(P::Emission, 0, 0, placed(2));
   textured.set(P::Clearcoat, 1.0);
-  textured.set_image(P::Clearcoat, 0, 0);
+  textured.set_image(P::Clearcoat, 0, 0, placed(3));
   textured.set(P::ClearcoatRoughness, 1.0);
-  textured.set_image(P::ClearcoatRoughness, 0, 1);
+  textured.set_image(P::ClearcoatRoughness, 0, 1, placed(4));
   textured.set(P::Transmission, 0.5);
-  textured.set_image(P::Transmission, 0, 0);
+  textured.set_image(P::Transmission, 0, 0, placed(5));
+  textured.normal_image = 0;
+  textured.normal_transform = placed(6);
   asset.materials = {lacquer, textured};
   return asset;
+}
+
+// Where Blender's Mapping node puts uv: R_z(rotation) (scale * uv) + location.
+glm::dvec2 blender_mapped(const shaders_ref::BlenderUvMapping& m, glm::dvec2 uv) {
+  const glm::dvec2 scaled(m.scale[0] * uv.x, m.scale[1] * uv.y);
+  const double c = std::cos(m.rotation_z), s = std::sin(m.rotation_z);
+  return {c * scaled.x - s * scaled.y + m.location[0], s * scaled.x + c * scaled.y + m.location[1]};
+}
+
+// The image behind `input` lies on the UVs where our transform puts it: the same point for
+// UVs across and beyond the unit square.
+void check_placement(const shaders_ref::BlenderInput& input, const matgeom::TextureTransform& transform) {
+  if (transform.is_identity()) {
+    CHECK_FALSE(input.mapping.has_value());
+    return;
+  }
+  REQUIRE(input.mapping.has_value());
+  const matgeom::UvAffine ours = matgeom::uv_affine(transform);
+  for (const glm::dvec2 uv : {glm::dvec2(0.0), glm::dvec2(1.0, 0.0), glm::dvec2(0.3, 0.8), glm::dvec2(-1.5, 2.25)}) {
+    const glm::dvec2 blender = blender_mapped(*input.mapping, uv);
+    const glm::vec2 mine = ours.apply(glm::vec2(uv));
+    CAPTURE(uv.x, uv.y);
+    CHECK(mine.x == Approx(blender.x).margin(1e-5));
+    CHECK(mine.y == Approx(blender.y).margin(1e-5));
+  }
 }
 
 }  // namespace
@@ -85,10 +118,17 @@ TEST_CASE("Blender's glTF importer makes of our glTF files what read_gltf makes"
       const shaders_ref::BlenderInput& input = inputs.at(info.blender_input);
       const matgeom::MaterialInput& mine = material[info.id];
       CHECK(input.linked == (mine.image >= 0));
-      if (input.linked) continue;
+      if (input.linked) {
+        // Blender has one Alpha link, from the base colour's image.
+        check_placement(input, mine.transform);
+        continue;
+      }
       REQUIRE(input.value.size() == (info.kind == matgeom::ParameterKind::Color ? 3u : 1u));
       // Blender stores single-precision floats.
       for (size_t c = 0; c < input.value.size(); ++c) CHECK(input.value[c] == Approx(mine.value[c]).margin(1e-6));
     }
+    REQUIRE(inputs.count("Normal") == 1);
+    CHECK(inputs.at("Normal").linked == (material.normal_image >= 0));
+    if (material.normal_image >= 0) check_placement(inputs.at("Normal"), material.normal_transform);
   }
 }

@@ -133,3 +133,24 @@ TEST_CASE("A surface point knows which side of the triangle the ray met", "[rend
   CHECK_FALSE(back.front_face);
   CHECK(back.geometric_normal == glm::vec3(0.0f, 0.0f, -1.0f));
 }
+
+TEST_CASE("An asset's texture transform moves its image on the UVs, per input, packed or not", "[render]") {
+  // A 4 x 1 ramp of data values; roughness reads it placed by a transform, metallic reads the
+  // same image as it lies.
+  const std::array<uint8_t, 4> ramp = {0, 85, 170, 255};
+  matgeom::ObjectAsset asset;
+  asset.mesh = test_scenes::horizontal_square(1.0);
+  asset.images.push_back({"ramp", 4, 1, 1, {ramp.begin(), ramp.end()}});
+  matgeom::MaterialDesc desc;
+  const matgeom::TextureTransform shifted{{0.25, 0.0}, 0.0, {1.0, 1.0}};
+  desc.set(MaterialParameter::Roughness, 1.0).set_image(MaterialParameter::Roughness, 0, 0, shifted);
+  desc.set(MaterialParameter::Metallic, 1.0).set_image(MaterialParameter::Metallic, 0, 0);
+  asset.materials = {desc};
+  Scene scene;
+  add_asset(scene, asset);
+  const PrincipledInputs inputs = shaded_point(scene, glm::vec3(0.0f, 0.0f, 1.0f)).inputs;
+  // The shaded point has uv (0.5, 0.25): metallic reads between texels 1 and 2, roughness a
+  // quarter further, between texels 2 and 3.
+  CHECK(inputs.scalar(MaterialParameter::Metallic) == Approx((85.0f + 170.0f) / 2.0f / 255.0f).epsilon(1e-5));
+  CHECK(inputs.scalar(MaterialParameter::Roughness) == Approx((170.0f + 255.0f) / 2.0f / 255.0f).epsilon(1e-5));
+}

@@ -12,6 +12,7 @@
 
 #include "matgeom/material_parameters.h"
 #include "matgeom/mesh.h"
+#include "matgeom/texture_transform.h"
 
 namespace matgeom {
 
@@ -41,6 +42,7 @@ struct MaterialInput {
   glm::dvec3 value{0.0};  // a scalar is held in every channel
   int image = -1;         // index into ObjectAsset::images, -1 = constant
   int channel = 0;        // scalars: the image channel read (0 R, 1 G, 2 B, 3 A)
+  TextureTransform transform;  // where the image lies on the UVs (glTF's KHR_texture_transform)
 };
 
 // A material slot: one input per row of the parameter table (matgeom/material_parameters.h),
@@ -56,6 +58,7 @@ struct MaterialDesc {
   std::array<MaterialInput, kMaterialParameterCount> inputs;
   int normal_image = -1;  // tangent space, OpenGL convention, Non-Color
   double normal_strength = 1.0;
+  TextureTransform normal_transform;
   TextureWrap wrap = TextureWrap::Repeat;
   int label_id = 0;  // material family id written to the label AOV
 
@@ -65,9 +68,9 @@ struct MaterialDesc {
   MaterialDesc& set(MaterialParameter p, double value);
   MaterialDesc& set(MaterialParameter p, const glm::dvec3& value);
   // The parameter comes from image `image` (times its value); a scalar reads `channel`.
-  MaterialDesc& set_image(MaterialParameter p, int image, int channel = 0);
+  MaterialDesc& set_image(MaterialParameter p, int image, int channel = 0, const TextureTransform& transform = {});
   // Roughness and metallic from glTF's packed image: its G and B (the table's packed channels).
-  MaterialDesc& set_metallic_roughness_image(int image);
+  MaterialDesc& set_metallic_roughness_image(int image, const TextureTransform& transform = {});
   glm::dvec3 color(MaterialParameter p) const { return (*this)[p].value; }
   double scalar(MaterialParameter p) const { return (*this)[p].value.x; }
 };

@@ -14,7 +14,10 @@ struct TextureTransform {
   double rotation = 0.0;  // radians
   glm::dvec2 scale{1.0};
 
-  bool is_identity() const { return offset == glm::dvec2(0.0) && rotation == 0.0 && scale == glm::dvec2(1.0); }
+  bool is_identity() const { return *this == TextureTransform{}; }
+  bool operator==(const TextureTransform& o) const {
+    return offset == o.offset && rotation == o.rotation && scale == o.scale;
+  }
 };
 
 // The transform as an affine map of our (v up) UVs: uv' = linear * uv + translation.
@@ -23,6 +26,7 @@ struct UvAffine {
   glm::vec2 translation{0.0f};
 
   glm::vec2 apply(glm::vec2 uv) const { return linear * uv + translation; }
+  bool operator==(const UvAffine& other) const { return linear == other.linear && translation == other.translation; }
   // How much wider a footprint of the UVs becomes: the larger singular value of `linear`.
   float stretch() const;
 };

@@ -25,4 +25,7 @@ constexpr int kBaseColorAlphaChannel = 3;
 constexpr const char* kTransmission = "KHR_materials_transmission";
 constexpr int kTransmissionChannel = 0;
 
+// A textureInfo's own UV placement (offset, rotation, scale, texCoord): matgeom/texture_transform.h.
+constexpr const char* kTextureTransform = "KHR_texture_transform";
+
 }  // namespace matgeom::gltf

@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "matgeom/material_parameters.h"
+#include "matgeom/texture_transform.h"
 #include "matrender/texture.h"
 
 namespace matrender {
@@ -19,6 +20,7 @@ struct ParameterValue {
   glm::vec3 value{0.0f};  // a colour; a scalar is held in every channel
   TexturePtr texture;     // when set: value * texture RGB (colour) or value * texture[channel] (scalar)
   int channel = 0;        // scalars: which texture channel (0 = R, 1 = G, 2 = B, 3 = A)
+  matgeom::UvAffine uv_transform;  // the texture is looked up at uv_transform.apply(uv)
 };
 
 enum class DiffuseModel {
@@ -43,6 +45,7 @@ struct Material {
   std::array<ParameterValue, matgeom::kMaterialParameterCount> parameters;
   TexturePtr normal_map;  // tangent space, OpenGL convention (+Y = +v), Non-Color
   float normal_strength = 1.0f;
+  matgeom::UvAffine normal_map_uv_transform;
 
   ParameterValue& operator[](MaterialParameter p) { return parameters[static_cast<size_t>(p)]; }
   const ParameterValue& operator[](MaterialParameter p) const { return parameters[static_cast<size_t>(p)]; }

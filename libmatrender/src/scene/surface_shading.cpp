@@ -19,7 +19,7 @@ glm::vec3 normalize_or(const glm::vec3& v, const glm::vec3& fallback) {
 // n_ts = 2 rgb - 1, then strength mixes between N and n.
 glm::vec3 apply_normal_map(const Material& material, glm::vec2 uv, const glm::vec3& normal,
                            const glm::vec4& tangent) {
-  const glm::vec3 rgb(material.normal_map->sample(uv));
+  const glm::vec3 rgb(material.normal_map->sample(material.normal_map_uv_transform.apply(uv)));
   const glm::vec3 n_ts = 2.0f * rgb - glm::vec3(1.0f);
   const glm::vec3 t = normalize_or(glm::vec3(tangent) - glm::dot(glm::vec3(tangent), normal) * normal,
                                    glm::vec3(0.0f));
@@ -29,20 +29,21 @@ glm::vec3 apply_normal_map(const Material& material, glm::vec2 uv, const glm::ve
   return normalize_or(normal + (mapped - normal) * material.normal_strength, normal);
 }
 
-// The textured parameters at uv, in table order; parameters sharing one image (a packed
-// metallic-roughness texture) take one lookup. The image the alpha comes from gives its colour
-// unpremultiplied (texture.h).
+// The textured parameters at uv, each at its own placement (uv_transform), in table order;
+// parameters sharing one image and placement (a packed metallic-roughness texture) take one
+// lookup. The image the alpha comes from gives its colour unpremultiplied (texture.h).
 void look_up_textures(const Material& material, glm::vec2 uv, float footprint, PrincipledInputs& inputs) {
   const ParameterValue& alpha = material[MaterialParameter::Alpha];
   const Texture* alpha_source = alpha.channel == 3 ? alpha.texture.get() : nullptr;
-  const Texture* looked_up = nullptr;
+  const ParameterValue* looked_up = nullptr;
   glm::vec4 texel(0.0f);
   for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) {
     const ParameterValue& p = material[info.id];
     if (!p.texture) continue;
-    if (p.texture.get() != looked_up) {
-      texel = p.texture->sample(uv, p.texture.get() == alpha_source, footprint);
-      looked_up = p.texture.get();
+    if (!looked_up || p.texture != looked_up->texture || !(p.uv_transform == looked_up->uv_transform)) {
+      texel = p.texture->sample(p.uv_transform.apply(uv), p.texture.get() == alpha_source,
+                                footprint * p.uv_transform.stretch());
+      looked_up = &p;
     }
     inputs.set(info.id, info.kind == matgeom::ParameterKind::Color ? p.value * glm::vec3(texel)
                                                                  : glm::vec3(p.value.x * texel[p.channel]));

@@ -446,6 +446,27 @@ TextureFile read_texture_file(const Node& node, const fs::path& folder, ColorSpa
   return file;
 }
 
+// {"offset": [u, v], "rotation_deg": r, "scale": [u, v]}: glTF's KHR_texture_transform (in
+// glTF's UVs, v down; matgeom/texture_transform.h), each key optional.
+matgeom::UvAffine read_texture_transform(const Node& node) {
+  node.expect_keys({"offset", "rotation_deg", "scale"});
+  constexpr double kLargest = 1e6;  // a texture repeated a million times is already noise
+  const auto bounded = [](const Node& n) {
+    return n.number_where([](double v) { return std::abs(v) <= kLargest; }, "a number in [-1e6, 1e6]");
+  };
+  const auto pair = [&](const char* key, glm::dvec2 fallback) {
+    const auto n = node.find(key);
+    if (!n) return fallback;
+    n->expect_array(2, "[u, v]");
+    return glm::dvec2(bounded(n->item(0)), bounded(n->item(1)));
+  };
+  matgeom::TextureTransform transform;
+  transform.offset = pair("offset", transform.offset);
+  transform.scale = pair("scale", transform.scale);
+  if (auto n = node.find("rotation_deg")) transform.rotation = glm::radians(bounded(*n));
+  return matgeom::uv_affine(transform);
+}
+
 // A value of `info` within its range: [r, g, b] for a colour, a number for a scalar. `or_else`
 // completes the message when something else would also do.
 glm::vec3 read_parameter_constant(const Node& node, const matgeom::MaterialParameterInfo& info,
@@ -470,9 +491,10 @@ void read_parameter(const Node& node, const matgeom::MaterialParameterInfo& info
     value.value = read_parameter_constant(node, info, info.texturable ? " or {\"texture\": ...}" : "");
     return;
   }
-  if (color) node.expect_keys({"texture", "factor", "color_space", "wrap"});
-  else node.expect_keys({"texture", "channel", "factor", "color_space", "wrap"});
+  if (color) node.expect_keys({"texture", "factor", "color_space", "wrap", "transform"});
+  else node.expect_keys({"texture", "channel", "factor", "color_space", "wrap", "transform"});
   texture = read_texture_file(node, folder, info.texture_space);
+  if (auto n = node.find("transform")) value.uv_transform = read_texture_transform(*n);
   value.value = node.has("factor") ? read_parameter_constant(node.required("factor"), info) : glm::vec3(1.0f);
   value.channel = node.has("channel") ? static_cast<int>(node.required("channel").choice({"R", "G", "B", "A"})) : 0;
 }
@@ -488,8 +510,9 @@ MaterialDescription read_material(const Node& node, const std::string& name, con
     if (auto n = node.find(info.name))
       read_parameter(*n, info, folder, m[info.id], material.textures[static_cast<size_t>(info.id)]);
   if (auto n = node.find("normal_map")) {
-    n->expect_keys({"texture", "strength", "wrap"});
+    n->expect_keys({"texture", "strength", "wrap", "transform"});
     material.normal_map = read_texture_file(*n, folder, ColorSpace::NonColor);
+    if (auto t = n->find("transform")) m.normal_map_uv_transform = read_texture_transform(*t);
     if (auto strength = n->find("strength")) m.normal_strength = static_cast<float>(strength->non_negative());
   }
   // Label AOVs are 16-bit PNGs.

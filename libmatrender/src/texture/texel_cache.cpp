@@ -34,11 +34,11 @@ struct TexelCache {
     }
   }
 
-  // With the mutex held: `page` now holds `texels`, which the cache counts as used now.
-  void hold(TexelPage& page, std::shared_ptr<const TexelLevel> texels) {
+  // With the mutex held: `page` now holds `texels`, used now (a lookup) or never (a source).
+  void hold(TexelPage& page, std::shared_ptr<const TexelLevel> texels, TexelPage::Use use) {
     held_bytes += texels->memory_bytes();
     page.texels_ = std::move(texels);
-    page.last_use_ = ++clock;
+    page.last_use_ = use == TexelPage::Use::Lookup ? ++clock : 0;
     held.push_back(&page);
   }
 
@@ -92,15 +92,15 @@ void TexelPage::install(TexelLevel texels) {
   std::lock_guard<std::mutex> lock(cache.mutex);
   if (texels_) cache.drop(*this);
   made_before_ = true;
-  cache.hold(*this, std::move(published));
+  cache.hold(*this, std::move(published), Use::Lookup);
   cache.evict_over_limit(this);
 }
 
-std::shared_ptr<const TexelLevel> TexelPage::acquire() {
+std::shared_ptr<const TexelLevel> TexelPage::acquire(Use use) {
   TexelCache& cache = TexelCache::instance();
   const auto held_texels = [&]() -> std::shared_ptr<const TexelLevel> {
     std::lock_guard<std::mutex> lock(cache.mutex);
-    if (texels_) last_use_ = ++cache.clock;
+    if (texels_ && use == Use::Lookup) last_use_ = ++cache.clock;
     return texels_;
   };
   if (auto texels = held_texels()) return texels;
@@ -110,7 +110,7 @@ std::shared_ptr<const TexelLevel> TexelPage::acquire() {
   std::lock_guard<std::mutex> lock(cache.mutex);
   if (made_before_) ++cache.reloads;
   made_before_ = true;
-  cache.hold(*this, made);
+  cache.hold(*this, made, use);
   cache.evict_over_limit(this);
   return made;
 }

@@ -23,8 +23,12 @@ class TexelPage {
 
   // Texels already made (a texture's level 0 as it is loaded) go into the cache.
   void install(TexelLevel texels);
-  // The level's texels, made first if they are not in memory. Thread safe.
-  std::shared_ptr<const TexelLevel> acquire();
+  // The level's texels, made first if they are not in memory. Thread safe. A lookup's acquire
+  // makes the level the most recently used; a `source` acquire (the finer level a mip level is
+  // filtered from) leaves it, or makes it the least recently used: otherwise a big level 0
+  // decoded to make one small level would push other textures' small levels out.
+  enum class Use { Lookup, Source };
+  std::shared_ptr<const TexelLevel> acquire(Use use = Use::Lookup);
   // Unique for the life of the process (never reused, unlike an address).
   uint64_t id() const { return id_; }
 

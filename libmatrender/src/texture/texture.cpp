@@ -187,7 +187,7 @@ std::shared_ptr<const Texture> Texture::with_texels(Decoded decoded, ColorSpace 
   Texture* const self = texture.get();
   for (size_t i = 1; i < mip_level_count(texture->width_, texture->height_); ++i)
     texture->levels_.push_back(
-        std::make_unique<TexelPage>([self, i] { return box_filtered_half(*self->levels_[i - 1]->acquire()); }, true));
+        std::make_unique<TexelPage>([self, i] { return box_filtered_half(*self->levels_[i - 1]->acquire(TexelPage::Use::Source)); }, true));
   texture->levels_.front()->install(std::move(decoded.level0));
   return texture;
 }

@@ -3,6 +3,7 @@
 // shaders_ref/cycles_render.py rebuilds there, rendered by Cycles into linear EXRs; and Blender's
 // own glTF importer (shaders_ref/blender_gltf_import.py). Blender is needed only at run time, and
 // only by the optional tests and the bench (docs/conventions.md, "Checked against Blender 3.4.1").
+#include <array>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -50,10 +51,18 @@ bool cycles_available(const std::string& blender = "blender");
 void render_with_cycles(const CyclesScene& scene, std::vector<CyclesRender>& renders, int threads,
                         const std::string& folder, const std::string& blender = "blender");
 
+// A Mapping node (type Point) in front of an image: uv' = R_z(rotation_z) (scale * uv) + location.
+struct BlenderUvMapping {
+  std::array<double, 2> location{0.0, 0.0};
+  double rotation_z = 0.0;
+  std::array<double, 2> scale{1.0, 1.0};
+};
+
 // One input of a Principled BSDF node as Blender's glTF importer left it.
 struct BlenderInput {
   std::vector<double> value;  // one number, or RGB
   bool linked = false;        // a node (an image texture, a math node) feeds it
+  std::optional<BlenderUvMapping> mapping;  // before the image that feeds it (KHR_texture_transform)
 };
 // Material name -> Principled input name -> input.
 using BlenderMaterials = std::map<std::string, std::map<std::string, BlenderInput>>;
