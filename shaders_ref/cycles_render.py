@@ -4,7 +4,8 @@
 #
 #   blender -b --factory-startup -noaudio --python-exit-code 1 -P cycles_render.py -- SCENE.json
 #
-# SCENE.json holds the mesh, material, lamps, camera and background, plus "threads", "renders"
+# SCENE.json holds the mesh (with UVs when a base colour image is given), material, lamps,
+# camera and background, plus "threads", "renders"
 # ([{"spp", "seed", "path"}]) and "timings_path", where {"<path>": seconds} is written. The
 # settings below switch off what would make Cycles' converged image differ from the unbiased
 # integral libmatrender computes (clamping, glossy blur, adaptive sampling, denoising) and keep
@@ -33,13 +34,17 @@ def add_mesh(scene, description, material):
     mesh.use_auto_smooth = True  # custom split normals need it in 3.4
     mesh.auto_smooth_angle = math.pi  # and no edge may be split by angle
     mesh.normals_split_custom_set_from_vertices([tuple(n) for n in description["normals"]])
+    if description.get("uvs"):
+        layer = mesh.uv_layers.new(name="UVMap")
+        for loop in mesh.loops:
+            layer.data[loop.index].uv = description["uvs"][loop.vertex_index]
     mesh.materials.append(material)
     obj = bpy.data.objects.new("object", mesh)
     obj.cycles.shadow_terminator_geometry_offset = description["shadow_terminator_geometry_offset"]
     scene.collection.objects.link(obj)
 
 
-def make_material(description, distribution):
+def make_material(description, distribution, base_color_image):
     material = bpy.data.materials.new("material")
     material.use_nodes = True
     bsdf = material.node_tree.nodes["Principled BSDF"]
@@ -47,6 +52,13 @@ def make_material(description, distribution):
     # Principled BSDF input name -> value, one per row of the material table.
     for name, value in description.items():
         bsdf.inputs[name].default_value = (*value, 1.0) if isinstance(value, list) else value
+    if base_color_image:
+        # An sRGB image on the active UV map, bilinear and repeating, as ours.
+        texture = material.node_tree.nodes.new("ShaderNodeTexImage")
+        texture.image = bpy.data.images.load(base_color_image)
+        texture.interpolation = "Linear"
+        texture.extension = "REPEAT"
+        material.node_tree.links.new(texture.outputs["Color"], bsdf.inputs["Base Color"])
     return material
 
 
@@ -152,7 +164,8 @@ def main():
         description = json.load(f)
     bpy.ops.wm.read_factory_settings(use_empty=True)
     scene = bpy.context.scene
-    add_mesh(scene, description["mesh"], make_material(description["material"], description["distribution"]))
+    material = make_material(description["material"], description["distribution"], description.get("base_color_image"))
+    add_mesh(scene, description["mesh"], material)
     add_lamps(scene, description["lamps"])
     add_camera(scene, description["camera"])
     set_world(scene, description["background"], description.get("environment"))

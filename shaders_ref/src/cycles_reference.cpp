@@ -78,8 +78,23 @@ json describe(const CyclesScene& scene) {
   for (const glm::vec3& n : scene.mesh.normals) normals.push_back({n.x, n.y, n.z});
   for (const glm::uvec3& t : scene.mesh.triangles) triangles.push_back({t.x, t.y, t.z});
   const matrender::Material& m = scene.material;
-  if (m.textured() || m.normal_map)
-    throw std::invalid_argument("render_with_cycles: textured materials are not passed to Blender");
+  // One texture is passed: a base colour image file under a white factor, on the mesh's UVs.
+  const matrender::ParameterValue& base = m[matgeom::MaterialParameter::BaseColor];
+  json base_color_image = nullptr;
+  if (base.texture) {
+    if (base.value != glm::vec3(1.0f) || !(base.uv_transform == matgeom::UvAffine{}) ||
+        !std::filesystem::exists(base.texture->name()) || scene.mesh.uvs.size() != scene.mesh.positions.size())
+      throw std::invalid_argument("render_with_cycles: a base colour texture must be an image file under a white "
+                                  "factor, untransformed, on a mesh with one UV per vertex");
+    base_color_image = base.texture->name();
+  }
+  matrender::Material untextured = m;
+  untextured[matgeom::MaterialParameter::BaseColor].texture = nullptr;
+  if (untextured.textured() || m.normal_map)
+    throw std::invalid_argument("render_with_cycles: textures other than the base colour are not passed to Blender");
+  json uvs = json::array();
+  if (base.texture)
+    for (const glm::vec2& uv : scene.mesh.uvs) uvs.push_back({uv.x, uv.y});
   if (scene.mesh.normals.size() != scene.mesh.positions.size())
     throw std::invalid_argument("render_with_cycles: the mesh needs one normal per vertex");
   json lamps = json::array();
@@ -94,8 +109,10 @@ json describe(const CyclesScene& scene) {
            {{"positions", positions},
             {"normals", normals},
             {"triangles", triangles},
+            {"uvs", uvs},
             {"shadow_terminator_geometry_offset", scene.shadow_terminator_geometry_offset}}},
           {"material", principled_inputs(m)},
+          {"base_color_image", base_color_image},
           {"distribution", m.distribution == matrender::SpecularDistribution::MultiscatterGGX ? "MULTI_GGX" : "GGX"},
           {"lamps", lamps},
           {"camera",

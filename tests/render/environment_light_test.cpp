@@ -271,3 +271,31 @@ TEST_CASE("A Lambertian plane under a linear map converges to a (c0 + 2/3 c.n), 
     }
   }
 }
+
+TEST_CASE("A map black but for one very bright texel, at the pole or the horizon, gives finite pixels", "[render]") {
+  // The texel at row 0 sits where sin(theta) nearly vanishes, so its sampling density is tiny
+  // and its weight huge; the one on the horizon is the common sun. Glossy, mirror and glass
+  // surfaces see it through every kind of bounce.
+  for (const int row : {0, 16}) {
+    const TexturePtr map = map_of(64, 32, [row](int x, int y) {
+      return x == 20 && y == row ? glm::vec3(1e6f, 5e5f, 2e5f) : glm::vec3(0.0f);
+    });
+    Scene scene;
+    Material glossy, glass, mirror;
+    glossy.set(MaterialParameter::Roughness, 0.2f);
+    glass.set(MaterialParameter::Transmission, 1.0f).set(MaterialParameter::Roughness, 0.0f);
+    mirror.set(MaterialParameter::Metallic, 1.0f).set(MaterialParameter::Roughness, 0.0f);
+    scene.add_mesh(test_scenes::uv_sphere(0.4, 16, {-0.5, 0.0, 0.5}), {scene.add_material(glossy)});
+    scene.add_mesh(test_scenes::uv_sphere(0.4, 16, {0.5, 0.0, 0.5}), {scene.add_material(glass)});
+    scene.add_mesh(test_scenes::horizontal_square(4.0), {scene.add_material(mirror)});
+    scene.set_background(EnvironmentMap{map, 1.0, 0.3});
+    RenderSettings settings;
+    settings.samples_per_pixel = 8;
+    FrameBuffers frame;
+    const RenderStats stats =
+        render(scene, Camera::look_at({0.0, -3.0, 1.0}, {0.0, 0.0, 0.4}, {0, 0, 1}, 0.8, 24, 24), settings, frame);
+    CAPTURE(row);
+    CHECK(test_scenes::all_finite(frame.color));
+    CHECK(stats.discarded_samples == 0);
+  }
+}

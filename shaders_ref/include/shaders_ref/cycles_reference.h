@@ -24,7 +24,8 @@ struct CyclesEnvironment {
   double rotation_z = 0.0;  // radians
 };
 
-// What Blender rebuilds: one smooth mesh (vertex normals) in one untextured Principled material,
+// What Blender rebuilds: one smooth mesh (vertex normals) in one Principled material (constant
+// inputs, and at most a base colour image file on the mesh's UVs),
 // lamps of every kind, a camera and a uniform background or an environment map.
 struct CyclesScene {
   matgeom::TriangleMesh mesh;
