@@ -8,6 +8,8 @@
 #include "matgeom/mesh.h"
 #include "matrender/frame.h"
 #include "matrender/material.h"
+#include "matrender/render.h"
+#include "matrender/scene.h"
 
 namespace test_scenes {
 
@@ -101,6 +103,14 @@ inline bool all_finite(const std::vector<float>& values) {
   for (float v : values)
     if (!std::isfinite(v)) return false;
   return true;
+}
+
+// Renders and tells whether every pixel came out finite with no sample discarded.
+inline bool renders_finite(matrender::Scene& scene, const matrender::Camera& camera,
+                           const matrender::RenderSettings& settings) {
+  matrender::FrameBuffers frame;
+  const matrender::RenderStats stats = matrender::render(scene, camera, settings, frame);
+  return all_finite(frame.color) && stats.discarded_samples == 0;
 }
 
 }  // namespace test_scenes
