@@ -18,6 +18,9 @@
 #ifndef MATPREDICT_GLTF_IMPORT_SCRIPT
 #error "MATPREDICT_GLTF_IMPORT_SCRIPT must name shaders_ref/blender_gltf_import.py"
 #endif
+#ifndef MATPREDICT_UDIM_PROBE_SCRIPT
+#error "MATPREDICT_UDIM_PROBE_SCRIPT must name shaders_ref/blender_udim_probe.py"
+#endif
 
 namespace shaders_ref {
 namespace {
@@ -192,6 +195,24 @@ BlenderMaterials import_gltf_with_blender(const std::string& gltf_path, const st
       out.mapping = BlenderUvMapping{{location.at(0), location.at(1)}, mapping.at("rotation_z").get<double>(),
                                      {scale.at(0), scale.at(1)}};
     }
+  return result;
+}
+
+std::vector<UdimProbe> probe_udim_with_blender(const std::string& folder, const std::string& blender) {
+  std::filesystem::create_directories(folder);
+  const std::string out_path = folder + "/udim_probe.json", log_path = folder + "/blender.log";
+  const std::string command = quoted(blender) + " -b --factory-startup -noaudio --python-exit-code 1 -P " +
+                              quoted(MATPREDICT_UDIM_PROBE_SCRIPT) + " -- " + quoted(folder) + " " + quoted(out_path) +
+                              " > " + quoted(log_path) + " 2>&1";
+  if (std::system(command.c_str()) != 0) throw std::runtime_error("Blender's UDIM probe failed; see " + log_path);
+  json probes;
+  std::ifstream(out_path) >> probes;
+  std::vector<UdimProbe> result;
+  for (const auto& [name, probe] : probes.items()) {
+    const auto uv = probe.at("uv").get<std::vector<double>>();
+    const auto rgb = probe.at("rgb").get<std::vector<double>>();
+    result.push_back({name, glm::vec2(uv.at(0), uv.at(1)), glm::vec3(rgb.at(0), rgb.at(1), rgb.at(2))});
+  }
   return result;
 }
 

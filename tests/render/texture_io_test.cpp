@@ -223,9 +223,14 @@ TEST_CASE("A UDIM set looks each UV up in its own tile, on both sides of a borde
   CHECK(set->sample({1.001f, 0.5f}) == glm::vec4(0.0f, 1.0f, 0.0f, 1.0f));
   CHECK(set->sample({0.5f, 1.001f}) == glm::vec4(0.0f, 0.0f, 1.0f, 1.0f));
   CHECK(set->loaded_udim_tiles() == 3);
-  // A tile the set does not have, and UVs left of the first column: black.
-  CHECK(set->sample({2.5f, 0.5f}) == glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
-  CHECK(set->sample({-0.5f, 0.5f}) == glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+  // As Cycles 3.4's svm_node_tex_image: u and v in (-1, 0) truncate to tile 1001 (wrapped); a
+  // tile the set does not have, u left of -1 and u past 10 read the missing-texture magenta.
+  CHECK(set->sample({-0.5f, 0.5f}) == glm::vec4(1.0f, 0.0f, 0.0f, 1.0f));
+  CHECK(set->sample({0.5f, -0.5f}) == glm::vec4(1.0f, 0.0f, 0.0f, 1.0f));
+  const glm::vec4 magenta(1.0f, 0.0f, 1.0f, 1.0f);
+  CHECK(set->sample({2.5f, 0.5f}) == magenta);
+  CHECK(set->sample({-1.5f, 0.5f}) == magenta);
+  CHECK(set->sample({10.5f, 0.5f}) == magenta);
   // A pattern with no tiles, and a tile that is no image, are errors naming the files.
   CHECK_THROWS_WITH(Texture::load((dir / "oak.<UDIM>.png").string(), ColorSpace::SRGB),
                     Catch::Contains("oak.<UDIM>.png: no UDIM tile files (oak.1001.png, ...) found"));

@@ -40,7 +40,9 @@ class Texture {
   // with a four-digit tile number there (name.1001.png, name.1002.png, ...), tile 1001 + floor(u)
   // + 10 floor(v) covering [floor(u), floor(u) + 1) x [floor(v), floor(v) + 1), as Blender's UDIM
   // images and the UV pass's tiles; every tile's header is read here, its pixels when a lookup
-  // first lands in it. UVs outside the tiles read black.
+  // first lands in it. The tile is Cycles 3.4's (svm_node_tex_image): u and v truncated toward
+  // zero, so (-1, 0) still reads tile 1001's first column or row, wrapped; UVs in a tile the set
+  // lacks, or left of u = -1 or beyond u = 10, read Cycles' missing-texture magenta (1, 0, 1, 1).
   static std::shared_ptr<const Texture> load(const std::string& path, ColorSpace space,
                                              Wrap wrap = Wrap::Repeat);
   // From 8-bit pixels in memory, rows top to bottom.

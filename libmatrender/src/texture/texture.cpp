@@ -310,12 +310,15 @@ size_t Texture::loaded_udim_tiles() const {
 }
 
 glm::vec4 Texture::sample_udim(glm::vec2 uv, bool unassociate, float footprint) const {
-  const float fu = std::floor(uv.x), fv = std::floor(uv.y);
-  if (!(fu >= 0.0f && fu < 10.0f && fv >= 0.0f && fv < 1000.0f)) return glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  // Cycles' missing-texture colour (util/texture.h, TEX_IMAGE_MISSING_*), linear.
+  const glm::vec4 missing(1.0f, 0.0f, 1.0f, 1.0f);
+  // Truncated toward zero, as Cycles casts them (svm_node_tex_image); 9999 rows bound the number.
+  const float fu = std::trunc(uv.x), fv = std::trunc(uv.y);
+  if (!(fu >= 0.0f && fu < 10.0f && fv >= 0.0f && fv < 9999.0f)) return missing;
   const int number = 1001 + static_cast<int>(fu) + 10 * static_cast<int>(fv);
   const auto it = std::lower_bound(udim_.begin(), udim_.end(), number,
                                    [](const auto& tile, int n) { return tile->number < n; });
-  if (it == udim_.end() || (*it)->number != number) return glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  if (it == udim_.end() || (*it)->number != number) return missing;
   UdimTile& tile = **it;
   std::call_once(tile.loaded, [&] { std::atomic_store(&tile.texture, load(tile.path, space_, wrap_)); });
   return tile.texture->sample(uv - glm::vec2(fu, fv), unassociate, footprint);

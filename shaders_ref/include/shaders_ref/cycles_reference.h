@@ -73,6 +73,16 @@ using BlenderMaterials = std::map<std::string, std::map<std::string, BlenderInpu
 BlenderMaterials import_gltf_with_blender(const std::string& gltf_path, const std::string& folder,
                                           const std::string& blender = "blender");
 
+// What Cycles shows at one UV of a UDIM set of tiles 1001 (red) and 1011 (blue).
+struct UdimProbe {
+  std::string name;
+  glm::vec2 uv;
+  glm::vec3 cycles_rgb;
+};
+// Renders shaders_ref/blender_udim_probe.py's quads; the tiles are left in `folder` as
+// probe.<UDIM>.png. Throws std::runtime_error naming Blender's log on failure.
+std::vector<UdimProbe> probe_udim_with_blender(const std::string& folder, const std::string& blender = "blender");
+
 // Linear RGB of an EXR, row 0 at the top; throws if the size differs.
 std::vector<float> read_rgb_exr(const std::string& path, int width, int height);
 
