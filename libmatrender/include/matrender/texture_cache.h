@@ -26,7 +26,7 @@ struct TextureCacheStats {
 // Half of the memory this process can have (matgeom::memory_limit_bytes): dozens of 4k maps
 // with their mip levels fit on a 16 GiB machine without anything being dropped.
 uint64_t default_texture_memory_limit();
-// 0 restores the default. A lower limit takes effect at the next level the cache makes.
+// 0 restores the default. A lower limit drops what no longer fits at once.
 void set_texture_memory_limit(uint64_t bytes);
 
 TextureCacheStats texture_cache_stats();
