@@ -102,6 +102,16 @@ tinygltf::Primitive make_primitive(tinygltf::Model& model, const TriangleMesh& p
 
 // Textures are (image, wrap) pairs; each distinct pair is written once. Images are the asset's,
 // then the ones the writer adds (indices from the asset's image count on).
+// KHR_texture_transform's object for a transform that is not the identity (the inverse of
+// read_gltf's read_texture_transform).
+tinygltf::Value transform_extension(const TextureTransform& transform) {
+  tinygltf::Value::Object object;
+  object["offset"] = tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(transform.offset.x), tinygltf::Value(transform.offset.y)});
+  object["rotation"] = tinygltf::Value(transform.rotation);
+  object["scale"] = tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(transform.scale.x), tinygltf::Value(transform.scale.y)});
+  return tinygltf::Value(object);
+}
+
 class TextureTable {
  public:
   TextureTable(tinygltf::Model& model, const std::vector<ImagePixels>& images) : model_(model), images_(images) {}
@@ -123,6 +133,15 @@ class TextureTable {
     }
     return texture(found->second, desc.wrap, what);
   }
+
+  // Writes a textureInfo's placement into its extensions (nothing for the identity), and
+  // remembers that the file uses KHR_texture_transform.
+  void place(const TextureTransform& transform, tinygltf::ExtensionMap& extensions) {
+    if (transform.is_identity()) return;
+    extensions[gltf::kTextureTransform] = transform_extension(transform);
+    transforms_placed_ = true;
+  }
+  bool transforms_placed() const { return transforms_placed_; }
 
   int texture(int image, TextureWrap wrap, const std::string& what) {
     if (image < 0) return -1;
@@ -187,24 +206,8 @@ class TextureTable {
   std::map<std::pair<int, TextureWrap>, int> textures_;
   std::map<int, int> gltf_images_;
   std::map<TextureWrap, int> samplers_;
+  bool transforms_placed_ = false;
 };
-
-// KHR_texture_transform's object for a transform that is not the identity (the inverse of
-// read_gltf's read_texture_transform).
-tinygltf::Value transform_extension(const TextureTransform& transform) {
-  tinygltf::Value::Object object;
-  object["offset"] = tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(transform.offset.x), tinygltf::Value(transform.offset.y)});
-  object["rotation"] = tinygltf::Value(transform.rotation);
-  object["scale"] = tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(transform.scale.x), tinygltf::Value(transform.scale.y)});
-  return tinygltf::Value(object);
-}
-
-// Records a textureInfo's transform in its extensions, and that the file uses the extension.
-void write_transform(const TextureTransform& transform, tinygltf::ExtensionMap& extensions, bool& used) {
-  if (transform.is_identity()) return;
-  extensions[gltf::kTextureTransform] = transform_extension(transform);
-  used = true;
-}
 
 // The one transform of inputs glTF reads through one textureInfo (metallic and roughness, base
 // colour and its alpha); they cannot differ there.
@@ -226,7 +229,7 @@ TextureTransform shared_transform(const MaterialDesc& desc, std::initializer_lis
 // A textureInfo object for image `image` of a scalar that glTF reads from `channel`; the
 // writer does not repack single-channel inputs, so another channel is an error.
 tinygltf::Value::Object texture_info(const MaterialDesc& desc, MaterialParameter p, int channel, TextureTable& textures,
-                                     const std::string& what, bool& transform_used) {
+                                     const std::string& what) {
   const MaterialInput& input = desc[p];
   if (input.channel != channel)
     throw std::invalid_argument("write_gltf: " + what + " " + material_parameter(p).name + " reads image channel " +
@@ -235,7 +238,7 @@ tinygltf::Value::Object texture_info(const MaterialDesc& desc, MaterialParameter
   tinygltf::Value::Object info;
   info["index"] = tinygltf::Value(textures.texture(input.image, desc.wrap, what));
   tinygltf::ExtensionMap extensions;
-  write_transform(input.transform, extensions, transform_used);
+  textures.place(input.transform, extensions);
   if (!extensions.empty()) info["extensions"] = tinygltf::Value(tinygltf::Value::Object(extensions.begin(), extensions.end()));
   return info;
 }
@@ -244,30 +247,28 @@ tinygltf::Value::Object texture_info(const MaterialDesc& desc, MaterialParameter
 // read_extension_input.
 void write_extension_input(const MaterialDesc& desc, MaterialParameter p, const char* factor_member,
                            const char* texture_member, int channel, TextureTable& textures, const std::string& what,
-                           tinygltf::Value::Object& extension, bool& transform_used) {
+                           tinygltf::Value::Object& extension) {
   extension[factor_member] = tinygltf::Value(desc.scalar(p));
   if (desc[p].image >= 0)
-    extension[texture_member] = tinygltf::Value(texture_info(desc, p, channel, textures, what, transform_used));
+    extension[texture_member] = tinygltf::Value(texture_info(desc, p, channel, textures, what));
 }
 
 // KHR_materials_clearcoat, the inverse of read_gltf's read_clearcoat.
-tinygltf::Value::Object clearcoat_extension(const MaterialDesc& desc, TextureTable& textures, const std::string& what,
-                                            bool& transform_used) {
+tinygltf::Value::Object clearcoat_extension(const MaterialDesc& desc, TextureTable& textures, const std::string& what) {
   tinygltf::Value::Object extension;
   write_extension_input(desc, MaterialParameter::Clearcoat, "clearcoatFactor", "clearcoatTexture",
-                        gltf::kClearcoatChannel, textures, what, extension, transform_used);
+                        gltf::kClearcoatChannel, textures, what, extension);
   write_extension_input(desc, MaterialParameter::ClearcoatRoughness, "clearcoatRoughnessFactor",
-                        "clearcoatRoughnessTexture", gltf::kClearcoatRoughnessChannel, textures, what, extension,
-                        transform_used);
+                        "clearcoatRoughnessTexture", gltf::kClearcoatRoughnessChannel, textures, what, extension);
   return extension;
 }
 
 // KHR_materials_transmission, the inverse of read_gltf's read_transmission.
 tinygltf::Value::Object transmission_extension(const MaterialDesc& desc, TextureTable& textures,
-                                               const std::string& what, bool& transform_used) {
+                                               const std::string& what) {
   tinygltf::Value::Object extension;
   write_extension_input(desc, MaterialParameter::Transmission, "transmissionFactor", "transmissionTexture",
-                        gltf::kTransmissionChannel, textures, what, extension, transform_used);
+                        gltf::kTransmissionChannel, textures, what, extension);
   return extension;
 }
 
@@ -287,8 +288,7 @@ void write_opacity(const MaterialDesc& desc, const std::string& what, tinygltf::
 }
 
 // The inverse of read_gltf's mapping (docs/conventions.md: Blender's glTF importer).
-// transform_used: set when a textureInfo has a KHR_texture_transform.
-tinygltf::Material make_material(const MaterialDesc& desc, TextureTable& textures, bool& transform_used) {
+tinygltf::Material make_material(const MaterialDesc& desc, TextureTable& textures) {
   tinygltf::Material material;
   material.name = desc.name;
   tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
@@ -299,19 +299,17 @@ tinygltf::Material make_material(const MaterialDesc& desc, TextureTable& texture
   pbr.roughnessFactor = desc.scalar(P::Roughness);
   const std::string what = "material " + desc.name;
   pbr.baseColorTexture.index = textures.texture(desc[P::BaseColor].image, desc.wrap, what);
-  write_transform(shared_transform(desc, {P::BaseColor, P::Alpha}, what), pbr.baseColorTexture.extensions,
-                  transform_used);
+  textures.place(shared_transform(desc, {P::BaseColor, P::Alpha}, what), pbr.baseColorTexture.extensions);
   write_opacity(desc, what, material);
   pbr.metallicRoughnessTexture.index = textures.metallic_roughness_texture(desc, what);
-  write_transform(shared_transform(desc, {P::Roughness, P::Metallic}, what), pbr.metallicRoughnessTexture.extensions,
-                  transform_used);
+  textures.place(shared_transform(desc, {P::Roughness, P::Metallic}, what), pbr.metallicRoughnessTexture.extensions);
   material.normalTexture.index = textures.texture(desc.normal_image, desc.wrap, what);
-  if (desc.normal_image >= 0) write_transform(desc.normal_transform, material.normalTexture.extensions, transform_used);
+  if (desc.normal_image >= 0) textures.place(desc.normal_transform, material.normalTexture.extensions);
   material.normalTexture.scale = desc.normal_strength;
   const glm::dvec3 emission = desc.color(P::Emission);
   material.emissiveFactor = {emission.r, emission.g, emission.b};
   material.emissiveTexture.index = textures.texture(desc[P::Emission].image, desc.wrap, what);
-  write_transform(shared_transform(desc, {P::Emission}, what), material.emissiveTexture.extensions, transform_used);
+  textures.place(shared_transform(desc, {P::Emission}, what), material.emissiveTexture.extensions);
   // glTF's factor stops at 1; the rest is the extension's (Blender's exporter writes it the same way).
   if (desc.scalar(P::EmissionStrength) != 1.0) {
     tinygltf::Value::Object strength;
@@ -324,11 +322,10 @@ tinygltf::Material make_material(const MaterialDesc& desc, TextureTable& texture
     material.extensions[gltf::kIor] = tinygltf::Value(ior);
   }
   if (desc.scalar(P::Clearcoat) != 0.0 || desc[P::Clearcoat].image >= 0)
-    material.extensions[gltf::kClearcoat] = tinygltf::Value(clearcoat_extension(desc, textures, what, transform_used));
+    material.extensions[gltf::kClearcoat] = tinygltf::Value(clearcoat_extension(desc, textures, what));
   // Blender's importer ignores the extension's texture when the factor is 0.
   if (desc.scalar(P::Transmission) != 0.0)
-    material.extensions[gltf::kTransmission] =
-        tinygltf::Value(transmission_extension(desc, textures, what, transform_used));
+    material.extensions[gltf::kTransmission] = tinygltf::Value(transmission_extension(desc, textures, what));
   return material;
 }
 
@@ -343,10 +340,8 @@ tinygltf::Model make_model(const ObjectAsset& asset) {
   model.asset.generator = "matpredict";
   model.buffers.resize(1);
   TextureTable textures(model, asset.images);
-  bool transform_used = false;
-  for (const MaterialDesc& desc : asset.materials)
-    model.materials.push_back(make_material(desc, textures, transform_used));
-  if (transform_used) model.extensionsUsed.push_back(gltf::kTextureTransform);
+  for (const MaterialDesc& desc : asset.materials) model.materials.push_back(make_material(desc, textures));
+  if (textures.transforms_placed()) model.extensionsUsed.push_back(gltf::kTextureTransform);
   for (const char* extension : {gltf::kEmissiveStrength, gltf::kIor, gltf::kClearcoat, gltf::kTransmission})
     for (const tinygltf::Material& material : model.materials)
       if (material.extensions.count(extension)) {

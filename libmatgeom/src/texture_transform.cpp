@@ -5,15 +5,6 @@
 
 namespace matgeom {
 
-float UvAffine::stretch() const {
-  // Singular values of a 2 x 2 matrix [a b; c d]: sqrt of the eigenvalues of M^T M, the larger
-  // being (s + sqrt(s^2 - 4 det^2)) / 2 with s = a^2 + b^2 + c^2 + d^2.
-  const float a = linear[0][0], c = linear[0][1], b = linear[1][0], d = linear[1][1];
-  const float s = a * a + b * b + c * c + d * d;
-  const float det = a * d - b * c;
-  return std::sqrt(0.5f * (s + std::sqrt(std::max(0.0f, s * s - 4.0f * det * det))));
-}
-
 UvAffine uv_affine(const TextureTransform& t) {
   // In glTF's UVs (v_g = 1 - v): u' = sx cos r u + sy sin r v_g + ox, v_g' = -sx sin r u + sy cos r v_g + oy.
   // With v_g = 1 - v and v' = 1 - v_g': u' = sx cos r u - sy sin r v + (ox + sy sin r),
@@ -25,6 +16,7 @@ UvAffine uv_affine(const TextureTransform& t) {
   m.linear[1] = glm::vec2(static_cast<float>(-t.scale.y * s), static_cast<float>(t.scale.y * c));
   m.translation = glm::vec2(static_cast<float>(t.offset.x + t.scale.y * s),
                             static_cast<float>(1.0 - t.offset.y - t.scale.y * c));
+  m.stretch = static_cast<float>(std::max(std::abs(t.scale.x), std::abs(t.scale.y)));
   return m;
 }
 

@@ -129,6 +129,16 @@ json describe(const CyclesScene& scene) {
 
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
+// Runs `script` in headless Blender with `arguments` after "--", its output into `log_path`;
+// throws "<failure>; see <log_path>" when Blender or the script fails.
+void run_blender_script(const std::string& blender, const std::string& script, const std::vector<std::string>& arguments,
+                        const std::string& log_path, const std::string& failure) {
+  std::string command = quoted(blender) + " -b --factory-startup -noaudio --python-exit-code 1 -P " + quoted(script) + " --";
+  for (const std::string& argument : arguments) command += " " + quoted(argument);
+  command += " > " + quoted(log_path) + " 2>&1";
+  if (std::system(command.c_str()) != 0) throw std::runtime_error(failure + "; see " + log_path);
+}
+
 }  // namespace
 
 bool cycles_available(const std::string& blender) {
@@ -155,11 +165,7 @@ void render_with_cycles(const CyclesScene& scene, std::vector<CyclesRender>& ren
   const std::string scene_path = folder + "/scene.json", log_path = folder + "/blender.log";
   std::ofstream(scene_path) << description.dump();
 
-  const std::string command = quoted(blender) + " -b --factory-startup -noaudio --python-exit-code 1 -P " +
-                              quoted(MATPREDICT_CYCLES_SCRIPT) + " -- " + quoted(scene_path) + " > " +
-                              quoted(log_path) + " 2>&1";
-  if (std::system(command.c_str()) != 0)
-    throw std::runtime_error("Blender failed to render " + scene_path + "; see " + log_path);
+  run_blender_script(blender, MATPREDICT_CYCLES_SCRIPT, {scene_path}, log_path, "Blender failed to render " + scene_path);
   json timings;
   std::ifstream(folder + "/cycles_timings.json") >> timings;
   for (CyclesRender& render : renders) render.seconds = timings.at(render.exr_path).get<double>();
@@ -169,11 +175,8 @@ BlenderMaterials import_gltf_with_blender(const std::string& gltf_path, const st
                                           const std::string& blender) {
   std::filesystem::create_directories(folder);
   const std::string out_path = folder + "/blender_materials.json", log_path = folder + "/blender.log";
-  const std::string command = quoted(blender) + " -b --factory-startup -noaudio --python-exit-code 1 -P " +
-                              quoted(MATPREDICT_GLTF_IMPORT_SCRIPT) + " -- " + quoted(gltf_path) + " " +
-                              quoted(out_path) + " > " + quoted(log_path) + " 2>&1";
-  if (std::system(command.c_str()) != 0)
-    throw std::runtime_error("Blender failed to import " + gltf_path + "; see " + log_path);
+  run_blender_script(blender, MATPREDICT_GLTF_IMPORT_SCRIPT, {gltf_path, out_path}, log_path,
+                     "Blender failed to import " + gltf_path);
   json materials;
   std::ifstream(out_path) >> materials;
   BlenderMaterials result;
@@ -201,10 +204,7 @@ BlenderMaterials import_gltf_with_blender(const std::string& gltf_path, const st
 std::vector<UdimProbe> probe_udim_with_blender(const std::string& folder, const std::string& blender) {
   std::filesystem::create_directories(folder);
   const std::string out_path = folder + "/udim_probe.json", log_path = folder + "/blender.log";
-  const std::string command = quoted(blender) + " -b --factory-startup -noaudio --python-exit-code 1 -P " +
-                              quoted(MATPREDICT_UDIM_PROBE_SCRIPT) + " -- " + quoted(folder) + " " + quoted(out_path) +
-                              " > " + quoted(log_path) + " 2>&1";
-  if (std::system(command.c_str()) != 0) throw std::runtime_error("Blender's UDIM probe failed; see " + log_path);
+  run_blender_script(blender, MATPREDICT_UDIM_PROBE_SCRIPT, {folder, out_path}, log_path, "Blender's UDIM probe failed");
   json probes;
   std::ifstream(out_path) >> probes;
   std::vector<UdimProbe> result;

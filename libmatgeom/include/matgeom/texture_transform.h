@@ -24,11 +24,12 @@ struct TextureTransform {
 struct UvAffine {
   glm::mat2 linear{1.0f};
   glm::vec2 translation{0.0f};
+  // How much wider a footprint of the UVs becomes: the larger singular value of `linear`, which
+  // for a rotation times a scale is the larger |scale|.
+  float stretch = 1.0f;
 
   glm::vec2 apply(glm::vec2 uv) const { return linear * uv + translation; }
   bool operator==(const UvAffine& other) const { return linear == other.linear && translation == other.translation; }
-  // How much wider a footprint of the UVs becomes: the larger singular value of `linear`.
-  float stretch() const;
 };
 
 UvAffine uv_affine(const TextureTransform& transform);

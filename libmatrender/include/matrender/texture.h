@@ -81,6 +81,7 @@ class Texture {
   static Decoded decode_bytes(int width, int height, int channels, const uint8_t* pixels, ColorSpace space,
                               const std::string& name);
   static Decoded decode_file(const std::string& path, ColorSpace space);
+  static void associate_alpha(Decoded& decoded);
   // A texture of these texels. `remake`, when given, makes level 0 again after the texture
   // cache dropped it; without it level 0 stays in memory.
   static std::shared_ptr<const Texture> with_texels(Decoded decoded, ColorSpace space, Wrap wrap, std::string name,

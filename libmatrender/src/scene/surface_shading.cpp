@@ -42,7 +42,7 @@ void look_up_textures(const Material& material, glm::vec2 uv, float footprint, P
     if (!p.texture) continue;
     if (!looked_up || p.texture != looked_up->texture || !(p.uv_transform == looked_up->uv_transform)) {
       texel = p.texture->sample(p.uv_transform.apply(uv), p.texture.get() == alpha_source,
-                                footprint * p.uv_transform.stretch());
+                                footprint * p.uv_transform.stretch);
       looked_up = &p;
     }
     inputs.set(info.id, info.kind == matgeom::ParameterKind::Color ? p.value * glm::vec3(texel)

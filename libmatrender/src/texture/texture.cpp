@@ -55,14 +55,11 @@ struct Texture::Decoded {
   bool associated_alpha = false;              // premultiplied at load
 };
 
-namespace {
-
 // Premultiplies an sRGB image with alpha on its encoded values (Blender's Straight alpha mode).
-void associate_alpha(TexelLevel& level) {
-  for (glm::vec4& t : level.floats) t = glm::vec4(glm::vec3(t) * t.w, t.w);
+void Texture::associate_alpha(Decoded& decoded) {
+  for (glm::vec4& t : decoded.level0.floats) t = glm::vec4(glm::vec3(t) * t.w, t.w);
+  decoded.associated_alpha = true;
 }
-
-}  // namespace
 
 Texture::~Texture() = default;
 
@@ -102,8 +99,8 @@ Texture::Decoded Texture::decode_bytes(int width, int height, int channels, cons
     std::vector<float> values(static_cast<size_t>(width) * height * channels);
     for (size_t i = 0; i < values.size(); ++i) values[i] = pixels[i] / 255.0f;
     Decoded decoded = decode_floats(width, height, channels, values.data(), name);
-    associate_alpha(decoded.level0);
-    decoded.convert_srgb_after_filtering = decoded.associated_alpha = true;
+    associate_alpha(decoded);
+    decoded.convert_srgb_after_filtering = true;
     return decoded;
   }
   // Kept as bytes, expanded to RGBA (grey to RGB, alpha 255 when absent), bottom row first.
@@ -155,10 +152,7 @@ Texture::Decoded Texture::decode_file(const std::string& path, ColorSpace space)
     // As for 8-bit images: interpolate encoded values, decode after filtering.
     Decoded decoded = decode_floats(spec.width, spec.height, channels, pixels.data(), path);
     decoded.convert_srgb_after_filtering = true;
-    if (channels == 4) {
-      associate_alpha(decoded.level0);
-      decoded.associated_alpha = true;
-    }
+    if (channels == 4) associate_alpha(decoded);
     return decoded;
   }
   if (space == ColorSpace::SRGB) {
