@@ -1,6 +1,8 @@
 # Imports a glTF file with the glTF importer Blender 3.4 ships and writes, for every material it
-# made, the Principled BSDF's inputs: each input's default value, whether a node feeds it, and
-# the Mapping node (KHR_texture_transform) in front of the image that feeds it, if any.
+# made, the inputs of its Principled BSDF and of the Velvet BSDF added to it (KHR_materials_sheen),
+# if any: each input's default value, whether a node feeds it, and the Mapping node
+# (KHR_texture_transform) in front of the image that feeds it, if any. A velvet counts only where
+# an Add Shader joins it to the Principled BSDF on the way to the Material Output.
 # The optional tests compare this with what read_gltf makes of the same file.
 #
 #   blender -b --factory-startup -noaudio --python-exit-code 1 -P blender_gltf_import.py -- FILE.glb OUT.json
@@ -48,12 +50,9 @@ def uv_mapping(socket):
     }
 
 
-def principled_inputs(material):
-    nodes = [n for n in material.node_tree.nodes if n.type == "BSDF_PRINCIPLED"]
-    if len(nodes) != 1:
-        raise RuntimeError(f"material {material.name}: {len(nodes)} Principled BSDF nodes")
+def node_inputs(node):
     inputs = {}
-    for socket in nodes[0].inputs:
+    for socket in node.inputs:
         if not hasattr(socket, "default_value"):
             continue
         value = socket.default_value
@@ -63,13 +62,41 @@ def principled_inputs(material):
     return inputs
 
 
+def only_node(material, node_type, allow_none=False):
+    nodes = [n for n in material.node_tree.nodes if n.type == node_type]
+    if len(nodes) > 1 or (not nodes and not allow_none):
+        raise RuntimeError(f"material {material.name}: {len(nodes)} {node_type} nodes")
+    return nodes[0] if nodes else None
+
+
+def feeds_output_through_add(node, principled, output):
+    """node and principled are the two inputs of an Add Shader linked to the output's Surface."""
+    surface = output.inputs["Surface"]
+    if not surface.is_linked or surface.links[0].from_node.type != "ADD_SHADER":
+        return False
+    add = surface.links[0].from_node
+    sources = {link.from_node.name for socket in add.inputs for link in socket.links}
+    return sources == {node.name, principled.name}
+
+
+def material_nodes(material):
+    principled = only_node(material, "BSDF_PRINCIPLED")
+    nodes = {"Principled BSDF": node_inputs(principled)}
+    velvet = only_node(material, "BSDF_VELVET", allow_none=True)
+    if velvet is not None:
+        if not feeds_output_through_add(velvet, principled, only_node(material, "OUTPUT_MATERIAL")):
+            raise RuntimeError(f"material {material.name}: the Velvet BSDF is not added to the Principled BSDF")
+        nodes["Velvet BSDF"] = node_inputs(velvet)
+    return nodes
+
+
 def main():
     arguments = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
     if len(arguments) != 2:
         sys.exit("usage: blender -b --factory-startup -P blender_gltf_import.py -- FILE.glb OUT.json")
     bpy.ops.wm.read_factory_settings(use_empty=True)
     bpy.ops.import_scene.gltf(filepath=arguments[0])
-    materials = {m.name: principled_inputs(m) for m in bpy.data.materials if m.use_nodes}
+    materials = {m.name: material_nodes(m) for m in bpy.data.materials if m.use_nodes}
     with open(arguments[1], "w") as f:
         json.dump(materials, f)
 

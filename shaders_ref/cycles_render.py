@@ -45,21 +45,35 @@ def add_mesh(scene, description, material):
 
 
 def make_material(description, distribution, base_color_image):
+    """description: node name -> {input name -> value}, one input per row of the material table."""
     material = bpy.data.materials.new("material")
     material.use_nodes = True
-    bsdf = material.node_tree.nodes["Principled BSDF"]
+    nodes, links = material.node_tree.nodes, material.node_tree.links
+    bsdf = nodes["Principled BSDF"]
     bsdf.distribution = distribution  # "GGX" (single scatter) or "MULTI_GGX", as ours
-    # Principled BSDF input name -> value, one per row of the material table.
-    for name, value in description.items():
-        bsdf.inputs[name].default_value = (*value, 1.0) if isinstance(value, list) else value
+    set_inputs(bsdf, description["Principled BSDF"])
+    velvet_inputs = description["Velvet BSDF"]
+    if any(velvet_inputs["Color"]):
+        # What Blender's glTF importer builds for KHR_materials_sheen: Velvet + Principled.
+        velvet = nodes.new("ShaderNodeBsdfVelvet")
+        set_inputs(velvet, velvet_inputs)
+        add = nodes.new("ShaderNodeAddShader")
+        links.new(velvet.outputs["BSDF"], add.inputs[0])
+        links.new(bsdf.outputs["BSDF"], add.inputs[1])
+        links.new(add.outputs["Shader"], nodes["Material Output"].inputs["Surface"])
     if base_color_image:
         # An sRGB image on the active UV map, bilinear and repeating, as ours.
-        texture = material.node_tree.nodes.new("ShaderNodeTexImage")
+        texture = nodes.new("ShaderNodeTexImage")
         texture.image = bpy.data.images.load(base_color_image)
         texture.interpolation = "Linear"
         texture.extension = "REPEAT"
-        material.node_tree.links.new(texture.outputs["Color"], bsdf.inputs["Base Color"])
+        links.new(texture.outputs["Color"], bsdf.inputs["Base Color"])
     return material
+
+
+def set_inputs(node, inputs):
+    for name, value in inputs.items():
+        node.inputs[name].default_value = (*value, 1.0) if isinstance(value, list) else value
 
 
 def aimed_along(position, direction):

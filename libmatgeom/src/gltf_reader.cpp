@@ -59,10 +59,10 @@ std::string lowercase_extension(const std::string& path) {
 void check_required_extensions(const GltfFile& file) {
   // Extensions that change how geometry or images are stored would be misread if ignored;
   // KHR_mesh_quantization only widens the accessor formats, which the reader handles;
-  // KHR_materials_clearcoat, _ior, _transmission and KHR_texture_transform are read.
+  // KHR_materials_clearcoat, _ior, _sheen, _transmission and KHR_texture_transform are read.
   for (const std::string& extension : file.model.extensionsRequired) {
     if (extension == "KHR_mesh_quantization" || extension == gltf::kClearcoat || extension == gltf::kIor ||
-        extension == gltf::kTransmission || extension == gltf::kTextureTransform)
+        extension == gltf::kSheen || extension == gltf::kTransmission || extension == gltf::kTextureTransform)
       continue;
     fail(file.path, "requires the unsupported glTF extension " + extension);
   }
@@ -801,6 +801,32 @@ void read_clearcoat(const GltfFile& file, ImageTable& images, const tinygltf::Va
                        gltf::kClearcoatRoughnessChannel, MaterialParameter::ClearcoatRoughness, desc, where);
 }
 
+// KHR_materials_sheen as Blender 3.4's importer wires it (gltf2_blender_KHR_materials_sheen.py):
+// a Velvet BSDF added to the Principled BSDF, Color = sheenColorFactor x sheenColorTexture.RGB,
+// Sigma = sheenRoughnessFactor x sheenRoughnessTexture.A, both factors 0 when absent. Present
+// with a black colour, the extension adds a velvet that reflects nothing.
+void read_sheen(const GltfFile& file, ImageTable& images, const tinygltf::Value& extension, MaterialDesc& desc,
+                const std::string& what) {
+  const std::string where = concat(what, " ", gltf::kSheen);
+  glm::dvec3 colour(0.0);
+  if (extension.Has("sheenColorFactor")) {
+    const tinygltf::Value& factor = extension.Get("sheenColorFactor");
+    if (!factor.IsArray() || factor.ArrayLen() != 3) fail(file.path, where + ": sheenColorFactor needs 3 numbers");
+    for (int c = 0; c < 3; ++c) {
+      const tinygltf::Value& component = factor.Get(c);
+      if (!component.IsNumber()) fail(file.path, where + ": sheenColorFactor needs 3 numbers");
+      colour[c] = checked_factor(file, MaterialParameter::VelvetColor, component.GetNumberAsDouble(),
+                                 where + " sheenColorFactor");
+    }
+  }
+  desc.set(MaterialParameter::VelvetColor, colour);
+  const TextureRef colour_texture = extension_texture(file, images, extension, "sheenColorTexture", where);
+  if (colour_texture.image >= 0)
+    desc.set_image(MaterialParameter::VelvetColor, colour_texture.image, 0, colour_texture.transform);
+  read_extension_input(file, images, extension, "sheenRoughnessFactor", "sheenRoughnessTexture",
+                       gltf::kSheenRoughnessChannel, MaterialParameter::VelvetSigma, desc, where);
+}
+
 // KHR_materials_transmission as Blender 3.4's importer wires it: Transmission =
 // transmissionFactor x transmissionTexture.R; a factor of 0 (the default) leaves the texture out.
 void read_transmission(const GltfFile& file, ImageTable& images, const tinygltf::Value& extension, MaterialDesc& desc,
@@ -815,7 +841,8 @@ void read_transmission(const GltfFile& file, ImageTable& images, const tinygltf:
 // factor x texture, roughness = factor x texture.G, metallic = factor x texture.B, normal map
 // strength = normalTexture.scale, emission = emissiveFactor x emissiveTexture with
 // KHR_materials_emissive_strength's strength, IOR = KHR_materials_ior's (1.5 without it),
-// KHR_materials_clearcoat (read_clearcoat), KHR_materials_transmission (read_transmission);
+// KHR_materials_clearcoat (read_clearcoat), KHR_materials_transmission (read_transmission),
+// KHR_materials_sheen (read_sheen);
 // alphaMode BLEND or MASK: Alpha = baseColorFactor[3] x baseColorTexture.A; specular and
 // specular tint keep Blender's defaults. Occlusion has no MaterialDesc input.
 MaterialDesc convert_material(const GltfFile& file, ImageTable& images, size_t index) {
@@ -864,6 +891,8 @@ MaterialDesc convert_material(const GltfFile& file, ImageTable& images, size_t i
   if (clearcoat != material.extensions.end()) read_clearcoat(file, images, clearcoat->second, desc, what);
   const auto transmission = material.extensions.find(gltf::kTransmission);
   if (transmission != material.extensions.end()) read_transmission(file, images, transmission->second, desc, what);
+  const auto sheen = material.extensions.find(gltf::kSheen);
+  if (sheen != material.extensions.end()) read_sheen(file, images, sheen->second, desc, what);
   if (!std::isfinite(material.normalTexture.scale))
     fail(file.path, what + ": non-finite normal scale");
   desc.normal_strength = material.normalTexture.scale;

@@ -272,6 +272,20 @@ tinygltf::Value::Object transmission_extension(const MaterialDesc& desc, Texture
   return extension;
 }
 
+// KHR_materials_sheen, the inverse of read_gltf's read_sheen.
+tinygltf::Value::Object sheen_extension(const MaterialDesc& desc, TextureTable& textures, const std::string& what) {
+  using P = MaterialParameter;
+  tinygltf::Value::Object extension;
+  const glm::dvec3 colour = desc.color(P::VelvetColor);
+  extension["sheenColorFactor"] = tinygltf::Value(
+      tinygltf::Value::Array{tinygltf::Value(colour.r), tinygltf::Value(colour.g), tinygltf::Value(colour.b)});
+  if (desc[P::VelvetColor].image >= 0)
+    extension["sheenColorTexture"] = tinygltf::Value(texture_info(desc, P::VelvetColor, 0, textures, what));
+  write_extension_input(desc, P::VelvetSigma, "sheenRoughnessFactor", "sheenRoughnessTexture",
+                        gltf::kSheenRoughnessChannel, textures, what, extension);
+  return extension;
+}
+
 // Opacity below 1 as alphaMode BLEND: its constant in baseColorFactor[3], its image (if any)
 // the base colour texture's alpha, the only place glTF keeps it.
 void write_opacity(const MaterialDesc& desc, const std::string& what, tinygltf::Material& material) {
@@ -326,6 +340,9 @@ tinygltf::Material make_material(const MaterialDesc& desc, TextureTable& texture
   // Blender's importer ignores the extension's texture when the factor is 0.
   if (desc.scalar(P::Transmission) != 0.0)
     material.extensions[gltf::kTransmission] = tinygltf::Value(transmission_extension(desc, textures, what));
+  // Without the extension no velvet is made, which is what a black colour makes too.
+  if (desc.color(P::VelvetColor) != glm::dvec3(0.0))
+    material.extensions[gltf::kSheen] = tinygltf::Value(sheen_extension(desc, textures, what));
   return material;
 }
 
@@ -342,7 +359,7 @@ tinygltf::Model make_model(const ObjectAsset& asset) {
   TextureTable textures(model, asset.images);
   for (const MaterialDesc& desc : asset.materials) model.materials.push_back(make_material(desc, textures));
   if (textures.transforms_placed()) model.extensionsUsed.push_back(gltf::kTextureTransform);
-  for (const char* extension : {gltf::kEmissiveStrength, gltf::kIor, gltf::kClearcoat, gltf::kTransmission})
+  for (const char* extension : {gltf::kEmissiveStrength, gltf::kIor, gltf::kClearcoat, gltf::kTransmission, gltf::kSheen})
     for (const tinygltf::Material& material : model.materials)
       if (material.extensions.count(extension)) {
         model.extensionsUsed.push_back(extension);

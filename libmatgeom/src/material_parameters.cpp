@@ -31,8 +31,12 @@ std::string material_parameters_markdown() {
     const std::string range = "[" + number(info.min) + ", " + number(info.max) + "]";
     std::string value = color ? "`[r, g, b]` with components in " + range : "number in " + range;
     if (info.texturable) value += color ? ", or a [colour texture](#textures)" : ", or a [scalar texture](#textures)";
+    // Principled BSDF inputs by their name alone, the others with their node's.
+    const std::string input = info.node == BlenderNode::PrincipledBsdf
+                                  ? std::string(info.blender_input)
+                                  : std::string(blender_node_name(info.node)) + " " + info.blender_input;
     table += "| `" + std::string(info.name) + "` | `" + (color ? "[" + d + ", " + d + ", " + d + "]" : d) + "` | " +
-             value + ": " + info.description + " | " + info.blender_input + " |\n";
+             value + ": " + info.description + " | " + input + " |\n";
   }
   return table;
 }

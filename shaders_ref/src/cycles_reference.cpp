@@ -34,16 +34,18 @@ json column_major(const glm::dmat4& m) {
   return values;
 }
 
-// Every row of the material table as Blender input name -> value (a colour as RGB), so that the
-// script sets exactly what libmatrender shades with.
-json principled_inputs(const matrender::Material& m) {
-  json inputs = json::object();
+// Every row of the material table as Blender node name -> input name -> value (a colour as RGB),
+// so that the script sets exactly what libmatrender shades with.
+json node_inputs(const matrender::Material& m) {
+  json nodes = json::object();
+  for (const matgeom::BlenderNode node : {matgeom::BlenderNode::PrincipledBsdf, matgeom::BlenderNode::VelvetBsdf})
+    nodes[matgeom::blender_node_name(node)] = json::object();
   for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) {
     const glm::vec3 value = m.parameters[static_cast<size_t>(info.id)].value;
-    inputs[info.blender_input] =
+    nodes[matgeom::blender_node_name(info.node)][info.blender_input] =
         info.kind == matgeom::ParameterKind::Color ? json{value.r, value.g, value.b} : json(value.x);
   }
-  return inputs;
+  return nodes;
 }
 
 json rgb(const glm::dvec3& c) { return {c.r, c.g, c.b}; }
@@ -114,7 +116,7 @@ json describe(const CyclesScene& scene) {
             {"triangles", triangles},
             {"uvs", uvs},
             {"shadow_terminator_geometry_offset", scene.shadow_terminator_geometry_offset}}},
-          {"material", principled_inputs(m)},
+          {"material", node_inputs(m)},
           {"base_color_image", base_color_image},
           {"distribution", m.distribution == matrender::SpecularDistribution::MultiscatterGGX ? "MULTI_GGX" : "GGX"},
           {"lamps", lamps},
@@ -180,24 +182,25 @@ BlenderMaterials import_gltf_with_blender(const std::string& gltf_path, const st
   json materials;
   std::ifstream(out_path) >> materials;
   BlenderMaterials result;
-  for (const auto& [name, inputs] : materials.items())
-    for (const auto& [input, state] : inputs.items()) {
-      BlenderInput& out = result[name][input];
-      out.linked = state.at("linked").get<bool>();
-      const json& value = state.at("value");
-      if (value.is_array())
-        out.value = value.get<std::vector<double>>();
-      else if (value.is_number())
-        out.value = {value.get<double>()};
-      const json& mapping = state.at("mapping");
-      if (mapping.is_null()) continue;
-      if (mapping.at("vector_type").get<std::string>() != "POINT")
-        throw std::runtime_error(gltf_path + ": Blender's Mapping node for " + input + " is not of type Point");
-      const auto location = mapping.at("location").get<std::vector<double>>();
-      const auto scale = mapping.at("scale").get<std::vector<double>>();
-      out.mapping = BlenderUvMapping{{location.at(0), location.at(1)}, mapping.at("rotation_z").get<double>(),
-                                     {scale.at(0), scale.at(1)}};
-    }
+  for (const auto& [name, nodes] : materials.items())
+    for (const auto& [node, inputs] : nodes.items())
+      for (const auto& [input, state] : inputs.items()) {
+        BlenderInput& out = result[name][node][input];
+        out.linked = state.at("linked").get<bool>();
+        const json& value = state.at("value");
+        if (value.is_array())
+          out.value = value.get<std::vector<double>>();
+        else if (value.is_number())
+          out.value = {value.get<double>()};
+        const json& mapping = state.at("mapping");
+        if (mapping.is_null()) continue;
+        if (mapping.at("vector_type").get<std::string>() != "POINT")
+          throw std::runtime_error(gltf_path + ": Blender's Mapping node for " + input + " is not of type Point");
+        const auto location = mapping.at("location").get<std::vector<double>>();
+        const auto scale = mapping.at("scale").get<std::vector<double>>();
+        out.mapping = BlenderUvMapping{{location.at(0), location.at(1)}, mapping.at("rotation_z").get<double>(),
+                                       {scale.at(0), scale.at(1)}};
+      }
   return result;
 }
 

@@ -169,7 +169,7 @@ double stretched_horizon_limit(double sin_o, double cos_o, double phi, double al
 // --- Lobe albedos ------------------------------------------------------------------------------
 
 // Integral of brdf(p, wo, wi) cos(theta_i) over the upper hemisphere in spherical coordinates,
-// for lobes smooth over it (diffuse, sheen).
+// for lobes smooth over it (diffuse, sheen, velvet).
 glm::dvec3 hemisphere_albedo(glm::dvec3 (*brdf)(const PrincipledParams&, const glm::dvec3&, const glm::dvec3&),
                              const PrincipledParams& p, const glm::dvec3& wo) {
   const double phi_o = std::atan2(wo.y, wo.x);
@@ -256,14 +256,15 @@ glm::dvec3 glass_refraction_albedo(const PrincipledParams& p, const glm::dvec3& 
 LobeAlbedos lobe_albedos(const PrincipledParams& p, const glm::dvec3& wo) {
   if (wo.z <= 0.0) return {};
   const glm::dvec3 sheen = p.sheen > 0.0 ? hemisphere_albedo(sheen_brdf, p, wo) : glm::dvec3(0.0);
+  const glm::dvec3 velvet = p.velvet_color != glm::dvec3(0.0) ? hemisphere_albedo(velvet_brdf, p, wo) : glm::dvec3(0.0);
   return {hemisphere_albedo(diffuse_brdf, p, wo), sheen, specular_albedo(p, wo), clearcoat_albedo(p, wo),
-          glass_reflection_albedo(p, wo), glass_refraction_albedo(p, wo)};
+          glass_reflection_albedo(p, wo), glass_refraction_albedo(p, wo), velvet};
 }
 
 glm::dvec3 directional_albedo(const PrincipledParams& p, const glm::dvec3& wo) {
   const LobeAlbedos albedos = lobe_albedos(p, wo);
   return albedos.diffuse + albedos.sheen + albedos.specular + albedos.clearcoat + albedos.glass_reflection +
-         albedos.glass_refraction;
+         albedos.glass_refraction + albedos.velvet;
 }
 
 double integrate_over_sphere(const DirectionFunction& f, const glm::dvec3& peak_axis,

@@ -107,6 +107,21 @@ glm::dvec3 sheen_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm
   return p.sheen * (1.0 - p.metallic) * (1.0 - p.transmission) * colour * fifth_power_of_complement(glm::dot(wi, h));
 }
 
+glm::dvec3 velvet_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi) {
+  const glm::dvec3 colour = glm::max(p.velvet_color, glm::dvec3(0.0));
+  if ((colour.x + colour.y + colour.z) / 3.0 < kClosureWeightCutoff || wo.z <= 0.0 || wi.z <= 0.0)
+    return glm::dvec3(0.0);
+  const double s = std::clamp(p.velvet_sigma, 0.01, 1.0);
+  const glm::dvec3 h = glm::normalize(wo + wi);
+  const double sin2_h = h.x * h.x + h.y * h.y;
+  if (sin2_h == 0.0) return glm::dvec3(0.0);  // cot^2 infinite: D vanishes
+  const double cot2_h = h.z * h.z / sin2_h;
+  const double d = std::exp(-cot2_h / (s * s)) / (kPi * s * s * sin2_h * sin2_h);
+  const double wo_dot_h = glm::dot(wo, h);
+  const double g = std::min({1.0, 2.0 * h.z * wo.z / wo_dot_h, 2.0 * h.z * wi.z / wo_dot_h});
+  return colour * (d * g / (4.0 * wo.z * wi.z));
+}
+
 glm::dvec3 specular_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi) {
   if (!has_specular_lobe(p) || wo.z <= 0.0 || wi.z <= 0.0) return glm::dvec3(0.0);
   const double alpha = ggx_alpha(p.roughness);
@@ -174,7 +189,7 @@ glm::dvec3 clearcoat_brdf(const PrincipledParams& p, const glm::dvec3& wo, const
 
 glm::dvec3 principled_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi) {
   return diffuse_brdf(p, wo, wi) + sheen_brdf(p, wo, wi) + specular_brdf(p, wo, wi) + clearcoat_brdf(p, wo, wi) +
-         glass_reflection_brdf(p, wo, wi);
+         glass_reflection_brdf(p, wo, wi) + velvet_brdf(p, wo, wi);
 }
 
 }  // namespace shaders_ref

@@ -285,8 +285,15 @@ std::string write_two_material_quad(const TempDir& dir, Container container) {
                                     {{"KHR_materials_clearcoat",
                                       {{"clearcoatFactor", 0.6}, {"clearcoatTexture", {{"index", 1}}}}},
                                      // A transmission texture under a factor of 0: no glass (Blender's importer).
-                                     {"KHR_materials_transmission", {{"transmissionTexture", {{"index", 0}}}}}}}}});
-  doc["extensionsUsed"] = json::array({"KHR_materials_clearcoat", "KHR_materials_transmission"});
+                                     {"KHR_materials_transmission", {{"transmissionTexture", {{"index", 0}}}}},
+                                     // Cloth sheen, its colour under a texture, its roughness from another's alpha.
+                                     {"KHR_materials_sheen",
+                                      {{"sheenColorFactor", {0.5, 0.25, 1.0}},
+                                       {"sheenColorTexture", {{"index", 0}}},
+                                       {"sheenRoughnessFactor", 0.4},
+                                       {"sheenRoughnessTexture", {{"index", 1}}}}}}}}});
+  doc["extensionsUsed"] =
+      json::array({"KHR_materials_clearcoat", "KHR_materials_transmission", "KHR_materials_sheen"});
   return writer.write();
 }
 
@@ -357,6 +364,9 @@ TEST_CASE("glTF two-material quad: transforms, axes, uvs, parts, materials, imag
   CHECK(red[P::Alpha].channel == 3);
   CHECK(red[P::Transmission].image == -1);
   CHECK(red[P::Clearcoat].image == -1);
+  // Without the sheen extension no velvet is added.
+  CHECK(red.color(P::VelvetColor) == glm::dvec3(0.0));
+  CHECK(red[P::VelvetColor].image == -1);
   const matgeom::MaterialDesc& blue = asset.materials[1];
   CHECK(blue.name == "blue");
   CHECK(blue.color(P::BaseColor).b == Approx(0.9));
@@ -375,6 +385,14 @@ TEST_CASE("glTF two-material quad: transforms, axes, uvs, parts, materials, imag
   CHECK(blue.scalar(P::Alpha) == Approx(0.5));
   CHECK(blue[P::Alpha].image == -1);
   CHECK(blue[P::Transmission].image == -1);
+  // Blender's importer: a Velvet BSDF of Color = sheenColorFactor x texture RGB, Sigma =
+  // sheenRoughnessFactor x texture A.
+  CHECK(blue.color(P::VelvetColor) == glm::dvec3(0.5, 0.25, 1.0));
+  CHECK(blue[P::VelvetColor].image == red[P::BaseColor].image);
+  CHECK(blue[P::VelvetColor].channel == 0);
+  CHECK(blue.scalar(P::VelvetSigma) == Approx(0.4));
+  CHECK(blue[P::VelvetSigma].image == red.normal_image);
+  CHECK(blue[P::VelvetSigma].channel == 3);
   // One image used by two materials (and by the coat) is stored once.
   CHECK(blue[P::Roughness].image == red.normal_image);
   CHECK(blue[P::Clearcoat].image == red.normal_image);
@@ -618,6 +636,23 @@ TEST_CASE("glTF reader errors name the file and the problem", "[geom]") {
                                                    {{"index", 0}, {"extensions", {{"KHR_texture_transform", transform}}}}}}}}});
       const std::string path = writer.write();
       CHECK_THAT(read_error(path), Contains(path) && Contains("baseColorTexture") && Contains(problem));
+    }
+  }
+  SECTION("sheen that cannot be read") {
+    for (const auto& [sheen, problem] :
+         {std::pair{json{{"sheenColorFactor", {0.5, 0.5}}}, "sheenColorFactor needs 3 numbers"},
+          std::pair{json{{"sheenColorFactor", {0.5, "red", 0.5}}}, "sheenColorFactor needs 3 numbers"},
+          std::pair{json{{"sheenColorFactor", {0.5, 1.5, 0.5}}}, "sheenColorFactor 1.5 is outside [0, 1]"},
+          std::pair{json{{"sheenRoughnessFactor", -0.25}}, "sheenRoughnessFactor -0.25 is outside [0, 1]"},
+          std::pair{json{{"sheenRoughnessTexture", {{"index", 7}}}}, "texture 7 does not exist"}}) {
+      GltfWriter writer(dir, "cloth", Container::Glb);
+      const int positions = writer.add_vec3(kTriangle);
+      writer.doc()["meshes"] = json::array(
+          {{{"primitives", json::array({{{"attributes", {{"POSITION", positions}}}, {"material", 0}}})}}});
+      writer.doc()["nodes"] = json::array({{{"mesh", 0}}});
+      writer.doc()["materials"] = json::array({{{"extensions", {{"KHR_materials_sheen", sheen}}}}});
+      const std::string path = writer.write();
+      CHECK_THAT(read_error(path), Contains(path) && Contains("KHR_materials_sheen") && Contains(problem));
     }
   }
   SECTION("missing external image") {

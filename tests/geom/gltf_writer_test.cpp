@@ -78,6 +78,11 @@ ObjectAsset two_part_asset() {
   brass.set(P::ClearcoatRoughness, 0.125);
   brass.set(P::Alpha, 0.625);  // alphaMode BLEND, baseColorFactor[3]
   brass.set_image(P::ClearcoatRoughness, 1, 1);
+  // A velvet (KHR_materials_sheen): its colour from image 0, its width from image 1's alpha, placed.
+  brass.set(P::VelvetColor, glm::dvec3(0.5, 0.25, 0.125));
+  brass.set_image(P::VelvetColor, 0, 0, {{0.25, 0.0}, 0.5, {2.0, 2.0}});
+  brass.set(P::VelvetSigma, 0.375);
+  brass.set_image(P::VelvetSigma, 1, 3);
   brass.wrap = TextureWrap::Clamp;
   asset.materials = {wood, brass};
   return asset;
@@ -123,10 +128,14 @@ void check_same_asset(const ObjectAsset& written, const ObjectAsset& read) {
     CHECK(b.scalar(P::ClearcoatRoughness) == a.scalar(P::ClearcoatRoughness));
     CHECK(b[P::Clearcoat].channel == a[P::Clearcoat].channel);
     CHECK(b[P::ClearcoatRoughness].channel == a[P::ClearcoatRoughness].channel);
+    CHECK(b.color(P::VelvetColor) == a.color(P::VelvetColor));
+    // The width is written only with a velvet; without one the reader keeps the table's default.
+    if (a.color(P::VelvetColor) != glm::dvec3(0.0)) CHECK(b.scalar(P::VelvetSigma) == a.scalar(P::VelvetSigma));
+    CHECK(b[P::VelvetSigma].channel == a[P::VelvetSigma].channel);
     CHECK(b.normal_strength == a.normal_strength);
     CHECK(b.normal_transform == a.normal_transform);
     for (const P p : {P::BaseColor, P::Roughness, P::Metallic, P::Emission, P::Clearcoat, P::ClearcoatRoughness,
-                      P::Transmission})
+                      P::Transmission, P::VelvetColor, P::VelvetSigma})
       CHECK(b[p].transform == a[p].transform);
     CHECK(b.wrap == a.wrap);
     for (const auto& [image_a, image_b] : {std::pair{a[P::BaseColor].image, b[P::BaseColor].image},
@@ -135,6 +144,8 @@ void check_same_asset(const ObjectAsset& written, const ObjectAsset& read) {
                                            std::pair{a[P::Clearcoat].image, b[P::Clearcoat].image},
                                            std::pair{a[P::Transmission].image, b[P::Transmission].image},
                                            std::pair{a[P::ClearcoatRoughness].image, b[P::ClearcoatRoughness].image},
+                                           std::pair{a[P::VelvetColor].image, b[P::VelvetColor].image},
+                                           std::pair{a[P::VelvetSigma].image, b[P::VelvetSigma].image},
                                            std::pair{a.normal_image, b.normal_image}}) {
       REQUIRE((image_a < 0) == (image_b < 0));
       if (image_a < 0) continue;
@@ -179,6 +190,11 @@ TEST_CASE("write_gltf rejects what glTF cannot hold and leaves nothing behind", 
   coat_from_blue.materials[1].set_image(P::Clearcoat, 0, 2);
   CHECK_THROWS_WITH(write_gltf(coat_from_blue, dir.file("e.glb")),
                     Catch::Matchers::Contains("clearcoat reads image channel 2"));
+  // glTF reads the sheen roughness from A.
+  ObjectAsset sigma_from_red = asset;
+  sigma_from_red.materials[1].set_image(P::VelvetSigma, 1, 0);
+  CHECK_THROWS_WITH(write_gltf(sigma_from_red, dir.file("g.glb")),
+                    Catch::Matchers::Contains("velvet_sigma reads image channel 0"));
   // glTF keeps opacity only in the base colour's alpha.
   ObjectAsset separate_opacity = asset;
   separate_opacity.materials[0].set_image(P::Alpha, 1, 0);

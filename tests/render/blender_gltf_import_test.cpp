@@ -1,7 +1,8 @@
 // Our glTF files read by another project's reader: Blender 3.4's own glTF importer (optional:
 // MATPREDICT_BLENDER_TESTS, ctest label "blender"). For every row of the material table the
-// Principled BSDF input Blender builds must hold what read_gltf makes of the same file: the same
-// constant, or an image where read_gltf has one. That holds the writer and the reader to
+// node input Blender builds (the Principled BSDF's, or the Velvet BSDF's it adds for glTF's sheen)
+// must hold what read_gltf makes of the same file: the same constant, or an image where read_gltf
+// has one. That holds the writer and the reader to
 // Blender's mapping at once (docs/conventions.md, "What Blender's glTF importer makes of a
 // metallic-roughness material").
 #include <cmath>
@@ -49,6 +50,8 @@ matgeom::ObjectAsset two_material_quad() {
   lacquer.set(P::Ior, 1.33);
   lacquer.set(P::Transmission, 0.3);
   lacquer.set(P::Alpha, 0.8);
+  lacquer.set(P::VelvetColor, glm::dvec3(0.6, 0.3, 0.2));
+  lacquer.set(P::VelvetSigma, 0.4);
   // Every input glTF can texture, from the one image, each textureInfo placed on the UVs its own
   // way (KHR_texture_transform; the identity for the base colour).
   const auto placed = [](double k) {
@@ -66,6 +69,10 @@ matgeom::ObjectAsset two_material_quad() {
   textured.set_image(P::ClearcoatRoughness, 0, 1, placed(4));
   textured.set(P::Transmission, 0.5);
   textured.set_image(P::Transmission, 0, 0, placed(5));
+  textured.set(P::VelvetColor, glm::dvec3(0.9, 0.8, 0.7));
+  textured.set_image(P::VelvetColor, 0, 0, placed(7));
+  textured.set(P::VelvetSigma, 0.5);
+  textured.set_image(P::VelvetSigma, 0, 3, placed(8));
   textured.normal_image = 0;
   textured.normal_transform = placed(6);
   asset.materials = {lacquer, textured};
@@ -111,9 +118,14 @@ TEST_CASE("Blender's glTF importer makes of our glTF files what read_gltf makes"
   REQUIRE(ours.materials.size() == 2);
   for (const MaterialDesc& material : ours.materials) {
     REQUIRE(blender.count(material.name) == 1);
-    const auto& inputs = blender.at(material.name);
+    const shaders_ref::BlenderNodes& nodes = blender.at(material.name);
+    // Both materials have a velvet: the importer must have added one to each.
+    REQUIRE(material.color(P::VelvetColor) != glm::dvec3(0.0));
     for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) {
       CAPTURE(material.name, info.name);
+      const char* node = matgeom::blender_node_name(info.node);
+      REQUIRE(nodes.count(node) == 1);
+      const auto& inputs = nodes.at(node);
       REQUIRE(inputs.count(info.blender_input) == 1);
       const shaders_ref::BlenderInput& input = inputs.at(info.blender_input);
       const matgeom::MaterialInput& mine = material[info.id];
@@ -127,8 +139,11 @@ TEST_CASE("Blender's glTF importer makes of our glTF files what read_gltf makes"
       // Blender stores single-precision floats.
       for (size_t c = 0; c < input.value.size(); ++c) CHECK(input.value[c] == Approx(mine.value[c]).margin(1e-6));
     }
-    REQUIRE(inputs.count("Normal") == 1);
-    CHECK(inputs.at("Normal").linked == (material.normal_image >= 0));
-    if (material.normal_image >= 0) check_placement(inputs.at("Normal"), material.normal_transform);
+    const auto& principled = nodes.at("Principled BSDF");
+    REQUIRE(principled.count("Normal") == 1);
+    CHECK(principled.at("Normal").linked == (material.normal_image >= 0));
+    if (material.normal_image >= 0) check_placement(principled.at("Normal"), material.normal_transform);
+    // The velvet keeps the smooth normal, as our renderer shades it.
+    CHECK_FALSE(nodes.at("Velvet BSDF").at("Normal").linked);
   }
 }

@@ -11,6 +11,7 @@
 #include "reference_params.h"
 #include "principled_lobes.h"
 #include "uniform_floats.h"
+#include "velvet_condition.h"
 #include "bsdf/principled.h"
 #include "shaders_ref/directional_albedo.h"
 #include "shaders_ref/principled_reference.h"
@@ -62,6 +63,11 @@ PrincipledInputs random_material(UniformFloats& rng, float min_roughness, float 
   in.set(MaterialParameter::ClearcoatRoughness, min_roughness + (max_roughness - min_roughness) * rng.next());
   in.set(MaterialParameter::Transmission, with_edges(0.6f, 0.1f));
   in.set(MaterialParameter::Ior, 1.0f + 1.5f * rng.next());
+  // glTF's sheen as a velvet beside half of the materials, its width from Cycles' floor to 1.
+  if (rng.next() < 0.5f) {
+    in.set(MaterialParameter::VelvetColor, glm::vec3{rng.next(), rng.next(), rng.next()});
+    in.set(MaterialParameter::VelvetSigma, with_edges(0.1f, 0.2f));
+  }
   return in;
 }
 
@@ -284,9 +290,12 @@ TEST_CASE("Fast BSDF eval agrees with the double-precision reference", "[render]
     const shaders_ref::PrincipledParams p = reference_params(in);
     const glm::dvec3 wo_d = glm::normalize(glm::dvec3(wo));
     const glm::dvec3 wi_d = glm::normalize(glm::dvec3(wi));
-    // The sheen lobe is a diffuse one (Cycles labels it so): the diffuse flag selects both.
+    // The sheen and velvet lobes are diffuse ones (Cycles labels them so): the diffuse flag
+    // selects all three.
     const glm::dvec3 sheen_ref = shaders_ref::sheen_brdf(p, wo_d, wi_d);
-    const glm::dvec3 diffuse_ref = shaders_ref::diffuse_brdf(p, wo_d, wi_d) + sheen_ref;
+    const glm::dvec3 velvet_ref = shaders_ref::velvet_brdf(p, wo_d, wi_d);
+    const glm::dvec3 diffuse_ref = shaders_ref::diffuse_brdf(p, wo_d, wi_d) + sheen_ref + velvet_ref;
+    const double velvet_error = velvet_condition(in, wo_d, wi_d);
     // The glossy flag selects the specular lobe, the glass's reflection (the same GGX lobe) and
     // the clearcoat.
     const glm::dvec3 clearcoat_ref = shaders_ref::clearcoat_brdf(p, wo_d, wi_d);
@@ -309,8 +318,10 @@ TEST_CASE("Fast BSDF eval agrees with the double-precision reference", "[render]
       const double specular_tolerance = (1e-5 + 1e-6 / cos_h + conditioning) * (specular_ref[k] - clearcoat_ref[k]) +
                                         1e-6 * specular_without_fresnel +
                                         (1e-5 + 1e-6 / cos_h + clearcoat_conditioning) * clearcoat_ref[k];
-      // The sheen's (1 - wi.h)^5 shares the half vector's error (term 2 above), absolute near wi.h = 1.
-      const double diffuse_tolerance = 1e-5 * diffuse_ref[k] + 1e-6 / cos_h * sheen_ref[k] + 1e-7 * p.sheen + 1e-12;
+      // The sheen's (1 - wi.h)^5 shares the half vector's error (term 2 above), absolute near wi.h = 1;
+      // the velvet's D(h) is as sensitive as velvet_condition says.
+      const double diffuse_tolerance = 1e-5 * diffuse_ref[k] + 1e-6 / cos_h * sheen_ref[k] + 1e-7 * p.sheen +
+                                       (1e-6 / cos_h + velvet_error) * velvet_ref[k] + 1e-12;
       const bool diffuse_ok = std::abs(diffuse[k] - diffuse_ref[k]) <= diffuse_tolerance;
       const bool specular_ok = std::abs(specular[k] - specular_ref[k]) <= specular_tolerance;
       const bool total_ok =
@@ -355,6 +366,7 @@ TEST_CASE("Singular mirror lobe: sample weight is F(cos_o) over its selection pr
     in.set(MaterialParameter::Sheen, 0.0f);  // the two lobes of the formula above
     in.set(MaterialParameter::Clearcoat, 0.0f);
     in.set(MaterialParameter::Transmission, 0.0f);
+    in.set(MaterialParameter::VelvetColor, glm::vec3(0.0f));
     if (n % 4 == 0) in.set(MaterialParameter::Metallic, 1.0f);  // no diffuse lobe: the weight is F itself
     const glm::vec3 wo = random_upper_direction(rng);
     const LobeMixture bsdf = principled_bsdf(in, wo);

@@ -19,6 +19,8 @@ inline shaders_ref::PrincipledParams reference_params(const matrender::Principle
   p.transmission = in.scalar(matrender::MaterialParameter::Transmission);
   p.transmission_roughness = in.scalar(matrender::MaterialParameter::TransmissionRoughness);
   p.ior = in.scalar(matrender::MaterialParameter::Ior);
+  p.velvet_color = glm::dvec3(in.color(matrender::MaterialParameter::VelvetColor));
+  p.velvet_sigma = in.scalar(matrender::MaterialParameter::VelvetSigma);
   p.lambert_diffuse = in.diffuse_model == matrender::DiffuseModel::Lambert;
   return p;
 }

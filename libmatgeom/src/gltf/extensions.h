@@ -25,6 +25,12 @@ constexpr int kBaseColorAlphaChannel = 3;
 constexpr const char* kTransmission = "KHR_materials_transmission";
 constexpr int kTransmissionChannel = 0;
 
+// Cloth sheen: sheenColorFactor (default black) x sheenColorTexture.RGB (sRGB) and
+// sheenRoughnessFactor (default 0) x sheenRoughnessTexture.A. Blender 3.4's importer makes them
+// the Color and Sigma of a Velvet BSDF it adds to the Principled BSDF.
+constexpr const char* kSheen = "KHR_materials_sheen";
+constexpr int kSheenRoughnessChannel = 3;
+
 // A textureInfo's own UV placement (offset, rotation, scale, texCoord): matgeom/texture_transform.h.
 constexpr const char* kTextureTransform = "KHR_texture_transform";
 

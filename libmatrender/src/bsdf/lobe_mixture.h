@@ -24,11 +24,12 @@
 #include "bsdf/multiscatter_ggx_lobe.h"
 #include "bsdf/sheen_lobe.h"
 #include "bsdf/transparent_lobe.h"
+#include "bsdf/velvet_lobe.h"
 
 namespace matrender {
 
 using Lobe = std::variant<DiffuseLobe, GgxReflectionLobe, SheenLobe, ClearcoatLobe, GgxTransmissionLobe,
-                          TransparentLobe, MultiscatterGgxLobe>;
+                          TransparentLobe, MultiscatterGgxLobe, VelvetLobe>;
 
 // f(the lobe as its own type). A switch, not std::visit: GCC turns std::visit into a call through
 // a table, which keeps the lobes' small methods from being inlined at every path vertex. Forced
@@ -36,7 +37,7 @@ using Lobe = std::variant<DiffuseLobe, GgxReflectionLobe, SheenLobe, ClearcoatLo
 // more instructions on the vase, measured with callgrind).
 template <class F>
 [[gnu::always_inline]] inline decltype(auto) with_lobe(const Lobe& lobe, F&& f) {
-  static_assert(std::variant_size_v<Lobe> == 7, "a new lobe needs its case here");
+  static_assert(std::variant_size_v<Lobe> == 8, "a new lobe needs its case here");
   switch (lobe.index()) {
     case 0: return f(*std::get_if<0>(&lobe));
     case 1: return f(*std::get_if<1>(&lobe));
@@ -44,7 +45,8 @@ template <class F>
     case 3: return f(*std::get_if<3>(&lobe));
     case 4: return f(*std::get_if<4>(&lobe));
     case 5: return f(*std::get_if<5>(&lobe));
-    default: return f(*std::get_if<6>(&lobe));
+    case 6: return f(*std::get_if<6>(&lobe));
+    default: return f(*std::get_if<7>(&lobe));
   }
 }
 
@@ -57,10 +59,11 @@ struct BsdfSample {
 
 class LobeMixture {
  public:
-  // Room for every lobe of the Principled BSDF: diffuse, sheen, specular, clearcoat, the glass's
-  // reflection and refraction, and transparency (a mixture lives on the stack of every path
-  // vertex; the room is left unconstructed, so lobes nobody has cost nothing).
-  static constexpr size_t kMaxLobes = 7;
+  // Room for every lobe of a material: the Principled BSDF's diffuse, sheen, specular, clearcoat,
+  // the glass's reflection and refraction, and transparency, and the velvet beside it (a mixture
+  // lives on the stack of every path vertex; the room is left unconstructed, so lobes nobody has
+  // cost nothing).
+  static constexpr size_t kMaxLobes = 8;
 
   // Adds a lobe (one of Lobe's alternatives); finish() must follow the last one.
   template <class LobeType>

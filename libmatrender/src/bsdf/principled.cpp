@@ -118,6 +118,12 @@ PrincipledParameters::PrincipledParameters(const PrincipledInputs& inputs, Clear
     // Nothing is left of a surface with no coverage but its transparency.
     if (!(coverage > kClosureWeightCutoff)) sheen_enabled = specular_enabled = clearcoat_enabled = glass_enabled = false;
   }
+
+  // svm_closure.h, CLOSURE_BSDF_ASHIKHMIN_VELVET_ID: "sigma = saturatef(param1)"; bsdf_alloc
+  // drops a closure whose sample weight, the weight's average, is below the cutoff.
+  velvet_weight = glm::max(inputs.color(MaterialParameter::VelvetColor), glm::vec3(0.0f));
+  velvet_enabled = channel_average(velvet_weight) >= kClosureWeightCutoff;
+  velvet_sigma = glm::clamp(inputs.scalar(MaterialParameter::VelvetSigma), 0.0f, 1.0f);
 }
 
 void add_principled_lobes(const PrincipledParameters& p, const glm::vec3& wo, const ShadingGeometry& geometry,
@@ -134,8 +140,9 @@ void add_principled_lobes(const PrincipledParameters& p, const glm::vec3& wo, co
   if (p.glass_enabled) add_glass_lobes(p, wo, geometry.front_face, lobes);
   if (p.clearcoat_enabled)
     lobes->add(
-        ClearcoatLobe(p.clearcoat_weight, p.clearcoat_alpha, p.clearcoat_estimator, wo, geometry.clearcoat_normal));
+        ClearcoatLobe(p.clearcoat_weight, p.clearcoat_alpha, p.clearcoat_estimator, wo, geometry.unmapped_normal));
   if (p.transparent) lobes->add(TransparentLobe(glm::vec3(1.0f - p.coverage), wo));
+  if (p.velvet_enabled) lobes->add(VelvetLobe(p.velvet_weight, p.velvet_sigma, wo, geometry.unmapped_normal));
   lobes->finish();
 }
 

@@ -6,7 +6,9 @@
 // CLOSURE_BSDF_PRINCIPLED_ID), all scaled by the Alpha input, whose complement a transparent
 // lobe passes straight through. A material without a lobe pays nothing for it: specular 0 and
 // metallic 0 make no specular lobe at all; sheen, clearcoat and transmission 0 and alpha 1 (the
-// defaults) no sheen, clearcoat, glass or transparent lobes.
+// defaults) no sheen, clearcoat, glass or transparent lobes. Beside it, the Velvet BSDF that
+// Blender's glTF importer adds for KHR_materials_sheen (velvet_lobe.h), made only where the
+// velvet colour is not black.
 #include <array>
 #include <cstdint>
 
@@ -79,6 +81,11 @@ struct PrincipledParameters {
   // Coverage: every weight above is scaled by it, and 1 - coverage passes straight through.
   float coverage = 1.0f;           // the Alpha input
   bool transparent;                // 1 - coverage above Cycles' cutoff 1e-5
+  // The Velvet BSDF added to the Principled one: its colour as the weight, whatever the
+  // Principled BSDF's alpha, metallic and transmission are (the Add Shader after it).
+  glm::vec3 velvet_weight{0.0f};
+  float velvet_sigma = 1.0f;
+  bool velvet_enabled;             // the colour's average at or above Cycles' cutoff 1e-5
 };
 
 // What a hit adds to the shading frame, in its local coordinates.
@@ -86,9 +93,10 @@ struct ShadingGeometry {
   // Cycles' sd->N: the interpolated normal before normal mapping and ensure_valid_reflection.
   // Where it differs from +Z the diffuse lobe carries Cycles' bump shadowing term.
   glm::vec3 smooth_normal{0.0f, 0.0f, 1.0f};
-  // The clearcoat's normal: the smooth normal made valid for reflection, as Cycles makes the
-  // unlinked Clearcoat Normal input; it differs from +Z only under a normal map.
-  glm::vec3 clearcoat_normal{0.0f, 0.0f, 1.0f};
+  // The normal of the lobes whose Normal input is left unlinked (the clearcoat, the velvet): the
+  // smooth normal made valid for reflection, as Cycles makes every closure's normal; it differs
+  // from +Z only under a normal map.
+  glm::vec3 unmapped_normal{0.0f, 0.0f, 1.0f};
   // The viewer is on the side the triangle's winding faces: glass is entered, not left.
   bool front_face = true;
 };

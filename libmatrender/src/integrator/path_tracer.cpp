@@ -206,10 +206,10 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     geometry.front_face = sp.front_face;
     if (sp.smooth_normal != sp.shading_normal) {
       geometry.smooth_normal = frame.to_local(sp.smooth_normal);
-      // Without a normal map the clearcoat's normal is the shading normal: both are the smooth
-      // normal made valid for reflection.
-      if (parameters.clearcoat_enabled && scene_.materials[sp.material].normal_map)
-        geometry.clearcoat_normal =
+      // Without a normal map the clearcoat's and the velvet's normal is the shading normal: both
+      // are the smooth normal made valid for reflection.
+      if ((parameters.clearcoat_enabled || parameters.velvet_enabled) && scene_.materials[sp.material].normal_map)
+        geometry.unmapped_normal =
             frame.to_local(ensure_valid_reflection(sp.geometric_normal, wo_world, sp.smooth_normal));
     }
     Bsdf bsdf(frame, sp.geometric_normal);

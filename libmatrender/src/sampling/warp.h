@@ -35,6 +35,17 @@ inline glm::vec3 sample_cosine_hemisphere(glm::vec2 u) {
 
 inline float cosine_hemisphere_pdf(float cos_theta) { return std::max(cos_theta, 0.0f) * kInvPi; }
 
+// Uniform over the hemisphere (+Z): z = u.x, phi = 2 pi u.y (pbrt-v4 eq. A.5.2 with its two
+// variables swapped, as Cycles' sample_uniform_hemisphere has them); pdf = 1 / (2 pi).
+inline glm::vec3 sample_uniform_hemisphere(glm::vec2 u) {
+  const float z = u.x;
+  const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+  const float phi = 2.0f * kPi * u.y;
+  return glm::vec3(r * std::cos(phi), r * std::sin(phi), z);
+}
+
+constexpr float kUniformHemispherePdf = 0.5f * kInvPi;
+
 // Power heuristic with beta = 2 (Veach 1997, eq. 9.13), one sample from each strategy.
 inline float power_heuristic(float pdf_a, float pdf_b) {
   const float a2 = pdf_a * pdf_a;

@@ -59,14 +59,16 @@ struct BlenderUvMapping {
   std::array<double, 2> scale{1.0, 1.0};
 };
 
-// One input of a Principled BSDF node as Blender's glTF importer left it.
+// One input of a shader node as Blender's glTF importer left it.
 struct BlenderInput {
   std::vector<double> value;  // one number, or RGB
   bool linked = false;        // a node (an image texture, a math node) feeds it
   std::optional<BlenderUvMapping> mapping;  // before the image that feeds it (KHR_texture_transform)
 };
-// Material name -> Principled input name -> input.
-using BlenderMaterials = std::map<std::string, std::map<std::string, BlenderInput>>;
+// Node name ("Principled BSDF", and "Velvet BSDF" where the importer added one) -> input name -> input.
+using BlenderNodes = std::map<std::string, std::map<std::string, BlenderInput>>;
+// Material name -> its nodes.
+using BlenderMaterials = std::map<std::string, BlenderNodes>;
 
 // Imports `gltf_path` with Blender's glTF importer, working in `folder`. Throws std::runtime_error
 // naming Blender's log on failure.

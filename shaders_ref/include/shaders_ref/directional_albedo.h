@@ -21,11 +21,12 @@ struct LobeAlbedos {
   glm::dvec3 clearcoat{0.0};
   glm::dvec3 glass_reflection{0.0};
   glm::dvec3 glass_refraction{0.0};  // over the lower hemisphere
+  glm::dvec3 velvet{0.0};
 };
 
 // Directional albedo of each lobe, a(wo) = integral over the upper hemisphere of
 // f(wo, wi) cos(theta_i) dwi, per RGB channel. wo is a unit vector with wo.z > 0.
-// The diffuse and sheen lobes are integrated over wi in spherical coordinates. The specular lobe is integrated
+// The diffuse, sheen and velvet lobes are integrated over wi in spherical coordinates. The specular lobe is integrated
 // over the half vector m with wi = reflect(wo, m), dwi = 4 (wo.m) dm (Walter et al. 2007,
 // eq. 14), in the "stretched" polar angle s with tan(theta_m) = alpha tan(s): the GGX
 // distribution is spread evenly over s in [0, pi/2) whatever alpha is, and the horizon

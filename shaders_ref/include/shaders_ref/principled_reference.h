@@ -1,6 +1,7 @@
 #pragma once
 // Reference Principled BSDF v1 of Blender 3.4 Cycles (principled or Lambert diffuse, sheen, a
-// single-scatter GGX specular lobe with the "interpolated" Fresnel, clearcoat), written plainly in double
+// single-scatter GGX specular lobe with the "interpolated" Fresnel, clearcoat, glass), and the
+// Velvet BSDF that Blender's glTF importer adds beside it for glTF's sheen, written plainly in double
 // precision from the published equations. It shares no code with libmatrender: it is the
 // independent implementation the fast float code is tested against (docs/conventions.md,
 // "Principled BSDF v1").
@@ -25,6 +26,8 @@ struct PrincipledParams {
   double transmission = 0.0;
   double transmission_roughness = 0.0;
   double ior = 1.45;
+  glm::dvec3 velvet_color{0.0};  // the Velvet BSDF added to the Principled one (black: none)
+  double velvet_sigma = 1.0;
   bool front_face = true;        // the viewer is outside: glass is entered with eta = ior, left with 1 / ior
   bool lambert_diffuse = false;  // Cycles' Diffuse BSDF (f = 1/pi) instead of the principled one
 };
@@ -124,8 +127,16 @@ glm::dvec3 glass_reflection_brdf(const PrincipledParams& p, const glm::dvec3& wo
 // (1 - (1 - roughness)(1 - transmission_roughness))^2. Needs that alpha > 0.
 glm::dvec3 glass_refraction_btdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi);
 
+// Cycles 3.4's Velvet BSDF of colour velvet_color: Ashikhmin, Premoze and Shirley's cloth
+// distribution (2000) in a Cook-Torrance microfacet BRDF (Cook & Torrance 1982, eq. 4 for the
+// shadowing), f = D(h) G / (4 cos_o cos_i) with h = normalize(wo + wi),
+//   D(h) = exp(-cot^2(theta_h) / s^2) / (pi s^2 sin^4(theta_h)),   s = clamp(velvet_sigma, 0.01, 1),
+//   G = min(1, 2 cos_h cos_o / (wo.h), 2 cos_h cos_i / (wo.h)).
+// Zero below the surface and where the colour's average is below Cycles' cutoff.
+glm::dvec3 velvet_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi);
+
 // diffuse_brdf + sheen_brdf + specular_brdf + clearcoat_brdf + glass_reflection_brdf, the
-// reflecting part of the Principled BSDF.
+// reflecting part of the Principled BSDF, + velvet_brdf.
 glm::dvec3 principled_brdf(const PrincipledParams& p, const glm::dvec3& wo, const glm::dvec3& wi);
 
 }  // namespace shaders_ref
