@@ -223,7 +223,15 @@ struct Case {
   float transmission = 0.0f, ior = 1.45f, transmission_roughness = 0.0f;
   float alpha = 1.0f;
   matrender::SpecularDistribution distribution = matrender::SpecularDistribution::GGX;
+  glm::vec3 velvet_color{0.0f};  // glTF's sheen: a Velvet BSDF added to the Principled one
+  float velvet_sigma = 1.0f;
 };
+
+Case with_velvet(Case c, glm::vec3 colour, float sigma) {
+  c.velvet_color = colour;
+  c.velvet_sigma = sigma;
+  return c;
+}
 
 }  // namespace
 
@@ -266,6 +274,11 @@ TEST_CASE("Renders agree with Blender 3.4 Cycles up to noise", "[render][blender
        glm::vec3(0.0f), 0.0f, 0.03f, true, 0.0f, 1.45f, 0.0f, 1.0f, matrender::SpecularDistribution::MultiscatterGGX},
       {"multiscatter_dielectric_0.4_parity", {0.3f, 0.5f, 0.7f}, 0.0f, 0.4f, 0.8f, 0.0f, 48, 0.1f, 0.0f, 0.5f,
        glm::vec3(0.0f), 0.0f, 0.03f, true, 0.0f, 1.45f, 0.0f, 1.0f, matrender::SpecularDistribution::MultiscatterGGX},
+      // glTF's sheen as Blender imports it: a narrow velvet rim on dark cloth, and a wide one on
+      // a half metal (the velvet is not scaled by metallic).
+      with_velvet({"velvet_sigma_0.3_dark_cloth", {0.1f, 0.06f, 0.2f}, 0.0f, 0.8f, 0.3f, 0.0f}, {0.9f, 0.8f, 1.0f},
+                  0.3f),
+      with_velvet({"velvet_sigma_1_half_metal", {0.6f, 0.4f, 0.1f}, 0.5f, 0.5f, 0.5f, 0.0f}, {0.3f, 0.5f, 0.2f}, 1.0f),
   };
   for (const Case& c : cases) {
     matrender::Material material;
@@ -283,6 +296,8 @@ TEST_CASE("Renders agree with Blender 3.4 Cycles up to noise", "[render][blender
     material.set(matrender::MaterialParameter::Ior, c.ior);
     material.set(matrender::MaterialParameter::TransmissionRoughness, c.transmission_roughness);
     material.set(matrender::MaterialParameter::Alpha, c.alpha);
+    material.set(matrender::MaterialParameter::VelvetColor, c.velvet_color);
+    material.set(matrender::MaterialParameter::VelvetSigma, c.velvet_sigma);
     material.distribution = c.distribution;
     check_agreement(c.name,
                     agreement_with_cycles(paper_scene(material, c.rings, c.terminator_offset), c.name, c.cycles_parity));
