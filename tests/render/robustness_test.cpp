@@ -39,6 +39,9 @@ Material material_with(float roughness, float metallic) {
   // A lacquer as smooth or rough as the base (roughness 0: a mirror coat).
   m.set(matrender::MaterialParameter::Clearcoat, 1.0f);
   m.set(matrender::MaterialParameter::ClearcoatRoughness, roughness);
+  // glTF's sheen, as narrow (Sigma 0: Cycles' floor 0.01) or wide as the base is rough.
+  m.set(matrender::MaterialParameter::VelvetColor, glm::vec3(0.6f, 0.5f, 0.9f));
+  m.set(matrender::MaterialParameter::VelvetSigma, roughness);
   return m;
 }
 
@@ -110,7 +113,8 @@ TEST_CASE("Grazing views of a smooth normal-mapped sphere stay finite", "[render
       sphere.triangles.push_back({a + 1, b, b + 1});
     }
   Scene scene;
-  // The clearcoat keeps the smooth normal: its lobe is tilted against the normal-mapped frame.
+  // The clearcoat and the velvet keep the smooth normal: their lobes are tilted against the
+  // normal-mapped frame.
   Material m = material_with(0.05f, 0.5f);
   m.set(matrender::MaterialParameter::ClearcoatRoughness, 0.1f);
   const uint8_t bumpy[4 * 3] = {255, 128, 128, 128, 255, 128, 0, 128, 200, 128, 0, 60};
