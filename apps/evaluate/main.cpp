@@ -16,7 +16,7 @@
 #include "matlearn/evaluation/inference.h"
 #include "matlearn/evaluation/panels.h"
 #include "matlearn/evaluation/report.h"
-#include "matlearn/material_families.h"
+#include "matgeom/material_classes.h"
 #include "matlearn/sample_loader.h"
 #include "matlearn/sample_reader.h"
 #include "matlearn/training/checkpoint.h"
@@ -138,7 +138,7 @@ int run(const Options& o) {
   matgeom::AtomicFileSet files(o.output_dir / "metrics.json");
   for (const auto& [material, sample] : result.samples_by_material)
     matlearn::write_panel(o.output_dir / "panels" /
-                              (file_name(material == matlearn::kWholeObject ? "object" : matlearn::material_family_name(material)) +
+                              (file_name(material == matlearn::kWholeObject ? "object" : matgeom::label_name(material)) +
                                ".png"),
                           sample, &files);
   matlearn::write_report(o.output_dir, tables, preamble, &files);

@@ -12,6 +12,7 @@
 
 #include "common/interrupt.h"
 #include "matgeom/builtin_objects.h"
+#include "matgeom/material_classes.h"
 #include "matgeom/material_parameters.h"
 #include "matgeom/memory_limit.h"
 #include "matrender/image_io.h"
@@ -125,6 +126,10 @@ int main(int argc, char** argv) {
     }
     if (options.list_parameters) {
       fmt::print("{}", matgeom::material_parameters_markdown());
+      return 0;
+    }
+    if (options.list_materials) {
+      fmt::print("{}", matgeom::material_classes_markdown());
       return 0;
     }
     return render_and_write(options);

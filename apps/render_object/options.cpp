@@ -150,6 +150,9 @@ void add_scene_options(CLI::App& app, Options& o) {
   app.add_flag("--list-parameters", o.list_parameters,
                "print the material parameters scene files take (a markdown table) and exit")
       ->group(group);
+  app.add_flag("--list-materials", o.list_materials,
+               "print the material classes, their label ids and what each models (a markdown table) and exit")
+      ->group(group);
 }
 
 void add_camera_options(CLI::App& app, Options& o) {

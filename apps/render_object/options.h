@@ -24,6 +24,7 @@ struct Options {
   std::optional<std::string> object;  // NAME[:SEED]
   bool list_objects = false;
   bool list_parameters = false;
+  bool list_materials = false;
   std::optional<std::string> environment;  // replaces the scene's background
   std::optional<double> environment_strength;
   std::optional<double> environment_rotation_deg;

@@ -12,6 +12,7 @@
 #include "matgeom/bounding_sphere.h"
 #include "matgeom/builtin_objects.h"
 #include "matgeom/camera_grid.h"
+#include "matgeom/material_classes.h"
 #include "matrender/asset.h"
 #include "matrender/camera.h"
 #include "matrender/image_io.h"
@@ -21,20 +22,19 @@
 namespace train_regressor {
 namespace {
 
-// One material of a variant: a constant Principled material of one of the repository's families
-// (ids as its label maps: 1 concrete ... 7 wood).
+// One material of a variant: a constant Principled material of one of the repository's classes.
 struct ExampleMaterial {
   const char* name;
-  int family;
+  matgeom::MaterialClass family;
   std::array<float, 3> base_color;  // linear
   float roughness, metallic;
 };
 
 constexpr std::array<ExampleMaterial, 4> kMaterials = {{
-    {"wood_1", 7, {0.30f, 0.14f, 0.05f}, 0.60f, 0.0f},
-    {"metal_1", 4, {0.80f, 0.80f, 0.82f}, 0.25f, 1.0f},
-    {"plastic_1", 5, {0.60f, 0.05f, 0.04f}, 0.35f, 0.0f},
-    {"fabric_1", 2, {0.10f, 0.25f, 0.55f}, 0.90f, 0.0f},
+    {"wood_1", matgeom::MaterialClass::Wood, {0.30f, 0.14f, 0.05f}, 0.60f, 0.0f},
+    {"metal_1", matgeom::MaterialClass::Metal, {0.80f, 0.80f, 0.82f}, 0.25f, 1.0f},
+    {"plastic_1", matgeom::MaterialClass::Plastic, {0.60f, 0.05f, 0.04f}, 0.35f, 0.0f},
+    {"fabric_1", matgeom::MaterialClass::Fabric, {0.10f, 0.25f, 0.55f}, 0.90f, 0.0f},
 }};
 constexpr std::array<const char*, 2> kObjects = {"vase", "chair"};
 
@@ -45,7 +45,7 @@ void render_variant(const matgeom::ObjectAsset& asset, const ExampleMaterial& m,
   matrender::Scene scene;
   matrender::Material material;
   material.name = m.name;
-  material.label_id = m.family;
+  material.label_id = matgeom::label_id(m.family);
   material.set(matrender::MaterialParameter::BaseColor, glm::vec3(m.base_color[0], m.base_color[1], m.base_color[2]));
   material.set(matrender::MaterialParameter::Roughness, m.roughness);
   material.set(matrender::MaterialParameter::Metallic, m.metallic);

@@ -1,8 +1,6 @@
 #pragma once
 // The built-in materials: a finish (wood, fabric, ...) becomes a MaterialDesc with seeded,
-// tileable texture images, labelled with the paper's material family ids
-// (docs/matpredict_repository.md, "Material families and label ids": 1 concrete, 2 fabric,
-// 3 leather, 4 metal, 5 plastic, 6 stone, 7 wood).
+// tileable texture images, labelled with its class (matgeom/material_classes.h).
 #include <string>
 
 #include "builtin/uniform_source.h"
@@ -17,9 +15,9 @@ enum class Finish {
   Leather,       // pebbled grain: leather
   BrushedMetal,  // streaks along u, metallic: metal
   Plastic,       // flat colour, constant parameters (no images): plastic
-  Ceramic,       // mottled glaze: stone (fired clay is mineral)
+  Ceramic,       // mottled glaze: ceramic
   Concrete,      // speckled, rough: concrete
-  Paper,         // fine fibres: wood (paper is wood pulp)
+  Paper,         // fine fibres: paper
   Wicker,        // woven strands: wood
 };
 

@@ -8,6 +8,7 @@
 #include "builtin/procedural_textures.h"
 #include "builtin/shapes.h"
 #include "builtin/uniform_source.h"
+#include "matgeom/material_classes.h"
 #include "matgeom/srgb.h"
 
 // The vase keeps UVs of its own rather than the UV pass's: u around, v along the profile, so
@@ -277,10 +278,6 @@ ImagePixels glaze_normal_map(uint32_t salt) {
                           4.0);
 }
 
-// The paper's seven families have no ceramic; stone (id 6) is the nearest, fired clay being a
-// mineral material.
-constexpr int kCeramicLabel = 6;
-
 }  // namespace
 
 ObjectAsset make_vase(uint32_t seed) {
@@ -302,7 +299,7 @@ ObjectAsset make_vase(uint32_t seed) {
   body.set_metallic_roughness_image(glaze_metallic_roughness_image);
   body.normal_image = glaze_normals;
   body.normal_strength = 1.0;
-  body.label_id = kCeramicLabel;
+  body.label_id = label_id(MaterialClass::Ceramic);
   const uint32_t body_part = builder.add_part("body", body);
 
   MaterialDesc band("glaze_band");
@@ -311,7 +308,7 @@ ObjectAsset make_vase(uint32_t seed) {
   band.set(P::Metallic, 0.0).set(P::Roughness, 0.12);
   band.normal_image = glaze_normals;
   band.normal_strength = 0.5;
-  band.label_id = kCeramicLabel;
+  band.label_id = label_id(MaterialClass::Ceramic);
   const uint32_t band_part = builder.add_part("glaze_band", band);
 
   const Profile profile = vase_profile(shape);

@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "matgeom/atomic_file.h"
-#include "matlearn/material_families.h"
+#include "matgeom/material_classes.h"
 
 namespace matlearn {
 namespace {
@@ -53,7 +53,7 @@ std::vector<ReportTable> report_tables(const std::vector<ScoredMap>& scores) {
   return {table_of("by material", scores,
                    [](const ScoredMap& s, std::string& g) {
                      if (s.material == kWholeObject) return false;
-                     g = material_family_name(s.material);
+                     g = matgeom::label_name(s.material);
                      return true;
                    }),
           table_of("by object", scores,

@@ -21,6 +21,7 @@
 #include "matgeom/builtin_objects.h"
 #include "matgeom/camera_grid.h"
 #include "matgeom/input_file.h"
+#include "matgeom/material_classes.h"
 #include "matgeom/material_parameters.h"
 #include "matgeom/mesh_io.h"
 #include "matrender/image_io.h"
@@ -499,6 +500,17 @@ void read_parameter(const Node& node, const matgeom::MaterialParameterInfo& info
   value.channel = node.has("channel") ? static_cast<int>(node.required("channel").choice({"R", "G", "B", "A"})) : 0;
 }
 
+// A material class's name ("wood", matgeom/material_classes.h) or any integer a 16-bit label
+// PNG holds.
+int read_label_id(const Node& node) {
+  if (!node.is_string()) return node.integer_in(0, 65535);
+  const std::string name = node.string();
+  if (const std::optional<matgeom::MaterialClass> c = matgeom::material_class_named(name)) return matgeom::label_id(*c);
+  std::vector<std::string> names;
+  for (const matgeom::MaterialClassInfo& info : matgeom::kMaterialClasses) names.push_back(info.name);
+  node.fail("unknown material class \"" + name + "\" (known: " + quoted_list(names) + ")");
+}
+
 MaterialDescription read_material(const Node& node, const std::string& name, const fs::path& folder) {
   std::vector<const char*> keys = {"normal_map", "label_id", "diffuse_model", "distribution"};
   for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) keys.push_back(info.name);
@@ -515,8 +527,7 @@ MaterialDescription read_material(const Node& node, const std::string& name, con
     if (auto t = n->find("transform")) m.normal_map_uv_transform = read_texture_transform(*t);
     if (auto strength = n->find("strength")) m.normal_strength = static_cast<float>(strength->non_negative());
   }
-  // Label AOVs are 16-bit PNGs.
-  if (auto n = node.find("label_id")) m.label_id = n->integer_in(0, 65535);
+  if (auto n = node.find("label_id")) m.label_id = read_label_id(*n);
   if (auto n = node.find("distribution"))
     m.distribution = n->choice({"ggx", "multiscatter_ggx"}) == 0 ? SpecularDistribution::GGX
                                                                  : SpecularDistribution::MultiscatterGGX;
