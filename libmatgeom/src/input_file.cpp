@@ -1,6 +1,8 @@
 #include "matgeom/input_file.h"
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <system_error>
 
@@ -19,6 +21,15 @@ std::optional<std::string> input_file_problem(const std::string& path) {
 
 void require_input_file(const std::string& path) {
   if (const std::optional<std::string> problem = input_file_problem(path)) throw std::runtime_error(path + ": " + *problem);
+}
+
+std::optional<std::string> read_whole_file(const std::filesystem::path& file, std::string& bytes) {
+  if (std::optional<std::string> problem = input_file_problem(file.string())) return problem;
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return std::string("cannot open the file");
+  bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  if (in.bad()) return std::string("cannot read the file");
+  return std::nullopt;
 }
 
 }  // namespace matgeom

@@ -2,6 +2,7 @@
 // The one check every reader makes before it opens a file it was given: the path must name a
 // regular file. A directory fails late with an odd message; a device (/dev/zero) or a FIFO can
 // block a reader or feed it forever, so neither is ever opened.
+#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -13,5 +14,9 @@ std::optional<std::string> input_file_problem(const std::string& path);
 
 // Throws std::runtime_error "<path>: <problem>" unless `path` names a regular file.
 void require_input_file(const std::string& path);
+
+// The whole of the regular file `file` into `bytes`, or the problem (input_file_problem's, or
+// that it could not be opened or read).
+std::optional<std::string> read_whole_file(const std::filesystem::path& file, std::string& bytes);
 
 }  // namespace matgeom

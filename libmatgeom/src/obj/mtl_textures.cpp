@@ -5,47 +5,18 @@
 #include <limits>
 #include <optional>
 
-#include <tiny_gltf.h>
-
 #include "file_error.h"
-#include "image_bytes.h"
+#include "image_file.h"
 #include "matgeom/text.h"
 #include "obj/obj_loading.h"
 
 namespace matgeom::obj {
 namespace {
 
-// Decoded with tinygltf's stb_image. Its exported decoder always expands to RGBA (the
-// channel-preserving option is internal to tinygltf's implementation), so every texture read
-// from an OBJ has 4 channels.
 ImagePixels decode_texture(const std::string& obj_path, const TextureSource& source) {
-  std::string bytes;
-  if (const std::optional<std::string> problem = read_whole_file(source.file, bytes))
-    fail(obj_path, concat(source.what, ": cannot open texture ", source.file.string(), ": ", *problem));
-  if (bytes.size() > static_cast<size_t>(std::numeric_limits<int>::max())) {
-    fail(obj_path, concat(source.what, ": texture ", source.file.string(), " is too large"));
-  }
-  tinygltf::Image image;
-  image.name = source.file.string();
-  std::string errors;
-  std::string warnings;
-  const bool decoded = tinygltf::LoadImageData(&image, 0, &errors, &warnings, 0, 0,
-                                               reinterpret_cast<const unsigned char*>(bytes.data()),
-                                               static_cast<int>(bytes.size()), nullptr);
-  const size_t expected = static_cast<size_t>(image.width) * static_cast<size_t>(image.height) *
-                          static_cast<size_t>(image.component) *
-                          static_cast<size_t>(image.bits / 8);
-  if (!decoded || image.component != 4 || (image.bits != 8 && image.bits != 16) ||
-      image.image.size() != expected) {
-    fail(obj_path, concat(source.what, ": cannot decode texture ", source.file.string(), " (",
-                          trim(errors), ")"));
-  }
   ImagePixels pixels;
-  pixels.name = source.name;
-  pixels.width = image.width;
-  pixels.height = image.height;
-  pixels.channels = image.component;
-  pixels.data = to_8_bit(image);
+  if (const std::optional<std::string> problem = decode_image_file(source.file, source.name, pixels))
+    fail(obj_path, concat(source.what, ": texture ", source.file.string(), ": ", *problem));
   return pixels;
 }
 

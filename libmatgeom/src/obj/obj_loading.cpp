@@ -2,8 +2,6 @@
 
 #include <cmath>
 #include <cstddef>
-#include <fstream>
-#include <iterator>
 #include <map>
 #include <sstream>
 #include <utility>
@@ -16,15 +14,6 @@
 namespace matgeom::obj {
 
 namespace fs = std::filesystem;
-
-std::optional<std::string> read_whole_file(const fs::path& file, std::string& bytes) {
-  if (std::optional<std::string> problem = input_file_problem(file.string())) return problem;
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return std::string("cannot open the file");
-  bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  if (in.bad()) return std::string("cannot read the file");
-  return std::nullopt;
-}
 
 // ---------------------------------------------------------------------------------------------
 // Loading

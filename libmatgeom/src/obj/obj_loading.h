@@ -1,8 +1,6 @@
 #pragma once
 // Loading: an OBJ file and its .mtl files parsed and triangulated by tinyobjloader, and the
 // checks on what tinyobjloader returns (finite values, indices in range, triangles).
-#include <filesystem>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,10 +16,6 @@ struct ObjFile {
   std::vector<std::string> material_libraries;  // the .mtl file of material k
   std::string warnings;
 };
-
-// Reads the whole file into `bytes`; returns why it could not (matgeom/input_file.h's problems,
-// or a failed read), or nothing.
-std::optional<std::string> read_whole_file(const std::filesystem::path& file, std::string& bytes);
 
 ObjFile load_obj(const std::string& path);
 
