@@ -16,6 +16,8 @@ find_package(ZLIB REQUIRED)
 # so it is found through pkg-config, which has no such quirks.
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(OpenImageIO REQUIRED IMPORTED_TARGET OpenImageIO)
+# stb's image resampler (libstb-dev), for material maps of other sizes than their set's.
+pkg_check_modules(stb REQUIRED IMPORTED_TARGET stb)
 
 if(MATPREDICT_BUILD_TESTS)
   find_package(Catch2 2.13 REQUIRED CONFIG)

@@ -7,7 +7,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libembree-dev libtbb-dev libglm-dev libeigen3-dev
   libopenimageio-dev
-  libtinygltf-dev libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libfmt-dev libyaml-cpp-dev
+  libtinygltf-dev libtinyobjloader-dev libstb-dev nlohmann-json3-dev libcli11-dev libfmt-dev libyaml-cpp-dev
   libtorch-dev libopenblas0-openmp zlib1g-dev
   catch2
   python3-skimage python3-pil python3-torch python3-torchvision

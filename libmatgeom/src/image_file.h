@@ -1,6 +1,8 @@
 #pragma once
 // Image files as the readers of meshes and material folders keep them: decoded with tinygltf's
 // stb_image (PNG, JPEG, BMP, TGA) into 8-bit RGBA.
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -13,5 +15,13 @@ namespace matgeom {
 // returns the problem ("no such file", "cannot decode the image (...)", ...).
 std::optional<std::string> decode_image_file(const std::filesystem::path& file, const std::string& name,
                                              ImagePixels& out);
+
+// What Blender makes of a data (Non-Color) image's colour fed to a float socket, as a
+// roughness or metallic map is: its luminance, with the Rec. 709 weights of Blender's default
+// colour management, of texel `pixel` of an RGBA image.
+inline uint8_t data_luminance(const ImagePixels& rgba, size_t pixel) {
+  const uint8_t* p = &rgba.data[4 * pixel];
+  return static_cast<uint8_t>((2126u * p[0] + 7152u * p[1] + 722u * p[2] + 5000u) / 10000u);
+}
 
 }  // namespace matgeom

@@ -19,13 +19,6 @@ ImagePixels decode_texture(const std::string& obj_path, const TextureSource& sou
   return pixels;
 }
 
-// Blender feeds a Pr or Pm map's colour to a float socket, which takes its luminance (Rec. 709
-// weights, those of Blender's default colour management).
-uint8_t luminance(const ImagePixels& rgba, size_t pixel) {
-  const uint8_t* p = &rgba.data[4 * pixel];
-  return static_cast<uint8_t>((2126u * p[0] + 7152u * p[1] + 722u * p[2] + 5000u) / 10000u);
-}
-
 }  // namespace
 
 int TextureTable::color_texture(const TextureSource& source) {
@@ -70,8 +63,8 @@ ImagePixels TextureTable::pack_metallic_roughness(const TextureSource* roughness
   const size_t pixel_count = static_cast<size_t>(shape.width) * static_cast<size_t>(shape.height);
   packed.data.resize(3 * pixel_count);
   for (size_t i = 0; i < pixel_count; ++i) {
-    packed.data[3 * i + 1] = roughness_source ? luminance(roughness, i) : 255;
-    packed.data[3 * i + 2] = metallic_source ? luminance(metallic, i) : 255;
+    packed.data[3 * i + 1] = roughness_source ? data_luminance(roughness, i) : 255;
+    packed.data[3 * i + 2] = metallic_source ? data_luminance(metallic, i) : 255;
   }
   return packed;
 }
