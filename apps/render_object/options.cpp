@@ -121,6 +121,13 @@ void add_scene_options(CLI::App& app, Options& o) {
                      ->group(group);
   scene->excludes(mesh)->excludes(object);
   mesh->excludes(object);
+  app.add_option("--material-dir", o.material_dir,
+                 "render every object in the material of this folder: MatSynth's layout (basecolor.png, "
+                 "roughness.png, metallic.png, normal.png, opacity.png and an optional metadata.json; "
+                 "docs/scene_format.md, \"Material folders\")")
+      ->check(CLI::ExistingDirectory)
+      ->type_name("FOLDER")
+      ->group(group);
   app.add_option("--environment", o.environment,
                  "light the scene with this equirectangular (latitude-longitude) image, as Blender's World > "
                  "Environment Texture; camera rays that miss see it (replaces the scene's background)")
@@ -408,6 +415,20 @@ void apply_environment_options(const Options& o, matrender::BackgroundDescriptio
   if (o.environment_rotation_deg) environment->rotation_z = glm::radians(*o.environment_rotation_deg);
 }
 
+// --material-dir: one scene material, the folder's, on every part of every object.
+void apply_material_options(const Options& o, SceneDescription& scene) {
+  if (!o.material_dir) return;
+  const std::string name = "--material-dir";
+  matrender::MaterialDescription material;
+  material.constants.name = name;
+  material.folder = matrender::MaterialFolderFile{*o.material_dir, Origin{name, std::nullopt}};
+  scene.materials[name] = material;
+  for (matrender::ObjectDescription& object : scene.objects) {
+    object.material = name;
+    object.part_materials.clear();
+  }
+}
+
 void apply_illuminance(const Options& o, LightsDescription& lights) {
   if (o.paper_powers) {
     if (auto* rig = std::get_if<LightRigDescription>(&lights)) rig->target_illuminance_lux.reset();
@@ -435,6 +456,7 @@ SceneDescription describe_scene(const Options& options) {
   apply_render_options(options, scene);
   apply_illuminance(options, scene.lights);
   apply_environment_options(options, scene.background);
+  apply_material_options(options, scene);
   return scene;
 }
 

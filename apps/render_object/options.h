@@ -25,6 +25,7 @@ struct Options {
   bool list_objects = false;
   bool list_parameters = false;
   bool list_materials = false;
+  std::optional<std::string> material_dir;  // every object in this material folder
   std::optional<std::string> environment;  // replaces the scene's background
   std::optional<double> environment_strength;
   std::optional<double> environment_rotation_deg;

@@ -39,7 +39,7 @@ class AssetTextures {
 
 // Every input of the parameter table carries over: its constant, and its image decoded in the
 // table's colour space; the normal map is Non-Color.
-Material material_from_desc(const matgeom::MaterialDesc& desc, AssetTextures& textures) {
+Material material_with_textures(const matgeom::MaterialDesc& desc, AssetTextures& textures) {
   Material m;
   m.name = desc.name;
   m.label_id = desc.label_id;
@@ -61,6 +61,11 @@ Material material_from_desc(const matgeom::MaterialDesc& desc, AssetTextures& te
 
 }  // namespace
 
+Material material_from_desc(const matgeom::MaterialDesc& desc, const std::vector<matgeom::ImagePixels>& images) {
+  AssetTextures textures(images);
+  return material_with_textures(desc, textures);
+}
+
 std::vector<uint32_t> add_asset(Scene& scene, const matgeom::ObjectAsset& asset,
                                 const std::vector<std::optional<uint32_t>>& material_overrides,
                                 const MeshOptions& options) {
@@ -71,7 +76,7 @@ std::vector<uint32_t> add_asset(Scene& scene, const matgeom::ObjectAsset& asset,
     if (k < material_overrides.size() && material_overrides[k]) {
       ids[k] = *material_overrides[k];
     } else if (k < asset.materials.size()) {
-      ids[k] = scene.add_material(material_from_desc(asset.materials[k], textures));
+      ids[k] = scene.add_material(material_with_textures(asset.materials[k], textures));
     } else {
       ids[k] = scene.add_material(Material{});
     }

@@ -19,4 +19,8 @@ std::vector<uint32_t> add_asset(Scene& scene, const matgeom::ObjectAsset& asset,
                                 const std::vector<std::optional<uint32_t>>& material_overrides = {},
                                 const MeshOptions& options = {});
 
+// One material of matgeom's, its image indices into `images` (a material folder's, an asset's),
+// as add_asset makes it: each input a constant or its image in the table's colour space.
+Material material_from_desc(const matgeom::MaterialDesc& desc, const std::vector<matgeom::ImagePixels>& images);
+
 }  // namespace matrender

@@ -49,6 +49,13 @@ struct TextureFile {
   Origin origin;
 };
 
+// A material folder (matgeom/material_folder.h: MatSynth's layout) to read; the path is already
+// resolved against the scene file's folder.
+struct MaterialFolderFile {
+  std::string path;
+  Origin origin;
+};
+
 struct MaterialDescription {
   // Every constant (factors, channels, strengths, label, model); the texture pointers stay empty
   // until the files below are loaded.
@@ -56,6 +63,10 @@ struct MaterialDescription {
   // The texture file of each parameter that has one, by matgeom::MaterialParameter.
   std::array<std::optional<TextureFile>, matgeom::kMaterialParameterCount> textures;
   std::optional<TextureFile> normal_map;
+  // When set, the material is the folder's, read when first used: the fields above are unused,
+  // except a label_id the description gives, which replaces the folder's class.
+  std::optional<MaterialFolderFile> folder;
+  std::optional<int> label_id;
 };
 
 struct MeshFile {

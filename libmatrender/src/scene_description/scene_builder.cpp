@@ -13,6 +13,7 @@
 #include "matgeom/camera_grid.h"
 #include "matgeom/mesh.h"
 #include "matgeom/mesh_io.h"
+#include "matgeom/material_folder.h"
 #include "matrender/asset.h"
 #include "matrender/paper_setup.h"
 #include "matrender/scene_limits.h"
@@ -60,6 +61,7 @@ class SceneMaterials {
   uint32_t id(const std::string& name) {
     if (const auto it = ids_.find(name); it != ids_.end()) return it->second;
     const MaterialDescription& description = described_.at(name);
+    if (description.folder) return ids_[name] = scene_.add_material(folder_material(name, description));
     Material material = description.constants;
     for (size_t k = 0; k < material.parameters.size(); ++k)
       material.parameters[k].texture = texture(description.textures[k]);
@@ -79,6 +81,20 @@ class SceneMaterials {
       }
     }
     return loaded;
+  }
+
+  static Material folder_material(const std::string& name, const MaterialDescription& description) {
+    const MaterialFolderFile& file = *description.folder;
+    matgeom::FolderMaterial folder;
+    try {
+      folder = matgeom::read_material_folder(file.path);
+    } catch (const std::exception& e) {
+      throw file.origin.error("", e.what());
+    }
+    Material material = material_from_desc(folder.material, folder.images);
+    material.name = name;
+    if (description.label_id) material.label_id = *description.label_id;
+    return material;
   }
 
   const std::map<std::string, MaterialDescription>& described_;

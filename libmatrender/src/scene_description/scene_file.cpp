@@ -511,7 +511,23 @@ int read_label_id(const Node& node) {
   node.fail("unknown material class \"" + name + "\" (known: " + quoted_list(names) + ")");
 }
 
+// {"matsynth": folder}: a material folder, optionally with its label.
+MaterialDescription read_folder_material(const Node& node, const std::string& name, const fs::path& folder) {
+  node.expect_keys({"matsynth", "label_id"});
+  MaterialDescription material;
+  material.constants.name = name;
+  const Node path_node = node.required("matsynth");
+  const fs::path path = folder / path_node.string();
+  std::error_code error;
+  if (!fs::is_directory(path, error))
+    path_node.fail("expected a material folder (matgeom's MatSynth layout), found no folder at " + path.string());
+  material.folder = MaterialFolderFile{path.string(), path_node.origin()};
+  if (auto n = node.find("label_id")) material.label_id = read_label_id(*n);
+  return material;
+}
+
 MaterialDescription read_material(const Node& node, const std::string& name, const fs::path& folder) {
+  if (node.has("matsynth")) return read_folder_material(node, name, folder);
   std::vector<const char*> keys = {"normal_map", "label_id", "diffuse_model", "distribution"};
   for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) keys.push_back(info.name);
   node.expect_keys(keys);

@@ -1,0 +1,124 @@
+// Material folders rendered: a scene file's {"matsynth": folder} material shades with the folder's
+// maps (its AOVs are the maps' values, its label the folder's class), and a DirectX normal map
+// tilts the surface the same way as the OpenGL one it is the mirror of.
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "matgeom/material_folder.h"
+#include "matgeom/png_encoding.h"
+#include "matgeom/srgb.h"
+#include "matgeom/tangents.h"
+#include "matrender/asset.h"
+#include "matrender/scene_builder.h"
+#include "matrender/scene_file.h"
+#include "test_scenes.h"
+
+using namespace matrender;
+
+namespace {
+
+std::filesystem::path fresh_folder(const std::string& name) {
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("matpredict_" + name + "_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(path);
+  std::filesystem::create_directories(path);
+  return path;
+}
+
+matgeom::ImagePixels uniform_image(int size, uint8_t r, uint8_t g, uint8_t b) {
+  matgeom::ImagePixels image{"uniform", size, size, 4, std::vector<uint8_t>(static_cast<size_t>(size * size) * 4u)};
+  for (size_t k = 0; k < image.data.size(); k += 4) {
+    image.data[k] = r;
+    image.data[k + 1] = g;
+    image.data[k + 2] = b;
+    image.data[k + 3] = 255;
+  }
+  return image;
+}
+
+void write_png(const std::filesystem::path& path, const matgeom::ImagePixels& image) {
+  std::ofstream(path, std::ios::binary) << matgeom::encode_png(image, path.string());
+}
+
+// Mean colour of a plane lit from +v (light_toward_plus_v) or from -v, its material read from a
+// folder holding only a normal map, tilted toward +v in OpenGL's terms.
+double lit_mean(const std::filesystem::path& folder, bool light_toward_plus_v) {
+  const matgeom::FolderMaterial read = matgeom::read_material_folder(folder.string());
+  Material material = material_from_desc(read.material, read.images);
+  matgeom::TriangleMesh plane = test_scenes::horizontal_square(2.0);
+  plane.normals.assign(plane.positions.size(), glm::vec3(0.0f, 0.0f, 1.0f));
+  matgeom::compute_tangents(plane);
+  Scene scene;
+  scene.add_mesh(plane, {scene.add_material(material)});
+  // A point lamp low over the plane on the +y (+v) or -y side.
+  scene.add_light(PointLight{glm::dvec3(0.0, light_toward_plus_v ? 3.0 : -3.0, 0.8), 200.0, glm::dvec3(1.0)});
+  const Camera camera = Camera::look_at({0, 0, 3}, {0, 0, 0}, {0, 1, 0}, 0.5, 16, 16);
+  RenderSettings settings;
+  settings.samples_per_pixel = 4;
+  FrameBuffers frame;
+  render(scene, camera, settings, frame);
+  return test_scenes::mean_of(frame.color);
+}
+
+}  // namespace
+
+TEST_CASE("A scene file's material folder shades with its maps and is labelled with its class", "[render]") {
+  const std::filesystem::path root = fresh_folder("folder_scene");
+  const std::filesystem::path folder = root / "fabric_test";
+  std::filesystem::create_directories(folder);
+  write_png(folder / "basecolor.png", uniform_image(8, 128, 64, 200));
+  write_png(folder / "roughness.png", uniform_image(4, 64, 64, 64));  // another size: resampled
+  std::ofstream(folder / "metadata.json") << R"({"parameters": {"sheen": 0.5}})";
+  std::ofstream(root / "scene.json") << R"({
+    "camera": { "position": [0.6, -0.6, 0.35], "look_at": [0, 0, 0.15], "width": 32, "height": 32 },
+    "lights": [ { "type": "point", "position": [0, -1, 1], "power": 20 } ],
+    "materials": { "cloth": { "matsynth": "fabric_test" } },
+    "objects": [ { "builtin": "vase", "material": "cloth" } ],
+    "render": { "spp": 2 }
+  })";
+  const SceneDescription description = read_scene_file((root / "scene.json").string());
+  BuiltScene built = build_scene(description);
+  RenderSettings settings = description.settings;
+  settings.aovs = all_aovs();
+  FrameBuffers frame;
+  render(built.scene, built.camera, settings, frame);
+  int hits = 0;
+  for (size_t i = 0; i < frame.label.size(); ++i) {
+    if (frame.alpha[i] < 1.0f) continue;  // the silhouette blends with the background
+    ++hits;
+    CHECK(frame.label[i] == matgeom::label_id(matgeom::MaterialClass::Fabric));
+    const std::vector<float>& base = frame.parameter(MaterialParameter::BaseColor);
+    CHECK(base[3 * i] == Approx(matgeom::srgb_to_linear(128.0 / 255.0)).epsilon(1e-4));
+    CHECK(base[3 * i + 1] == Approx(matgeom::srgb_to_linear(64.0 / 255.0)).epsilon(1e-4));
+    CHECK(base[3 * i + 2] == Approx(matgeom::srgb_to_linear(200.0 / 255.0)).epsilon(1e-4));
+    CHECK(frame.parameter(MaterialParameter::Roughness)[i] == Approx(64.0 / 255.0).epsilon(1e-4));
+    CHECK(frame.parameter(MaterialParameter::Metallic)[i] == 0.0f);
+    CHECK(frame.parameter(MaterialParameter::Sheen)[i] == Approx(0.5f));
+  }
+  CHECK(hits > 50);
+  std::filesystem::remove_all(root);
+}
+
+TEST_CASE("A DirectX normal map lights a surface as the OpenGL map it mirrors", "[render]") {
+  const std::filesystem::path root = fresh_folder("normal_conventions");
+  // Tilted toward +v: OpenGL's green above 128, DirectX's the same amount below.
+  std::filesystem::create_directories(root / "gl");
+  std::filesystem::create_directories(root / "dx");
+  write_png(root / "gl" / "normal_gl.png", uniform_image(4, 128, 200, 200));
+  write_png(root / "dx" / "normal_dx.png", uniform_image(4, 128, 255 - 200, 200));
+  const double gl_plus = lit_mean(root / "gl", true), gl_minus = lit_mean(root / "gl", false);
+  const double dx_plus = lit_mean(root / "dx", true), dx_minus = lit_mean(root / "dx", false);
+  INFO("OpenGL map: lit from +v " << gl_plus << ", from -v " << gl_minus << "; DirectX map: " << dx_plus << ", "
+                                  << dx_minus);
+  // Facing +v, the surface is brighter under the lamp on that side, by far more than noise.
+  CHECK(gl_plus > 1.5 * gl_minus);
+  CHECK(dx_plus == Approx(gl_plus).epsilon(0.02));
+  CHECK(dx_minus == Approx(gl_minus).epsilon(0.02));
+  std::filesystem::remove_all(root);
+}
