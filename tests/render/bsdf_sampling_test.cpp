@@ -375,6 +375,23 @@ ChiSquareResult chi_square_test(const Chart& chart, Sampler&& sample, const Pdf&
   return result;
 }
 
+// One lobe's sampling against its own pdf over the shading frame's upper hemisphere, for lobes
+// whose normal is tilted off it: directions below the shading plane count as failures.
+template <class LobeType>
+ChiSquareResult shading_frame_chi_square(const LobeType& lobe, std::uint64_t seed) {
+  const auto sample = [&](UniformFloats& rng) -> std::optional<glm::vec3> {
+    matrender::LobeSample s;
+    if (!lobe.sample(rng.next2(), &s) || s.wi.z <= 0.0f) return std::nullopt;
+    return s.wi;
+  };
+  const auto pdf = [&](const glm::dvec3& wi) {
+    float p = 0.0f;
+    lobe.eval(glm::vec3(wi), &p);
+    return wi.z > 0.0 ? static_cast<double>(p) : 0.0;
+  };
+  return chi_square_test(CosineAzimuthChart(), sample, pdf, seed);
+}
+
 // The chi-square tests of this file, for the Bonferroni correction of the significance level.
 constexpr std::array<float, 5> kGgxRoughness = {0.02f, 0.1f, 0.3f, 0.6f, 1.0f};
 constexpr std::array<float, 4> kGgxCosO = {1.0f, 0.7f, 0.3f, 0.05f};
@@ -520,18 +537,8 @@ TEST_CASE("Clearcoat sampling fits its pdf (chi-square)", "[render]") {
   const glm::vec3 tilted_normal = glm::normalize(glm::vec3(0.3f, -0.2f, 1.0f));
   const glm::vec3 wo = glm::normalize(glm::vec3(-0.4f, 0.1f, 0.8f));
   const ClearcoatLobe lobe(0.25f, 0.36f, ClearcoatEstimator::Integral, wo, tilted_normal);
-  const auto sample = [&](UniformFloats& rng) -> std::optional<glm::vec3> {
-    matrender::LobeSample s;
-    if (!lobe.sample(rng.next2(), &s) || s.wi.z <= 0.0f) return std::nullopt;
-    return s.wi;
-  };
-  const auto pdf = [&](const glm::dvec3& wi) {
-    float p = 0.0f;
-    lobe.eval(glm::vec3(wi), &p);
-    return wi.z > 0.0 ? static_cast<double>(p) : 0.0;
-  };
   INFO("tilted normal");
-  report(chi_square_test(CosineAzimuthChart(), sample, pdf, ++seed));
+  report(shading_frame_chi_square(lobe, ++seed));
 }
 
 TEST_CASE("Velvet sampling fits its pdf with the lobe's normal tilted (chi-square)", "[render]") {
@@ -540,17 +547,7 @@ TEST_CASE("Velvet sampling fits its pdf with the lobe's normal tilted (chi-squar
   const glm::vec3 tilted_normal = glm::normalize(glm::vec3(-0.25f, 0.3f, 1.0f));
   const glm::vec3 wo = glm::normalize(glm::vec3(0.5f, 0.2f, 0.6f));
   const matrender::VelvetLobe lobe(glm::vec3(0.7f), 0.4f, wo, tilted_normal);
-  const auto sample = [&](UniformFloats& rng) -> std::optional<glm::vec3> {
-    matrender::LobeSample s;
-    if (!lobe.sample(rng.next2(), &s) || s.wi.z <= 0.0f) return std::nullopt;
-    return s.wi;
-  };
-  const auto pdf = [&](const glm::dvec3& wi) {
-    float p = 0.0f;
-    lobe.eval(glm::vec3(wi), &p);
-    return wi.z > 0.0 ? static_cast<double>(p) : 0.0;
-  };
-  report(chi_square_test(CosineAzimuthChart(), sample, pdf, 0x5eed0170));
+  report(shading_frame_chi_square(lobe, 0x5eed0170));
 }
 
 TEST_CASE("GGX refraction sampling fits its pdf (chi-square)", "[render]") {
