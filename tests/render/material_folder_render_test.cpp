@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <optional>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -102,6 +103,19 @@ TEST_CASE("A scene file's material folder shades with its maps and is labelled w
     CHECK(frame.parameter(MaterialParameter::Sheen)[i] == Approx(0.5f));
   }
   CHECK(hits > 50);
+
+  // The same folder given in place on the object.
+  std::ofstream(root / "inline.json") << R"({
+    "camera": { "position": [0.6, -0.6, 0.35], "look_at": [0, 0, 0.15], "width": 8, "height": 8 },
+    "lights": [ { "type": "point", "position": [0, -1, 1], "power": 20 } ],
+    "objects": [ { "builtin": "vase", "material": { "matsynth": "fabric_test" } } ]
+  })";
+  const SceneDescription inline_description = read_scene_file((root / "inline.json").string());
+  REQUIRE(inline_description.objects.size() == 1);
+  REQUIRE(inline_description.objects[0].material == std::optional<std::string>("/objects/0/material"));
+  const MaterialDescription& inline_material = inline_description.materials.at("/objects/0/material");
+  REQUIRE(inline_material.folder);
+  CHECK(inline_material.folder->path == (root / "fabric_test").string());
   std::filesystem::remove_all(root);
 }
 

@@ -606,8 +606,19 @@ std::string read_material_name(const Node& node, const std::map<std::string, Mat
   return name;
 }
 
+// An object's "material": a name from "materials", or a material given in place
+// ({"matsynth": folder}), added to the scene's materials under its JSON pointer.
+std::string read_object_material(const Node& node, const fs::path& folder,
+                                 std::map<std::string, MaterialDescription>& materials) {
+  if (!node.is_object()) return read_material_name(node, materials);
+  if (!node.has("matsynth")) node.fail("expected a material name or {\"matsynth\": folder}");
+  const std::string name = *node.origin().pointer;
+  materials[name] = read_folder_material(node, name, folder);
+  return name;
+}
+
 ObjectDescription read_object(const Node& node, const fs::path& folder,
-                              const std::map<std::string, MaterialDescription>& materials) {
+                              std::map<std::string, MaterialDescription>& materials) {
   if (!node.is_object()) node.fail("expected an object");
   if (node.has("mesh") == node.has("builtin")) node.fail("expected exactly one of \"mesh\" or \"builtin\"");
   ObjectDescription object;
@@ -633,14 +644,14 @@ ObjectDescription read_object(const Node& node, const fs::path& folder,
     object.shadow_terminator_geometry_offset = static_cast<float>(
         offset->number_where([](double v) { return v >= 0.0 && v <= 1.0; }, "a number in [0, 1]"));
   if (node.has("material") && node.has("materials")) node.fail("give either \"material\" or \"materials\", not both");
-  if (auto name = node.find("material")) object.material = read_material_name(*name, materials);
+  if (auto material = node.find("material")) object.material = read_object_material(*material, folder, materials);
   if (auto parts = node.find("materials"))
     for (const auto& [part, name] : parts->members()) object.part_materials[part] = read_material_name(name, materials);
   return object;
 }
 
 std::vector<ObjectDescription> read_objects(const Node& node, const fs::path& folder,
-                                            const std::map<std::string, MaterialDescription>& materials) {
+                                            std::map<std::string, MaterialDescription>& materials) {
   const size_t count = node.array_size("a non-empty array of objects");
   if (count == 0) node.fail("expected a non-empty array of objects");
   std::vector<ObjectDescription> objects;
