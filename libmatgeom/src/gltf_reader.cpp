@@ -1,7 +1,6 @@
 #include "matgeom/gltf_reader.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -48,12 +47,6 @@ bool has_glb_magic(const std::string& path) {
   char magic[4] = {};
   in.read(magic, sizeof(magic));
   return in.gcount() == 4 && std::memcmp(magic, "glTF", 4) == 0;
-}
-
-std::string lowercase_extension(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension;
 }
 
 void check_required_extensions(const GltfFile& file) {

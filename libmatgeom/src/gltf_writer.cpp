@@ -359,7 +359,8 @@ tinygltf::Model make_model(const ObjectAsset& asset) {
   TextureTable textures(model, asset.images);
   for (const MaterialDesc& desc : asset.materials) model.materials.push_back(make_material(desc, textures));
   if (textures.transforms_placed()) model.extensionsUsed.push_back(gltf::kTextureTransform);
-  for (const char* extension : {gltf::kEmissiveStrength, gltf::kIor, gltf::kClearcoat, gltf::kTransmission, gltf::kSheen})
+  for (const char* extension :
+       {gltf::kEmissiveStrength, gltf::kIor, gltf::kClearcoat, gltf::kTransmission, gltf::kSheen})
     for (const tinygltf::Material& material : model.materials)
       if (material.extensions.count(extension)) {
         model.extensionsUsed.push_back(extension);

@@ -1,6 +1,6 @@
 #include "matgeom/material_classes.h"
 
-#include <cctype>
+#include "matgeom/text.h"
 
 namespace matgeom {
 namespace {
@@ -11,12 +11,6 @@ constexpr bool rows_in_id_order() {
   return true;
 }
 static_assert(rows_in_id_order(), "kMaterialClasses must list the classes in id order");
-
-std::string lowercase(std::string_view text) {
-  std::string lower(text);
-  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return lower;
-}
 
 }  // namespace
 

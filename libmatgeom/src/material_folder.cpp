@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -18,6 +17,7 @@
 #include "matgeom/input_file.h"
 #include "matgeom/material_parameters.h"
 #include "matgeom/png_encoding.h"
+#include "matgeom/text.h"
 
 namespace matgeom {
 namespace {
@@ -53,15 +53,9 @@ constexpr const char* kMetadataFile = "metadata.json";
 
 // What stb_image decodes (image_file.h).
 bool is_image_file(const fs::path& file) {
-  std::string extension = file.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string extension = lowercase_extension(file);
   return extension == ".png" || extension == ".jpg" || extension == ".jpeg" || extension == ".bmp" ||
          extension == ".tga";
-}
-
-std::string lowercase(std::string text) {
-  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return text;
 }
 
 // How well a file's lower-case stem names a map: the length of the longest keyword it contains
@@ -146,7 +140,8 @@ glm::dvec3 parameter_value(const fs::path& file, const MaterialParameterInfo& in
 
 Metadata read_metadata(const fs::path& file) {
   Metadata metadata;
-  if (!fs::exists(file)) return metadata;
+  std::error_code missing;
+  if (!fs::exists(file, missing)) return metadata;
   std::string text;
   if (const std::optional<std::string> problem = read_whole_file(file, text)) fail(file.string(), *problem);
   const json doc = json::parse(text, nullptr, false);

@@ -1,7 +1,5 @@
 #include "matgeom/mesh_io.h"
 
-#include <algorithm>
-#include <cctype>
 #include <filesystem>
 #include <stdexcept>
 
@@ -10,16 +8,10 @@
 #include "matgeom/input_file.h"
 #include "matgeom/obj_io.h"
 #include "matgeom/ply_io.h"
+#include "matgeom/text.h"
 
 namespace matgeom {
 namespace {
-
-std::string lowercase_extension(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension;
-}
 
 std::string unsupported(const std::string& path) {
   return path + ": unsupported file type \"" + lowercase_extension(path) + "\" (expected .glb, .gltf, .ply or .obj)";

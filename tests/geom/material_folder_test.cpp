@@ -1,14 +1,14 @@
 // Material folders (matgeom/material_folder.h): maps found by the names MatSynth and PBR packs
 // use, colour spaces and normal conventions, resampling, metadata, what the writer writes reads
 // back the same, and one message per kind of broken folder.
-#include <catch2/catch.hpp>
+#include "matgeom/material_folder.h"
 
+#include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
 
-#include "matgeom/material_folder.h"
 #include "matgeom/material_parameters.h"
 #include "matgeom/png_encoding.h"
 #include "temp_dir.h"
@@ -68,13 +68,16 @@ TEST_CASE("A written material folder reads back the same", "[geom]") {
   TempDir dir;
   FolderMaterial written;
   written.material = matgeom::MaterialDesc("lacquered_oak");
-  written.images = {rgba_image("base", 8, 8,
-                               [](int x, int y) {
-                                 return std::array<uint8_t, 4>{static_cast<uint8_t>(20 * x), static_cast<uint8_t>(30 * y),
-                                                               77, 255};
-                               }),
-                    grey_image("roughness", 8, 140), grey_image("metallic", 8, 0), tilted_normal_map("normal", 8, false),
-                    grey_image("opacity", 8, 255), grey_image("height", 8, 60)};
+  written.images = {
+      rgba_image("base", 8, 8,
+                 [](int x, int y) {
+                   return std::array<uint8_t, 4>{static_cast<uint8_t>(20 * x), static_cast<uint8_t>(30 * y), 77, 255};
+                 }),
+      grey_image("roughness", 8, 140),
+      grey_image("metallic", 8, 0),
+      tilted_normal_map("normal", 8, false),
+      grey_image("opacity", 8, 255),
+      grey_image("height", 8, 60)};
   written.material.set(P::BaseColor, 1.0).set_image(P::BaseColor, 0);
   written.material.set(P::Roughness, 1.0).set_image(P::Roughness, 1);
   written.material.set(P::Metallic, 1.0).set_image(P::Metallic, 2);
@@ -115,7 +118,8 @@ TEST_CASE("A written material folder reads back the same", "[geom]") {
   same_image(written.material.normal_image, read.material.normal_image);
   same_image(written.height_image, read.height_image);
   CHECK(read.specular_image == -1);
-  CHECK(read.files[static_cast<size_t>(FolderMap::BaseColor)] == (dir.path() / "lacquered_oak" / "basecolor.png").string());
+  CHECK(read.files[static_cast<size_t>(FolderMap::BaseColor)] ==
+        (dir.path() / "lacquered_oak" / "basecolor.png").string());
   CHECK(read.files[static_cast<size_t>(FolderMap::Specular)].empty());
 }
 
@@ -211,8 +215,7 @@ TEST_CASE("Each kind of broken material folder gets its own message", "[geom]") 
   std::filesystem::create_directories(folder);
   CHECK_THAT(read_error(folder.string()), Contains(folder.string() + ": no material map in the folder"));
   write_text(folder / "basecolor.png", "not a PNG");
-  CHECK_THAT(read_error(folder.string()),
-             Contains((folder / "basecolor.png").string() + ": cannot decode the image"));
+  CHECK_THAT(read_error(folder.string()), Contains((folder / "basecolor.png").string() + ": cannot decode the image"));
   write_png(folder / "basecolor.png", grey_image("b", 4, 128));
   write_png(folder / "normal.png", grey_image("n", 4, 128));
   CHECK_THAT(read_error(folder.string()), Contains((folder / "normal.png").string() + ": the normal map is grey"));

@@ -52,7 +52,7 @@ matgeom::TriangleMesh merged_surface(const std::vector<matgeom::ObjectAsset>& as
 }
 
 // The scene file's materials, added to the scene on first use so that unused ones load nothing;
-// a texture file shared by several materials is loaded once.
+// a texture file or material folder shared by several materials is loaded once.
 class SceneMaterials {
  public:
   SceneMaterials(const std::map<std::string, MaterialDescription>& described, Scene& scene)
@@ -83,15 +83,20 @@ class SceneMaterials {
     return loaded;
   }
 
-  static Material folder_material(const std::string& name, const MaterialDescription& description) {
+  // A folder used by several materials (or given in place on several objects) is read once.
+  Material folder_material(const std::string& name, const MaterialDescription& description) {
     const MaterialFolderFile& file = *description.folder;
-    matgeom::FolderMaterial folder;
-    try {
-      folder = matgeom::read_material_folder(file.path);
-    } catch (const std::exception& e) {
-      throw file.origin.error("", e.what());
+    auto read = folder_materials_.find(file.path);
+    if (read == folder_materials_.end()) {
+      matgeom::FolderMaterial folder;
+      try {
+        folder = matgeom::read_material_folder(file.path);
+      } catch (const std::exception& e) {
+        throw file.origin.error("", e.what());
+      }
+      read = folder_materials_.emplace(file.path, material_from_desc(folder.material, folder.images)).first;
     }
-    Material material = material_from_desc(folder.material, folder.images);
+    Material material = read->second;
     material.name = name;
     if (description.label_id) material.label_id = *description.label_id;
     return material;
@@ -101,6 +106,7 @@ class SceneMaterials {
   Scene& scene_;
   std::map<std::string, uint32_t> ids_;
   std::map<std::tuple<std::string, ColorSpace, Wrap>, TexturePtr> textures_;
+  std::map<std::string, Material> folder_materials_;  // by folder path
 };
 
 size_t part_count(const matgeom::ObjectAsset& asset) {

@@ -1,7 +1,6 @@
 #include "matrender/scene_file.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -24,6 +23,7 @@
 #include "matgeom/material_classes.h"
 #include "matgeom/material_parameters.h"
 #include "matgeom/mesh_io.h"
+#include "matgeom/text.h"
 #include "matrender/image_io.h"
 
 namespace matrender {
@@ -230,12 +230,6 @@ std::string read_existing_file(const Node& node, const fs::path& folder) {
   if (!fs::exists(path, ec)) node.fail("file not found: " + path.string());
   if (fs::is_directory(path, ec)) node.fail("is a folder, expected a file: " + path.string());
   return path.string();
-}
-
-std::string lowercase_extension(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
 }
 
 // ---- camera ---------------------------------------------------------------------------------
@@ -627,7 +621,7 @@ ObjectDescription read_object(const Node& node, const fs::path& folder,
     node.expect_keys({"mesh", "transform", "material", "materials", "shadow_terminator_geometry_offset"});
     const std::string path = read_existing_file(node.required("mesh"), folder);
     const std::vector<std::string>& extensions = matgeom::object_file_extensions();
-    if (std::find(extensions.begin(), extensions.end(), lowercase_extension(path)) == extensions.end())
+    if (std::find(extensions.begin(), extensions.end(), matgeom::lowercase_extension(path)) == extensions.end())
       node.required("mesh").fail("expected a .glb, .gltf, .ply or .obj file");
     object.source = MeshFile{path};
   } else {
