@@ -13,6 +13,7 @@
 #include "common/interrupt.h"
 #include "matgeom/builtin_objects.h"
 #include "matgeom/material_classes.h"
+#include "matgeom/material_library.h"
 #include "matgeom/material_parameters.h"
 #include "matgeom/memory_limit.h"
 #include "matrender/image_io.h"
@@ -129,7 +130,8 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (options.list_materials) {
-      fmt::print("{}", matgeom::material_classes_markdown());
+      fmt::print("{}\n{}\n{}", matgeom::material_classes_markdown(), matgeom::library_styles_markdown(),
+                 matgeom::library_ranges_markdown());
       return 0;
     }
     return render_and_write(options);

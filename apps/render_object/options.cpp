@@ -121,13 +121,34 @@ void add_scene_options(CLI::App& app, Options& o) {
                      ->group(group);
   scene->excludes(mesh)->excludes(object);
   mesh->excludes(object);
-  app.add_option("--material-dir", o.material_dir,
+  auto* library_material =
+      app.add_option_function<std::string>(
+             "--material",
+             [&o](const std::string& text) {
+               try {
+                 o.material = matgeom::parse_library_material(text);
+               } catch (const std::invalid_argument& e) {
+                 throw CLI::ValidationError("--material", e.what());
+               }
+             },
+             "render every object in a material of the procedural library: a class, optionally one of its "
+             "styles, and a seed (wood, wood:3, wood/wicker:3; --list-materials lists them)")
+          ->type_name("CLASS[/STYLE][:SEED]")
+          ->group(group);
+  app.add_option("--material-resolution", o.material_resolution,
+                 "texels along each side of the --material's maps (the scene file's \"resolution\")")
+      ->check(CLI::Range(matgeom::kMinLibraryResolution, matgeom::kMaxLibraryResolution))
+      ->default_val(o.material_resolution)
+      ->type_name("N")
+      ->group(group);
+  auto* material_dir = app.add_option("--material-dir", o.material_dir,
                  "render every object in the material of this folder: MatSynth's layout (basecolor.png, "
                  "roughness.png, metallic.png, normal.png, opacity.png and an optional metadata.json; "
                  "docs/scene_format.md, \"Material folders\")")
       ->check(CLI::ExistingDirectory)
       ->type_name("FOLDER")
       ->group(group);
+  library_material->excludes(material_dir);
   app.add_option("--environment", o.environment,
                  "light the scene with this equirectangular (latitude-longitude) image, as Blender's World > "
                  "Environment Texture; camera rays that miss see it (replaces the scene's background)")
@@ -158,7 +179,8 @@ void add_scene_options(CLI::App& app, Options& o) {
                "print the material parameters scene files take (a markdown table) and exit")
       ->group(group);
   app.add_flag("--list-materials", o.list_materials,
-               "print the material classes, their label ids and what each models (a markdown table) and exit")
+               "print the material classes, their label ids and what each models, then the procedural library's "
+               "styles and ranges (markdown tables) and exit")
       ->group(group);
 }
 
@@ -415,13 +437,18 @@ void apply_environment_options(const Options& o, matrender::BackgroundDescriptio
   if (o.environment_rotation_deg) environment->rotation_z = glm::radians(*o.environment_rotation_deg);
 }
 
-// --material-dir: one scene material, the folder's, on every part of every object.
+// --material-dir or --material: one scene material, the folder's or the library's, on every part
+// of every object.
 void apply_material_options(const Options& o, SceneDescription& scene) {
-  if (!o.material_dir) return;
-  const std::string name = "--material-dir";
+  if (!o.material_dir && !o.material) return;
+  const std::string name = o.material_dir ? "--material-dir" : "--material";
   matrender::MaterialDescription material;
   material.constants.name = name;
-  material.folder = matrender::MaterialFolderFile{*o.material_dir, Origin{name, std::nullopt}};
+  if (o.material_dir) {
+    material.folder = matrender::MaterialFolderFile{*o.material_dir, Origin{name, std::nullopt}};
+  } else {
+    material.library = matrender::LibraryMaterialRequest{*o.material, o.material_resolution, Origin{name, std::nullopt}};
+  }
   scene.materials[name] = material;
   for (matrender::ObjectDescription& object : scene.objects) {
     object.material = name;

@@ -225,10 +225,12 @@ FolderMaterial read_material_folder(const std::string& folder_name, const Materi
   if (!fs::exists(folder, error)) fail(folder_name, "no such folder");
   if (!fs::is_directory(folder, error)) fail(folder_name, "not a folder");
   const std::array<fs::path, kFolderMapCount> files = find_maps(folder);
-  if (std::all_of(files.begin(), files.end(), [](const fs::path& f) { return f.empty(); }))
+  // A material of constants only (glossy plastic, clear glass) is a metadata.json alone.
+  if (std::all_of(files.begin(), files.end(), [](const fs::path& f) { return f.empty(); }) &&
+      !fs::exists(folder / kMetadataFile, error))
     fail(folder_name,
          "no material map in the folder (PNG, JPEG, BMP or TGA files named basecolor, albedo, diffuse, roughness, "
-         "metallic, normal, opacity, height or specular)");
+         "metallic, normal, opacity, height or specular) and no metadata.json");
   const Metadata metadata = read_metadata(folder / kMetadataFile);
 
   FolderMaterial result;

@@ -15,6 +15,11 @@ inline double srgb_to_linear(double c) {
   return std::pow((c + 0.055) / 1.055, 2.4);
 }
 
+inline double linear_to_srgb(double c) {
+  if (c <= 0.0031308) return c < 0.0 ? 0.0 : 12.92 * c;
+  return 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+}
+
 inline float linear_to_srgb(float c) {
   if (c <= 0.0031308f) return c < 0.0f ? 0.0f : 12.92f * c;
   return 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;

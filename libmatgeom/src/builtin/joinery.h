@@ -8,7 +8,7 @@
 #include "builtin/furniture_solids.h"
 #include "builtin/materials.h"
 #include "builtin/object_builder.h"
-#include "builtin/uniform_source.h"
+#include "uniform_source.h"
 
 namespace matgeom::builtin {
 

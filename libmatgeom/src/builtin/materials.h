@@ -3,7 +3,7 @@
 // tileable texture images, labelled with its class (matgeom/material_classes.h).
 #include <string>
 
-#include "builtin/uniform_source.h"
+#include "uniform_source.h"
 #include "matgeom/object_asset.h"
 
 namespace matgeom::builtin {

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "builtin/materials.h"
-#include "builtin/uniform_source.h"
+#include "uniform_source.h"
 #include "matgeom/object_asset.h"
 
 namespace matgeom::builtin {

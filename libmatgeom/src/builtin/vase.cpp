@@ -7,7 +7,7 @@
 #include "builtin/objects.h"
 #include "builtin/procedural_textures.h"
 #include "builtin/shapes.h"
-#include "builtin/uniform_source.h"
+#include "uniform_source.h"
 #include "matgeom/material_classes.h"
 #include "matgeom/srgb.h"
 

@@ -15,6 +15,7 @@
 #include <glm/glm.hpp>
 
 #include "matgeom/camera_grid.h"
+#include "matgeom/material_library.h"
 #include "matrender/camera.h"
 #include "matrender/light.h"
 #include "matrender/material.h"
@@ -56,6 +57,14 @@ struct MaterialFolderFile {
   Origin origin;
 };
 
+// A material of the procedural library (matgeom/material_library.h), generated when first used.
+struct LibraryMaterialRequest {
+  matgeom::LibraryMaterialSpec spec;
+  int resolution = kDefaultLibraryResolution;
+  Origin origin;
+  static constexpr int kDefaultLibraryResolution = 1024;
+};
+
 struct MaterialDescription {
   // Every constant (factors, channels, strengths, label, model); the texture pointers stay empty
   // until the files below are loaded.
@@ -63,9 +72,11 @@ struct MaterialDescription {
   // The texture file of each parameter that has one, by matgeom::MaterialParameter.
   std::array<std::optional<TextureFile>, matgeom::kMaterialParameterCount> textures;
   std::optional<TextureFile> normal_map;
-  // When set, the material is the folder's, read when first used: the fields above are unused,
-  // except a label_id the description gives, which replaces the folder's class.
+  // When one is set, the material is the folder's, read when first used, or the library's,
+  // generated then: the fields above are unused, except a label_id the description gives, which
+  // replaces the class's.
   std::optional<MaterialFolderFile> folder;
+  std::optional<LibraryMaterialRequest> library;
   std::optional<int> label_id;
 };
 

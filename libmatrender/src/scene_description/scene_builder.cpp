@@ -14,6 +14,7 @@
 #include "matgeom/mesh.h"
 #include "matgeom/mesh_io.h"
 #include "matgeom/material_folder.h"
+#include "matgeom/material_library.h"
 #include "matrender/asset.h"
 #include "matrender/paper_setup.h"
 #include "matrender/scene_limits.h"
@@ -62,6 +63,7 @@ class SceneMaterials {
     if (const auto it = ids_.find(name); it != ids_.end()) return it->second;
     const MaterialDescription& description = described_.at(name);
     if (description.folder) return ids_[name] = scene_.add_material(folder_material(name, description));
+    if (description.library) return ids_[name] = scene_.add_material(library_material(name, description));
     Material material = description.constants;
     for (size_t k = 0; k < material.parameters.size(); ++k)
       material.parameters[k].texture = texture(description.textures[k]);
@@ -102,11 +104,32 @@ class SceneMaterials {
     return material;
   }
 
+  // A library material asked for by several scene materials is generated once.
+  Material library_material(const std::string& name, const MaterialDescription& description) {
+    const LibraryMaterialRequest& request = *description.library;
+    const std::string key = matgeom::library_material_name(request.spec) + "@" + std::to_string(request.resolution);
+    auto made = library_materials_.find(key);
+    if (made == library_materials_.end()) {
+      matgeom::FolderMaterial generated;
+      try {
+        generated = matgeom::generate_library_material(request.spec, {request.resolution, 0});
+      } catch (const std::exception& e) {
+        throw request.origin.error("", e.what());
+      }
+      made = library_materials_.emplace(key, material_from_desc(generated.material, generated.images)).first;
+    }
+    Material material = made->second;
+    material.name = name;
+    if (description.label_id) material.label_id = *description.label_id;
+    return material;
+  }
+
   const std::map<std::string, MaterialDescription>& described_;
   Scene& scene_;
   std::map<std::string, uint32_t> ids_;
   std::map<std::tuple<std::string, ColorSpace, Wrap>, TexturePtr> textures_;
-  std::map<std::string, Material> folder_materials_;  // by folder path
+  std::map<std::string, Material> folder_materials_;   // by folder path
+  std::map<std::string, Material> library_materials_;  // by canonical name and resolution
 };
 
 size_t part_count(const matgeom::ObjectAsset& asset) {

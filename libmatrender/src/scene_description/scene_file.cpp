@@ -520,8 +520,42 @@ MaterialDescription read_folder_material(const Node& node, const std::string& na
   return material;
 }
 
+// {"class": "wood", "style": "wicker", "seed": 3, "resolution": 1024}: a material of the
+// procedural library, optionally with its label.
+MaterialDescription read_library_material(const Node& node, const std::string& name) {
+  node.expect_keys({"class", "style", "seed", "resolution", "label_id"});
+  MaterialDescription material;
+  material.constants.name = name;
+  LibraryMaterialRequest request;
+  const Node class_node = node.required("class");
+  const std::optional<matgeom::MaterialClass> material_class = matgeom::material_class_named(class_node.string());
+  if (!material_class || *material_class == matgeom::MaterialClass::Background) {
+    std::vector<std::string> names;
+    for (const matgeom::MaterialClassInfo& info : matgeom::kMaterialClasses)
+      if (info.id != matgeom::MaterialClass::Background) names.push_back(info.name);
+    class_node.fail("unknown material class \"" + class_node.string() + "\" (known: " + quoted_list(names) + ")");
+  }
+  request.spec.material_class = *material_class;
+  if (auto n = node.find("seed")) request.spec.seed = n->uint32();
+  if (auto n = node.find("style")) {
+    request.spec.style = n->string();
+    try {
+      matgeom::resolved_style(request.spec);
+    } catch (const std::invalid_argument& e) {
+      n->fail(e.what());
+    }
+  }
+  if (auto n = node.find("resolution"))
+    request.resolution = n->integer_in(matgeom::kMinLibraryResolution, matgeom::kMaxLibraryResolution);
+  request.origin = node.origin();
+  material.library = request;
+  if (auto n = node.find("label_id")) material.label_id = read_label_id(*n);
+  return material;
+}
+
 MaterialDescription read_material(const Node& node, const std::string& name, const fs::path& folder) {
   if (node.has("matsynth")) return read_folder_material(node, name, folder);
+  if (node.has("class")) return read_library_material(node, name);
   std::vector<const char*> keys = {"normal_map", "label_id", "diffuse_model", "distribution"};
   for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) keys.push_back(info.name);
   node.expect_keys(keys);
@@ -600,14 +634,16 @@ std::string read_material_name(const Node& node, const std::map<std::string, Mat
   return name;
 }
 
-// An object's "material": a name from "materials", or a material given in place
-// ({"matsynth": folder}), added to the scene's materials under its JSON pointer.
+// An object's "material": a name from "materials", or a material given in place (a folder,
+// {"matsynth": folder}, or the library's, {"class": ...}), added to the scene's materials under
+// its JSON pointer.
 std::string read_object_material(const Node& node, const fs::path& folder,
                                  std::map<std::string, MaterialDescription>& materials) {
   if (!node.is_object()) return read_material_name(node, materials);
-  if (!node.has("matsynth")) node.fail("expected a material name or {\"matsynth\": folder}");
+  if (!node.has("matsynth") && !node.has("class"))
+    node.fail("expected a material name, {\"matsynth\": folder} or {\"class\": CLASS, \"seed\": SEED}");
   const std::string name = *node.origin().pointer;
-  materials[name] = read_folder_material(node, name, folder);
+  materials[name] = node.has("matsynth") ? read_folder_material(node, name, folder) : read_library_material(node, name);
   return name;
 }
 

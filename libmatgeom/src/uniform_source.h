@@ -1,9 +1,9 @@
 #pragma once
-// Seeded random numbers for the built-in objects.
+// Seeded random numbers for the built-in objects and the procedural material library.
 #include <cstdint>
 #include <random>
 
-namespace matgeom::builtin {
+namespace matgeom {
 
 // Uniform numbers from std::mt19937's raw output: the engine's sequence is fixed by the C++
 // standard, the library's distributions are not, so objects are identical on every platform.
@@ -22,4 +22,4 @@ class UniformSource {
   std::mt19937 engine_;
 };
 
-}  // namespace matgeom::builtin
+}  // namespace matgeom
