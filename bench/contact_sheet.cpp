@@ -1,7 +1,10 @@
-// Renders every built-in object under the paper's light rig (normalised to 1 klx) from grid
-// cell (5, 16), each framed to fit its bounding sphere, and writes them side by side into one
-// display PNG: the contact sheet in the README. Objects in builtin_object_names() order, row by row.
+// Renders built-in objects under the paper's light rig (normalised to 1 klx) from grid cell
+// (5, 16), each framed to fit its bounding sphere, and writes them side by side into one display
+// PNG, row by row: the contact sheets in the README. By default every built-in object in its own
+// materials; --library OBJECT renders one object in every style of the procedural material
+// library, --class CLASS every object in that class's library materials.
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -13,6 +16,7 @@
 #include "matgeom/bounding_sphere.h"
 #include "matgeom/builtin_objects.h"
 #include "matgeom/camera_grid.h"
+#include "matgeom/material_library.h"
 #include "matrender/asset.h"
 #include "matrender/image_io.h"
 #include "matrender/paper_setup.h"
@@ -29,6 +33,22 @@ matrender::Camera framed_camera(const matgeom::TriangleMesh& mesh, int size, dou
   return matrender::grid_view(spec, matrender::kPaperViewRow, matrender::kPaperViewColumn, size, size, vertical_fov);
 }
 
+// Every part of the object in the generated material, labelled with its class.
+void dress(matgeom::ObjectAsset& asset, const matgeom::FolderMaterial& material) {
+  asset.images = material.images;
+  for (matgeom::MaterialDesc& slot : asset.materials) {
+    const std::string name = slot.name;
+    slot = material.material;
+    slot.name = name;
+  }
+}
+
+struct Cell {
+  std::string object;
+  std::optional<matgeom::LibraryMaterialSpec> material;
+  std::string caption;
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -43,14 +63,53 @@ int main(int argc, char** argv) {
   app.add_option("--columns", columns, "objects per row")->capture_default_str()->check(CLI::Range(1, 64));
   app.add_option("--seed", seed, "object seed")->capture_default_str();
   app.add_option("--exposure", exposure, "display exposure in stops")->capture_default_str();
+  std::optional<std::string> library_object, library_class;
+  int material_resolution = 512;
+  app.add_option("--library", library_object, "render this built-in object in every style of the material library")
+      ->type_name("OBJECT");
+  app.add_option("--class", library_class,
+                 "render every built-in object in this class's library materials (the seed picks each style)")
+      ->type_name("CLASS")
+      ->excludes("--library");
+  app.add_option("--material-resolution", material_resolution, "texels along each side of a library material's maps")
+      ->capture_default_str()
+      ->check(CLI::Range(matgeom::kMinLibraryResolution, matgeom::kMaxLibraryResolution));
   CLI11_PARSE(app, argc, argv);
 
-  const std::vector<std::string> names = matgeom::builtin_object_names();
-  const int rows = (static_cast<int>(names.size()) + columns - 1) / columns;
+  std::vector<Cell> cells;
+  const std::vector<std::string> objects = matgeom::builtin_object_names();
+  if (library_object) {
+    if (std::find(objects.begin(), objects.end(), *library_object) == objects.end()) {
+      fmt::print(stderr, "contact_sheet: --library: no built-in object \"{}\"\n", *library_object);
+      return 2;
+    }
+    for (const matgeom::LibraryStyleInfo& style : matgeom::library_styles()) {
+      const matgeom::LibraryMaterialSpec spec{style.material_class, style.name, seed + static_cast<uint32_t>(cells.size())};
+      cells.push_back({*library_object, spec, matgeom::library_material_name(spec)});
+    }
+  } else if (library_class) {
+    matgeom::LibraryMaterialSpec spec;
+    try {
+      spec = matgeom::parse_library_material(*library_class);
+    } catch (const std::invalid_argument& e) {
+      fmt::print(stderr, "contact_sheet: --class: {}\n", e.what());
+      return 2;
+    }
+    for (size_t k = 0; k < objects.size(); ++k) {
+      spec.seed = seed + static_cast<uint32_t>(k);
+      cells.push_back({objects[k], spec, objects[k] + " in " + matgeom::library_material_name(spec)});
+    }
+  } else {
+    for (const std::string& object : objects) cells.push_back({object, std::nullopt, object});
+  }
+
+  const int rows = (static_cast<int>(cells.size()) + columns - 1) / columns;
   const int width = columns * size, height = rows * size;
   std::vector<float> sheet(static_cast<size_t>(width) * static_cast<size_t>(height) * 3, 0.0f);
-  for (size_t k = 0; k < names.size(); ++k) {
-    const matgeom::ObjectAsset asset = matgeom::make_builtin_object(names[k], seed);
+  for (size_t k = 0; k < cells.size(); ++k) {
+    matgeom::ObjectAsset asset = matgeom::make_builtin_object(cells[k].object, seed);
+    if (cells[k].material)
+      dress(asset, matgeom::generate_library_material(*cells[k].material, {material_resolution, 0}));
     matrender::Scene scene;
     matrender::add_asset(scene, asset);
     matrender::add_rig(scene, matrender::paper_rig(asset.mesh));
@@ -59,7 +118,7 @@ int main(int argc, char** argv) {
     settings.aovs = 0;
     matrender::FrameBuffers frame;
     const matrender::RenderStats stats = matrender::render(scene, framed_camera(asset.mesh, size, 0.69), settings, frame);
-    fmt::print("{:>14}: {:>6} triangles, {} parts, {:.2f} s\n", names[k], asset.mesh.triangle_count(),
+    fmt::print("{:>28}: {:>6} triangles, {} parts, {:.2f} s\n", cells[k].caption, asset.mesh.triangle_count(),
                asset.mesh.part_names.size(), stats.seconds);
     const int x0 = static_cast<int>(k) % columns * size, y0 = static_cast<int>(k) / columns * size;
     for (int y = 0; y < size; ++y)

@@ -30,22 +30,19 @@ std::vector<const ImagePixels*> images_of(const FolderMaterial& m) {
   return images;
 }
 
-// Mean absolute difference, over every channel, between column a and column b (or rows).
-double column_difference(const ImagePixels& image, int a, int b) {
+// Mean absolute difference, over every channel, between column a and column b, or between rows
+// a and b.
+double line_difference(const ImagePixels& image, int a, int b, bool columns) {
+  const int length = columns ? image.height : image.width;
   double sum = 0.0;
-  for (int y = 0; y < image.height; ++y)
-    for (int c = 0; c < image.channels; ++c)
-      sum += std::abs(texel_channel(image, static_cast<size_t>(y * image.width + a), c) -
-                      texel_channel(image, static_cast<size_t>(y * image.width + b), c));
-  return sum / (image.height * image.channels);
-}
-double row_difference(const ImagePixels& image, int a, int b) {
-  double sum = 0.0;
-  for (int x = 0; x < image.width; ++x)
-    for (int c = 0; c < image.channels; ++c)
-      sum += std::abs(texel_channel(image, static_cast<size_t>(a * image.width + x), c) -
-                      texel_channel(image, static_cast<size_t>(b * image.width + x), c));
-  return sum / (image.width * image.channels);
+  for (int k = 0; k < length; ++k)
+    for (int c = 0; c < image.channels; ++c) {
+      const auto texel = [&](int line) {
+        return static_cast<size_t>(columns ? k * image.width + line : line * image.width + k);
+      };
+      sum += std::abs(texel_channel(image, texel(a), c) - texel_channel(image, texel(b), c));
+    }
+  return sum / (length * image.channels);
 }
 
 // The criterion: the step across the wrap is no larger than the steps between
@@ -54,12 +51,13 @@ double row_difference(const ImagePixels& image, int a, int b) {
 // the margin (a quarter of the largest, plus half a code) keeps that from failing the test,
 // while a seam's step is several times the largest interior one (the checker's own test).
 bool wraps_seamlessly(const ImagePixels& image) {
-  double interior_columns = 0.0, interior_rows = 0.0;
-  for (int x = 0; x + 1 < image.width; ++x)
-    interior_columns = std::max(interior_columns, column_difference(image, x, x + 1));
-  for (int y = 0; y + 1 < image.height; ++y) interior_rows = std::max(interior_rows, row_difference(image, y, y + 1));
-  return column_difference(image, image.width - 1, 0) <= 1.25 * interior_columns + 0.5 &&
-         row_difference(image, image.height - 1, 0) <= 1.25 * interior_rows + 0.5;
+  for (const bool columns : {true, false}) {
+    const int lines = columns ? image.width : image.height;
+    double interior = 0.0;
+    for (int line = 0; line + 1 < lines; ++line) interior = std::max(interior, line_difference(image, line, line + 1, columns));
+    if (line_difference(image, lines - 1, 0, columns) > 1.25 * interior + 0.5) return false;
+  }
+  return true;
 }
 
 // The value an 8-bit code (or a fraction of one) of parameter p's image stands for, decoded as

@@ -22,17 +22,6 @@ double lattice_value(int ix, int iy, int period_x, int period_y, uint32_t salt) 
 
 }  // namespace
 
-uint32_t hash32(uint32_t x) {
-  x ^= x >> 16;
-  x *= 0x85ebca6bu;
-  x ^= x >> 13;
-  x *= 0xc2b2ae35u;
-  x ^= x >> 16;
-  return x;
-}
-
-double hash_to_unit(uint32_t x) { return static_cast<double>(hash32(x) >> 8) * (1.0 / 16777216.0); }
-
 double smoothstep(double t) {
   t = std::clamp(t, 0.0, 1.0);
   return t * t * (3.0 - 2.0 * t);

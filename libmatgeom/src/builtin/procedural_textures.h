@@ -7,13 +7,13 @@
 
 #include <glm/glm.hpp>
 
+#include "library/periodic_noise.h"
 #include "matgeom/object_asset.h"
 
 namespace matgeom::builtin {
 
-// MurmurHash3's 32-bit finalizer mapped to [0, 1).
-double hash_to_unit(uint32_t x);
-uint32_t hash32(uint32_t x);
+using library::hash32;
+using library::hash_to_unit;
 
 // Value noise in [0, 1) on a lattice of period_x x period_y cells across the unit square,
 // periodic in both axes, smoothstep-interpolated.
