@@ -23,4 +23,23 @@ bool Material::textured() const {
   return false;
 }
 
+namespace {
+
+// Looked up at transform(k uv): the linear part, and with it the footprint's stretch, scales by k.
+matgeom::UvAffine repeated(matgeom::UvAffine transform, float repeats) {
+  transform.linear *= repeats;
+  transform.stretch *= repeats;
+  return transform;
+}
+
+}  // namespace
+
+Material with_texture_repeats(const Material& material, float repeats) {
+  Material result = material;
+  for (ParameterValue& parameter : result.parameters)
+    if (parameter.texture) parameter.uv_transform = repeated(parameter.uv_transform, repeats);
+  if (result.normal_map) result.normal_map_uv_transform = repeated(result.normal_map_uv_transform, repeats);
+  return result;
+}
+
 }  // namespace matrender

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "matgeom/material_folder.h"
+#include "matgeom/mesh_io.h"
 #include "matgeom/png_encoding.h"
 #include "matgeom/srgb.h"
 #include "matgeom/tangents.h"
@@ -134,5 +135,53 @@ TEST_CASE("A DirectX normal map lights a surface as the OpenGL map it mirrors", 
   CHECK(gl_plus > 1.5 * gl_minus);
   CHECK(dx_plus == Approx(gl_plus).epsilon(0.02));
   CHECK(dx_minus == Approx(gl_minus).epsilon(0.02));
+  std::filesystem::remove_all(root);
+}
+
+TEST_CASE("A folder's physical size sets how often its maps repeat on a part", "[render]") {
+  // A 2 m plane mapped once onto the UV square, in a folder whose maps are 0.5 m long: a base
+  // colour dark on its left half and light on its right repeats four times across the plane.
+  const std::filesystem::path root = fresh_folder("folder_tiles");
+  const std::filesystem::path folder = root / "stripes";
+  std::filesystem::create_directories(folder);
+  matgeom::ImagePixels halves = uniform_image(8, 20, 20, 20);
+  for (int y = 0; y < 8; ++y)
+    for (int x = 4; x < 8; ++x)
+      for (int c = 0; c < 3; ++c) halves.data[static_cast<size_t>(y * 8 + x) * 4u + static_cast<size_t>(c)] = 230;
+  write_png(folder / "basecolor.png", halves);
+  std::ofstream(folder / "metadata.json") << R"({"physical_size": 50})";
+  matgeom::TriangleMesh plane = test_scenes::horizontal_square(2.0);
+  plane.normals.assign(plane.positions.size(), glm::vec3(0.0f, 0.0f, 1.0f));
+  plane.part_names = {"plane"};
+  const std::filesystem::path mesh_file = root / "plane.ply";
+  matgeom::ObjectAsset asset;
+  asset.mesh = plane;
+  asset.materials = {matgeom::MaterialDesc("plane")};
+  matgeom::write_object(asset, mesh_file.string());
+  std::ofstream(root / "scene.json") << R"({
+    "camera": { "position": [0, 0, 3], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov_deg": 4.65, "width": 64, "height": 8 },
+    "lights": [ { "type": "point", "position": [0, 0, 2], "power": 20 } ],
+    "objects": [ { "mesh": "plane.ply", "material": { "matsynth": "stripes" } } ],
+    "render": { "spp": 4 }
+  })";
+  const SceneDescription description = read_scene_file((root / "scene.json").string());
+  BuiltScene built = build_scene(description);
+  RenderSettings settings = description.settings;
+  settings.aovs = parameter_aov(MaterialParameter::BaseColor);
+  FrameBuffers frame;
+  render(built.scene, built.camera, settings, frame);
+  // Along the middle row, count the steps between dark and light.
+  const std::vector<float>& base = frame.parameter(MaterialParameter::BaseColor);
+  int steps = 0;
+  bool light = base[3 * (4 * 64)] > 0.3f;
+  for (int x = 1; x < 64; ++x) {
+    const bool now = base[3 * static_cast<size_t>(4 * 64 + x)] > 0.3f;
+    steps += now != light;
+    light = now;
+  }
+  // 4.65 degrees high and 8 times as wide from 3 m, the camera sees 1.95 m of the 2 m plane: 3.9 repeats, 7 or 8 steps (2 without
+  // the physical size).
+  CHECK(steps >= 7);
+  CHECK(steps <= 8);
   std::filesystem::remove_all(root);
 }

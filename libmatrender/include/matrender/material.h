@@ -59,4 +59,9 @@ struct Material {
   bool textured() const;
 };
 
+// The material with every texture it reads (parameters and normal map) repeated `repeats` times
+// per UV unit, on top of its own transforms: what a material folder's physical tile size asks of
+// a part whose UV unit is `repeats` tiles long (matgeom/uv_scale.h).
+Material with_texture_repeats(const Material& material, float repeats);
+
 }  // namespace matrender

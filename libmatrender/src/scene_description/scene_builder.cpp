@@ -15,6 +15,7 @@
 #include "matgeom/mesh_io.h"
 #include "matgeom/material_folder.h"
 #include "matgeom/material_library.h"
+#include "matgeom/uv_scale.h"
 #include "matrender/asset.h"
 #include "matrender/paper_setup.h"
 #include "matrender/scene_limits.h"
@@ -71,6 +72,19 @@ class SceneMaterials {
     return ids_[name] = scene_.add_material(std::move(material));
   }
 
+  // The material on part `part` of `mesh`: a material whose maps have a physical size (a folder's
+  // metadata, the library's tiles) repeats them as often per UV unit as that part's UVs need.
+  uint32_t id_on_part(const std::string& name, const matgeom::TriangleMesh& mesh, uint32_t part) {
+    const uint32_t base = id(name);
+    const auto tile = tile_sizes_.find(name);
+    if (tile == tile_sizes_.end()) return base;
+    const double repeats = matgeom::texture_repeats(mesh, part, tile->second);
+    if (repeats == 1.0) return base;
+    const auto key = std::make_pair(name, static_cast<float>(repeats));
+    if (const auto it = repeated_ids_.find(key); it != repeated_ids_.end()) return it->second;
+    return repeated_ids_[key] = scene_.add_material(with_texture_repeats(scene_.material(base), key.second));
+  }
+
  private:
   TexturePtr texture(const std::optional<TextureFile>& file) {
     if (!file) return nullptr;
@@ -97,7 +111,10 @@ class SceneMaterials {
         throw file.origin.error("", e.what());
       }
       read = folder_materials_.emplace(file.path, material_from_desc(folder.material, folder.images)).first;
+      if (folder.tile_size_m) folder_tile_sizes_[file.path] = *folder.tile_size_m;
     }
+    if (const auto tile = folder_tile_sizes_.find(file.path); tile != folder_tile_sizes_.end())
+      tile_sizes_[name] = tile->second;
     Material material = read->second;
     material.name = name;
     if (description.label_id) material.label_id = *description.label_id;
@@ -117,7 +134,9 @@ class SceneMaterials {
         throw request.origin.error("", e.what());
       }
       made = library_materials_.emplace(key, material_from_desc(generated.material, generated.images)).first;
+      library_tile_sizes_[key] = *generated.tile_size_m;
     }
+    tile_sizes_[name] = library_tile_sizes_.at(key);
     Material material = made->second;
     material.name = name;
     if (description.label_id) material.label_id = *description.label_id;
@@ -130,6 +149,9 @@ class SceneMaterials {
   std::map<std::tuple<std::string, ColorSpace, Wrap>, TexturePtr> textures_;
   std::map<std::string, Material> folder_materials_;   // by folder path
   std::map<std::string, Material> library_materials_;  // by canonical name and resolution
+  std::map<std::string, double> folder_tile_sizes_, library_tile_sizes_;  // keyed as the two above
+  std::map<std::string, double> tile_sizes_;  // metres per repeat of a scene material's maps, by name
+  std::map<std::pair<std::string, float>, uint32_t> repeated_ids_;  // by name and repeats
 };
 
 size_t part_count(const matgeom::ObjectAsset& asset) {
@@ -147,13 +169,15 @@ std::string quoted_part_names(const matgeom::TriangleMesh& mesh) {
 std::vector<std::optional<uint32_t>> assigned_materials(const ObjectDescription& object,
                                                         const matgeom::ObjectAsset& asset, SceneMaterials& materials) {
   std::vector<std::optional<uint32_t>> assigned(part_count(asset));
-  if (object.material) std::fill(assigned.begin(), assigned.end(), materials.id(*object.material));
+  if (object.material)
+    for (size_t k = 0; k < assigned.size(); ++k)
+      assigned[k] = materials.id_on_part(*object.material, asset.mesh, static_cast<uint32_t>(k));
   const std::vector<std::string>& names = asset.mesh.part_names;
   for (const auto& [part, material] : object.part_materials) {
     bool found = false;
     for (size_t k = 0; k < assigned.size() && k < names.size(); ++k) {
       if (names[k] != part) continue;
-      assigned[k] = materials.id(material);
+      assigned[k] = materials.id_on_part(material, asset.mesh, static_cast<uint32_t>(k));
       found = true;
     }
     if (!found)

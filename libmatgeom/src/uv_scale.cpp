@@ -1,0 +1,46 @@
+#include "matgeom/uv_scale.h"
+
+#include <cmath>
+
+namespace matgeom {
+namespace {
+
+// glTF's transform applies the scale first (uv' = T R S uv), so scaling S by k and the
+// offset by nothing repeats the image k times about the UV origin.
+TextureTransform repeated(TextureTransform transform, double repeats) {
+  transform.scale *= repeats;
+  return transform;
+}
+
+}  // namespace
+
+std::optional<double> metres_per_uv_unit(const TriangleMesh& mesh, uint32_t part) {
+  if (mesh.uvs.size() != mesh.positions.size()) return std::nullopt;
+  double surface = 0.0, uv = 0.0;
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    if ((mesh.triangle_parts.empty() ? 0u : mesh.triangle_parts[t]) != part) continue;
+    const glm::uvec3& tri = mesh.triangles[t];
+    const glm::dvec3 p0(mesh.positions[tri.x]), p1(mesh.positions[tri.y]), p2(mesh.positions[tri.z]);
+    const glm::dvec2 u0(mesh.uvs[tri.x]), u1(mesh.uvs[tri.y]), u2(mesh.uvs[tri.z]);
+    surface += 0.5 * glm::length(glm::cross(p1 - p0, p2 - p0));
+    const glm::dvec2 a = u1 - u0, b = u2 - u0;
+    uv += 0.5 * std::abs(a.x * b.y - a.y * b.x);
+  }
+  if (!(uv > 0.0) || !(surface > 0.0) || !std::isfinite(surface / uv)) return std::nullopt;
+  return std::sqrt(surface / uv);
+}
+
+double texture_repeats(const TriangleMesh& mesh, uint32_t part, double tile_size_m) {
+  const std::optional<double> metres = metres_per_uv_unit(mesh, part);
+  return metres && tile_size_m > 0.0 ? *metres / tile_size_m : 1.0;
+}
+
+MaterialDesc with_texture_repeats(const MaterialDesc& material, double repeats) {
+  MaterialDesc result = material;
+  for (MaterialInput& input : result.inputs)
+    if (input.image >= 0) input.transform = repeated(input.transform, repeats);
+  if (result.normal_image >= 0) result.normal_transform = repeated(result.normal_transform, repeats);
+  return result;
+}
+
+}  // namespace matgeom

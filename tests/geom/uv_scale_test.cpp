@@ -1,0 +1,50 @@
+// metres_per_uv_unit and texture repeats (matgeom/uv_scale.h): a 2 m square mapped onto the unit
+// UV square spans 2 m per UV unit; maps 0.5 m long repeat four times over it.
+#include "matgeom/uv_scale.h"
+
+#include <catch2/catch.hpp>
+
+using namespace matgeom;
+
+namespace {
+
+// Two parts: a square `size` metres wide with UVs over [0, uv_size]^2, and a second square with
+// all its UVs at one point.
+TriangleMesh two_squares(float size, float uv_size) {
+  TriangleMesh m;
+  m.positions = {{0, 0, 0}, {size, 0, 0}, {size, size, 0}, {0, size, 0},
+                 {0, 0, 1}, {1, 0, 1},    {1, 1, 1},       {0, 1, 1}};
+  m.uvs = {{0, 0}, {uv_size, 0}, {uv_size, uv_size}, {0, uv_size}, {0.5f, 0.5f}, {0.5f, 0.5f}, {0.5f, 0.5f}, {0.5f, 0.5f}};
+  m.triangles = {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}};
+  m.triangle_parts = {0, 0, 1, 1};
+  m.part_names = {"square", "collapsed"};
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("A part's metres per UV unit is the square root of its area ratio", "[geom]") {
+  const TriangleMesh mesh = two_squares(2.0f, 1.0f);
+  REQUIRE(metres_per_uv_unit(mesh, 0));
+  CHECK(*metres_per_uv_unit(mesh, 0) == Approx(2.0));
+  CHECK(*metres_per_uv_unit(two_squares(3.0f, 0.5f), 0) == Approx(6.0));
+  CHECK(texture_repeats(mesh, 0, 0.5) == Approx(4.0));
+  // No UV area, no part, no UVs: no scale, and the maps keep their own.
+  CHECK_FALSE(metres_per_uv_unit(mesh, 1));
+  CHECK_FALSE(metres_per_uv_unit(mesh, 7));
+  TriangleMesh no_uvs = mesh;
+  no_uvs.uvs.clear();
+  CHECK_FALSE(metres_per_uv_unit(no_uvs, 0));
+  CHECK(texture_repeats(mesh, 1, 0.5) == 1.0);
+}
+
+TEST_CASE("with_texture_repeats scales the transforms of the images a material reads, only", "[geom]") {
+  MaterialDesc material;
+  material.set_image(MaterialParameter::BaseColor, 0);
+  material[MaterialParameter::BaseColor].transform.scale = {2.0, 3.0};
+  material.normal_image = 1;
+  const MaterialDesc repeated = with_texture_repeats(material, 4.0);
+  CHECK(repeated[MaterialParameter::BaseColor].transform.scale == glm::dvec2(8.0, 12.0));
+  CHECK(repeated.normal_transform.scale == glm::dvec2(4.0));
+  CHECK(repeated[MaterialParameter::Roughness].transform.is_identity());  // a constant: nothing to repeat
+}
