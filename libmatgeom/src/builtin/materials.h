@@ -1,34 +1,37 @@
 #pragma once
-// The built-in materials: a finish (wood, fabric, ...) becomes a MaterialDesc with seeded,
-// tileable texture images, labelled with its class (matgeom/material_classes.h).
+// The built-in objects' materials: a finish (wood, fabric, ...) is a material of the procedural
+// library (matgeom/material_library.h), its style and seed drawn from the object's random
+// numbers where the finish leaves them open.
 #include <string>
 
-#include "uniform_source.h"
 #include "matgeom/object_asset.h"
+#include "uniform_source.h"
 
 namespace matgeom::builtin {
 
 enum class Finish {
-  Wood,          // grain rings, varnished: wood
-  PaintedWood,   // flat colour, satin: wood
-  Fabric,        // woven threads: fabric
-  Leather,       // pebbled grain: leather
-  BrushedMetal,  // streaks along u, metallic: metal
-  Plastic,       // flat colour, constant parameters (no images): plastic
-  Ceramic,       // mottled glaze: ceramic
-  Concrete,      // speckled, rough: concrete
-  Paper,         // fine fibres: paper
-  Wicker,        // woven strands: wood
+  Wood,          // raw or lacquered timber: wood/raw, wood/lacquered
+  PaintedWood,   // wood/painted
+  Fabric,        // any fabric style: plain weave, twill, velvet
+  Leather,       // pebbled or smooth
+  BrushedMetal,  // metal/brushed
+  Plastic,       // plastic/glossy: constants, no images
+  Ceramic,       // glazed or speckled, under a clearcoat
+  Concrete,      // concrete/cast
+  Paper,         // paper/sheet
+  Wicker,        // wood/wicker
 };
 
-// Texels per UV unit of the built-in images (tileable, repeated across UDIM tiles). The objects'
-// UV pass uses 1024-pixel tiles, so an object's charts, sqrt(512^2 pi) ~ 900 px across in all at
-// s = 1, span about one UV unit, and one image covers about the whole object.
+// Texels along each side of a built-in material's maps, and of the UV pass's tiles.
 constexpr int kBuiltinTextureSize = 256;
 constexpr int kBuiltinTileResolution = 1024;
 
+struct BuiltinMaterial {
+  MaterialDesc material;  // named after its slot; its images appended to the asset's
+  double tile_size_m = 1.0;  // how long one repeat of its maps is (the UV pass's UVs scale them)
+};
+
 // Appends the material's images to asset.images and returns the material, named `slot`.
-// Colours and texture patterns vary with `random`.
-MaterialDesc make_material(ObjectAsset& asset, const std::string& slot, Finish finish, UniformSource& random);
+BuiltinMaterial make_material(ObjectAsset& asset, const std::string& slot, Finish finish, UniformSource& random);
 
 }  // namespace matgeom::builtin

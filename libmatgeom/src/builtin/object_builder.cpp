@@ -5,12 +5,16 @@
 #include "builtin/shapes.h"
 #include "matgeom/tangents.h"
 #include "matgeom/uv_pass.h"
+#include "matgeom/uv_scale.h"
 
 namespace matgeom::builtin {
 
 uint32_t ObjectBuilder::add_part(const std::string& name, Finish finish) {
   asset_.mesh.part_names.push_back(name);
-  asset_.materials.push_back(make_material(asset_, name, finish, random_));
+  BuiltinMaterial made = make_material(asset_, name, finish, random_);
+  asset_.materials.push_back(std::move(made.material));
+  tile_sizes_.resize(asset_.materials.size());
+  tile_sizes_.back() = made.tile_size_m;
   return static_cast<uint32_t>(asset_.mesh.part_names.size() - 1);
 }
 
@@ -45,15 +49,24 @@ void ObjectBuilder::add_uv_mapped(const TriangleMesh& piece) {
   ++uv_mapped_pieces_;
 }
 
+void ObjectBuilder::repeat_maps_to_size() {
+  for (size_t part = 0; part < tile_sizes_.size(); ++part)
+    if (tile_sizes_[part])
+      asset_.materials[part] = with_texture_repeats(
+          asset_.materials[part], texture_repeats(asset_.mesh, static_cast<uint32_t>(part), *tile_sizes_[part]));
+}
+
 ObjectAsset ObjectBuilder::finish() {
   if (uv_mapped_pieces_ > 0) {
     if (plain_pieces_ > 0) throw std::logic_error("ObjectBuilder: UV-mapped and plain pieces in one object");
     compute_tangents(asset_.mesh);
+    repeat_maps_to_size();
     return std::move(asset_);
   }
   UvPassOptions options;
   options.tile_resolution = kBuiltinTileResolution;
   asset_.mesh = uv_pass(asset_.mesh, options).mesh;
+  repeat_maps_to_size();
   return std::move(asset_);
 }
 

@@ -3,7 +3,9 @@
 // added part by part, each part with its material, then the paper's UV pass over the whole (or,
 // for an object whose pieces carry UVs of their own, those UVs).
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "builtin/materials.h"
 #include "uniform_source.h"
@@ -32,13 +34,18 @@ class ObjectBuilder {
   void add_uv_mapped(const TriangleMesh& piece);
 
   // Runs the UV pass (charts, LSCM, packing at the paper's texel density into
-  // kBuiltinTileResolution tiles), which also makes tangents, and returns the object; an object
-  // of UV-mapped pieces gets tangents from its own UVs instead.
+  // kBuiltinTileResolution tiles), which also makes tangents, repeats each finish's maps to
+  // their physical size on its part, and returns the object; an object of UV-mapped pieces gets
+  // tangents from its own UVs instead.
   ObjectAsset finish();
 
  private:
+  // The finishes' library maps at their physical size on the object's UVs.
+  void repeat_maps_to_size();
+
   UniformSource random_;
   ObjectAsset asset_;
+  std::vector<std::optional<double>> tile_sizes_;  // by part: its library maps' physical size
   size_t uv_mapped_pieces_ = 0;
   size_t plain_pieces_ = 0;
 };
