@@ -3,20 +3,21 @@
 // PNG, row by row: the contact sheets in the README. By default every built-in object in its own
 // materials; --library OBJECT renders one object in every style of the procedural material
 // library, --class CLASS every object in that class's library materials.
-#include <algorithm>
-#include <optional>
-#include <cmath>
-#include <string>
-#include <vector>
+#include <fmt/core.h>
 
 #include <CLI/CLI.hpp>
-#include <fmt/core.h>
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "bench_scenes.h"
 #include "matgeom/bounding_sphere.h"
 #include "matgeom/builtin_objects.h"
 #include "matgeom/camera_grid.h"
 #include "matgeom/material_library.h"
+#include "matgeom/uv_scale.h"
 #include "matrender/asset.h"
 #include "matrender/image_io.h"
 #include "matrender/paper_setup.h"
@@ -31,16 +32,6 @@ matrender::Camera framed_camera(const matgeom::TriangleMesh& mesh, int size, dou
   spec.center = sphere.center;
   spec.radius = 1.05 * sphere.radius / std::sin(0.5 * vertical_fov);
   return matrender::grid_view(spec, matrender::kPaperViewRow, matrender::kPaperViewColumn, size, size, vertical_fov);
-}
-
-// Every part of the object in the generated material, labelled with its class.
-void dress(matgeom::ObjectAsset& asset, const matgeom::FolderMaterial& material) {
-  asset.images = material.images;
-  for (matgeom::MaterialDesc& slot : asset.materials) {
-    const std::string name = slot.name;
-    slot = material.material;
-    slot.name = name;
-  }
 }
 
 struct Cell {
@@ -84,7 +75,8 @@ int main(int argc, char** argv) {
       return 2;
     }
     for (const matgeom::LibraryStyleInfo& style : matgeom::library_styles()) {
-      const matgeom::LibraryMaterialSpec spec{style.material_class, style.name, seed + static_cast<uint32_t>(cells.size())};
+      const matgeom::LibraryMaterialSpec spec{style.material_class, style.name,
+                                              seed + static_cast<uint32_t>(cells.size())};
       cells.push_back({*library_object, spec, matgeom::library_material_name(spec)});
     }
   } else if (library_class) {
@@ -103,28 +95,36 @@ int main(int argc, char** argv) {
     for (const std::string& object : objects) cells.push_back({object, std::nullopt, object});
   }
 
-  const int rows = (static_cast<int>(cells.size()) + columns - 1) / columns;
-  const int width = columns * size, height = rows * size;
-  std::vector<float> sheet(static_cast<size_t>(width) * static_cast<size_t>(height) * 3, 0.0f);
-  for (size_t k = 0; k < cells.size(); ++k) {
-    matgeom::ObjectAsset asset = matgeom::make_builtin_object(cells[k].object, seed);
-    if (cells[k].material)
-      dress(asset, matgeom::generate_library_material(*cells[k].material, {material_resolution, 0}));
-    matrender::Scene scene;
-    matrender::add_asset(scene, asset);
-    matrender::add_rig(scene, matrender::paper_rig(asset.mesh));
-    matrender::RenderSettings settings;
-    settings.samples_per_pixel = spp;
-    settings.aovs = 0;
-    matrender::FrameBuffers frame;
-    const matrender::RenderStats stats = matrender::render(scene, framed_camera(asset.mesh, size, 0.69), settings, frame);
-    fmt::print("{:>28}: {:>6} triangles, {} parts, {:.2f} s\n", cells[k].caption, asset.mesh.triangle_count(),
-               asset.mesh.part_names.size(), stats.seconds);
-    const int x0 = static_cast<int>(k) % columns * size, y0 = static_cast<int>(k) / columns * size;
-    for (int y = 0; y < size; ++y)
-      std::copy_n(&frame.color[3 * static_cast<size_t>(y) * static_cast<size_t>(size)], 3 * size,
-                  &sheet[3 * (static_cast<size_t>(y0 + y) * static_cast<size_t>(width) + static_cast<size_t>(x0))]);
+  try {
+    const int rows = (static_cast<int>(cells.size()) + columns - 1) / columns;
+    const int width = columns * size, height = rows * size;
+    std::vector<float> sheet(static_cast<size_t>(width) * static_cast<size_t>(height) * 3, 0.0f);
+    for (size_t k = 0; k < cells.size(); ++k) {
+      matgeom::ObjectAsset asset = matgeom::make_builtin_object(cells[k].object, seed);
+      if (cells[k].material)
+        matgeom::assign_material_to_all_parts(
+            asset, matgeom::generate_library_material(*cells[k].material, {material_resolution, 0}));
+      matrender::Scene scene;
+      matrender::add_asset(scene, asset);
+      matrender::add_rig(scene, matrender::paper_rig(asset.mesh));
+      matrender::RenderSettings settings;
+      settings.samples_per_pixel = spp;
+      settings.aovs = 0;
+      matrender::FrameBuffers frame;
+      const matrender::RenderStats stats =
+          matrender::render(scene, framed_camera(asset.mesh, size, 0.69), settings, frame);
+      fmt::print("{:>28}: {:>6} triangles, {} parts, {:.2f} s\n", cells[k].caption, asset.mesh.triangle_count(),
+                 asset.mesh.part_names.size(), stats.seconds);
+      const int x0 = static_cast<int>(k) % columns * size, y0 = static_cast<int>(k) / columns * size;
+      for (int y = 0; y < size; ++y)
+        std::copy_n(&frame.color[3 * static_cast<size_t>(y) * static_cast<size_t>(size)], 3 * size,
+                    &sheet[3 * (static_cast<size_t>(y0 + y) * static_cast<size_t>(width) + static_cast<size_t>(x0))]);
+    }
+    matrender::write_display_png(output, width, height, sheet.data(), nullptr, exposure);
+    fmt::print("wrote {} ({} x {})\n", output, width, height);
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "contact_sheet: {}\n", e.what());
+    return 1;
   }
-  matrender::write_display_png(output, width, height, sheet.data(), nullptr, exposure);
-  fmt::print("wrote {} ({} x {})\n", output, width, height);
+  return 0;
 }

@@ -43,4 +43,17 @@ MaterialDesc with_texture_repeats(const MaterialDesc& material, double repeats) 
   return result;
 }
 
+void assign_material_to_all_parts(ObjectAsset& asset, const FolderMaterial& material) {
+  asset.images = material.images;
+  for (size_t part = 0; part < asset.materials.size(); ++part) {
+    const std::string name = asset.materials[part].name;
+    asset.materials[part] =
+        material.tile_size_m
+            ? with_texture_repeats(material.material,
+                                   texture_repeats(asset.mesh, static_cast<uint32_t>(part), *material.tile_size_m))
+            : material.material;
+    asset.materials[part].name = name;
+  }
+}
+
 }  // namespace matgeom

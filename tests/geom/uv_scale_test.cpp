@@ -48,3 +48,19 @@ TEST_CASE("with_texture_repeats scales the transforms of the images a material r
   CHECK(repeated.normal_transform.scale == glm::dvec2(4.0));
   CHECK(repeated[MaterialParameter::Roughness].transform.is_identity());  // a constant: nothing to repeat
 }
+
+TEST_CASE("assign_material_to_all_parts repeats a folder material's maps to size on every part", "[geom]") {
+  ObjectAsset asset;
+  asset.mesh = two_squares(2.0f, 1.0f);
+  asset.materials = {MaterialDesc("square"), MaterialDesc("collapsed")};
+  FolderMaterial folder;
+  folder.material.set_image(MaterialParameter::Roughness, 0);
+  folder.images.push_back(ImagePixels{"r", 1, 1, 1, {128}});
+  folder.tile_size_m = 0.25;
+  assign_material_to_all_parts(asset, folder);
+  REQUIRE(asset.images.size() == 1);
+  CHECK(asset.materials[0].name == "square");
+  CHECK(asset.materials[0][MaterialParameter::Roughness].transform.scale == glm::dvec2(8.0));  // 2 m / 0.25 m
+  CHECK(asset.materials[1].name == "collapsed");
+  CHECK(asset.materials[1][MaterialParameter::Roughness].transform.scale == glm::dvec2(1.0));  // no UV area
+}

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "matgeom/material_folder.h"
 #include "matgeom/mesh.h"
 #include "matgeom/object_asset.h"
 
@@ -23,5 +24,9 @@ double texture_repeats(const TriangleMesh& mesh, uint32_t part, double tile_size
 // The material with every image it reads (parameters and normal map) repeated `repeats` times
 // per UV unit, on top of the transform it has.
 MaterialDesc with_texture_repeats(const MaterialDesc& material, double repeats);
+
+// Puts every part of `asset` in `material` (its images replace the asset's; the parts keep their
+// names), its maps repeated to their physical size on each part's UVs when it has one.
+void assign_material_to_all_parts(ObjectAsset& asset, const FolderMaterial& material);
 
 }  // namespace matgeom
