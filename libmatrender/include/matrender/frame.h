@@ -7,8 +7,9 @@
 // fraction of samples that hit a surface. The material parameters and the normals are the mean
 // over the samples that hit (not premultiplied by alpha; each parameter clamped to its range in
 // the table, normals renormalised). Depth, label and part id come from the single hit sample
-// nearest the pixel centre and are never blended. Pixels no sample hit hold 0 (label 0, part id
-// -1, depth 0).
+// nearest the pixel centre and are never blended. Ambient occlusion is the mean over the hit
+// samples of the fraction of their occlusion rays that escape (RenderSettings). Pixels no sample
+// hit hold 0 (label 0, part id -1, depth 0).
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -30,6 +31,13 @@ enum Aov : uint32_t {
   AovLabel = 1u << 3,
   AovPartId = 1u << 4,
   AovAlpha = 1u << 5,
+  // What the material's tangent-space normal map says at the hit (2 texel - 1, renormalised):
+  // (0, 0, 1) where it has none.
+  AovNormalTangent = 1u << 6,
+  // The fraction of cosine-distributed directions around the shading normal that meet no
+  // surface within RenderSettings::ambient_occlusion_distance (Cycles' AO node). Costs rays, so
+  // it is never a default AOV.
+  AovAmbientOcclusion = 1u << 7,
 };
 constexpr uint32_t kFirstParameterAovBit = 8;
 static_assert(kFirstParameterAovBit + matgeom::kMaterialParameterCount <= 32, "AOV bits fit in 32");
@@ -37,11 +45,12 @@ static_assert(kFirstParameterAovBit + matgeom::kMaterialParameterCount <= 32, "A
 // The AOV of a material parameter: its value at the first hit, named as in the table.
 constexpr uint32_t parameter_aov(MaterialParameter p) { return 1u << (kFirstParameterAovBit + static_cast<uint32_t>(p)); }
 
-constexpr uint32_t kGeometricAovs = AovNormalWorld | AovNormalCamera | AovDepth | AovLabel | AovPartId | AovAlpha;
+constexpr uint32_t kGeometricAovs =
+    AovNormalWorld | AovNormalCamera | AovNormalTangent | AovDepth | AovLabel | AovPartId | AovAlpha;
 
 // Every AOV.
 constexpr uint32_t all_aovs() {
-  uint32_t mask = kGeometricAovs;
+  uint32_t mask = kGeometricAovs | AovAmbientOcclusion;
   for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) mask |= parameter_aov(info.id);
   return mask;
 }
@@ -75,6 +84,8 @@ struct FrameBuffers {
   std::array<std::vector<float>, matgeom::kMaterialParameterCount> parameters;
   std::vector<float> normal_world;   // XYZ in [-1, 1]
   std::vector<float> normal_camera;  // XYZ, camera frame (+X right, +Y up, +Z toward viewer)
+  std::vector<float> normal_tangent;  // XYZ, the normal map's tangent space (+Z along the surface normal)
+  std::vector<float> ambient_occlusion;  // in [0, 1]: 1 where nothing is near
   std::vector<float> depth;          // metres along the camera axis
   std::vector<int32_t> label;        // material label id
   std::vector<int32_t> part_id;      // part id, -1 for background

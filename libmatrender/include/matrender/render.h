@@ -37,6 +37,12 @@ struct RenderSettings {
   // hit point only, as Cycles 3.4 on the CPU (and always in cycles_parity).
   bool mipmaps = true;
   uint32_t aovs = default_aovs();
+  // Ambient occlusion (AovAmbientOcclusion): rays each camera sample that hits traces from its
+  // hit, and how far a surface may be to occlude (Cycles' AO node: 1 m). A pixel's estimate
+  // averages spp x rays Bernoulli trials, so its standard error is at most
+  // 0.5 / sqrt(spp x rays) (less: the directions are stratified).
+  int ambient_occlusion_rays = 4;
+  double ambient_occlusion_distance = 1.0;
   // Called with the finished fraction of all samples in [0, 1], from a render thread, every 65,536
   // samples a thread takes and when a tile ends; calls are serialised and the fraction increases.
   std::function<void(double)> progress;

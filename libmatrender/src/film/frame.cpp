@@ -21,6 +21,8 @@ void visit_buffers(FrameBuffers& frame, Visit&& visit) {
     visit(frame.parameter(info.id), parameter_aov(info.id), static_cast<std::size_t>(channels_of(info)), 0.0f);
   visit(frame.normal_world, AovNormalWorld, 3, 0.0f);
   visit(frame.normal_camera, AovNormalCamera, 3, 0.0f);
+  visit(frame.normal_tangent, AovNormalTangent, 3, 0.0f);
+  visit(frame.ambient_occlusion, AovAmbientOcclusion, 1, 0.0f);
   visit(frame.depth, AovDepth, 1, 0.0f);
   visit(frame.label, AovLabel, 1, int32_t{0});
   visit(frame.part_id, AovPartId, 1, int32_t{-1});
@@ -35,6 +37,8 @@ const std::vector<AovName>& aov_names() {
       list.push_back({info.name, parameter_aov(info.id)});
     list.insert(list.end(), {{"normal_world", AovNormalWorld},
                              {"normal_camera", AovNormalCamera},
+                             {"normal_tangent", AovNormalTangent},
+                             {"ambient_occlusion", AovAmbientOcclusion},
                              {"depth", AovDepth},
                              {"label", AovLabel},
                              {"part_id", AovPartId},

@@ -16,6 +16,7 @@
 
 #include "film/camera_rays.h"
 #include "film/pixel_filter.h"
+#include "integrator/ambient_occlusion.h"
 #include "integrator/path_tracer.h"
 #include "lights/light_sampler.h"
 #include "matgeom/memory_limit.h"
@@ -50,6 +51,8 @@ struct PixelAccumulator {
   int hits = 0;
   std::array<glm::dvec3, matgeom::kMaterialParameterCount> parameters{};  // by MaterialParameter; scalars in x
   glm::dvec3 normal{0.0};
+  glm::dvec3 tangent_space_normal{0.0};
+  double unoccluded = 0.0;  // summed fraction of each hit's occlusion rays that escaped
   float nearest_offset2 = std::numeric_limits<float>::infinity();
   float depth = 0.0f;
   int32_t label = 0;
@@ -74,6 +77,11 @@ void validate(const Camera& camera, const RenderSettings& settings) {
   if (settings.max_bounces < 0 || settings.max_diffuse_bounces < 0 || settings.max_glossy_bounces < 0 ||
       settings.max_transmission_bounces < 0 || settings.max_transparent_bounces < 0)
     throw std::invalid_argument("render: bounce limits must be >= 0");
+  if ((settings.aovs & AovAmbientOcclusion) &&
+      (settings.ambient_occlusion_rays < 1 ||
+       !(settings.ambient_occlusion_distance > 0.0 && settings.ambient_occlusion_distance <= kMaxSceneCoordinate)))
+    throw std::invalid_argument("render: ambient occlusion needs at least 1 ray per sample and a distance in (0, " +
+                                std::to_string(kMaxSceneCoordinate) + "] m");
 }
 
 }  // namespace
@@ -137,11 +145,15 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
   std::vector<const matgeom::MaterialParameterInfo*> parameter_aovs;
   for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters)
     if (settings.aovs & parameter_aov(info.id)) parameter_aovs.push_back(&info);
+  const bool ambient_occlusion = (settings.aovs & AovAmbientOcclusion) != 0;
+  const int occlusion_rays = settings.ambient_occlusion_rays;
+  const float occlusion_distance = static_cast<float>(settings.ambient_occlusion_distance);
 
   auto render_pixel = [&](int x, int y, uint64_t& tile_rays, uint64_t& tile_discarded, uint64_t& uncounted_samples) {
     const uint32_t pixel_index = static_cast<uint32_t>(y) * static_cast<uint32_t>(camera.width) + static_cast<uint32_t>(x);
     PixelAccumulator acc;
     const PixelSeeds seeds(pixel_index, settings.seed);
+    const PairSeeds occlusion_seeds = ambient_occlusion_seeds(pixel_index, settings.seed);
     static_assert(kPacketSamples == EmbreeScene::kPacketSize, "one sample packet per camera-ray packet");
     glm::vec2 offsets[kPacketSamples];
     glm::vec3 dirs[kPacketSamples];
@@ -181,6 +193,16 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
           acc.parameters[static_cast<size_t>(info->id)] += glm::dvec3(
               glm::clamp(sp.inputs.color(info->id), static_cast<float>(info->min), static_cast<float>(info->max)));
         acc.normal += glm::dvec3(sp.shading_normal);
+        acc.tangent_space_normal += glm::dvec3(sp.tangent_space_normal);
+        if (ambient_occlusion) {
+          const uint32_t sample = first + static_cast<uint32_t>(lane);
+          uint32_t occlusion_rays_traced = 0;
+          acc.unoccluded += static_cast<double>(unoccluded_rays(data.accel, sp, occlusion_distance, occlusion_seeds,
+                                                                sample * static_cast<uint32_t>(occlusion_rays),
+                                                                occlusion_rays, &occlusion_rays_traced)) /
+                            occlusion_rays;
+          tile_rays += occlusion_rays_traced;
+        }
         const float offset2 = glm::dot(offsets[lane], offsets[lane]);
         if (offset2 < acc.nearest_offset2) {
           acc.nearest_offset2 = offset2;
@@ -199,6 +221,9 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
     const double normal_len = glm::length(acc.normal);
     const glm::vec3 normal = normal_len > 0.0 ? glm::vec3(acc.normal / normal_len) : glm::vec3(0.0f);
     const glm::vec3 normal_camera = world_to_camera * normal;
+    const double tangent_len = glm::length(acc.tangent_space_normal);
+    const glm::vec3 tangent_space_normal =
+        tangent_len > 0.0 ? glm::vec3(acc.tangent_space_normal / tangent_len) : glm::vec3(0.0f, 0.0f, 1.0f);
     for (const matgeom::MaterialParameterInfo* info : parameter_aovs) {
       const glm::dvec3& sum = acc.parameters[static_cast<size_t>(info->id)];
       std::vector<float>& buffer = frame.parameter(info->id);
@@ -211,7 +236,9 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
     for (int c = 0; c < 3; ++c) {
       if (!frame.normal_world.empty()) frame.normal_world[3 * i + c] = normal[c];
       if (!frame.normal_camera.empty()) frame.normal_camera[3 * i + c] = normal_camera[c];
+      if (!frame.normal_tangent.empty()) frame.normal_tangent[3 * i + c] = tangent_space_normal[c];
     }
+    if (!frame.ambient_occlusion.empty()) frame.ambient_occlusion[i] = static_cast<float>(acc.unoccluded * inv_hits);
     if (!frame.depth.empty()) frame.depth[i] = acc.depth;
     if (!frame.label.empty()) frame.label[i] = acc.label;
     if (!frame.part_id.empty()) frame.part_id[i] = acc.part;

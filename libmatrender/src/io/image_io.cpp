@@ -137,6 +137,8 @@ std::vector<std::string> write_frame(const FrameBuffers& frame, const std::strin
   }
   write_float_pass("normal_world", frame.normal_world, 3, {"X", "Y", "Z"}, 127.5, 127.5);
   write_float_pass("normal_camera", frame.normal_camera, 3, {"X", "Y", "Z"}, 127.5, 127.5);
+  write_float_pass("normal_tangent", frame.normal_tangent, 3, {"X", "Y", "Z"}, 127.5, 127.5);
+  write_float_pass("ambient_occlusion", frame.ambient_occlusion, 1, {"Y"}, 255.0, 0.0);
   if (!frame.depth.empty()) {
     written.push_back(file("depth", "exr"));
     write_exr(written.back(), w, h, {"Z"}, frame.depth.data(), &set);

@@ -15,12 +15,17 @@ glm::vec3 normalize_or(const glm::vec3& v, const glm::vec3& fallback) {
   return v * (1.0f / std::sqrt(len2));
 }
 
-// Cycles' Normal Map node in tangent space: n = normalize(x T + y sign (N x T) + z N) from
-// n_ts = 2 rgb - 1, then strength mixes between N and n.
-glm::vec3 apply_normal_map(const Material& material, glm::vec2 uv, const glm::vec3& normal,
-                           const glm::vec4& tangent) {
+// The normal map's texel at uv as a tangent-space direction, n_ts = 2 rgb - 1 (Cycles' Normal
+// Map node), renormalised; (0, 0, 1) for a texel that gives no direction.
+glm::vec3 tangent_space_normal(const Material& material, glm::vec2 uv) {
   const glm::vec3 rgb(material.normal_map->sample(material.normal_map_uv_transform.apply(uv)));
-  const glm::vec3 n_ts = 2.0f * rgb - glm::vec3(1.0f);
+  return normalize_or(2.0f * rgb - glm::vec3(1.0f), glm::vec3(0.0f, 0.0f, 1.0f));
+}
+
+// Cycles' Normal Map node in tangent space: n = normalize(x T + y sign (N x T) + z N), then
+// strength mixes between N and n.
+glm::vec3 apply_normal_map(const Material& material, const glm::vec3& n_ts, const glm::vec3& normal,
+                           const glm::vec4& tangent) {
   const glm::vec3 t = normalize_or(glm::vec3(tangent) - glm::dot(glm::vec3(tangent), normal) * normal,
                                    glm::vec3(0.0f));
   if (t == glm::vec3(0.0f)) return normal;
@@ -103,10 +108,11 @@ SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm:
   if (!std::isfinite(sp.uv.x) || !std::isfinite(sp.uv.y)) sp.uv = glm::vec2(0.0f);
 
   sp.smooth_normal = facing_sign * n_front;
+  if (material.normal_map) sp.tangent_space_normal = tangent_space_normal(material, sp.uv);
   if (material.normal_map && !mesh.tangents.empty()) {
     const glm::vec4 tangent =
         b0 * mesh.tangents[tri.x] + b1 * mesh.tangents[tri.y] + b2 * mesh.tangents[tri.z];
-    n_front = apply_normal_map(material, sp.uv, n_front, tangent);
+    n_front = apply_normal_map(material, sp.tangent_space_normal, n_front, tangent);
   }
   glm::vec3 n = facing_sign * n_front;
   if (!is_finite(n)) n = sp.geometric_normal;

@@ -26,6 +26,9 @@ struct SurfacePoint {
   // The interpolated vertex normal before normal mapping and ensure_valid_reflection (Cycles'
   // sd->N; the geometric normal without vertex normals), flipped to face the incoming ray.
   glm::vec3 smooth_normal{0.0f, 0.0f, 1.0f};
+  // What the material's normal map says in its tangent space (2 texel - 1, renormalised), read
+  // whenever the material has one; (0, 0, 1), the unperturbed normal, otherwise.
+  glm::vec3 tangent_space_normal{0.0f, 0.0f, 1.0f};
   glm::vec2 uv{0.0f};
   uint32_t material = 0;
   int32_t part = 0;
