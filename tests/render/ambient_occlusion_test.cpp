@@ -104,3 +104,12 @@ TEST_CASE("The tangent-space normal AOV is the normal map's texel, (0, 0, 1) wit
   CHECK(flat_pixels > 50);
   CHECK(bumpy_pixels > 50);
 }
+
+TEST_CASE("Ambient occlusion without rays or with a distance of 0 is refused", "[render]") {
+  CHECK_THROWS_WITH(render_floor(0.5, 1.0, 1, 0, AovAmbientOcclusion),
+                    "render: ambient occlusion needs at least 1 ray per sample and a distance in (0, 65536] m");
+  CHECK_THROWS_WITH(render_floor(0.5, 0.0, 1, 1, AovAmbientOcclusion),
+                    "render: ambient occlusion needs at least 1 ray per sample and a distance in (0, 65536] m");
+  // Settings the AOV does not use are not checked.
+  CHECK_NOTHROW(render_floor(0.5, 0.0, 1, 0, AovAlpha));
+}

@@ -3,7 +3,8 @@
 // (distance d, "Only Local" off): the fraction of cosine-distributed directions about the
 // shading normal along which no surface lies within d. Each camera sample that hits traces a
 // few rays; the directions of all rays of a pixel are one Owen-scrambled Sobol sequence, so they
-// stratify the hemisphere across the pixel's samples.
+// stratify the hemisphere across the pixel's samples. Every surface occludes whatever its
+// opacity: Cycles traces the node's rays as opaque shadow rays too.
 #include <cstdint>
 
 #include <glm/glm.hpp>

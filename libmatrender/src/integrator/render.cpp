@@ -81,7 +81,7 @@ void validate(const Camera& camera, const RenderSettings& settings) {
       (settings.ambient_occlusion_rays < 1 ||
        !(settings.ambient_occlusion_distance > 0.0 && settings.ambient_occlusion_distance <= kMaxSceneCoordinate)))
     throw std::invalid_argument("render: ambient occlusion needs at least 1 ray per sample and a distance in (0, " +
-                                std::to_string(kMaxSceneCoordinate) + "] m");
+                                std::to_string(static_cast<int64_t>(kMaxSceneCoordinate)) + "] m");
 }
 
 }  // namespace
