@@ -19,7 +19,7 @@
 #include "matgeom/material_library.h"
 #include "matgeom/uv_scale.h"
 #include "matrender/asset.h"
-#include "matrender/image_io.h"
+#include "matgeom/image_writing.h"
 #include "matrender/paper_setup.h"
 #include "matrender/render.h"
 
@@ -120,7 +120,7 @@ int main(int argc, char** argv) {
         std::copy_n(&frame.color[3 * static_cast<size_t>(y) * static_cast<size_t>(size)], 3 * size,
                     &sheet[3 * (static_cast<size_t>(y0 + y) * static_cast<size_t>(width) + static_cast<size_t>(x0))]);
     }
-    matrender::write_display_png(output, width, height, sheet.data(), nullptr, exposure);
+    matgeom::write_display_png(output, width, height, sheet.data(), nullptr, exposure);
     fmt::print("wrote {} ({} x {})\n", output, width, height);
   } catch (const std::exception& e) {
     fmt::print(stderr, "contact_sheet: {}\n", e.what());

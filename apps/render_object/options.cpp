@@ -271,8 +271,8 @@ void add_render_options(CLI::App& app, Options& o) {
   app.add_option_function<double>(
          "--exposure",
          [&o](const double& stops) {
-           require(std::abs(stops) <= matrender::kMaxExposureStops, "--exposure",
-                   fmt::format("a number of stops in [{}, {}]", -matrender::kMaxExposureStops, matrender::kMaxExposureStops));
+           require(std::abs(stops) <= matgeom::kMaxExposureStops, "--exposure",
+                   fmt::format("a number of stops in [{}, {}]", -matgeom::kMaxExposureStops, matgeom::kMaxExposureStops));
            o.exposure = stops;
          },
          "display PNG exposure in stops")

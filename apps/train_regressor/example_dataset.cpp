@@ -87,12 +87,12 @@ void render_variant(const matgeom::ObjectAsset& asset, const ExampleMaterial& m,
     std::filesystem::create_directories(folder / "ORM");
     std::filesystem::create_directories(folder / "label");
     std::filesystem::create_directories(folder / "normal_obj");
-    matrender::write_display_png((folder / "images" / stem).string(), w, h, frame.color.data(), frame.alpha.data());
+    matgeom::write_display_png((folder / "images" / stem).string(), w, h, frame.color.data(), frame.alpha.data());
     // The albedo display-encoded as the repository stores it, covered pixels only.
     std::vector<float> albedo(pixels * 3);
     for (size_t p = 0; p < pixels; ++p)
       for (int c = 0; c < 3; ++c) albedo[p * 3 + static_cast<size_t>(c)] = frame.parameter(P::BaseColor)[p * 3 + static_cast<size_t>(c)] * frame.alpha[p];
-    matrender::write_display_png((folder / "albedo" / stem).string(), w, h, albedo.data(), frame.alpha.data());
+    matgeom::write_display_png((folder / "albedo" / stem).string(), w, h, albedo.data(), frame.alpha.data());
     // ORM: R ambient occlusion (1: none is modelled), G roughness, B metallic; normal_obj:
     // 0.5 n + 0.5 of the world-space shading normal. Alpha is 1 where covered, unlike the
     // repository's coverage, so readers that un-premultiply do not inflate edge values (its W6).
@@ -105,11 +105,11 @@ void render_variant(const matgeom::ObjectAsset& asset, const ExampleMaterial& m,
       for (int c = 0; c < 3; ++c) normal[p * 4 + static_cast<size_t>(c)] = 0.5f * frame.normal_world[p * 3 + static_cast<size_t>(c)] + 0.5f;
       orm[p * 4 + 3] = normal[p * 4 + 3] = 1.0f;
     }
-    matrender::write_data_png((folder / "ORM" / stem).string(), w, h, 4, orm.data(), 255.0, 0.0, false);
-    matrender::write_data_png((folder / "normal_obj" / stem).string(), w, h, 4, normal.data(), 255.0, 0.0, false);
+    matgeom::write_data_png((folder / "ORM" / stem).string(), w, h, 4, orm.data(), 255.0, 0.0, false);
+    matgeom::write_data_png((folder / "normal_obj" / stem).string(), w, h, 4, normal.data(), 255.0, 0.0, false);
     std::vector<float> label(pixels);
     for (size_t p = 0; p < pixels; ++p) label[p] = static_cast<float>(frame.label[p]);
-    matrender::write_data_png((folder / "label" / stem).string(), w, h, 1, label.data(), 1.0, 0.0, false);
+    matgeom::write_data_png((folder / "label" / stem).string(), w, h, 1, label.data(), 1.0, 0.0, false);
   }
 }
 

@@ -80,7 +80,7 @@ TEST_CASE("Display PNGs store straight alpha: a partly covered pixel keeps the s
   const fs::path dir = temp_dir();
   // A surface of linear 0.5 covering a quarter of the pixel, premultiplied as rendered.
   const std::vector<float> premultiplied = {0.125f, 0.125f, 0.0f}, coverage = {0.25f};
-  write_display_png((dir / "d.png").string(), 1, 1, premultiplied.data(), coverage.data());
+  matgeom::write_display_png((dir / "d.png").string(), 1, 1, premultiplied.data(), coverage.data());
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
   auto in = OIIO::ImageInput::open((dir / "d.png").string(), &config);

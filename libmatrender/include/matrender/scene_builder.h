@@ -10,6 +10,7 @@
 #include "matrender/camera.h"
 #include "matrender/scene.h"
 #include "matrender/scene_description.h"
+#include "matrender/scene_materials.h"
 
 namespace matrender {
 
@@ -20,10 +21,21 @@ struct BuiltScene {
   std::string frame_stem;                // output file prefix: "view_005_016" for grid cell (5, 16), else "view"
   matgeom::Sphere bounds;                // minimal enclosing sphere of all objects
   std::optional<matgeom::LightRig> rig;  // when the paper's rig lights the scene
+  // The described materials (those no part uses yet are loaded when first assigned) and each
+  // object's surface in world space: what assign_object_materials needs.
+  SceneMaterials materials;
+  std::vector<matgeom::TriangleMesh> object_surfaces;
 };
 
 // Throws InputError naming the described item when an input fails to load or does not fit
 // (unreadable mesh or texture, unknown part name).
 BuiltScene build_scene(const SceneDescription& description);
+
+// Puts object `object` (its index in the description) in other materials of the description:
+// `materials.material` on every part and `materials.part_materials` by part name, as
+// build_scene reads them (the description's source and transform are not used); parts it does
+// not name keep the material they have. The BVH is not rebuilt. Throws InputError for an unknown
+// part name or a material input that fails to load, std::out_of_range for an unknown material.
+void assign_object_materials(BuiltScene& built, size_t object, const ObjectDescription& materials);
 
 }  // namespace matrender

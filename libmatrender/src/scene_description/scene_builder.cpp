@@ -2,9 +2,7 @@
 
 #include <algorithm>
 #include <exception>
-#include <map>
 #include <stdexcept>
-#include <tuple>
 #include <vector>
 
 #include <fmt/format.h>
@@ -13,12 +11,10 @@
 #include "matgeom/camera_grid.h"
 #include "matgeom/mesh.h"
 #include "matgeom/mesh_io.h"
-#include "matgeom/material_folder.h"
-#include "matgeom/material_library.h"
-#include "matgeom/uv_scale.h"
 #include "matrender/asset.h"
 #include "matrender/paper_setup.h"
 #include "matrender/scene_limits.h"
+#include "matrender/scene_materials.h"
 #include "matrender/texture.h"
 
 namespace matrender {
@@ -53,107 +49,6 @@ matgeom::TriangleMesh merged_surface(const std::vector<matgeom::ObjectAsset>& as
   return merged;
 }
 
-// The scene file's materials, added to the scene on first use so that unused ones load nothing;
-// a texture file or material folder shared by several materials is loaded once.
-class SceneMaterials {
- public:
-  SceneMaterials(const std::map<std::string, MaterialDescription>& described, Scene& scene)
-      : described_(described), scene_(scene) {}
-
-  uint32_t id(const std::string& name) {
-    if (const auto it = ids_.find(name); it != ids_.end()) return it->second;
-    const MaterialDescription& description = described_.at(name);
-    if (description.folder) return ids_[name] = scene_.add_material(folder_material(name, description));
-    if (description.library) return ids_[name] = scene_.add_material(library_material(name, description));
-    Material material = description.constants;
-    for (size_t k = 0; k < material.parameters.size(); ++k)
-      material.parameters[k].texture = texture(description.textures[k]);
-    material.normal_map = texture(description.normal_map);
-    return ids_[name] = scene_.add_material(std::move(material));
-  }
-
-  // The material on part `part` of `mesh`: a material whose maps have a physical size (a folder's
-  // metadata, the library's tiles) repeats them as often per UV unit as that part's UVs need.
-  uint32_t id_on_part(const std::string& name, const matgeom::TriangleMesh& mesh, uint32_t part) {
-    const uint32_t base = id(name);
-    const auto tile = tile_sizes_.find(name);
-    if (tile == tile_sizes_.end()) return base;
-    const double repeats = matgeom::texture_repeats(mesh, part, tile->second);
-    if (repeats == 1.0) return base;
-    const auto key = std::make_pair(name, static_cast<float>(repeats));
-    if (const auto it = repeated_ids_.find(key); it != repeated_ids_.end()) return it->second;
-    return repeated_ids_[key] = scene_.add_material(with_texture_repeats(scene_.material(base), key.second));
-  }
-
- private:
-  TexturePtr texture(const std::optional<TextureFile>& file) {
-    if (!file) return nullptr;
-    TexturePtr& loaded = textures_[std::make_tuple(file->path, file->color_space, file->wrap)];
-    if (!loaded) {
-      try {
-        loaded = Texture::load(file->path, file->color_space, file->wrap);
-      } catch (const std::exception& e) {
-        throw file->origin.error("/texture", e.what());
-      }
-    }
-    return loaded;
-  }
-
-  // A folder used by several materials (or given in place on several objects) is read once.
-  Material folder_material(const std::string& name, const MaterialDescription& description) {
-    const MaterialFolderFile& file = *description.folder;
-    auto read = folder_materials_.find(file.path);
-    if (read == folder_materials_.end()) {
-      matgeom::FolderMaterial folder;
-      try {
-        folder = matgeom::read_material_folder(file.path);
-      } catch (const std::exception& e) {
-        throw file.origin.error("", e.what());
-      }
-      read = folder_materials_.emplace(file.path, material_from_desc(folder.material, folder.images)).first;
-      if (folder.tile_size_m) folder_tile_sizes_[file.path] = *folder.tile_size_m;
-    }
-    if (const auto tile = folder_tile_sizes_.find(file.path); tile != folder_tile_sizes_.end())
-      tile_sizes_[name] = tile->second;
-    Material material = read->second;
-    material.name = name;
-    if (description.label_id) material.label_id = *description.label_id;
-    return material;
-  }
-
-  // A library material asked for by several scene materials is generated once.
-  Material library_material(const std::string& name, const MaterialDescription& description) {
-    const LibraryMaterialRequest& request = *description.library;
-    const std::string key = matgeom::library_material_name(request.spec) + "@" + std::to_string(request.resolution);
-    auto made = library_materials_.find(key);
-    if (made == library_materials_.end()) {
-      matgeom::FolderMaterial generated;
-      try {
-        generated = matgeom::generate_library_material(request.spec, {request.resolution, 0});
-      } catch (const std::exception& e) {
-        throw request.origin.error("", e.what());
-      }
-      made = library_materials_.emplace(key, material_from_desc(generated.material, generated.images)).first;
-      library_tile_sizes_[key] = *generated.tile_size_m;
-    }
-    tile_sizes_[name] = library_tile_sizes_.at(key);
-    Material material = made->second;
-    material.name = name;
-    if (description.label_id) material.label_id = *description.label_id;
-    return material;
-  }
-
-  const std::map<std::string, MaterialDescription>& described_;
-  Scene& scene_;
-  std::map<std::string, uint32_t> ids_;
-  std::map<std::tuple<std::string, ColorSpace, Wrap>, TexturePtr> textures_;
-  std::map<std::string, Material> folder_materials_;   // by folder path
-  std::map<std::string, Material> library_materials_;  // by canonical name and resolution
-  std::map<std::string, double> folder_tile_sizes_, library_tile_sizes_;  // keyed as the two above
-  std::map<std::string, double> tile_sizes_;  // metres per repeat of a scene material's maps, by name
-  std::map<std::pair<std::string, float>, uint32_t> repeated_ids_;  // by name and repeats
-};
-
 size_t part_count(const matgeom::ObjectAsset& asset) {
   return std::max({static_cast<size_t>(asset.mesh.part_count()), asset.materials.size(), size_t{1}});
 }
@@ -164,32 +59,33 @@ std::string quoted_part_names(const matgeom::TriangleMesh& mesh) {
   return names.empty() ? "its parts have no names" : "its parts: " + names;
 }
 
-// The scene material of each part the description assigns one to; parts left out keep the
-// object's own material.
-std::vector<std::optional<uint32_t>> assigned_materials(const ObjectDescription& object,
-                                                        const matgeom::ObjectAsset& asset, SceneMaterials& materials) {
-  std::vector<std::optional<uint32_t>> assigned(part_count(asset));
+// The scene material of each of the `parts` parts of `mesh` the description assigns one to;
+// parts left out keep the object's own material.
+std::vector<std::optional<uint32_t>> assigned_materials(const ObjectDescription& object, const matgeom::TriangleMesh& mesh,
+                                                        size_t parts, SceneMaterials& materials, Scene& scene) {
+  std::vector<std::optional<uint32_t>> assigned(parts);
   if (object.material)
     for (size_t k = 0; k < assigned.size(); ++k)
-      assigned[k] = materials.id_on_part(*object.material, asset.mesh, static_cast<uint32_t>(k));
-  const std::vector<std::string>& names = asset.mesh.part_names;
+      assigned[k] = materials.id_on_part(scene, *object.material, mesh, static_cast<uint32_t>(k));
+  const std::vector<std::string>& names = mesh.part_names;
   for (const auto& [part, material] : object.part_materials) {
     bool found = false;
     for (size_t k = 0; k < assigned.size() && k < names.size(); ++k) {
       if (names[k] != part) continue;
-      assigned[k] = materials.id_on_part(material, asset.mesh, static_cast<uint32_t>(k));
+      assigned[k] = materials.id_on_part(scene, material, mesh, static_cast<uint32_t>(k));
       found = true;
     }
     if (!found)
       throw object.origin.error(
-          "/materials", fmt::format("the object has no part named \"{}\" ({})", part, quoted_part_names(asset.mesh)));
+          "/materials", fmt::format("the object has no part named \"{}\" ({})", part, quoted_part_names(mesh)));
   }
   return assigned;
 }
 
 void add_object(Scene& scene, const ObjectDescription& object, const matgeom::ObjectAsset& asset,
                 SceneMaterials& materials) {
-  const std::vector<std::optional<uint32_t>> assigned = assigned_materials(object, asset, materials);
+  const std::vector<std::optional<uint32_t>> assigned =
+      assigned_materials(object, asset.mesh, part_count(asset), materials, scene);
   // A mesh or slot the renderer rejects (non-finite vertex, bad image index) is a bad input file.
   try {
     MeshOptions options;
@@ -292,10 +188,11 @@ BuiltScene build_scene(const SceneDescription& description) {
 
   BuiltScene built;
   built.bounds = matgeom::minimal_enclosing_sphere(surface.positions);
-  SceneMaterials materials(description.materials, built.scene);
+  built.materials = SceneMaterials(description.materials);
   for (size_t k = 0; k < assets.size(); ++k) {
-    add_object(built.scene, description.objects[k], assets[k], materials);
+    add_object(built.scene, description.objects[k], assets[k], built.materials);
     built.object_meshes.push_back(static_cast<uint32_t>(built.scene.mesh_count() - 1));
+    built.object_surfaces.push_back(std::move(assets[k].mesh));
   }
   add_lights(description.lights, built);
   built.scene.set_background(load_background(description.background));
@@ -305,6 +202,16 @@ BuiltScene build_scene(const SceneDescription& description) {
   built.frame_stem = frame_stem(description.camera);
   built.scene.commit();
   return built;
+}
+
+void assign_object_materials(BuiltScene& built, size_t object, const ObjectDescription& materials) {
+  const uint32_t mesh = built.object_meshes.at(object);
+  std::vector<uint32_t> ids = built.scene.part_materials(mesh);
+  const std::vector<std::optional<uint32_t>> assigned =
+      assigned_materials(materials, built.object_surfaces[object], ids.size(), built.materials, built.scene);
+  for (size_t k = 0; k < ids.size(); ++k)
+    if (assigned[k]) ids[k] = *assigned[k];
+  built.scene.set_part_materials(mesh, ids);
 }
 
 }  // namespace matrender

@@ -704,8 +704,8 @@ void read_render(const Node& node, SceneDescription& scene) {
   if (auto n = node.find("max_transmission_bounces")) s.max_transmission_bounces = n->integer_at_least(0);
   if (auto n = node.find("max_transparent_bounces")) s.max_transparent_bounces = n->integer_at_least(0);
   if (auto n = node.find("exposure"))
-    scene.exposure_stops = n->number_where([](double v) { return std::abs(v) <= kMaxExposureStops; },
-                                           fmt::format("a number of stops in [{}, {}]", -kMaxExposureStops, kMaxExposureStops));
+    scene.exposure_stops = n->number_where([](double v) { return std::abs(v) <= matgeom::kMaxExposureStops; },
+                                           fmt::format("a number of stops in [{}, {}]", -matgeom::kMaxExposureStops, matgeom::kMaxExposureStops));
   if (auto n = node.find("transparent_background")) s.transparent_background = n->boolean();
   if (auto n = node.find("cycles_parity")) s.cycles_parity = n->boolean();
   if (auto n = node.find("mipmaps")) s.mipmaps = n->boolean();
