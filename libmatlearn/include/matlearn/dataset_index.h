@@ -11,6 +11,7 @@
 // <root>/ground_truth_basecolour/<material>.png and ground_truth_roughness/<material>.png
 // (optionally ground_truth_metallic/ and ground_truth_normal/), not aligned with the pixels;
 // sample ids "<object>/<material>/<stem>".
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -43,7 +44,7 @@ std::vector<SampleId> index_dataset(const std::filesystem::path& root);
 // ratios, counts, train, val, test).
 struct SplitFile {
   std::string name, strategy;
-  int seed = 0;
+  int64_t seed = 0;
   std::vector<std::string> train, val, test;
 };
 

@@ -115,7 +115,7 @@ SplitFile read_split_file(const fs::path& path) {
   try {
     if (root["name"]) file.name = root["name"].as<std::string>();
     if (root["strategy"]) file.strategy = root["strategy"].as<std::string>();
-    if (root["seed"]) file.seed = root["seed"].as<int>();
+    if (root["seed"]) file.seed = root["seed"].as<int64_t>();
   } catch (const YAML::Exception& e) {
     throw std::runtime_error("split file " + path.string() + ": " + e.what());
   }
