@@ -107,6 +107,8 @@ struct VariantMetadata {
 // or is 0 (the repository silently labelled such slots background, its W12), or provenance that
 // is not a JSON object.
 void write_variant_metadata(const std::filesystem::path& variant_folder, const VariantMetadata& metadata);
+// The text write_variant_metadata writes, to compare with a file already there.
+std::string variant_metadata_text(const VariantMetadata& metadata);
 
 // material_segmentation_map.json in the variant (id_to_material_family, material_family_to_id)
 // and material_segmentation_map.yaml at the root, both listing every class of matgeom's table.

@@ -64,7 +64,7 @@ void write_transforms(const fs::path& variant_folder, const CameraIntrinsics& k,
   write_json(variant_folder / "transforms.json", json);
 }
 
-void write_variant_metadata(const fs::path& variant_folder, const VariantMetadata& metadata) {
+std::string variant_metadata_text(const VariantMetadata& metadata) {
   ordered_json variant_map = ordered_json::object(), used = ordered_json::object();
   std::map<std::string, const SlotMaterial*> by_slot;  // the repository sorts used_materials by key
   for (const SlotMaterial& slot : metadata.materials) {
@@ -91,7 +91,11 @@ void write_variant_metadata(const fs::path& variant_folder, const VariantMetadat
                             {"samples", metadata.samples},
                             {"output_structure", structure}};
   json["provenance"] = provenance;
-  write_json(variant_folder / "metadata.json", json);
+  return json.dump(2) + "\n";
+}
+
+void write_variant_metadata(const fs::path& variant_folder, const VariantMetadata& metadata) {
+  matgeom::write_file_atomically(variant_folder / "metadata.json", variant_metadata_text(metadata));
 }
 
 void write_segmentation_map_json(const fs::path& variant_folder) {

@@ -156,6 +156,7 @@ SplitFile random_split(const std::vector<SampleId>& samples, double train_fracti
 void write_split_file(const std::filesystem::path& path, const SplitFile& split, const SplitRatios& ratios,
                       const std::string& dataset_root) {
   YAML::Emitter out;
+  out.SetDoublePrecision(15);  // 0.7, not 0.69999999999999996: what a person and Python write
   out << YAML::BeginMap;
   out << YAML::Key << "name" << YAML::Value << split.name;
   out << YAML::Key << "strategy" << YAML::Value << split.strategy;

@@ -88,8 +88,13 @@ struct BuiltinObject {
   uint32_t seed = 0;
 };
 
+// When an object's mesh gets new UVs from the paper's UV pass (matgeom/uv_pass.h) before it is
+// placed: never, only when the mesh has no UVs of its own, or always.
+enum class UvPassMode { Never, WhenMissing, Always };
+
 struct ObjectDescription {
   std::variant<MeshFile, BuiltinObject> source;
+  UvPassMode uv_pass = UvPassMode::Never;
   glm::dmat4 object_to_world{1.0};
   // Scene materials by name: `material` for every part, or `part_materials` by part name. Parts
   // not covered keep the object's own materials (glTF slots, built-in materials).

@@ -11,6 +11,7 @@
 #include "matgeom/camera_grid.h"
 #include "matgeom/mesh.h"
 #include "matgeom/mesh_io.h"
+#include "matgeom/uv_pass.h"
 #include "matrender/asset.h"
 #include "matrender/paper_setup.h"
 #include "matrender/scene_limits.h"
@@ -20,8 +21,7 @@
 namespace matrender {
 namespace {
 
-// Any failure to read a user's mesh is a problem with that input, whatever the library throws.
-matgeom::ObjectAsset load_object(const ObjectDescription& object) {
+matgeom::ObjectAsset read_source(const ObjectDescription& object) {
   if (const auto* file = std::get_if<MeshFile>(&object.source)) {
     try {
       return matgeom::read_object(file->path);
@@ -35,6 +35,21 @@ matgeom::ObjectAsset load_object(const ObjectDescription& object) {
   } catch (const std::exception& e) {
     throw object.origin.error("/builtin", e.what());
   }
+}
+
+// Any failure to read a user's mesh is a problem with that input, whatever the library throws.
+matgeom::ObjectAsset load_object(const ObjectDescription& object) {
+  matgeom::ObjectAsset asset = read_source(object);
+  const bool needs_uvs = object.uv_pass == UvPassMode::Always ||
+                         (object.uv_pass == UvPassMode::WhenMissing && asset.mesh.uvs.empty());
+  if (needs_uvs) {
+    try {
+      asset.mesh = matgeom::uv_pass(asset.mesh).mesh;
+    } catch (const std::exception& e) {
+      throw object.origin.error("/uv_pass", e.what());
+    }
+  }
+  return asset;
 }
 
 // All objects as one surface, so that the rig is sized and the grid camera centred for

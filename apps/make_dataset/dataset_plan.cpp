@@ -1,0 +1,114 @@
+#include "dataset_plan.h"
+
+#include <stdexcept>
+
+#include "common/number_options.h"
+#include "matlearn/dataset_splits.h"
+#include "matlearn/dataset_writer.h"
+
+namespace make_dataset {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<matgeom::SlotCandidates> slot_candidates(const ObjectConfig& object) {
+  std::vector<matgeom::SlotCandidates> slots;
+  for (const SlotConfig& slot : object.slots) {
+    matgeom::SlotCandidates candidates{slot.key, {}};
+    for (const MaterialCandidate& c : slot.candidates) candidates.materials.push_back(c.name);
+    slots.push_back(std::move(candidates));
+  }
+  return slots;
+}
+
+// SplitMix64 (Steele, Lea and Flood 2014), a bijective finaliser: mixing each index in turn
+// gives seeds that differ in every bit for neighbouring frames.
+uint64_t mix(uint64_t x) {
+  x += 0x9e3779b97f4a7c15ull;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+  return x ^ (x >> 31);
+}
+
+}  // namespace
+
+std::optional<Shard> parse_shard(const std::string& text) {
+  const size_t slash = text.find('/');
+  if (slash == std::string::npos) return std::nullopt;
+  const auto index = app_support::whole_number(text.substr(0, slash));
+  const auto count = app_support::whole_number(text.substr(slash + 1));
+  if (!index || !count || *count < 1 || *count > 1000000 || *index < 0 || *index >= *count) return std::nullopt;
+  return Shard{static_cast<int>(*index), static_cast<int>(*count)};
+}
+
+DatasetPlan plan_dataset(const DatasetConfig& config) {
+  DatasetPlan plan;
+  plan.views = static_cast<size_t>(config.camera.n_phi) * static_cast<size_t>(config.camera.n_theta);
+  for (size_t o = 0; o < config.objects.size(); ++o) {
+    try {
+      plan.variants.push_back(matgeom::material_variants(slot_candidates(config.objects[o]), config.combination,
+                                                         config.max_variants, config.variant_seed));
+    } catch (const std::invalid_argument& e) {
+      throw InputError(config.source + ": objects." + std::to_string(o) + ": " + e.what());
+    }
+    for (size_t v = 0; v < plan.variants.back().size(); ++v)
+      for (size_t view = 0; view < plan.views; ++view) plan.frames.push_back({o, v, view});
+  }
+  return plan;
+}
+
+fs::path variant_folder(const DatasetConfig& config, const DatasetPlan& plan, size_t object, size_t variant) {
+  return fs::path(config.output) / config.objects[object].name /
+         matlearn::variant_folder_name(variant, plan.variants[object].size());
+}
+
+std::string view_stem(const DatasetPlan& plan, size_t view) { return matlearn::frame_stem(view, plan.views); }
+
+uint32_t frame_seed(uint64_t seed, const FrameRef& frame) {
+  uint64_t h = mix(seed);
+  for (const size_t index : {frame.object, frame.variant, frame.view}) h = mix(h ^ static_cast<uint64_t>(index));
+  return static_cast<uint32_t>(h >> 32);
+}
+
+std::vector<std::string> variant_material_names(const ObjectConfig& object, const matgeom::MaterialVariant& variant) {
+  std::vector<std::string> names;
+  for (size_t s = 0; s < object.slots.size(); ++s) names.push_back(object.slots[s].candidates[variant[s]].name);
+  return names;
+}
+
+void write_dataset_records(const DatasetConfig& config, const DatasetPlan& plan) {
+  const fs::path root(config.output);
+  fs::create_directories(root / "config");
+  matlearn::write_segmentation_map_yaml(root);
+  std::vector<matlearn::SampleId> samples;
+  std::vector<std::vector<std::string>> materials;
+  for (const FrameRef& frame : plan.frames) {
+    samples.push_back({config.objects[frame.object].name,
+                       matlearn::variant_folder_name(frame.variant, plan.variants[frame.object].size()),
+                       view_stem(plan, frame.view)});
+    materials.push_back(variant_material_names(config.objects[frame.object], plan.variants[frame.object][frame.variant]));
+  }
+  // The repository's loader sorts objects, variants and stems: so do the splits' inputs.
+  std::vector<size_t> order(samples.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return samples[a].str() < samples[b].str(); });
+  std::vector<matlearn::SampleId> sorted;
+  std::vector<std::vector<std::string>> sorted_materials;
+  for (const size_t k : order) sorted.push_back(samples[k]), sorted_materials.push_back(materials[k]);
+
+  const std::string dataset_root = "..";  // the split files' folder's parent: relative, so any copy reads the same
+  const matlearn::SplitRatios& ratios = config.split_ratios;
+  matlearn::write_split_file(root / "config" / "object_disjoint_v1.yaml",
+                             matlearn::object_disjoint_split(sorted, ratios, config.split_seed), ratios, dataset_root);
+  matlearn::write_split_file(root / "config" / "variance_disjoint_v1.yaml",
+                             matlearn::variant_disjoint_split(sorted, ratios, config.split_seed), ratios, dataset_root);
+  matlearn::write_split_file(root / "config" / "material_disjoint_v1.yaml",
+                             matlearn::material_disjoint_split(sorted, sorted_materials, ratios, config.split_seed),
+                             ratios, dataset_root);
+  const double train = config.paper_train_fraction;
+  matlearn::write_split_file(root / "config" / "paper_random_v1.yaml",
+                             matlearn::random_split(sorted, train, config.split_seed), {train, 0.0, 1.0 - train},
+                             dataset_root);
+}
+
+}  // namespace make_dataset

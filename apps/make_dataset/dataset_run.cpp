@@ -1,0 +1,113 @@
+#include "dataset_run.h"
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <memory>
+
+#include "matgeom/atomic_file.h"
+#include "matlearn/dataset_writer.h"
+#include "object_renderer.h"
+
+namespace make_dataset {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::string file_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// The variant's records; a folder that holds a variant made with other settings is refused
+// rather than mixed with this run's frames.
+void write_variant_records(const DatasetConfig& config, const DatasetPlan& plan, const ObjectRenderer& renderer,
+                           size_t object, size_t variant) {
+  const fs::path folder = variant_folder(config, plan, object, variant);
+  fs::create_directories(folder);
+  matlearn::VariantMetadata metadata;
+  metadata.materials = renderer.slot_materials();
+  metadata.width = config.render.width;
+  metadata.height = config.render.height;
+  metadata.samples = config.render.samples;
+  metadata.provenance_json = renderer.provenance_json(plan, variant);
+  const fs::path metadata_file = folder / "metadata.json";
+  const std::string text = matlearn::variant_metadata_text(metadata);
+  if (fs::exists(metadata_file) && file_text(metadata_file) != text)
+    throw InputError(metadata_file.string() +
+                     ": this variant was made with other settings (its metadata differs from this run's); "
+                     "render into another --output, or delete the folder to render it again");
+  matgeom::write_file_atomically(metadata_file, text);
+  std::vector<matlearn::FramePose> poses;
+  for (size_t view = 0; view < plan.views; ++view)
+    poses.push_back(renderer.view_pose(view, view_stem(plan, view)));
+  matlearn::write_transforms(folder, renderer.intrinsics(), poses);
+  matlearn::write_segmentation_map_json(folder);
+}
+
+}  // namespace
+
+RunSummary run_dataset(const DatasetConfig& config, const DatasetPlan& plan, const RunOptions& options) {
+  const Clock::time_point start = Clock::now();
+  RunSummary summary;
+  for (size_t k = 0; k < plan.frames.size(); ++k) summary.frames += options.shard.owns(k) ? 1 : 0;
+  write_dataset_records(config, plan);
+
+  size_t done = 0;
+  std::unique_ptr<ObjectRenderer> renderer;
+  size_t current_object = SIZE_MAX, current_variant = SIZE_MAX;
+  for (size_t k = 0; k < plan.frames.size(); ++k) {
+    if (!options.shard.owns(k)) continue;
+    const FrameRef& frame = plan.frames[k];
+    if (frame.object != current_object) {
+      renderer.reset();  // one object's scene in memory at a time
+      renderer = std::make_unique<ObjectRenderer>(config, frame.object);
+      current_object = frame.object;
+      current_variant = SIZE_MAX;
+    }
+    if (frame.variant != current_variant) {
+      renderer->select_variant(plan.variants[frame.object][frame.variant]);
+      write_variant_records(config, plan, *renderer, frame.object, frame.variant);
+      current_variant = frame.variant;
+    }
+    const fs::path folder = variant_folder(config, plan, frame.object, frame.variant);
+    const std::string stem = view_stem(plan, frame.view);
+    if (matlearn::frame_is_complete(folder, stem, config.render.width, config.render.height)) {
+      ++summary.skipped;
+    } else {
+      const Clock::time_point frame_start = Clock::now();
+      matlearn::FrameMaps maps;
+      if (!renderer->render(frame.view, frame_seed(config.seed, frame), options.threads, options.cancel, maps)) {
+        summary.cancelled = true;
+        break;
+      }
+      matlearn::write_frame_maps(folder, stem, maps);
+      summary.render_seconds += seconds_since(frame_start);
+      ++summary.rendered;
+    }
+    ++done;
+    if (options.progress) options.progress(done, summary.frames, summary.rendered);
+    if (options.cancel && options.cancel->load()) {
+      summary.cancelled = done < summary.frames;
+      break;
+    }
+  }
+  summary.seconds = seconds_since(start);
+  return summary;
+}
+
+uint64_t folder_bytes(const std::string& folder) {
+  uint64_t bytes = 0;
+  std::error_code error;
+  for (fs::recursive_directory_iterator it(folder, error), end; !error && it != end; it.increment(error))
+    if (it->is_regular_file(error)) bytes += it->file_size(error);
+  return bytes;
+}
+
+}  // namespace make_dataset

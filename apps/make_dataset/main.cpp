@@ -1,0 +1,204 @@
+// make_dataset: renders a MatPredict dataset (every object in every material variant from every
+// view of the camera grid, with pixel-aligned maps) into the repository's layout, resumably and
+// in shards. This file only parses the command line, calls the parts that do the work and reports.
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "common/interrupt.h"
+#include "common/number_options.h"
+#include "common/progress_bar.h"
+#include "common/thread_count.h"
+#include "dataset_config.h"
+#include "dataset_plan.h"
+#include "dataset_run.h"
+#include "matgeom/memory_limit.h"
+
+using make_dataset::InputError;
+using make_dataset::Override;
+
+namespace {
+
+constexpr int kRuntimeFailure = 1;
+constexpr int kInputError = 2;
+
+int report_error(const std::string& message, int exit_code) {
+  std::fprintf(stderr, "make_dataset: %s\n", message.c_str());
+  return exit_code;
+}
+
+struct Options {
+  std::string config_file;
+  std::vector<std::string> sets;  // KEY=VALUE
+  std::vector<Override> named;    // from the named options
+  std::string shard = "0/1";
+  int threads = 0;
+  bool print_config = false;
+};
+
+// A YAML double-quoted string: any text stays one scalar.
+std::string quoted(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) out += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
+  return out + "\"";
+}
+
+std::vector<std::string> comma_list(const std::string& text) {
+  std::vector<std::string> items;
+  for (size_t start = 0;;) {
+    const size_t comma = text.find(',', start);
+    items.push_back(text.substr(start, comma - start));
+    if (comma == std::string::npos) return items;
+    start = comma + 1;
+  }
+}
+
+// "AxB" as the YAML list "[A, B]", unchecked: the configuration's reader names what is wrong.
+std::string pair_list(const std::string& text, const std::string& option) {
+  const size_t x = text.find('x');
+  if (x == std::string::npos) throw InputError(option + ": expected AxB, got " + text);
+  return "[" + quoted(text.substr(0, x)) + ", " + quoted(text.substr(x + 1)) + "]";
+}
+
+void add_options(CLI::App& app, Options& options) {
+  app.add_option("-c,--config", options.config_file,
+                 "YAML or JSON configuration (docs/make_dataset.md); none: the embedded default (--print-config shows it)");
+  app.add_option("--set", options.sets, "KEY=VALUE: set any key of the configuration, dotted (render.samples=128)")
+      ->type_name("KEY=VALUE");
+  auto named = [&](const std::string& flags, const std::string& key, const std::string& help,
+                   std::function<std::string(const std::string&, const std::string&)> to_yaml) {
+    const std::string option = flags.substr(flags.rfind(',') + 1);
+    app.add_option_function<std::string>(
+           flags,
+           [&options, key, option, to_yaml](const std::string& value) {
+             options.named.push_back({key, to_yaml(value, option), option});
+           },
+           help + " (" + key + ")")
+        ->type_name("VALUE");
+  };
+  const auto scalar = [](const std::string& value, const std::string&) { return quoted(value); };
+  const auto pair = [](const std::string& value, const std::string& option) { return pair_list(value, option); };
+  named("-o,--output", "output", "the dataset's folder", scalar);
+  named("--objects", "objects", "built-in objects NAME[:SEED], comma-separated, replacing the configuration's",
+        [](const std::string& value, const std::string&) {
+          std::string yaml = "[";
+          for (const std::string& item : comma_list(value)) {
+            const size_t colon = item.find(':');
+            yaml += (yaml.size() > 1 ? ", " : "") + std::string("{builtin: ") + quoted(item.substr(0, colon)) +
+                    (colon == std::string::npos ? "" : ", seed: " + quoted(item.substr(colon + 1))) + "}";
+          }
+          return yaml + "]";
+        });
+  named("--materials", "materials", "candidate materials CLASS[/STYLE][:SEED], comma-separated, one slot for every part of "
+        "objects without materials of their own",
+        [](const std::string& value, const std::string&) {
+          std::string yaml = "{all: [";
+          for (const std::string& item : comma_list(value)) yaml += (yaml.size() > 7 ? ", " : "") + quoted(item);
+          return yaml + "]}";
+        });
+  named("--strategy", "variants.strategy", "cartesian or zip", scalar);
+  named("--max-variants", "variants.max_variants", "at most this many variants per object, drawn uniformly", scalar);
+  named("--resolution", "render.resolution", "WxH pixels",
+        [](const std::string& value, const std::string& option) {
+          return value.find('x') == std::string::npos ? quoted(value) : pair_list(value, option);
+        });
+  named("--spp", "render.samples", "samples per pixel", scalar);
+  named("--exposure", "render.exposure", "stops", scalar);
+  named("--ao-error", "render.ambient_occlusion.error", "the standard error ORM's R may have at most", scalar);
+  named("--material-resolution", "render.material_resolution", "texels per side of library materials", scalar);
+  named("--grid", "camera.grid", "N_PHIxN_THETA cameras", pair);
+  named("--illuminance", "lights.illuminance_lux", "lux at the object's centre", scalar);
+  named("--seed", "seed", "of every frame's samples", scalar);
+  app.add_option("--shard", options.shard, "render shard K of N (0 <= K < N): frames k with k mod N = K")
+      ->type_name("K/N");
+  app.add_option("-t,--threads", options.threads, "render threads (0: all); the images do not depend on it")
+      ->check(app_support::whole_number_in(0, app_support::kMaxThreadRequest));
+  app.add_flag("--print-config", options.print_config, "print the configuration after overrides, and exit");
+}
+
+std::vector<Override> overrides(const Options& options) {
+  std::vector<Override> all = options.named;
+  for (const std::string& set : options.sets) {
+    const size_t equals = set.find('=');
+    if (equals == std::string::npos || equals == 0) throw InputError("--set: expected KEY=VALUE, got " + set);
+    all.push_back({set.substr(0, equals), set.substr(equals + 1), "--set " + set.substr(0, equals)});
+  }
+  return all;
+}
+
+int make(const Options& options) {
+  const std::optional<make_dataset::Shard> shard = make_dataset::parse_shard(options.shard);
+  if (!shard) throw InputError("--shard: expected K/N with 0 <= K < N, got " + options.shard);
+  const make_dataset::DatasetConfig config = make_dataset::load_config(options.config_file, overrides(options));
+  if (options.print_config) {
+    fmt::print("# output: {}\n{}", config.output, config.canonical_yaml);
+    return 0;
+  }
+  const make_dataset::DatasetPlan plan = make_dataset::plan_dataset(config);
+  size_t variants = 0;
+  for (const auto& object : plan.variants) variants += object.size();
+  fmt::print("make_dataset: {} objects, {} variants, {} views each: {} frames of {}x{} at {} spp{} into {}\n",
+             config.objects.size(), variants, plan.views, app_support::with_thousands(static_cast<int64_t>(plan.frames.size())),
+             config.render.width, config.render.height, config.render.samples,
+             shard->count > 1 ? fmt::format(" (shard {}/{})", shard->index, shard->count) : "", config.output);
+  std::fflush(stdout);
+
+  make_dataset::RunOptions run;
+  run.shard = *shard;
+  run.threads = app_support::announced_worker_threads("make_dataset", "--threads", options.threads);
+  run.cancel = app_support::cancel_on_interrupt();
+  app_support::ProgressBar bar("frames");
+  const auto start = std::chrono::steady_clock::now();
+  run.progress = [&](size_t done, size_t total, size_t rendered) {
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    bar.update(static_cast<double>(done) / static_cast<double>(std::max<size_t>(total, 1)),
+               fmt::format("{}/{} frames, {:.2f} frames/s", done, total, rendered / std::max(seconds, 1e-9)));
+  };
+  const make_dataset::RunSummary summary = make_dataset::run_dataset(config, plan, run);
+  bar.finish();
+  const double rate = summary.rendered / std::max(summary.render_seconds, 1e-9);
+  fmt::print("rendered {} frames and found {} complete, of {} in this shard, in {:.1f} s ({:.2f} frames/s, "
+             "{:.0f} frames/hour)\n",
+             summary.rendered, summary.skipped, summary.frames, summary.seconds, rate, rate * 3600.0);
+  if (summary.cancelled)
+    return report_error(fmt::format("interrupted: {} of {} frames are done; run the same command again to resume",
+                                    summary.rendered + summary.skipped, summary.frames),
+                        app_support::interrupted_exit_code());
+  fmt::print("wrote {} ({}): per object and variant images/, albedo/, ORM/, depth/, normal_mat/, normal_obj/, "
+             "label/, transforms.json, metadata.json; config/ holds the split files\n",
+             config.output, matgeom::byte_size_text(static_cast<double>(make_dataset::folder_bytes(config.output))));
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Renders a MatPredict dataset: every object in every material variant from every view of the "
+               "paper's camera grid, with pixel-aligned albedo, ORM, depth, normals and labels, in the MatPredict "
+               "repository's layout. With no arguments it renders a small embedded default (2 objects x 3 "
+               "materials x 8 views) into ./dataset_out/. A run that is stopped resumes when started again.",
+               "make_dataset"};
+  app.footer("Exit codes: 0 done, 1 render or write failure, 2 bad option or input, 130 or 143 interrupted by "
+             "Ctrl-C or SIGTERM (finished frames are kept; run again to resume).");
+  Options options;
+  add_options(app, options);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help
+    return report_error(e.what(), kInputError);
+  } catch (const InputError& e) {
+    return report_error(e.what(), kInputError);
+  }
+  try {
+    return make(options);
+  } catch (const InputError& e) {
+    return report_error(e.what(), kInputError);
+  } catch (const std::exception& e) {
+    return report_error(e.what(), kRuntimeFailure);
+  }
+}

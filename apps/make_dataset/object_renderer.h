@@ -1,0 +1,53 @@
+#pragma once
+// One object of the dataset, built once and rendered in all its variants from all its views:
+// its scene (one BVH) holds every candidate material, a variant only changes which material
+// each part uses, and the grid's cameras are placed by the radius rule around the object.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "dataset_config.h"
+#include "dataset_plan.h"
+#include "matlearn/dataset_writer.h"
+#include "matrender/render.h"
+#include "matrender/scene_builder.h"
+
+namespace make_dataset {
+
+class ObjectRenderer {
+ public:
+  // Loads the object and builds its scene; throws InputError naming the configuration's key
+  // when the object cannot be loaded or a part is in no slot.
+  ObjectRenderer(const DatasetConfig& config, size_t object);
+
+  // Puts the object in the variant's materials (loading those not used before); throws
+  // InputError for a material that cannot be loaded or has no material class.
+  void select_variant(const matgeom::MaterialVariant& variant);
+
+  // The materials of the selected variant, slot by slot.
+  std::vector<matlearn::SlotMaterial> slot_materials() const { return slot_materials_; }
+
+  matrender::Camera view_camera(size_t view) const;
+  matlearn::FramePose view_pose(size_t view, const std::string& stem) const;
+  matlearn::CameraIntrinsics intrinsics() const;
+
+  // Ambient occlusion rays per camera sample that meet the configured standard error:
+  // 0.5 / sqrt(samples x rays) <= error (a Bernoulli variance of at most 1/4).
+  int ambient_occlusion_rays() const;
+
+  // Renders one view with `seed`; false when cancelled (the maps are then incomplete).
+  bool render(size_t view, uint32_t seed, int threads, const std::atomic<bool>* cancel, matlearn::FrameMaps& maps);
+
+  // Everything needed to render a frame of the selected variant again, as a JSON object.
+  std::string provenance_json(const DatasetPlan& plan, size_t variant) const;
+
+ private:
+  const DatasetConfig& config_;
+  const ObjectConfig& object_;
+  matrender::BuiltScene built_;
+  matgeom::CameraGridSpec grid_;
+  std::vector<matlearn::SlotMaterial> slot_materials_;
+  std::vector<std::vector<uint32_t>> slot_parts_;  // the parts of each slot
+};
+
+}  // namespace make_dataset
