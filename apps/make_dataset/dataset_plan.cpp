@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "common/number_options.h"
+#include "matgeom/atomic_file.h"
 #include "matlearn/dataset_splits.h"
 #include "matlearn/dataset_writer.h"
 
@@ -79,6 +80,10 @@ std::vector<std::string> variant_material_names(const ObjectConfig& object, cons
 void write_dataset_records(const DatasetConfig& config, const DatasetPlan& plan) {
   const fs::path root(config.output);
   fs::create_directories(root / "config");
+  for (const char* record : {"material_segmentation_map.yaml", "config/object_disjoint_v1.yaml",
+                             "config/variance_disjoint_v1.yaml", "config/material_disjoint_v1.yaml",
+                             "config/paper_random_v1.yaml"})
+    matgeom::remove_stale_temporaries(root / record, false);
   matlearn::write_segmentation_map_yaml(root);
   std::vector<matlearn::SampleId> samples;
   std::vector<std::vector<std::string>> materials;

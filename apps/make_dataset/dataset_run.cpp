@@ -37,6 +37,8 @@ void write_variant_records(const DatasetConfig& config, const DatasetPlan& plan,
   metadata.height = config.render.height;
   metadata.samples = config.render.samples;
   metadata.provenance_json = renderer.provenance_json(plan, variant);
+  for (const char* record : {"metadata.json", "transforms.json", "material_segmentation_map.json"})
+    matgeom::remove_stale_temporaries(folder / record, false);
   const fs::path metadata_file = folder / "metadata.json";
   const std::string text = matlearn::variant_metadata_text(metadata);
   if (fs::exists(metadata_file) && file_text(metadata_file) != text)
@@ -81,6 +83,10 @@ RunSummary run_dataset(const DatasetConfig& config, const DatasetPlan& plan, con
     if (matlearn::frame_is_complete(folder, stem, config.render.width, config.render.height)) {
       ++summary.skipped;
     } else {
+      // Only this shard writes the frame: whatever temporaries of it are there were left by a
+      // run of this shard that was killed outright.
+      for (const matlearn::DatasetMapInfo& info : matlearn::dataset_maps())
+        matgeom::remove_stale_temporaries(folder / info.folder / (stem + info.extension), true);
       const Clock::time_point frame_start = Clock::now();
       matlearn::FrameMaps maps;
       if (!renderer->render(frame.view, frame_seed(config.seed, frame), options.threads, options.cancel, maps)) {

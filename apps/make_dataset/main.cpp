@@ -16,6 +16,7 @@
 #include "dataset_config.h"
 #include "dataset_plan.h"
 #include "dataset_run.h"
+#include "verify_dataset.h"
 #include "matgeom/memory_limit.h"
 
 using make_dataset::InputError;
@@ -38,6 +39,7 @@ struct Options {
   std::string shard = "0/1";
   int threads = 0;
   bool print_config = false;
+  std::string verify;  // a dataset folder to check instead of rendering
 };
 
 // A YAML double-quoted string: any text stays one scalar.
@@ -117,6 +119,10 @@ void add_options(CLI::App& app, Options& options) {
       ->type_name("K/N");
   app.add_option("-t,--threads", options.threads, "render threads (0: all); the images do not depend on it")
       ->check(app_support::whole_number_in(0, app_support::kMaxThreadRequest));
+  app.add_option("--verify", options.verify,
+                 "check the dataset in DIR (every map of every frame, sizes, labels, masks, records, splits) and exit: "
+                 "1 when a problem is found")
+      ->type_name("DIR");
   app.add_flag("--print-config", options.print_config, "print the configuration after overrides, and exit");
 }
 
@@ -128,6 +134,16 @@ std::vector<Override> overrides(const Options& options) {
     all.push_back({set.substr(0, equals), set.substr(equals + 1), "--set " + set.substr(0, equals)});
   }
   return all;
+}
+
+int verify(const std::string& folder) {
+  const make_dataset::VerifyReport report = make_dataset::verify_dataset(folder);
+  constexpr size_t kShown = 50;
+  for (size_t k = 0; k < std::min(report.problems.size(), kShown); ++k) fmt::print("{}\n", report.problems[k]);
+  if (report.problems.size() > kShown) fmt::print("... and {} more\n", report.problems.size() - kShown);
+  fmt::print("verified {}: {} variants, {} frames: {}\n", folder, report.variants, report.frames,
+             report.problems.empty() ? "no problem" : fmt::format("{} problems", report.problems.size()));
+  return report.problems.empty() ? 0 : kRuntimeFailure;
 }
 
 int make(const Options& options) {
@@ -195,6 +211,7 @@ int main(int argc, char** argv) {
     return report_error(e.what(), kInputError);
   }
   try {
+    if (!options.verify.empty()) return verify(options.verify);
     return make(options);
   } catch (const InputError& e) {
     return report_error(e.what(), kInputError);

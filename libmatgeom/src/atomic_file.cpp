@@ -1,5 +1,6 @@
 #include "matgeom/atomic_file.h"
 
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
@@ -8,6 +9,7 @@
 #include <utility>
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include "temporaries_in_flight.h"
@@ -41,12 +43,46 @@ void remove_quietly(const fs::path& file) {
   fs::remove(file, ignored);
 }
 
+// This machine's name as it may appear in a file name: letters, digits and '-' only.
+const std::string& host_tag() {
+  static const std::string tag = [] {
+    char name[256] = {};
+    if (::gethostname(name, sizeof(name) - 1) != 0) return std::string("host");
+    std::string text;
+    for (const char* c = name; *c; ++c)
+      text += (std::isalnum(static_cast<unsigned char>(*c)) || *c == '-') ? *c : '-';
+    return text.empty() ? std::string("host") : text;
+  }();
+  return tag;
+}
+
 }  // namespace
 
 fs::path temporary_path(const fs::path& path) {
-  const std::string name = "." + path.stem().string() + ".tmp-" + std::to_string(::getpid()) +
+  const std::string name = "." + path.stem().string() + ".tmp-" + host_tag() + "-" + std::to_string(::getpid()) +
                            path.extension().string();
   return path.parent_path() / name;
+}
+
+void remove_stale_temporaries(const fs::path& path, bool any_process) {
+  const std::string prefix = "." + path.stem().string() + ".tmp-", extension = path.extension().string();
+  const std::string local = prefix + host_tag() + "-";
+  std::error_code error;
+  for (fs::directory_iterator it(path.parent_path(), error), end; !error && it != end; it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    if (name.size() <= prefix.size() + extension.size() || name.compare(0, prefix.size(), prefix) != 0 ||
+        name.compare(name.size() - extension.size(), extension.size(), extension) != 0)
+      continue;
+    if (!any_process) {
+      // Only this machine's, and only of a process that is gone: kill(pid, 0) fails with ESRCH.
+      if (name.compare(0, local.size(), local) != 0) continue;
+      const std::string pid_text = name.substr(local.size(), name.size() - local.size() - extension.size());
+      if (pid_text.empty() || pid_text.find_first_not_of("0123456789") != std::string::npos) continue;
+      const long pid = std::stol(pid_text);
+      if (pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
+    }
+    remove_quietly(it->path());
+  }
 }
 
 void write_atomically(const fs::path& path, const std::function<void(const fs::path& temporary)>& write) {

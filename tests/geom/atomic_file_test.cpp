@@ -39,6 +39,27 @@ TEST_CASE("The temporary of a file sits beside it, hidden, with its extension", 
   CHECK(temporary.filename().string().rfind(".mesh.tmp-", 0) == 0);
 }
 
+TEST_CASE("Stale temporaries are removed: a dead process's always, any process's when asked", "[geom]") {
+  TemporaryFolder folder;
+  const fs::path file = folder.path / "007.png";
+  const std::string mine = matgeom::temporary_path(file).filename().string();
+  // This machine's tag, then the id of a process that cannot exist (beyond Linux's pid_max).
+  const std::string tag = mine.substr(std::string(".007.tmp-").size(), mine.rfind('-') - std::string(".007.tmp-").size());
+  const fs::path dead = folder.path / (".007.tmp-" + tag + "-99999999.png");
+  const fs::path elsewhere = folder.path / ".007.tmp-othernode-12.png";
+  const fs::path own = folder.path / mine;
+  const fs::path other_file = folder.path / ".008.tmp-othernode-12.png";
+  for (const fs::path& p : {dead, elsewhere, own, other_file}) matgeom::write_file_atomically(p, "x");
+  matgeom::remove_stale_temporaries(file, false);
+  CHECK_FALSE(fs::exists(dead));
+  CHECK(fs::exists(elsewhere));  // another machine's process may still be writing it
+  CHECK(fs::exists(own));        // this process's own
+  matgeom::remove_stale_temporaries(file, true);
+  CHECK_FALSE(fs::exists(elsewhere));
+  CHECK_FALSE(fs::exists(own));
+  CHECK(fs::exists(other_file));  // another file's temporary is never touched
+}
+
 TEST_CASE("write_atomically replaces a file whole, or leaves it as it was", "[geom]") {
   TemporaryFolder folder;
   const fs::path file = folder.path / "report.csv";

@@ -12,10 +12,17 @@
 
 namespace matgeom {
 
-// The temporary name for `path`: hidden, unique to this process, in the same folder and with the
-// same extension, so writers that pick the format from the extension still see it:
-// "dir/.name.tmp-1234.ext".
+// The temporary name for `path`: hidden, unique to this process (its machine's name and its
+// process id, so processes on the nodes of a cluster that share the folder never collide), in the
+// same folder and with the same extension, so writers that pick the format from the extension
+// still see it: "dir/.name.tmp-node07-1234.ext".
 std::filesystem::path temporary_path(const std::filesystem::path& path);
+
+// Removes the temporaries of `path` that processes killed outright (SIGKILL, a lost node) left
+// behind. any_process: every temporary of `path`, whoever made it (for a file only this process
+// writes now, as one shard's frames); else only those of this machine's processes that have
+// ended. Errors are ignored: a temporary that stays is harmless.
+void remove_stale_temporaries(const std::filesystem::path& path, bool any_process);
 
 // Calls write(temporary) to write the whole file, then renames the temporary to `path`. The
 // folder must exist: a missing one is an error of the caller's input, not something to make. An

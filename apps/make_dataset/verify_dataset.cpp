@@ -1,0 +1,195 @@
+#include "verify_dataset.h"
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <set>
+
+#include <OpenImageIO/imageio.h>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "dataset_config.h"
+#include "matgeom/material_classes.h"
+#include "matlearn/dataset_index.h"
+#include "matlearn/dataset_writer.h"
+
+namespace make_dataset {
+namespace {
+
+namespace fs = std::filesystem;
+using matlearn::DatasetMap;
+
+struct DecodedMap {
+  int width = 0, height = 0, channels = 0;
+  std::vector<float> values;
+};
+
+// OpenImageIO's errors may span lines: one problem, one line.
+std::string one_line(std::string text) {
+  while (!text.empty() && text.back() == '\n') text.pop_back();
+  for (char& c : text) c = c == '\n' ? ';' : c;
+  return text;
+}
+
+// The stored values, straight (no premultiplication by a PNG's alpha); an error text on failure.
+std::string decode(const fs::path& file, DecodedMap& map) {
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto input = OIIO::ImageInput::open(file.string(), &config);
+  if (!input) return "cannot be read: " + one_line(OIIO::geterror());
+  map.width = input->spec().width;
+  map.height = input->spec().height;
+  map.channels = input->spec().nchannels;
+  map.values.resize(static_cast<size_t>(map.width) * static_cast<size_t>(map.height) * static_cast<size_t>(map.channels));
+  if (!input->read_image(0, 0, 0, map.channels, OIIO::TypeDesc::FLOAT, map.values.data()))
+    return "cannot be decoded: " + one_line(input->geterror());
+  return {};
+}
+
+nlohmann::json read_json(const fs::path& file, std::vector<std::string>& problems) {
+  std::ifstream in(file);
+  if (!in) {
+    problems.push_back(file.string() + ": missing");
+    return nullptr;
+  }
+  const nlohmann::json json = nlohmann::json::parse(in, nullptr, false);
+  if (json.is_discarded() || !json.is_object()) problems.push_back(file.string() + ": not a JSON object");
+  return json.is_discarded() ? nlohmann::json(nullptr) : json;
+}
+
+// The label ids the variant's metadata.json says it uses.
+std::set<int> used_labels(const fs::path& folder, std::vector<std::string>& problems) {
+  std::set<int> labels;
+  const nlohmann::json metadata = read_json(folder / "metadata.json", problems);
+  if (!metadata.is_object()) return labels;
+  const auto used = metadata.find("used_materials");
+  if (used == metadata.end() || !used->is_object()) {
+    problems.push_back((folder / "metadata.json").string() + ": no used_materials");
+    return labels;
+  }
+  for (const auto& [slot, material] : used->items()) {
+    if (!material.is_object() || !material.contains("label_id") || !material["label_id"].is_number_integer()) {
+      problems.push_back((folder / "metadata.json").string() + ": used_materials." + slot + " has no label_id");
+      continue;
+    }
+    labels.insert(material["label_id"].get<int>());
+  }
+  return labels;
+}
+
+void verify_frame(const fs::path& folder, const std::string& stem, int width, int height,
+                  const std::set<int>& labels, std::vector<std::string>& problems) {
+  std::map<DatasetMap, DecodedMap> maps;
+  for (const matlearn::DatasetMapInfo& info : matlearn::dataset_maps()) {
+    const fs::path file = folder / info.folder / (stem + info.extension);
+    if (!fs::is_regular_file(file)) {
+      problems.push_back(file.string() + ": missing");
+      continue;
+    }
+    DecodedMap map;
+    if (const std::string error = decode(file, map); !error.empty()) {
+      problems.push_back(file.string() + ": " + error);
+      continue;
+    }
+    if (map.width != width || map.height != height || map.channels != info.channels) {
+      problems.push_back(fmt::format("{}: {}x{} with {} channels, expected {}x{} with {}", file.string(), map.width,
+                                     map.height, map.channels, width, height, info.channels));
+      continue;
+    }
+    maps.emplace(info.map, std::move(map));
+  }
+  const auto label = maps.find(DatasetMap::Label), depth = maps.find(DatasetMap::Depth), orm = maps.find(DatasetMap::Orm);
+  if (label == maps.end()) return;
+  const fs::path label_file = folder / "label" / (stem + ".png");
+  std::set<int> found;
+  size_t mask_disagreements = 0;
+  for (size_t p = 0; p < label->second.values.size(); ++p) {
+    const int id = static_cast<int>(std::lround(label->second.values[p] * 255.0f));
+    found.insert(id);
+    const bool object = id > 0;
+    const bool covered = depth != maps.end() && depth->second.values[4 * p + 3] > 0.0f;
+    const bool orm_alpha = orm != maps.end() && orm->second.values[4 * p + 3] > 0.0f;
+    if ((depth != maps.end() && object != covered) || (orm != maps.end() && object != orm_alpha)) ++mask_disagreements;
+  }
+  for (const int id : found) {
+    if (id == 0) continue;
+    if (!matgeom::material_class_of_label(id))
+      problems.push_back(fmt::format("{}: label {} is no class of the table", label_file.string(), id));
+    else if (!labels.count(id))
+      problems.push_back(fmt::format("{}: label {} ({}) is not among the variant's used_materials", label_file.string(),
+                                     id, matgeom::label_name(id)));
+  }
+  if (mask_disagreements > 0)
+    problems.push_back(fmt::format("{}: at {} pixels the label's object mask differs from the coverage in depth/ or "
+                                   "ORM's alpha",
+                                   label_file.string(), mask_disagreements));
+}
+
+void verify_variant(const fs::path& folder, VerifyReport& report, std::set<std::string>& ids) {
+  ++report.variants;
+  std::vector<std::string>& problems = report.problems;
+  const fs::path transforms_file = folder / "transforms.json";
+  const nlohmann::json transforms = read_json(transforms_file, problems);
+  const std::set<int> labels = used_labels(folder, problems);
+  if (!fs::is_regular_file(folder / "material_segmentation_map.json"))
+    problems.push_back((folder / "material_segmentation_map.json").string() + ": missing");
+  if (!transforms.is_object()) return;
+  if (!transforms.contains("w") || !transforms.contains("h") || !transforms["w"].is_number_integer() ||
+      !transforms["h"].is_number_integer() || !transforms.contains("frames") || !transforms["frames"].is_array()) {
+    problems.push_back(transforms_file.string() + ": needs w, h and a frames list");
+    return;
+  }
+  const int width = transforms["w"].get<int>(), height = transforms["h"].get<int>();
+  for (const nlohmann::json& frame : transforms["frames"]) {
+    if (!frame.is_object() || !frame.contains("file_path") || !frame["file_path"].is_string() ||
+        !frame.contains("transform_matrix") || !frame["transform_matrix"].is_array() ||
+        frame["transform_matrix"].size() != 4) {
+      problems.push_back(transforms_file.string() + ": a frame lacks file_path or a 4 x 4 transform_matrix");
+      continue;
+    }
+    const std::string path = frame["file_path"].get<std::string>();
+    const std::string stem = path.substr(path.rfind('/') + 1);
+    ++report.frames;
+    ids.insert(folder.parent_path().filename().string() + "/" + folder.filename().string() + "/" + stem);
+    verify_frame(folder, stem, width, height, labels, problems);
+  }
+}
+
+}  // namespace
+
+VerifyReport verify_dataset(const fs::path& root) {
+  if (!fs::is_directory(root)) throw InputError(root.string() + ": no such folder");
+  VerifyReport report;
+  if (!fs::is_regular_file(root / "material_segmentation_map.yaml"))
+    report.problems.push_back((root / "material_segmentation_map.yaml").string() + ": missing");
+  std::vector<fs::path> variants;
+  for (const fs::directory_entry& object : fs::directory_iterator(root)) {
+    if (!object.is_directory() || object.path().filename() == "config") continue;
+    for (const fs::directory_entry& variant : fs::directory_iterator(object.path()))
+      if (variant.is_directory() && fs::is_directory(variant.path() / "images")) variants.push_back(variant.path());
+  }
+  if (variants.empty()) throw InputError(root.string() + ": holds no <object>/<variant>/images/ folder: not a dataset");
+  std::sort(variants.begin(), variants.end());
+  std::set<std::string> ids;
+  for (const fs::path& variant : variants) verify_variant(variant, report, ids);
+  // Every split file lists frames of the dataset, each once.
+  if (fs::is_directory(root / "config"))
+    for (const fs::directory_entry& entry : fs::directory_iterator(root / "config")) {
+      if (entry.path().extension() != ".yaml") continue;
+      try {
+        const matlearn::SplitFile split = matlearn::read_split_file(entry.path());
+        std::set<std::string> listed;
+        for (const std::vector<std::string>* list : {&split.train, &split.val, &split.test})
+          for (const std::string& id : *list) {
+            if (!ids.count(id)) report.problems.push_back(entry.path().string() + ": lists " + id + ", no frame of the dataset");
+            if (!listed.insert(id).second) report.problems.push_back(entry.path().string() + ": lists " + id + " twice");
+          }
+      } catch (const std::exception& e) {
+        report.problems.push_back(e.what());
+      }
+    }
+  return report;
+}
+
+}  // namespace make_dataset

@@ -1,0 +1,23 @@
+#pragma once
+// make_dataset --verify: checks a dataset folder against the layout (docs/dataset_format.md),
+// whoever wrote it: every frame transforms.json lists has all seven maps, of the size it states;
+// the label ids are classes of the table and among the variant's used_materials; the label,
+// ORM's alpha and the depth map's coverage agree on which pixels hold the object; the records
+// parse. It reads every file, so a damaged one is found.
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace make_dataset {
+
+struct VerifyReport {
+  size_t variants = 0;
+  size_t frames = 0;
+  std::vector<std::string> problems;  // each naming the file
+};
+
+// Throws InputError when `root` is no folder or holds no variant folder at all.
+VerifyReport verify_dataset(const std::filesystem::path& root);
+
+}  // namespace make_dataset
