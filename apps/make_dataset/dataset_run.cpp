@@ -6,6 +6,7 @@
 #include <iterator>
 #include <memory>
 
+#include "dataset_checks.h"
 #include "matgeom/atomic_file.h"
 #include "matlearn/dataset_writer.h"
 #include "object_renderer.h"
@@ -59,6 +60,7 @@ RunSummary run_dataset(const DatasetConfig& config, const DatasetPlan& plan, con
   const Clock::time_point start = Clock::now();
   RunSummary summary;
   for (size_t k = 0; k < plan.frames.size(); ++k) summary.frames += options.shard.owns(k) ? 1 : 0;
+  check_before_writing(config);
   write_dataset_records(config, plan);
 
   size_t done = 0;

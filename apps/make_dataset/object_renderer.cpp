@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "dataset_checks.h"
 #include "matgeom/bounding_sphere.h"
 #include "matgeom/material_classes.h"
 #include "matrender/paper_setup.h"
@@ -16,8 +17,6 @@ namespace {
 
 using nlohmann::ordered_json;
 constexpr double kDegree = 3.14159265358979323846 / 180.0;
-
-std::string object_key(size_t object) { return "objects." + std::to_string(object); }
 
 matrender::SceneDescription object_scene(const DatasetConfig& config, size_t index) {
   const ObjectConfig& object = config.objects[index];
@@ -44,45 +43,6 @@ matrender::SceneDescription object_scene(const DatasetConfig& config, size_t ind
   scene.camera.width = config.render.width;
   scene.camera.height = config.render.height;
   return scene;
-}
-
-std::string quoted(const std::vector<std::string>& names) {
-  std::string text;
-  for (const std::string& name : names) text += (text.empty() ? "\"" : ", \"") + name + "\"";
-  return text.empty() ? "none" : text;
-}
-
-// The parts of each slot: those it names, and for the one slot that names none, every other.
-std::vector<std::vector<uint32_t>> parts_of_slots(const DatasetConfig& config, size_t index,
-                                                  const matgeom::TriangleMesh& mesh, size_t part_count) {
-  const ObjectConfig& object = config.objects[index];
-  std::vector<int> slot_of_part(part_count, -1);
-  std::vector<std::vector<uint32_t>> parts(object.slots.size());
-  for (size_t s = 0; s < object.slots.size(); ++s)
-    for (const std::string& name : object.slots[s].parts) {
-      const auto it = std::find(mesh.part_names.begin(), mesh.part_names.end(), name);
-      const std::string key = config.source + ": " + object_key(index) + ".slots." + object.slots[s].key;
-      if (it == mesh.part_names.end() || static_cast<size_t>(it - mesh.part_names.begin()) >= part_count)
-        throw InputError(key + ": the object has no part named \"" + name + "\" (its parts: " +
-                         quoted(mesh.part_names) + ")");
-      const auto part = static_cast<size_t>(it - mesh.part_names.begin());
-      if (slot_of_part[part] >= 0)
-        throw InputError(key + ": part \"" + name + "\" is in slot \"" +
-                         object.slots[static_cast<size_t>(slot_of_part[part])].key + "\" already");
-      slot_of_part[part] = static_cast<int>(s);
-      parts[s].push_back(static_cast<uint32_t>(part));
-    }
-  for (size_t s = 0; s < object.slots.size(); ++s)
-    if (object.slots[s].parts.empty())
-      for (size_t part = 0; part < part_count; ++part)
-        if (slot_of_part[part] < 0) slot_of_part[part] = static_cast<int>(s), parts[s].push_back(static_cast<uint32_t>(part));
-  for (size_t part = 0; part < part_count; ++part)
-    if (slot_of_part[part] < 0)
-      throw InputError(config.source + ": " + object_key(index) + ".slots: part \"" +
-                       (part < mesh.part_names.size() ? mesh.part_names[part] : std::to_string(part)) +
-                       "\" is in no slot, so it would have no material and no label; list it in a slot, or leave "
-                       "one slot's part list out so it takes every part not listed");
-  return parts;
 }
 
 double grid_radius(const CameraConfig& camera, const matgeom::TriangleMesh& mesh, const matgeom::Sphere& bounds,
@@ -122,7 +82,7 @@ ObjectRenderer::ObjectRenderer(const DatasetConfig& config, size_t object)
     : config_(config), object_(config.objects[object]), built_(matrender::build_scene(object_scene(config, object))) {
   const matgeom::TriangleMesh& mesh = built_.object_surfaces.front();
   const size_t part_count = built_.scene.part_materials(built_.object_meshes.front()).size();
-  slot_parts_ = parts_of_slots(config, object, mesh, part_count);
+  slot_parts_ = parts_of_slots(config, object, mesh.part_names, part_count);
   const CameraConfig& camera = config.camera;
   grid_.center = matgeom::surface_centroid(mesh);
   grid_.radius = grid_radius(camera, mesh, built_.bounds, grid_.center,

@@ -43,6 +43,9 @@ void write_exr(const std::string& path, int width, int height, const std::vector
   for (size_t c = 0; c < channels.size(); ++c)
     if (channels[c] == "A") spec.alpha_channel = static_cast<int>(c);
   spec.attribute("compression", "zip");
+  // OpenImageIO stamps an EXR with the time it was written unless told a DateTime: an empty one
+  // keeps the bytes of a file the same on every run.
+  spec.attribute("DateTime", "");
   write_file_atomically(path, encode_image(path, spec, OIIO::TypeDesc::FLOAT, data), set);
 }
 

@@ -12,7 +12,7 @@
 namespace matgeom {
 
 // Linear float EXR (zip compressed) with the given channel names, interleaved data, row 0 = top.
-// A channel named "A" is the alpha channel.
+// A channel named "A" is the alpha channel. No time stamp: the same data gives the same bytes.
 void write_exr(const std::string& path, int width, int height, const std::vector<std::string>& channels,
                const float* data, AtomicFileSet* set = nullptr);
 

@@ -1,0 +1,91 @@
+#include "dataset_checks.h"
+
+#include <algorithm>
+#include <exception>
+
+#include "matgeom/builtin_objects.h"
+#include "matgeom/material_classes.h"
+#include "matgeom/material_folder.h"
+#include "matgeom/mesh_io.h"
+
+namespace make_dataset {
+namespace {
+
+std::string object_key(size_t object) { return "objects." + std::to_string(object); }
+
+std::string quoted(const std::vector<std::string>& names) {
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "\"" : ", \"") + name + "\"";
+  return text.empty() ? "none" : text;
+}
+
+}  // namespace
+
+std::vector<std::vector<uint32_t>> parts_of_slots(const DatasetConfig& config, size_t index,
+                                                  const std::vector<std::string>& part_names, size_t part_count) {
+  const ObjectConfig& object = config.objects[index];
+  std::vector<int> slot_of_part(part_count, -1);
+  std::vector<std::vector<uint32_t>> parts(object.slots.size());
+  for (size_t s = 0; s < object.slots.size(); ++s)
+    for (const std::string& name : object.slots[s].parts) {
+      const auto it = std::find(part_names.begin(), part_names.end(), name);
+      const std::string key = config.source + ": " + object_key(index) + ".slots." + object.slots[s].key;
+      if (it == part_names.end() || static_cast<size_t>(it - part_names.begin()) >= part_count)
+        throw InputError(key + ": the object has no part named \"" + name + "\" (its parts: " +
+                         quoted(part_names) + ")");
+      const auto part = static_cast<size_t>(it - part_names.begin());
+      if (slot_of_part[part] >= 0)
+        throw InputError(key + ": part \"" + name + "\" is in slot \"" +
+                         object.slots[static_cast<size_t>(slot_of_part[part])].key + "\" already");
+      slot_of_part[part] = static_cast<int>(s);
+      parts[s].push_back(static_cast<uint32_t>(part));
+    }
+  for (size_t s = 0; s < object.slots.size(); ++s)
+    if (object.slots[s].parts.empty())
+      for (size_t part = 0; part < part_count; ++part)
+        if (slot_of_part[part] < 0) slot_of_part[part] = static_cast<int>(s), parts[s].push_back(static_cast<uint32_t>(part));
+  for (size_t part = 0; part < part_count; ++part)
+    if (slot_of_part[part] < 0)
+      throw InputError(config.source + ": " + object_key(index) + ".slots: part \"" +
+                       (part < part_names.size() ? part_names[part] : std::to_string(part)) +
+                       "\" is in no slot, so it would have no material and no label; list it in a slot, or leave "
+                       "one slot's part list out so it takes every part not listed");
+  return parts;
+}
+
+
+void check_before_writing(const DatasetConfig& config) {
+  for (size_t o = 0; o < config.objects.size(); ++o) {
+    const ObjectConfig& object = config.objects[o];
+    matgeom::ObjectAsset asset;
+    try {
+      if (const auto* builtin = std::get_if<matrender::BuiltinObject>(&object.source))
+        asset = matgeom::make_builtin_object(builtin->name, builtin->seed);
+      else
+        asset = matgeom::read_object(std::get<matrender::MeshFile>(object.source).path);
+    } catch (const std::exception& e) {
+      throw InputError(config.source + ": " + object_key(o) + ": " + e.what());
+    }
+    const size_t part_count = std::max({static_cast<size_t>(asset.mesh.part_count()), asset.materials.size(), size_t{1}});
+    parts_of_slots(config, o, asset.mesh.part_names, part_count);
+    for (const SlotConfig& slot : object.slots)
+      for (const MaterialCandidate& candidate : slot.candidates) {
+        const auto* folder = std::get_if<std::string>(&candidate.source);
+        if (!folder || matgeom::material_class_of_folder(candidate.name)) continue;
+        // A folder whose name names no class may still say it in its metadata.
+        std::optional<matgeom::MaterialClass> found;
+        try {
+          found = matgeom::read_material_folder(*folder).material_class;
+        } catch (const std::exception& e) {
+          throw InputError(config.source + ": " + object_key(o) + ".materials." + slot.key + ": " + e.what());
+        }
+        if (!found || *found == matgeom::MaterialClass::Background)
+          throw InputError(config.source + ": " + object_key(o) + ".materials." + slot.key + ": material folder \"" +
+                           candidate.spelled +
+                           "\" has no material class, so its pixels would be labelled background; name the folder "
+                           "after its class (\"wood_oak\") or give its metadata.json a category");
+      }
+  }
+}
+
+}  // namespace make_dataset

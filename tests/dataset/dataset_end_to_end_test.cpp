@@ -1,0 +1,196 @@
+// make_dataset end to end on a tiny dataset: the built app run on a configuration with two
+// MatSynth-style material folders of constant maps (written here as real PNGs), its output read
+// back map by map with OpenImageIO and with libmatlearn's reader, and checked by --verify.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/imageio.h>
+#include <nlohmann/json.hpp>
+
+#include "matlearn/dataset_index.h"
+#include "matlearn/sample_reader.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kSize = 48;
+// The folders' constant roughness and metallic, as 8-bit codes: the dataset must store the same.
+constexpr int kWoodRoughness = 51, kMetalRoughness = 204;
+
+void write_constant_png(const fs::path& path, int channels, const std::vector<uint8_t>& value) {
+  std::vector<uint8_t> pixels;
+  for (int p = 0; p < 8 * 8; ++p) pixels.insert(pixels.end(), value.begin(), value.end());
+  OIIO::ImageSpec spec(8, 8, channels, OIIO::TypeDesc::UINT8);
+  auto out = OIIO::ImageOutput::create(path.string());
+  REQUIRE(out);
+  REQUIRE(out->open(path.string(), spec));
+  REQUIRE(out->write_image(OIIO::TypeDesc::UINT8, pixels.data()));
+  REQUIRE(out->close());
+}
+
+void write_material_folder(const fs::path& folder, const std::vector<uint8_t>& base, uint8_t roughness,
+                           uint8_t metallic) {
+  fs::create_directories(folder);
+  write_constant_png(folder / "basecolor.png", 3, base);
+  write_constant_png(folder / "roughness.png", 1, {roughness});
+  write_constant_png(folder / "metallic.png", 1, {metallic});
+}
+
+struct Stored {
+  int width = 0, height = 0, channels = 0;
+  std::vector<float> values;
+  float at(int x, int y, int c) const { return values[static_cast<size_t>((y * width + x) * channels + c)]; }
+  int code(int x, int y, int c) const { return static_cast<int>(std::lround(at(x, y, c) * 255.0f)); }
+};
+
+Stored read_stored(const fs::path& path) {
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto in = OIIO::ImageInput::open(path.string(), &config);
+  INFO(path);
+  REQUIRE(in);
+  Stored s;
+  s.width = in->spec().width;
+  s.height = in->spec().height;
+  s.channels = in->spec().nchannels;
+  s.values.resize(static_cast<size_t>(s.width * s.height * s.channels));
+  REQUIRE(in->read_image(0, 0, 0, s.channels, OIIO::TypeDesc::FLOAT, s.values.data()));
+  return s;
+}
+
+int run(const std::string& arguments) {
+  const std::string command = std::string(MATPREDICT_MAKE_DATASET) + " " + arguments + " > /dev/null";
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// The tiny dataset, made once for all the checks below.
+const fs::path& tiny_dataset() {
+  static const fs::path root = [] {
+    const fs::path dir = fs::temp_directory_path() / "matpredict_dataset_end_to_end";
+    fs::remove_all(dir);
+    write_material_folder(dir / "materials" / "wood_flat", {150, 90, 40}, kWoodRoughness, 0);
+    write_material_folder(dir / "materials" / "metal_flat", {200, 200, 205}, kMetalRoughness, 255);
+    std::ofstream(dir / "tiny.yaml") << R"(objects:
+  - name: chair
+    builtin: chair
+    slots: {seat: [seat]}
+    materials:
+      seat: [{matsynth: materials/wood_flat}]
+      rest: [{matsynth: materials/metal_flat}, {matsynth: materials/wood_flat}]
+  - name: vase
+    builtin: vase
+    materials: {all: [{matsynth: materials/metal_flat}]}
+camera: {grid: [2, 3]}
+render: {resolution: 48, samples: 8}
+)";
+    REQUIRE(run("--config " + (dir / "tiny.yaml").string() + " --output " + (dir / "out").string()) == 0);
+    return dir / "out";
+  }();
+  return root;
+}
+
+}  // namespace
+
+TEST_CASE("The tiny dataset has every frame of the plan, and --verify finds no problem", "[dataset]") {
+  const fs::path& root = tiny_dataset();
+  // chair: 1 x 2 variants, vase: 1; 2 x 3 views each.
+  const std::vector<matlearn::SampleId> samples = matlearn::index_dataset(root);
+  CHECK(samples.size() == 18);
+  CHECK(samples.front().str() == "chair/var000/000");
+  CHECK(samples.back().str() == "vase/var000/005");
+  CHECK(run("--verify " + root.string()) == 0);
+  for (const char* split : {"object_disjoint_v1", "variance_disjoint_v1", "material_disjoint_v1", "paper_random_v1"}) {
+    const matlearn::SplitFile file = matlearn::read_split_file(root / "config" / (std::string(split) + ".yaml"));
+    CHECK(file.train.size() + file.val.size() + file.test.size() == 18);
+  }
+}
+
+TEST_CASE("ORM's G is the material's roughness and the label its class at every covered pixel", "[dataset]") {
+  const fs::path& root = tiny_dataset();
+  size_t interior = 0;
+  for (const matlearn::SampleId& id : matlearn::index_dataset(root)) {
+    const fs::path variant = root / id.object / id.variant;
+    const Stored orm = read_stored(variant / "ORM" / (id.stem + ".png"));
+    const Stored label = read_stored(variant / "label" / (id.stem + ".png"));
+    const Stored depth = read_stored(variant / "depth" / (id.stem + ".exr"));
+    REQUIRE((orm.width == kSize && label.width == kSize && depth.width == kSize));
+    // The classes metadata.json says the variant uses.
+    const nlohmann::json metadata = nlohmann::json::parse(std::ifstream(variant / "metadata.json"));
+    std::set<int> used;
+    for (const auto& [slot, material] : metadata["used_materials"].items()) used.insert(material["label_id"].get<int>());
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) {
+        const int l = label.code(x, y, 0);
+        INFO(id.str() << " pixel (" << x << ", " << y << ") label " << l);
+        // The label marks exactly the covered pixels, and only with the variant's classes.
+        CHECK((l > 0) == (depth.at(x, y, 3) > 0.0f));
+        if (l == 0) continue;
+        CHECK(used.count(l) == 1);
+        CHECK((l == 7 || l == 4));
+        // Where one material covers the pixel and its neighbours, the maps hold its constants:
+        // 8-bit codes exactly (no dither, no blend with the background).
+        bool uniform = x > 0 && y > 0 && x + 1 < kSize && y + 1 < kSize;
+        for (int dy = -1; uniform && dy <= 1; ++dy)
+          for (int dx = -1; uniform && dx <= 1; ++dx) uniform = label.code(x + dx, y + dy, 0) == l;
+        if (!uniform) continue;
+        ++interior;
+        CHECK(orm.code(x, y, 1) == (l == 7 ? kWoodRoughness : kMetalRoughness));
+        CHECK(orm.code(x, y, 2) == (l == 7 ? 0 : 255));
+        CHECK(orm.code(x, y, 3) == 255);
+      }
+  }
+  CHECK(interior > 1000);
+}
+
+TEST_CASE("libmatlearn's reader reads the dataset: roughness is ORM's G, the mask is the label", "[dataset]") {
+  const fs::path& root = tiny_dataset();
+  matlearn::SampleSettings settings;
+  settings.size = kSize;  // as stored: no resize
+  for (const matlearn::SampleId& id : matlearn::index_dataset(root)) {
+    const matlearn::MaterialSample sample = matlearn::read_sample(root, id, settings);
+    const Stored orm = read_stored(root / id.object / id.variant / "ORM" / (id.stem + ".png"));
+    const Stored label = read_stored(root / id.object / id.variant / "label" / (id.stem + ".png"));
+    REQUIRE(sample.has_label);
+    size_t mismatches = 0;
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) {
+        const size_t p = static_cast<size_t>(y * kSize + x);
+        mismatches += std::abs(sample.roughness.values[p] - orm.at(x, y, 1)) > 1e-6f ? 1 : 0;
+        mismatches += (sample.mask[p] > 0) != (label.code(x, y, 0) > 0) ? 1 : 0;
+      }
+    INFO(id.str());
+    CHECK(mismatches == 0);
+  }
+}
+
+TEST_CASE("transforms.json places each camera on the grid's sphere, looking at its centre", "[dataset]") {
+  const fs::path variant = tiny_dataset() / "chair" / "var000";
+  const nlohmann::json transforms = nlohmann::json::parse(std::ifstream(variant / "transforms.json"));
+  const nlohmann::json grid =
+      nlohmann::json::parse(std::ifstream(variant / "metadata.json"))["provenance"]["camera"]["grid"];
+  CHECK(transforms["w"] == kSize);
+  CHECK(transforms["fl_x"].get<double>() == Approx(0.5 * kSize / std::tan(0.5 * 39.597752 * 3.14159265358979 / 180)));
+  REQUIRE(transforms["frames"].size() == 6);
+  for (const nlohmann::json& frame : transforms["frames"]) {
+    const nlohmann::json& m = frame["transform_matrix"];
+    double distance2 = 0.0, along = 0.0;
+    for (int r = 0; r < 3; ++r) {
+      const double to_centre = grid["center"][r].get<double>() - m[r][3].get<double>();
+      distance2 += to_centre * to_centre;
+      along += to_centre * -m[r][2].get<double>();  // the camera looks down its -Z
+    }
+    CHECK(std::sqrt(distance2) == Approx(grid["radius"].get<double>()));
+    CHECK(along == Approx(std::sqrt(distance2)));
+    CHECK(m[3][3].get<double>() == 1.0);
+  }
+}
