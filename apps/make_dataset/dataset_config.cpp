@@ -426,28 +426,16 @@ const std::string& embedded_default_yaml() {
   return text;
 }
 
-DatasetConfig load_config(const std::string& file, const std::vector<Override>& overrides) {
-  const std::string source = file.empty() ? "the embedded default" : file;
-  YAML::Node root;
-  try {
-    if (file.empty()) {
-      root = YAML::Load(embedded_default_yaml());
-    } else {
-      matgeom::require_input_file(file);
-      root = YAML::LoadFile(file);
-    }
-  } catch (const YAML::Exception& e) {
-    throw InputError(source + ": not valid YAML or JSON: " + e.msg + fmt::format(" (line {})", e.mark.line + 1));
-  } catch (const std::exception& e) {
-    throw InputError(e.what());
-  }
+namespace {
+
+DatasetConfig read_root(YAML::Node root, const std::string& source, const fs::path& base,
+                        const std::vector<Override>& overrides) {
   if (!root.IsMap()) throw InputError(source + ": expected a mapping of keys at the top");
   Sources sources(source);
   for (const Override& o : overrides) {
     apply_override(root, o);
     sources.overridden(o.key, o.option);
   }
-  const fs::path base = file.empty() ? fs::current_path() : fs::absolute(file).parent_path();
   DatasetConfig config = read_config(Value(root, "", sources), base);
   config.source = source;
   // Where the dataset goes is not part of what is rendered: a copy made elsewhere, or shards
@@ -458,6 +446,39 @@ DatasetConfig load_config(const std::string& file, const std::vector<Override>& 
   out << recorded;
   config.canonical_yaml = std::string(out.c_str()) + "\n";
   return config;
+}
+
+InputError yaml_error(const std::string& source, const YAML::Exception& e) {
+  return InputError(source + ": not valid YAML or JSON: " + e.msg + fmt::format(" (line {})", e.mark.line + 1));
+}
+
+}  // namespace
+
+DatasetConfig load_config(const std::string& file, const std::vector<Override>& overrides) {
+  if (file.empty()) return parse_config(embedded_default_yaml(), "the embedded default", fs::current_path(), overrides);
+  try {
+    matgeom::require_input_file(file);
+  } catch (const std::exception& e) {
+    throw InputError(e.what());
+  }
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(file);
+  } catch (const YAML::Exception& e) {
+    throw yaml_error(file, e);
+  }
+  return read_root(root, file, fs::absolute(file).parent_path(), overrides);
+}
+
+DatasetConfig parse_config(const std::string& yaml, const std::string& source, const fs::path& base,
+                           const std::vector<Override>& overrides) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml);
+  } catch (const YAML::Exception& e) {
+    throw yaml_error(source, e);
+  }
+  return read_root(root, source, base, overrides);
 }
 
 }  // namespace make_dataset

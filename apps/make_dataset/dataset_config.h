@@ -6,6 +6,7 @@
 // or a YAML/JSON file, then command-line overrides (--set KEY=VALUE and the named options, which
 // set the same keys); every value is checked, and an error names the file or option and the key.
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -106,5 +107,8 @@ const std::string& embedded_default_yaml();
 // Reads `file` (YAML or JSON; empty: the embedded default), applies the overrides in order and
 // checks every value. Throws InputError naming the file or option and the key.
 DatasetConfig load_config(const std::string& file, const std::vector<Override>& overrides);
+// The same from YAML text; `source` names it in errors and relative paths resolve against `base`.
+DatasetConfig parse_config(const std::string& yaml, const std::string& source, const std::filesystem::path& base,
+                           const std::vector<Override>& overrides);
 
 }  // namespace make_dataset

@@ -1,9 +1,8 @@
 #pragma once
-// The dataset train_regressor trains on when it is given none: built-in objects in a few
-// constant materials of different families, rendered with libmatrender under the paper's light
-// rig from several grid cameras, written in the MatPredict repository's layout
-// (<root>/<object>/var<NNN>/{images,albedo,ORM,normal_obj,label}/<NNN>.png), with pixel-aligned
-// maps.
+// The dataset train_regressor trains on when it is given none: made by make_dataset's own code
+// (apps/make_dataset) from a small configuration: the built-in vase and chair in four library
+// materials of different classes, under the paper's light rig, from a ring of grid cameras 30
+// degrees above the horizon, in the MatPredict repository's layout with pixel-aligned maps.
 #include <filesystem>
 #include <functional>
 
@@ -15,8 +14,8 @@ struct ExampleDatasetSize {
   int samples = 16;       // per pixel
 };
 
-// Renders the dataset into `root` unless a complete one of this version is there already (a
-// marker file written last says so); returns the number of samples. progress(done, total) follows each image.
+// Renders into `root` whatever frames of the dataset are not there whole already (so a second
+// call renders nothing) and returns the number of samples. progress(done, total) follows each frame.
 int render_example_dataset(const std::filesystem::path& root, const ExampleDatasetSize& size,
                            const std::function<void(int, int)>& progress = {});
 

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <set>
 #include <string>
@@ -67,10 +68,17 @@ Stored read_stored(const fs::path& path) {
   return s;
 }
 
-int run(const std::string& arguments) {
-  const std::string command = std::string(MATPREDICT_MAKE_DATASET) + " " + arguments + " > /dev/null";
+// Runs make_dataset; its standard error goes to `errors` when given.
+int run(const std::string& arguments, const fs::path& errors = "/dev/null") {
+  const std::string command =
+      std::string(MATPREDICT_MAKE_DATASET) + " " + arguments + " > /dev/null 2> " + errors.string();
   const int status = std::system(command.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string text_of(const fs::path& file) {
+  std::ifstream in(file);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 // The tiny dataset, made once for all the checks below.
@@ -193,4 +201,30 @@ TEST_CASE("transforms.json places each camera on the grid's sphere, looking at i
     CHECK(along == Approx(std::sqrt(distance2)));
     CHECK(m[3][3].get<double>() == 1.0);
   }
+}
+
+TEST_CASE("A folder made with other settings is refused, not mixed with new frames", "[dataset]") {
+  const fs::path dir = fs::temp_directory_path() / "matpredict_dataset_other_settings";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string common = "--objects vase --materials plastic:1 --grid 1x2 --resolution 16 --material-resolution 16 "
+                             "--output " + (dir / "out").string();
+  REQUIRE(run(common + " --spp 2") == 0);
+  const std::string before = text_of(dir / "out" / "vase" / "var000" / "metadata.json");
+  CHECK(run(common + " --spp 3", dir / "errors.txt") == 2);
+  CHECK_THAT(text_of(dir / "errors.txt"), Catch::Contains("this variant was made with other settings"));
+  CHECK(text_of(dir / "out" / "vase" / "var000" / "metadata.json") == before);
+  CHECK(run(common + " --spp 2") == 0);  // the same settings resume
+}
+
+TEST_CASE("A material folder with no class is refused before anything is written", "[dataset]") {
+  const fs::path dir = fs::temp_directory_path() / "matpredict_dataset_no_class";
+  fs::remove_all(dir);
+  write_material_folder(dir / "materials" / "mystery", {100, 100, 100}, 128, 0);
+  std::ofstream(dir / "no_class.yaml") << "objects: [{builtin: vase, materials: {all: [{matsynth: materials/mystery}]}}]\n";
+  CHECK(run("--config " + (dir / "no_class.yaml").string() + " --output " + (dir / "out").string(),
+            dir / "errors.txt") == 2);
+  CHECK_THAT(text_of(dir / "errors.txt"),
+             Catch::Contains("objects.0.materials.all: material folder \"materials/mystery\" has no material class"));
+  CHECK_FALSE(fs::exists(dir / "out"));
 }
