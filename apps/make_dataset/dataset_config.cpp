@@ -24,7 +24,7 @@ constexpr int kMaxSamples = 1 << 20;
 constexpr int kMaxGridSide = 4096;
 constexpr int kMaxBounces = 1024;
 
-const char* const kDefaultYaml = R"(# make_dataset's embedded default: a small dataset in a few minutes on 2 cores.
+const char* const kDefaultYaml = R"(# make_dataset's embedded default: 6 objects x 3 materials x 8 views, about a minute on 2 cores.
 output: dataset_out
 seed: 0
 variants:
@@ -36,6 +36,10 @@ materials:
 objects:
   - {name: vase, builtin: vase, seed: 0}
   - {name: chair, builtin: chair, seed: 0}
+  - {name: table, builtin: table, seed: 0}
+  - {name: stool, builtin: stool, seed: 0}
+  - {name: mug, builtin: mug, seed: 0}
+  - {name: pillow, builtin: pillow, seed: 0}
 camera:
   grid: [2, 4]
   phi_deg: [0, 90]

@@ -101,7 +101,7 @@ struct Override {
   std::string option;
 };
 
-// The embedded default: two built-in objects in three library materials, 2 x 4 views at 128 px.
+// The embedded default: six built-in objects in three library materials, 2 x 4 views at 128 px.
 const std::string& embedded_default_yaml();
 
 // Reads `file` (YAML or JSON; empty: the embedded default), applies the overrides in order and

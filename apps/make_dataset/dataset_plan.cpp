@@ -77,7 +77,7 @@ std::vector<std::string> variant_material_names(const ObjectConfig& object, cons
   return names;
 }
 
-void write_dataset_records(const DatasetConfig& config, const DatasetPlan& plan) {
+std::vector<matlearn::SplitFile> write_dataset_records(const DatasetConfig& config, const DatasetPlan& plan) {
   const fs::path root(config.output);
   fs::create_directories(root / "config");
   for (const char* record : {"material_segmentation_map.yaml", "config/object_disjoint_v1.yaml",
@@ -103,17 +103,18 @@ void write_dataset_records(const DatasetConfig& config, const DatasetPlan& plan)
 
   const std::string dataset_root = "..";  // the split files' folder's parent: relative, so any copy reads the same
   const matlearn::SplitRatios& ratios = config.split_ratios;
-  matlearn::write_split_file(root / "config" / "object_disjoint_v1.yaml",
-                             matlearn::object_disjoint_split(sorted, ratios, config.split_seed), ratios, dataset_root);
-  matlearn::write_split_file(root / "config" / "variance_disjoint_v1.yaml",
-                             matlearn::variant_disjoint_split(sorted, ratios, config.split_seed), ratios, dataset_root);
-  matlearn::write_split_file(root / "config" / "material_disjoint_v1.yaml",
-                             matlearn::material_disjoint_split(sorted, sorted_materials, ratios, config.split_seed),
-                             ratios, dataset_root);
   const double train = config.paper_train_fraction;
-  matlearn::write_split_file(root / "config" / "paper_random_v1.yaml",
-                             matlearn::random_split(sorted, train, config.split_seed), {train, 0.0, 1.0 - train},
-                             dataset_root);
+  const std::vector<std::pair<matlearn::SplitFile, matlearn::SplitRatios>> splits = {
+      {matlearn::object_disjoint_split(sorted, ratios, config.split_seed), ratios},
+      {matlearn::variant_disjoint_split(sorted, ratios, config.split_seed), ratios},
+      {matlearn::material_disjoint_split(sorted, sorted_materials, ratios, config.split_seed), ratios},
+      {matlearn::random_split(sorted, train, config.split_seed), {train, 0.0, 1.0 - train}}};
+  std::vector<matlearn::SplitFile> written;
+  for (const auto& [split, split_ratios] : splits) {
+    matlearn::write_split_file(root / "config" / (split.name + ".yaml"), split, split_ratios, dataset_root);
+    written.push_back(split);
+  }
+  return written;
 }
 
 }  // namespace make_dataset

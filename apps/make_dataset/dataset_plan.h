@@ -55,7 +55,7 @@ std::vector<std::string> variant_material_names(const ObjectConfig& object, cons
 
 // Writes material_segmentation_map.yaml and config/ with the split files (the repository's
 // object_disjoint_v1 and variance_disjoint_v1, material_disjoint_v1, paper_random_v1) of every
-// frame of the plan.
-void write_dataset_records(const DatasetConfig& config, const DatasetPlan& plan);
+// frame of the plan, and returns them.
+std::vector<matlearn::SplitFile> write_dataset_records(const DatasetConfig& config, const DatasetPlan& plan);
 
 }  // namespace make_dataset

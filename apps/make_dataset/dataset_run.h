@@ -28,6 +28,7 @@ struct RunSummary {
   double seconds = 0.0;
   double render_seconds = 0.0;  // of the frames rendered
   bool cancelled = false;
+  std::vector<matlearn::SplitFile> splits;  // written to config/
 };
 
 // Throws InputError when an object, a material or the folder's earlier contents do not fit the

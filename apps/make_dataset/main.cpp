@@ -184,6 +184,12 @@ int make(const Options& options) {
     return report_error(fmt::format("interrupted: {} of {} frames are done; run the same command again to resume",
                                     summary.rendered + summary.skipped, summary.frames),
                         app_support::interrupted_exit_code());
+  for (const matlearn::SplitFile& split : summary.splits)
+    fmt::print("split {}: {} train, {} val, {} test{}\n", split.name, split.train.size(), split.val.size(),
+               split.test.size(),
+               split.train.empty() || split.test.empty() || (split.val.empty() && split.strategy != "random")
+                   ? " (too few groups to fill every split)"
+                   : "");
   fmt::print("wrote {} ({}): per object and variant images/, albedo/, ORM/, depth/, normal_mat/, normal_obj/, "
              "label/, transforms.json, metadata.json; config/ holds the split files\n",
              config.output, matgeom::byte_size_text(static_cast<double>(make_dataset::folder_bytes(config.output))));
@@ -195,8 +201,8 @@ int make(const Options& options) {
 int main(int argc, char** argv) {
   CLI::App app{"Renders a MatPredict dataset: every object in every material variant from every view of the "
                "paper's camera grid, with pixel-aligned albedo, ORM, depth, normals and labels, in the MatPredict "
-               "repository's layout. With no arguments it renders a small embedded default (2 objects x 3 "
-               "materials x 8 views) into ./dataset_out/. A run that is stopped resumes when started again.",
+               "repository's layout. With no arguments it renders a small embedded default (6 objects x 3 "
+               "materials x 8 views, 128 px) into ./dataset_out/. A run that is stopped resumes when started again.",
                "make_dataset"};
   app.footer("Exit codes: 0 done, 1 render or write failure, 2 bad option or input, 130 or 143 interrupted by "
              "Ctrl-C or SIGTERM (finished frames are kept; run again to resume).");

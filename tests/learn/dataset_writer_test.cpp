@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <set>
 #include <sstream>
@@ -342,4 +343,11 @@ TEST_CASE("Split files round-trip through read_split_file, and the random split 
   std::string ours;
   for (const std::string& id : split.train) ours += (ours.empty() ? "" : " ") + id;
   CHECK(ours + "\n" == python);
+}
+
+TEST_CASE("docs/dataset_format.md holds the table of maps the writer writes", "[learn]") {
+  std::ifstream in(MATPREDICT_DATASET_FORMAT_DOC);
+  REQUIRE(in);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(text.find(dataset_maps_markdown()) != std::string::npos);
 }

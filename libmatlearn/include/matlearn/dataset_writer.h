@@ -27,6 +27,8 @@ struct DatasetMapInfo {
   const char* content;         // one line for the docs
 };
 const std::array<DatasetMapInfo, kDatasetMapCount>& dataset_maps();
+// The table as the markdown of docs/dataset_format.md (a test holds the docs to it).
+std::string dataset_maps_markdown();
 
 // "007" for frame 7 of 120, "0007" of 1500: zero-padded to the digits of the largest index and
 // at least 3, so stems sort in frame order for any count (the repository's 3 digits broke past

@@ -89,6 +89,14 @@ fs::path map_file(const fs::path& variant_folder, const DatasetMapInfo& info, co
 
 const std::array<DatasetMapInfo, kDatasetMapCount>& dataset_maps() { return kMaps; }
 
+std::string dataset_maps_markdown() {
+  std::string text = "| folder | file | channels | transforms.json key | content |\n|---|---|---:|---|---|\n";
+  for (const DatasetMapInfo& info : kMaps)
+    text += std::string("| `") + info.folder + "/` | `<stem>" + info.extension + "` | " + std::to_string(info.channels) +
+            " | `" + info.transforms_key + "` | " + info.content + " |\n";
+  return text;
+}
+
 std::string frame_stem(size_t index, size_t count) {
   const size_t width = std::max<size_t>(3, digits(count > 0 ? count - 1 : 0));
   const std::string number = std::to_string(index);
