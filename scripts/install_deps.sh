@@ -2,7 +2,9 @@
 # Installs exactly the Debian 12 packages matpredict builds and tests with.
 set -euo pipefail
 
-# What the CMake build finds (cmake/MatpredictDependencies.cmake), and the toolchain.
+# What the CMake build finds (cmake/MatpredictDependencies.cmake), and the toolchain; the tests'
+# independent references (Python's scikit-image, Pillow, torchvision; a real browser for
+# make_dataset's preview page).
 packages=(
   build-essential cmake ninja-build pkg-config
   libembree-dev libtbb-dev libglm-dev libeigen3-dev
@@ -11,6 +13,7 @@ packages=(
   libtorch-dev libopenblas0-openmp zlib1g-dev
   catch2
   python3-skimage python3-pil python3-torch python3-torchvision
+  chromium
 )
 # Blender 3.4 is a reference for the optional tests against Cycles, never a build dependency.
 if [ "${MATPREDICT_BLENDER_TESTS:-0}" = 1 ]; then packages+=(blender); fi

@@ -15,6 +15,7 @@
 #include "common/thread_count.h"
 #include "dataset_config.h"
 #include "dataset_plan.h"
+#include "dataset_preview.h"
 #include "dataset_run.h"
 #include "verify_dataset.h"
 #include "matgeom/memory_limit.h"
@@ -39,7 +40,8 @@ struct Options {
   std::string shard = "0/1";
   int threads = 0;
   bool print_config = false;
-  std::string verify;  // a dataset folder to check instead of rendering
+  std::string verify;   // a dataset folder to check instead of rendering
+  std::string preview;  // a dataset folder to draw contact sheets of
 };
 
 // A YAML double-quoted string: any text stays one scalar.
@@ -123,6 +125,10 @@ void add_options(CLI::App& app, Options& options) {
                  "check the dataset in DIR (every map of every frame, sizes, labels, masks, records, splits) and exit: "
                  "1 when a problem is found")
       ->type_name("DIR");
+  app.add_option("--preview", options.preview,
+                 "draw a contact sheet per object and variant of the dataset in DIR (views x maps) and an "
+                 "index.html linking them, into DIR/preview/, and exit")
+      ->type_name("DIR");
   app.add_flag("--print-config", options.print_config, "print the configuration after overrides, and exit");
 }
 
@@ -144,6 +150,12 @@ int verify(const std::string& folder) {
   fmt::print("verified {}: {} variants, {} frames: {}\n", folder, report.variants, report.frames,
              report.problems.empty() ? "no problem" : fmt::format("{} problems", report.problems.size()));
   return report.problems.empty() ? 0 : kRuntimeFailure;
+}
+
+int preview(const std::string& folder) {
+  const make_dataset::PreviewSummary summary = make_dataset::write_preview(folder);
+  fmt::print("wrote {} contact sheets and {}: open it in a browser\n", summary.sheets, summary.index.string());
+  return 0;
 }
 
 int make(const Options& options) {
@@ -218,6 +230,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (!options.verify.empty()) return verify(options.verify);
+    if (!options.preview.empty()) return preview(options.preview);
     return make(options);
   } catch (const InputError& e) {
     return report_error(e.what(), kInputError);
