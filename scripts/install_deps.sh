@@ -17,6 +17,8 @@ packages=(
 )
 # Blender 3.4 is a reference for the optional tests against Cycles, never a build dependency.
 if [ "${MATPREDICT_BLENDER_TESTS:-0}" = 1 ]; then packages+=(blender); fi
+# A real cluster scheduler for the optional test of make_dataset's Slurm array script.
+if [ "${MATPREDICT_SLURM_TESTS:-0}" = 1 ]; then packages+=(slurm-wlm munge); fi
 
 missing=()
 for p in "${packages[@]}"; do

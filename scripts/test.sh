@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Sets up a fresh Debian 12 machine, builds everything and runs the whole test suite.
 # MATPREDICT_SANITIZE=1 builds with ASan + UBSan into ./build-sanitize instead;
-# MATPREDICT_BLENDER_TESTS=1 also installs Blender 3.4 and runs the tests against Cycles.
+# MATPREDICT_BLENDER_TESTS=1 also installs Blender 3.4 and runs the tests against Cycles;
+# MATPREDICT_SLURM_TESTS=1 installs slurm-wlm and munge, so dataset.slurm runs instead of skipping.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/install_deps.sh"

@@ -68,6 +68,10 @@ void check_before_writing(const DatasetConfig& config) {
     }
     const size_t part_count = std::max({static_cast<size_t>(asset.mesh.part_count()), asset.materials.size(), size_t{1}});
     parts_of_slots(config, o, asset.mesh.part_names, part_count);
+    if (config.paper_texture_layout && object.slots.size() != 1)
+      throw InputError(config.source + ": paper_texture_layout: object \"" + object.name + "\" has " +
+                       std::to_string(object.slots.size()) +
+                       " slots, but the paper's layout files a screenshot under one material: give it one slot");
     for (const SlotConfig& slot : object.slots)
       for (const MaterialCandidate& candidate : slot.candidates) {
         const auto* folder = std::get_if<std::string>(&candidate.source);

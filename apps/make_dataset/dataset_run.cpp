@@ -10,6 +10,7 @@
 #include "matgeom/atomic_file.h"
 #include "matlearn/dataset_writer.h"
 #include "object_renderer.h"
+#include "texture_targets.h"
 
 namespace make_dataset {
 namespace {
@@ -62,6 +63,7 @@ RunSummary run_dataset(const DatasetConfig& config, const DatasetPlan& plan, con
   for (size_t k = 0; k < plan.frames.size(); ++k) summary.frames += options.shard.owns(k) ? 1 : 0;
   check_before_writing(config);
   summary.splits = write_dataset_records(config, plan);
+  if (config.paper_texture_layout) write_material_references(config);
 
   size_t done = 0;
   std::unique_ptr<ObjectRenderer> renderer;
@@ -82,7 +84,13 @@ RunSummary run_dataset(const DatasetConfig& config, const DatasetPlan& plan, con
     }
     const fs::path folder = variant_folder(config, plan, frame.object, frame.variant);
     const std::string stem = view_stem(plan, frame.view);
-    if (matlearn::frame_is_complete(folder, stem, config.render.width, config.render.height)) {
+    // The paper's layout files the screenshot under the variant's one material.
+    const std::string material =
+        variant_material_names(config.objects[frame.object], plan.variants[frame.object][frame.variant]).front();
+    const fs::path screenshot = matlearn::texture_target_screenshot_path(
+        texture_target_root(config), config.objects[frame.object].name, material, stem);
+    if (matlearn::frame_is_complete(folder, stem, config.render.width, config.render.height) &&
+        (!config.paper_texture_layout || matlearn::texture_target_screenshot_is_complete(screenshot))) {
       ++summary.skipped;
     } else {
       // Only this shard writes the frame: whatever temporaries of it are there were left by a
@@ -96,6 +104,9 @@ RunSummary run_dataset(const DatasetConfig& config, const DatasetPlan& plan, con
         break;
       }
       matlearn::write_frame_maps(folder, stem, maps);
+      if (config.paper_texture_layout)
+        matlearn::write_texture_target_screenshot(texture_target_root(config), config.objects[frame.object].name,
+                                                  material, stem, maps);
       summary.render_seconds += seconds_since(frame_start);
       ++summary.rendered;
     }

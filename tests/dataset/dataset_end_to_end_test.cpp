@@ -228,3 +228,48 @@ TEST_CASE("A material folder with no class is refused before anything is written
              Catch::Contains("objects.0.materials.all: material folder \"materials/mystery\" has no material class"));
   CHECK_FALSE(fs::exists(dir / "out"));
 }
+
+TEST_CASE("The paper's texture-target layout: cropped screenshots on white and flat reference maps", "[dataset]") {
+  const fs::path dir = fs::temp_directory_path() / "matpredict_dataset_paper_layout";
+  fs::remove_all(dir);
+  write_material_folder(dir / "materials" / "wood_flat", {150, 90, 40}, kWoodRoughness, 0);
+  write_material_folder(dir / "materials" / "metal_flat", {200, 200, 205}, kMetalRoughness, 255);
+  std::ofstream(dir / "paper.yaml") << R"(objects:
+  - {builtin: vase, materials: {all: [{matsynth: materials/wood_flat}, {matsynth: materials/metal_flat}]}}
+camera: {grid: [1, 3]}
+render: {resolution: 40, samples: 4}
+paper_texture_layout: true
+)";
+  REQUIRE(run("--config " + (dir / "paper.yaml").string() + " --output " + (dir / "out").string()) == 0);
+  const fs::path root = dir / "out" / "paper_textures";
+  REQUIRE(matlearn::dataset_layout(root) == matlearn::DatasetLayout::paper_textures);
+  const std::vector<matlearn::SampleId> samples = matlearn::index_dataset(root);
+  REQUIRE(samples.size() == 6);
+  CHECK(samples.front().str() == "vase/metal_flat/000");
+  // The references are the folders' constant maps.
+  const Stored roughness = read_stored(root / "ground_truth_roughness" / "wood_flat.png");
+  CHECK(roughness.code(0, 0, 0) == kWoodRoughness);
+  CHECK(roughness.code(7, 7, 2) == kWoodRoughness);
+  CHECK(read_stored(root / "ground_truth_metallic" / "metal_flat.png").code(3, 3, 1) == 255);
+  CHECK(read_stored(root / "ground_truth_basecolour" / "wood_flat.png").code(0, 0, 0) == 150);
+  for (const matlearn::SampleId& id : samples) {
+    INFO(id.str());
+    const Stored shot = read_stored(root / "rendered_cropped" / id.object / id.variant / (id.stem + ".png"));
+    // Square, cropped (smaller than the frame or the frame itself), white in the corners.
+    CHECK(shot.width == shot.height);
+    CHECK(shot.width <= 44);
+    CHECK(shot.channels == 3);
+    CHECK(shot.code(0, 0, 0) == 255);
+    CHECK(shot.code(shot.width - 1, shot.height - 1, 1) == 255);
+    matlearn::SampleSettings settings;
+    settings.size = 16;
+    const matlearn::MaterialSample sample = matlearn::read_sample(root, id, settings);
+    CHECK(sample.roughness.values[0] == Approx((id.variant == "wood_flat" ? kWoodRoughness : kMetalRoughness) / 255.0));
+  }
+  // The repository layout is there as well, and the resumed run finds every frame whole.
+  CHECK(matlearn::index_dataset(dir / "out").size() == 6);
+  CHECK(run("--verify " + (dir / "out").string()) == 0);
+  fs::remove(root / "rendered_cropped" / "vase" / "wood_flat" / "001.png");
+  REQUIRE(run("--config " + (dir / "paper.yaml").string() + " --output " + (dir / "out").string()) == 0);
+  CHECK(fs::is_regular_file(root / "rendered_cropped" / "vase" / "wood_flat" / "001.png"));
+}

@@ -1,0 +1,46 @@
+#pragma once
+// Writing the paper's texture-target layout (docs/matpredict_repository.md, section 7;
+// docs/dataset_format.md): screenshots cropped to the object on white,
+// <root>/rendered_cropped/<object>/<material>/<stem>.png, and one reference map per material and
+// parameter, <root>/ground_truth_basecolour/<material>.png, ground_truth_roughness/,
+// ground_truth_metallic/ and ground_truth_normal/, which libmatlearn's reader loads
+// (matlearn/dataset_index.h). Every file is written under a temporary name and renamed.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "matlearn/dataset_writer.h"
+
+namespace matlearn {
+
+// An 8-bit image as stored: rows top first, channels interleaved.
+struct ReferenceImage {
+  int width = 0, height = 0, channels = 0;
+  std::vector<uint8_t> data;
+};
+
+// A material's flat maps: its base colour (sRGB-encoded RGB), roughness and metallic (linear,
+// grey in three channels, as the paper's PNGs), and its tangent-space normal map if it has one.
+struct MaterialReferences {
+  ReferenceImage base_color, roughness, metallic;
+  std::optional<ReferenceImage> normal;
+};
+
+// Throws std::invalid_argument for an image whose size and bytes disagree.
+void write_texture_target_references(const std::filesystem::path& root, const std::string& material,
+                                     const MaterialReferences& references);
+
+// The frame's image cropped to a square around the object (its covered pixels' bounding box and
+// a margin of 4 %), composited over white in linear light and sRGB-encoded, as the paper's
+// preprocessing keyed its renders onto white. A frame with no object is kept whole.
+void write_texture_target_screenshot(const std::filesystem::path& root, const std::string& object,
+                                     const std::string& material, const std::string& stem, const FrameMaps& maps);
+
+// The screenshot's path, and whether it is there and decodes whole (a resumed run's check).
+std::filesystem::path texture_target_screenshot_path(const std::filesystem::path& root, const std::string& object,
+                                                     const std::string& material, const std::string& stem);
+bool texture_target_screenshot_is_complete(const std::filesystem::path& path);
+
+}  // namespace matlearn
