@@ -24,10 +24,11 @@ status=0
 [ -s /etc/munge/munge.key ] || { /usr/sbin/mungekey --create >/dev/null 2>&1 || dd if=/dev/urandom of=/etc/munge/munge.key bs=1024 count=1 2>/dev/null; }
 chown munge:munge /etc/munge/munge.key 2>/dev/null; chmod 400 /etc/munge/munge.key
 mkdir -p /run/munge && chown munge:munge /run/munge
-socket=$work/munge.socket
-runuser -u munge -- /usr/sbin/munged --socket="$socket" --pid-file="$work/munged.pid" \
-  --log-file="$work/munged.log" --seed-file="$work/munged.seed" \
-  || { echo "skipped: munged would not start"; cat "$work/munged.log" 2>/dev/null; exit 77; }
+mkdir -p "$work/munge" && chown munge:munge "$work/munge" && chmod 755 "$work/munge"
+socket=$work/munge/munge.socket
+runuser -u munge -- /usr/sbin/munged --socket="$socket" --pid-file="$work/munge/munged.pid" \
+  --log-file="$work/munge/munged.log" --seed-file="$work/munge/munged.seed" \
+  || { echo "skipped: munged would not start"; cat "$work/munge/munged.log" 2>/dev/null; exit 77; }
 
 cat > "$work/slurm.conf" <<CONF
 ClusterName=matpredict-test
@@ -62,7 +63,7 @@ export SLURM_CONF=$work/slurm.conf
 stop() {
   [ -s "$work/slurmd.pid" ] && kill "$(cat "$work/slurmd.pid")" 2>/dev/null
   [ -s "$work/slurmctld.pid" ] && kill "$(cat "$work/slurmctld.pid")" 2>/dev/null
-  [ -s "$work/munged.pid" ] && kill "$(cat "$work/munged.pid")" 2>/dev/null
+  [ -s "$work/munge/munged.pid" ] && kill "$(cat "$work/munge/munged.pid")" 2>/dev/null
 }
 trap stop EXIT
 slurmctld -i || { echo "slurmctld would not start"; cat "$work/slurmctld.log"; exit 1; }
