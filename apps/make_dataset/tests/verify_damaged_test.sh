@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# make_dataset --verify on a dataset damaged in four ways: a map cut short, a map missing, a label
+# id of a class the variant does not use, a split file listing a frame that is not there. Each is
+# reported with its file, and the exit code is 1.
+# Usage: verify_damaged_test.sh MAKE_DATASET CONFIG OUTPUT_FOLDER
+set -u
+binary=$1
+config=$2
+output=$3
+rm -rf "$output"
+"$binary" --config "$config" --output "$output" >/dev/null 2>&1 || { echo "make_dataset failed"; exit 1; }
+variant=$output/box_without_uvs/var000
+truncate -s 200 "$variant/ORM/000.png"
+rm "$variant/depth/001.exr"
+# Label 3 (leather) everywhere the object is, in a variant of wood and metal.
+/usr/bin/python3 - "$output/box_without_uvs/var001/label/000.png" <<'PY'
+import sys
+from PIL import Image
+path = sys.argv[1]
+image = Image.open(path)
+image.point(lambda v: 3 if v > 0 else 0).save(path)
+PY
+echo "  - box_without_uvs/var009/000" >> "$output/config/paper_random_v1.yaml"
+"$binary" --verify "$output" > "$output.log" 2>&1
+code=$?
+status=0
+[ "$code" -eq 1 ] || { echo "exit code $code, expected 1"; status=1; }
+for expected in "var000/ORM/000.png: cannot be decoded" "var000/depth/001.exr: missing" \
+    "var001/label/000.png: label 3 (leather) is not among the variant's used_materials" \
+    "paper_random_v1.yaml: lists box_without_uvs/var009/000, no frame of the dataset" "4 problems"; do
+  grep -qF "$expected" "$output.log" || { echo "not reported: $expected"; status=1; }
+done
+[ "$status" -eq 0 ] || cat "$output.log"
+rm -f "$output.log"
+exit $status
