@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "common/exit_codes.h"
 #include "common/interrupt.h"
 #include "common/number_options.h"
 #include "common/progress_bar.h"
@@ -25,12 +26,11 @@ using make_dataset::Override;
 
 namespace {
 
-constexpr int kRuntimeFailure = 1;
-constexpr int kInputError = 2;
+using app_support::kInputError;
+using app_support::kRuntimeFailure;
 
 int report_error(const std::string& message, int exit_code) {
-  std::fprintf(stderr, "make_dataset: %s\n", message.c_str());
-  return exit_code;
+  return app_support::report_error("make_dataset", message, exit_code);
 }
 
 struct Options {

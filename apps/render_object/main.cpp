@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "common/exit_codes.h"
 #include "common/interrupt.h"
 #include "matgeom/builtin_objects.h"
 #include "matgeom/material_classes.h"
@@ -30,12 +31,11 @@ using matrender::SceneDescription;
 
 namespace {
 
-constexpr int kRuntimeFailure = 1;
-constexpr int kInputError = 2;
+using app_support::kInputError;
+using app_support::kRuntimeFailure;
 
 int report_error(const std::string& message, int exit_code) {
-  std::fprintf(stderr, "render_object: %s\n", message.c_str());
-  return exit_code;
+  return app_support::report_error("render_object", message, exit_code);
 }
 
 void report_files(const std::vector<std::string>& files, const std::string& folder) {

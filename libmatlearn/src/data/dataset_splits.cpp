@@ -33,9 +33,6 @@ void sort_lists(SplitFile& file) {
   for (size_t s = 0; s < 3; ++s) std::sort(split_list(file, s).begin(), split_list(file, s).end());
 }
 
-// The variant a sample belongs to, as one key.
-std::string variant_key(const SampleId& id) { return id.object + "/" + id.variant; }
-
 // Union-find over material names.
 class MaterialComponents {
  public:
@@ -95,22 +92,31 @@ SplitFile balanced_group_split(const std::vector<SampleId>& samples, const std::
   return file;
 }
 
-SplitFile object_disjoint_split(const std::vector<SampleId>& samples, const SplitRatios& ratios, uint64_t seed) {
+namespace {
+
+// The balanced split of the samples grouped by key_of, named as the repository names its files.
+template <typename Key>
+SplitFile keyed_split(const std::vector<SampleId>& samples, Key key_of, const char* name, const char* strategy,
+                      const SplitRatios& ratios, uint64_t seed) {
   std::vector<std::string> keys;
-  for (const SampleId& id : samples) keys.push_back(id.object);
+  for (const SampleId& id : samples) keys.push_back(key_of(id));
   SplitFile file = balanced_group_split(samples, keys, ratios, seed);
-  file.name = "object_disjoint_v1";
-  file.strategy = "object_disjoint";
+  file.name = name;
+  file.strategy = strategy;
   return file;
 }
 
+}  // namespace
+
+SplitFile object_disjoint_split(const std::vector<SampleId>& samples, const SplitRatios& ratios, uint64_t seed) {
+  return keyed_split(samples, [](const SampleId& id) { return id.object; }, "object_disjoint_v1", "object_disjoint",
+                     ratios, seed);
+}
+
+// "variance_disjoint": the repository's spelling, which its tools check.
 SplitFile variant_disjoint_split(const std::vector<SampleId>& samples, const SplitRatios& ratios, uint64_t seed) {
-  std::vector<std::string> keys;
-  for (const SampleId& id : samples) keys.push_back(id.variant);
-  SplitFile file = balanced_group_split(samples, keys, ratios, seed);
-  file.name = "variance_disjoint_v1";
-  file.strategy = "variance_disjoint";  // the repository's spelling, which its tools check
-  return file;
+  return keyed_split(samples, [](const SampleId& id) { return id.variant; }, "variance_disjoint_v1",
+                     "variance_disjoint", ratios, seed);
 }
 
 SplitFile material_disjoint_split(const std::vector<SampleId>& samples,
