@@ -3,6 +3,7 @@
 # three array tasks render shards 0/3, 1/3 and 2/3 into one folder, which must equal an unsharded
 # run byte for byte and pass --verify. Skipped (exit 77) where slurm-wlm is not installed
 # (MATPREDICT_SLURM_TESTS=1 bash scripts/test.sh installs it) or the test cannot start daemons.
+# Then a task requeued part way (preemption) resumes, and the folder still equals the unsharded run.
 # Usage: slurm_test.sh MAKE_DATASET CONFIG OUTPUT_FOLDER
 set -u
 binary=$(realpath "$1")
@@ -85,4 +86,23 @@ diff -r "$output/whole" "$output/sharded" || { echo "the array's shards differ f
 for k in 0 1 2; do
   grep -q "of 10 in this shard" "$output/task_$k.log" || { echo "task $k did not render shard $k/3:"; cat "$output/task_$k.log"; status=1; }
 done
+
+# Preemption: task 1 requeued by the scheduler part way (frames slow enough, about 0.1 s each,
+# for it to land mid-run) runs again and resumes; the folder ends as an uninterrupted run's.
+slow=(--resolution 64 --spp 16)
+"$binary" --config "$config" --output "$output/slow_whole" "${slow[@]}" >/dev/null 2>&1 || { echo "slow run failed"; exit 1; }
+MAKE_DATASET=$binary sbatch --wait --array=0-2 --cpus-per-task=1 --mem=200M --time=10 --chdir="$output" \
+  --output="$output/slow_%a.log" "$root/scripts/slurm/make_dataset_array.sbatch" "$config" "$output/slow_sharded" 3 \
+  "${slow[@]}" > "$work/sbatch_slow.log" 2>&1 &
+waiter=$!
+for _ in $(seq 300); do
+  grep -q "frames  20%" "$output/slow_1.log" 2>/dev/null && break
+  sleep 0.05
+done
+job=$(grep -o "[0-9]*" "$work/sbatch_slow.log" | head -1)
+scontrol requeue "${job}_1" || { echo "scontrol requeue failed"; status=1; }
+wait "$waiter" || { echo "the requeued array job failed:"; cat "$work/sbatch_slow.log" "$output"/slow_*.log; status=1; }
+grep -q "interrupted" "$output/slow_1.log" || { echo "task 1 was not interrupted by the requeue:"; cat "$output/slow_1.log"; status=1; }
+grep -q "found [1-9][0-9]* complete" "$output/slow_1.log" || { echo "requeued task 1 did not resume:"; cat "$output/slow_1.log"; status=1; }
+diff -r "$output/slow_whole" "$output/slow_sharded" || { echo "after the requeue the shards differ from the unsharded run"; status=1; }
 exit $status
