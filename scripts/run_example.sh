@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Sets up a fresh Debian 12 machine, builds make_dataset and renders its embedded default (6
 # built-in objects x 3 library materials x 8 views of the paper's camera grid, pixel-aligned maps,
-# about a minute on 2 cores) into ./dataset_out/, then checks it with --verify.
+# about a minute on 2 cores) into ./dataset_out/, checks it with --verify and draws its contact
+# sheets into ./dataset_out/preview/index.html.
 # Arguments go to make_dataset (try --help).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -9,4 +10,7 @@ bash "$root/scripts/install_deps.sh"
 cmake -S "$root" -B "$root/build" -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build "$root/build" --target make_dataset render_object -j "$(nproc)"
 "$root/build/apps/make_dataset/make_dataset" "$@"
-if [ "$#" -eq 0 ]; then "$root/build/apps/make_dataset/make_dataset" --verify dataset_out; fi
+if [ "$#" -eq 0 ]; then
+  "$root/build/apps/make_dataset/make_dataset" --verify dataset_out
+  "$root/build/apps/make_dataset/make_dataset" --preview dataset_out
+fi
