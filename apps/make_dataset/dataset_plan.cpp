@@ -1,6 +1,9 @@
 #include "dataset_plan.h"
 
+#include <algorithm>
 #include <stdexcept>
+
+#include <fmt/format.h>
 
 #include "common/number_options.h"
 #include "matgeom/atomic_file.h"
@@ -11,6 +14,9 @@ namespace make_dataset {
 namespace {
 
 namespace fs = std::filesystem;
+
+// 390 times the paper's 129,024: beyond it the plan's lists alone would take gigabytes.
+constexpr int64_t kMaxFrames = 50'000'000;
 
 std::vector<matgeom::SlotCandidates> slot_candidates(const ObjectConfig& object) {
   std::vector<matgeom::SlotCandidates> slots;
@@ -45,6 +51,22 @@ std::optional<Shard> parse_shard(const std::string& text) {
 DatasetPlan plan_dataset(const DatasetConfig& config) {
   DatasetPlan plan;
   plan.views = static_cast<size_t>(config.camera.n_phi) * static_cast<size_t>(config.camera.n_theta);
+  // Counted before anything is listed: an uncapped product of many slots would not fit in memory.
+  long double frames = 0;
+  for (size_t o = 0; o < config.objects.size(); ++o) {
+    uint64_t variants = 0;
+    try {
+      variants = matgeom::variant_count(slot_candidates(config.objects[o]), config.combination);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(config.source + ": objects." + std::to_string(o) + ": " + e.what());
+    }
+    if (config.max_variants) variants = std::min(variants, *config.max_variants);
+    frames += static_cast<long double>(variants) * static_cast<long double>(plan.views);
+  }
+  if (frames > static_cast<long double>(kMaxFrames))
+    throw InputError(fmt::format("{}: the plan has {:.4g} frames, more than the {} one dataset may have; cap the "
+                                 "variants (variants.max_variants) or the views (camera.grid)",
+                                 config.source, static_cast<double>(frames), app_support::with_thousands(kMaxFrames)));
   for (size_t o = 0; o < config.objects.size(); ++o) {
     try {
       plan.variants.push_back(matgeom::material_variants(slot_candidates(config.objects[o]), config.combination,
