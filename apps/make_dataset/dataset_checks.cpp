@@ -3,10 +3,14 @@
 #include <algorithm>
 #include <exception>
 
+#include <fmt/format.h>
+
 #include "matgeom/builtin_objects.h"
 #include "matgeom/material_classes.h"
 #include "matgeom/material_folder.h"
+#include "matgeom/memory_limit.h"
 #include "matgeom/mesh_io.h"
+#include "object_renderer.h"
 
 namespace make_dataset {
 namespace {
@@ -55,6 +59,12 @@ std::vector<std::vector<uint32_t>> parts_of_slots(const DatasetConfig& config, s
 
 
 void check_before_writing(const DatasetConfig& config) {
+  // A frame's buffers, and the maps the writer encodes from them (about as much again).
+  const int w = config.render.width, h = config.render.height;
+  if (const auto problem = matgeom::memory_problem(
+          2.0 * matrender::FrameBuffers::bytes_for(w, h, dataset_aovs()),
+          fmt::format("the buffers and maps of a {} x {} frame", w, h)))
+    throw InputError(config.source + ": render.resolution: " + *problem);
   for (size_t o = 0; o < config.objects.size(); ++o) {
     const ObjectConfig& object = config.objects[o];
     matgeom::ObjectAsset asset;

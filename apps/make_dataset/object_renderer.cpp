@@ -78,6 +78,13 @@ ordered_json matrix_json(const glm::dmat4& m) {
 
 }  // namespace
 
+uint32_t dataset_aovs() {
+  using P = matrender::MaterialParameter;
+  return matrender::AovAlpha | matrender::AovNormalWorld | matrender::AovNormalTangent | matrender::AovDepth |
+         matrender::AovLabel | matrender::AovAmbientOcclusion | matrender::parameter_aov(P::BaseColor) |
+         matrender::parameter_aov(P::Roughness) | matrender::parameter_aov(P::Metallic);
+}
+
 ObjectRenderer::ObjectRenderer(const DatasetConfig& config, size_t object)
     : config_(config), object_(config.objects[object]), built_(matrender::build_scene(object_scene(config, object))) {
   const matgeom::TriangleMesh& mesh = built_.object_surfaces.front();
@@ -162,9 +169,7 @@ bool ObjectRenderer::render(size_t view, uint32_t seed, int threads, const std::
   settings.max_transmission_bounces = r.max_transmission_bounces;
   settings.transparent_background = true;
   using P = matrender::MaterialParameter;
-  settings.aovs = matrender::AovAlpha | matrender::AovNormalWorld | matrender::AovNormalTangent | matrender::AovDepth |
-                  matrender::AovLabel | matrender::AovAmbientOcclusion | matrender::parameter_aov(P::BaseColor) |
-                  matrender::parameter_aov(P::Roughness) | matrender::parameter_aov(P::Metallic);
+  settings.aovs = dataset_aovs();
   settings.ambient_occlusion_rays = ambient_occlusion_rays();
   settings.ambient_occlusion_distance = r.ambient_occlusion_distance_m;
   settings.cancel = cancel;

@@ -14,6 +14,10 @@
 
 namespace make_dataset {
 
+// The AOVs a dataset frame needs: coverage, normals, depth, label, ambient occlusion, base
+// colour, roughness and metallic.
+uint32_t dataset_aovs();
+
 class ObjectRenderer {
  public:
   // Loads the object and builds its scene; throws InputError naming the configuration's key
