@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "common/exit_codes.h"
 #include "common/number_options.h"
 #include "common/progress_bar.h"
 #include "common/thread_count.h"
@@ -192,15 +193,13 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     // --help exits 0; a bad option is a bad input, exit 2 (CLI11's own codes run past 100).
     const int help = app.exit(e);
-    return e.get_exit_code() == 0 ? help : 2;
+    return e.get_exit_code() == 0 ? help : app_support::kInputError;
   }
   try {
     return run(o);
   } catch (const InputError& e) {
-    fmt::print(stderr, "evaluate: {}\n", e.what());
-    return 2;
+    return app_support::report_error("evaluate", e.what(), app_support::kInputError);
   } catch (const std::exception& e) {
-    fmt::print(stderr, "evaluate: {}\n", e.what());
-    return 1;
+    return app_support::report_error("evaluate", e.what(), app_support::kRuntimeFailure);
   }
 }
