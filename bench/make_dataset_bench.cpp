@@ -36,19 +36,6 @@ uint64_t bytes_under(const fs::path& folder) {
   return bytes;
 }
 
-// RMS difference over the pixels both frames cover, of one channel of a per-pixel array.
-double covered_rmse(const std::vector<float>& a, const std::vector<float>& b, const std::vector<float>& coverage_a,
-                    const std::vector<float>& coverage_b) {
-  double sum = 0.0;
-  size_t n = 0;
-  for (size_t p = 0; p < coverage_a.size(); ++p) {
-    if (coverage_a[p] <= 0.0f || coverage_b[p] <= 0.0f) continue;
-    sum += (double(a[p]) - b[p]) * (double(a[p]) - b[p]);
-    ++n;
-  }
-  return n ? std::sqrt(sum / static_cast<double>(n)) : 0.0;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -125,7 +112,7 @@ int main(int argc, char** argv) {
           const double own = std::sqrt(1.0 + 1.0 / reference_factor);
           const double brightness = bench::mean(truth.color) / std::max(bench::mean(truth.coverage), 1e-9);
           image_errors.push_back(bench::rmse(maps.color, truth.color) / own / brightness);
-          ao_errors.push_back(covered_rmse(maps.ambient_occlusion, truth.ambient_occlusion, maps.coverage, truth.coverage) / own);
+          ao_errors.push_back(bench::covered_rmse(maps.ambient_occlusion, truth.ambient_occlusion, maps.coverage, truth.coverage) / own);
           error = fmt::format("; against the reference: image RMSE {:.2f} % of the object's mean, AO RMSE {:.4f}",
                               100.0 * image_errors.back(), ao_errors.back());
           ++referenced;

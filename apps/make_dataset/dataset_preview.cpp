@@ -8,14 +8,14 @@
 #include <string>
 #include <vector>
 
-#include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "dataset_config.h"
+#include "dataset_folders.h"
 #include "matgeom/atomic_file.h"
 #include "matgeom/image_writing.h"
 #include "matgeom/material_classes.h"
+#include "matlearn/decoded_image.h"
 
 namespace make_dataset {
 namespace {
@@ -26,30 +26,7 @@ constexpr float kBackground = 0.16f;  // grey where the object is not
 constexpr float kGap = 0.06f;         // between cells
 constexpr int kGapPixels = 2;
 
-struct Map {
-  int width = 0, height = 0, channels = 0;
-  std::vector<float> values;
-  float at(int x, int y, int c) const {
-    return values[(static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)) *
-                      static_cast<size_t>(channels) + static_cast<size_t>(c)];
-  }
-};
-
-// The stored values, straight (a PNG's colour is not premultiplied by its alpha on reading).
-Map read_map(const fs::path& file) {
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  auto input = OIIO::ImageInput::open(file.string(), &config);
-  if (!input) throw std::runtime_error(file.string() + ": cannot be read: " + OIIO::geterror());
-  Map map;
-  map.width = input->spec().width;
-  map.height = input->spec().height;
-  map.channels = input->spec().nchannels;
-  map.values.resize(static_cast<size_t>(map.width) * static_cast<size_t>(map.height) * static_cast<size_t>(map.channels));
-  if (!input->read_image(0, 0, 0, map.channels, OIIO::TypeDesc::FLOAT, map.values.data()))
-    throw std::runtime_error(file.string() + ": cannot be decoded: " + input->geterror());
-  return map;
-}
+using Map = matlearn::Decoded;
 
 using Rgb = std::array<float, 3>;
 
@@ -73,7 +50,7 @@ constexpr std::array<Column, 9> kColumns = {{{"image", "images", ".png"},
 std::vector<std::vector<Rgb>> draw_frame(const fs::path& variant, const std::string& stem) {
   std::map<std::string, Map> maps;
   for (const Column& column : kColumns)
-    if (!maps.count(column.folder)) maps[column.folder] = read_map(variant / column.folder / (stem + column.extension));
+    if (!maps.count(column.folder)) maps[column.folder] = matlearn::decode(variant / column.folder / (stem + column.extension));
   const Map& label = maps.at("label");
   const Map& depth = maps.at("depth");
   const int w = label.width, h = label.height;
@@ -287,15 +264,7 @@ window.addEventListener("load", () => {
 }  // namespace
 
 PreviewSummary write_preview(const fs::path& root, const PreviewOptions& options) {
-  if (!fs::is_directory(root)) throw InputError(root.string() + ": no such folder");
-  std::vector<fs::path> variants;
-  for (const fs::directory_entry& object : fs::directory_iterator(root)) {
-    if (!object.is_directory() || object.path().filename() == "config" || object.path().filename() == "preview") continue;
-    for (const fs::directory_entry& variant : fs::directory_iterator(object.path()))
-      if (variant.is_directory() && fs::is_regular_file(variant.path() / "transforms.json")) variants.push_back(variant.path());
-  }
-  if (variants.empty()) throw InputError(root.string() + ": holds no <object>/<variant>/transforms.json: not a dataset");
-  std::sort(variants.begin(), variants.end());
+  const std::vector<fs::path> variants = variant_folders(root, "transforms.json");
   const fs::path out = root / "preview";
   fs::create_directories(out);
   std::vector<VariantSheet> sheets;

@@ -2,12 +2,11 @@
 
 #include <chrono>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <memory>
 
 #include "dataset_checks.h"
 #include "matgeom/atomic_file.h"
+#include "matgeom/input_file.h"
 #include "matlearn/dataset_writer.h"
 #include "object_renderer.h"
 #include "texture_targets.h"
@@ -20,11 +19,6 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-std::string file_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 // The variant's records; a folder that holds a variant made with other settings is refused
@@ -43,7 +37,12 @@ void write_variant_records(const DatasetConfig& config, const DatasetPlan& plan,
     matgeom::remove_stale_temporaries(folder / record, false);
   const fs::path metadata_file = folder / "metadata.json";
   const std::string text = matlearn::variant_metadata_text(metadata);
-  if (fs::exists(metadata_file) && file_text(metadata_file) != text)
+  std::string before;
+  const bool existed = fs::exists(metadata_file);
+  if (existed)
+    if (const std::optional<std::string> problem = matgeom::read_whole_file(metadata_file, before))
+      throw std::runtime_error(*problem);
+  if (existed && before != text)
     throw InputError(metadata_file.string() +
                      ": this variant was made with other settings (its metadata differs from this run's); "
                      "render into another --output, or delete the folder to render it again");

@@ -86,7 +86,7 @@ uint32_t dataset_aovs() {
 }
 
 ObjectRenderer::ObjectRenderer(const DatasetConfig& config, size_t object)
-    : config_(config), object_(config.objects[object]), built_(matrender::build_scene(object_scene(config, object))) {
+    : config_(config), object_index_(object), object_(config.objects[object]), built_(matrender::build_scene(object_scene(config, object))) {
   const matgeom::TriangleMesh& mesh = built_.object_surfaces.front();
   const size_t part_count = built_.scene.part_materials(built_.object_meshes.front()).size();
   slot_parts_ = parts_of_slots(config, object, mesh.part_names, part_count);
@@ -193,7 +193,7 @@ bool ObjectRenderer::render(size_t view, uint32_t seed, int threads, const std::
 }
 
 std::string ObjectRenderer::provenance_json(const DatasetPlan& plan, size_t variant) const {
-  const size_t object = static_cast<size_t>(&object_ - config_.objects.data());
+  const size_t object = object_index_;
   ordered_json json;
   json["software"] = {{"name", "matpredict make_dataset"}, {"version", MATPREDICT_VERSION}};
   ordered_json source;

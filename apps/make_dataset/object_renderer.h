@@ -29,7 +29,7 @@ class ObjectRenderer {
   void select_variant(const matgeom::MaterialVariant& variant);
 
   // The materials of the selected variant, slot by slot.
-  std::vector<matlearn::SlotMaterial> slot_materials() const { return slot_materials_; }
+  const std::vector<matlearn::SlotMaterial>& slot_materials() const { return slot_materials_; }
 
   matrender::Camera view_camera(size_t view) const;
   matlearn::FramePose view_pose(size_t view, const std::string& stem) const;
@@ -47,6 +47,7 @@ class ObjectRenderer {
 
  private:
   const DatasetConfig& config_;
+  size_t object_index_;
   const ObjectConfig& object_;
   matrender::BuiltScene built_;
   matgeom::CameraGridSpec grid_;

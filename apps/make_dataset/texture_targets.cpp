@@ -15,12 +15,13 @@ constexpr int kSwatch = 64;
 
 // The parameter's value at every texel, three channels: an image's texels times the factor, or
 // the constant; colours are sRGB-encoded, scalars linear.
-matlearn::ReferenceImage reference(const matgeom::FolderMaterial& folder, MaterialParameter parameter, bool colour) {
+matgeom::ImagePixels reference(const matgeom::FolderMaterial& folder, MaterialParameter parameter, bool colour) {
   const matgeom::MaterialInput& input = folder.material[parameter];
   const matgeom::ImagePixels* image =
       input.image >= 0 && static_cast<size_t>(input.image) < folder.images.size() ? &folder.images[static_cast<size_t>(input.image)]
                                                                                   : nullptr;
-  matlearn::ReferenceImage out;
+  matgeom::ImagePixels out;
+  out.name = matgeom::material_parameter(parameter).name;
   out.width = image ? image->width : kSwatch;
   out.height = image ? image->height : kSwatch;
   out.channels = 3;
@@ -53,7 +54,7 @@ matlearn::MaterialReferences material_references(const matgeom::FolderMaterial& 
   const int normal = folder.material.normal_image;
   if (normal >= 0 && static_cast<size_t>(normal) < folder.images.size()) {
     const matgeom::ImagePixels& image = folder.images[static_cast<size_t>(normal)];
-    matlearn::ReferenceImage map{image.width, image.height, 3, {}};
+    matgeom::ImagePixels map{"normal", image.width, image.height, 3, {}};
     for (size_t t = 0; t < static_cast<size_t>(image.width) * static_cast<size_t>(image.height); ++t)
       for (int c = 0; c < 3; ++c) map.data.push_back(matgeom::texel_channel(image, t, c));
     references.normal = std::move(map);

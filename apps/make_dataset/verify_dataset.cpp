@@ -5,13 +5,14 @@
 #include <map>
 #include <set>
 
-#include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "dataset_config.h"
+#include "dataset_folders.h"
 #include "matgeom/material_classes.h"
 #include "matlearn/dataset_index.h"
+#include "matlearn/decoded_image.h"
 #include "matlearn/dataset_writer.h"
 
 namespace make_dataset {
@@ -20,31 +21,11 @@ namespace {
 namespace fs = std::filesystem;
 using matlearn::DatasetMap;
 
-struct DecodedMap {
-  int width = 0, height = 0, channels = 0;
-  std::vector<float> values;
-};
-
 // OpenImageIO's errors may span lines: one problem, one line.
 std::string one_line(std::string text) {
   while (!text.empty() && text.back() == '\n') text.pop_back();
   for (char& c : text) c = c == '\n' ? ';' : c;
   return text;
-}
-
-// The stored values, straight (no premultiplication by a PNG's alpha); an error text on failure.
-std::string decode(const fs::path& file, DecodedMap& map) {
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  auto input = OIIO::ImageInput::open(file.string(), &config);
-  if (!input) return "cannot be read: " + one_line(OIIO::geterror());
-  map.width = input->spec().width;
-  map.height = input->spec().height;
-  map.channels = input->spec().nchannels;
-  map.values.resize(static_cast<size_t>(map.width) * static_cast<size_t>(map.height) * static_cast<size_t>(map.channels));
-  if (!input->read_image(0, 0, 0, map.channels, OIIO::TypeDesc::FLOAT, map.values.data()))
-    return "cannot be decoded: " + one_line(input->geterror());
-  return {};
 }
 
 nlohmann::json read_json(const fs::path& file, std::vector<std::string>& problems) {
@@ -80,16 +61,18 @@ std::set<int> used_labels(const fs::path& folder, std::vector<std::string>& prob
 
 void verify_frame(const fs::path& folder, const std::string& stem, int width, int height,
                   const std::set<int>& labels, std::vector<std::string>& problems) {
-  std::map<DatasetMap, DecodedMap> maps;
+  std::map<DatasetMap, matlearn::Decoded> maps;
   for (const matlearn::DatasetMapInfo& info : matlearn::dataset_maps()) {
     const fs::path file = folder / info.folder / (stem + info.extension);
     if (!fs::is_regular_file(file)) {
       problems.push_back(file.string() + ": missing");
       continue;
     }
-    DecodedMap map;
-    if (const std::string error = decode(file, map); !error.empty()) {
-      problems.push_back(file.string() + ": " + error);
+    matlearn::Decoded map;
+    try {
+      map = matlearn::decode(file);
+    } catch (const std::runtime_error& e) {
+      problems.push_back(one_line(e.what()));
       continue;
     }
     if (map.width != width || map.height != height || map.channels != info.channels) {
@@ -159,18 +142,10 @@ void verify_variant(const fs::path& folder, VerifyReport& report, std::set<std::
 }  // namespace
 
 VerifyReport verify_dataset(const fs::path& root) {
-  if (!fs::is_directory(root)) throw InputError(root.string() + ": no such folder");
+  const std::vector<fs::path> variants = variant_folders(root, "images");
   VerifyReport report;
   if (!fs::is_regular_file(root / "material_segmentation_map.yaml"))
     report.problems.push_back((root / "material_segmentation_map.yaml").string() + ": missing");
-  std::vector<fs::path> variants;
-  for (const fs::directory_entry& object : fs::directory_iterator(root)) {
-    if (!object.is_directory() || object.path().filename() == "config") continue;
-    for (const fs::directory_entry& variant : fs::directory_iterator(object.path()))
-      if (variant.is_directory() && fs::is_directory(variant.path() / "images")) variants.push_back(variant.path());
-  }
-  if (variants.empty()) throw InputError(root.string() + ": holds no <object>/<variant>/images/ folder: not a dataset");
-  std::sort(variants.begin(), variants.end());
   std::set<std::string> ids;
   for (const fs::path& variant : variants) verify_variant(variant, report, ids);
   // Every split file lists frames of the dataset, each once.

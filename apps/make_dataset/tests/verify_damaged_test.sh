@@ -25,7 +25,7 @@ echo "  - box_without_uvs/var009/000" >> "$output/config/paper_random_v1.yaml"
 code=$?
 status=0
 [ "$code" -eq 1 ] || { echo "exit code $code, expected 1"; status=1; }
-for expected in "var000/ORM/000.png: cannot be decoded" "var000/depth/001.exr: missing" \
+for expected in "cannot decode $variant/ORM/000.png" "var000/depth/001.exr: missing" \
     "var001/label/000.png: label 3 (leather) is not among the variant's used_materials" \
     "paper_random_v1.yaml: lists box_without_uvs/var009/000, no frame of the dataset" "4 problems"; do
   grep -qF "$expected" "$output.log" || { echo "not reported: $expected"; status=1; }

@@ -5,30 +5,23 @@
 // parameter, <root>/ground_truth_basecolour/<material>.png, ground_truth_roughness/,
 // ground_truth_metallic/ and ground_truth_normal/, which libmatlearn's reader loads
 // (matlearn/dataset_index.h). Every file is written under a temporary name and renamed.
-#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
-#include <vector>
 
+#include "matgeom/object_asset.h"
 #include "matlearn/dataset_writer.h"
 
 namespace matlearn {
 
-// An 8-bit image as stored: rows top first, channels interleaved.
-struct ReferenceImage {
-  int width = 0, height = 0, channels = 0;
-  std::vector<uint8_t> data;
-};
-
 // A material's flat maps: its base colour (sRGB-encoded RGB), roughness and metallic (linear,
 // grey in three channels, as the paper's PNGs), and its tangent-space normal map if it has one.
 struct MaterialReferences {
-  ReferenceImage base_color, roughness, metallic;
-  std::optional<ReferenceImage> normal;
+  matgeom::ImagePixels base_color, roughness, metallic;
+  std::optional<matgeom::ImagePixels> normal;
 };
 
-// Throws std::invalid_argument for an image whose size and bytes disagree.
+// Throws std::invalid_argument for an image that is not well formed (matgeom::is_well_formed).
 void write_texture_target_references(const std::filesystem::path& root, const std::string& material,
                                      const MaterialReferences& references);
 

@@ -1,14 +1,14 @@
+#include "matlearn/dataset_writer.h"
+
 #include <algorithm>
 #include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include <OpenImageIO/imageio.h>
-
 #include "matgeom/atomic_file.h"
 #include "matgeom/image_writing.h"
-#include "matlearn/dataset_writer.h"
+#include "matlearn/decoded_image.h"
 
 namespace matlearn {
 namespace {
@@ -150,22 +150,15 @@ void write_frame_maps(const fs::path& variant_folder, const std::string& stem, c
 }
 
 bool frame_is_complete(const fs::path& variant_folder, const std::string& stem, int width, int height) {
-  std::vector<float> pixels;
   for (const DatasetMapInfo& info : kMaps) {
     const fs::path file = map_file(variant_folder, info, stem);
     std::error_code error;
     if (!fs::is_regular_file(file, error)) return false;
-    auto input = OIIO::ImageInput::open(file.string());
-    if (!input) {
-      OIIO::geterror();  // clear OpenImageIO's pending error: the frame is simply rendered again
-      return false;
-    }
-    const OIIO::ImageSpec& spec = input->spec();
-    if (spec.width != width || spec.height != height || spec.nchannels != info.channels) return false;
-    pixels.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * static_cast<size_t>(info.channels));
-    if (!input->read_image(0, 0, 0, info.channels, OIIO::TypeDesc::FLOAT, pixels.data())) {
-      input->geterror();
-      return false;
+    try {
+      const Decoded map = decode(file);
+      if (map.width != width || map.height != height || map.channels != info.channels) return false;
+    } catch (const std::runtime_error&) {
+      return false;  // damaged or cut short: the frame is rendered again
     }
   }
   return true;

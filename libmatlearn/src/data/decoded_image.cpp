@@ -1,4 +1,4 @@
-#include "data/decoded_image.h"
+#include "matlearn/decoded_image.h"
 
 #include <cmath>
 #include <stdexcept>

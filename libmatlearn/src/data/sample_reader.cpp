@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "data/decoded_image.h"
+#include "matlearn/decoded_image.h"
 #include "data/resample.h"
 #include "data/texture_target_sample.h"
 #include "matgeom/srgb.h"

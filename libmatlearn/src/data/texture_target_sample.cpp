@@ -4,7 +4,7 @@
 #include <mutex>
 #include <string>
 
-#include "data/decoded_image.h"
+#include "matlearn/decoded_image.h"
 #include "data/resample.h"
 #include "matgeom/srgb.h"
 

@@ -4,23 +4,21 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <OpenImageIO/imageio.h>
-
+#include "matgeom/atomic_file.h"
 #include "matgeom/image_writing.h"
+#include "matgeom/png_encoding.h"
+#include "matlearn/decoded_image.h"
 
 namespace matlearn {
 namespace {
 
 namespace fs = std::filesystem;
 
-void write_reference(const fs::path& path, const ReferenceImage& image) {
-  const size_t size = static_cast<size_t>(image.width) * static_cast<size_t>(image.height) *
-                      static_cast<size_t>(image.channels);
-  if (image.width <= 0 || image.height <= 0 || image.channels < 1 || image.channels > 4 || image.data.size() != size)
+void write_reference(const fs::path& path, const matgeom::ImagePixels& image) {
+  if (!matgeom::is_well_formed(image))
     throw std::invalid_argument(path.string() + ": the reference image's size and bytes disagree");
-  const std::vector<float> codes(image.data.begin(), image.data.end());
   fs::create_directories(path.parent_path());
-  matgeom::write_data_png(path.string(), image.width, image.height, image.channels, codes.data(), 1.0, 0.0, false);
+  matgeom::write_file_atomically(path, matgeom::encode_png(image, path.string()));
 }
 
 }  // namespace
@@ -72,17 +70,12 @@ void write_texture_target_screenshot(const fs::path& root, const std::string& ob
 bool texture_target_screenshot_is_complete(const fs::path& path) {
   std::error_code error;
   if (!fs::is_regular_file(path, error)) return false;
-  auto input = OIIO::ImageInput::open(path.string());
-  if (!input) {
-    OIIO::geterror();
+  try {
+    decode(path);
+    return true;
+  } catch (const std::runtime_error&) {
     return false;
   }
-  std::vector<uint8_t> pixels(static_cast<size_t>(input->spec().image_bytes()));
-  if (!input->read_image(0, 0, 0, input->spec().nchannels, OIIO::TypeDesc::UINT8, pixels.data())) {
-    input->geterror();
-    return false;
-  }
-  return true;
 }
 
 }  // namespace matlearn
