@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "matlearn/dataset_index.h"
+#include "matlearn/decoded_image.h"
 #include "matlearn/sample_reader.h"
 
 namespace fs = std::filesystem;
@@ -46,27 +47,8 @@ void write_material_folder(const fs::path& folder, const std::vector<uint8_t>& b
   write_constant_png(folder / "metallic.png", 1, {metallic});
 }
 
-struct Stored {
-  int width = 0, height = 0, channels = 0;
-  std::vector<float> values;
-  float at(int x, int y, int c) const { return values[static_cast<size_t>((y * width + x) * channels + c)]; }
-  int code(int x, int y, int c) const { return static_cast<int>(std::lround(at(x, y, c) * 255.0f)); }
-};
-
-Stored read_stored(const fs::path& path) {
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  auto in = OIIO::ImageInput::open(path.string(), &config);
-  INFO(path);
-  REQUIRE(in);
-  Stored s;
-  s.width = in->spec().width;
-  s.height = in->spec().height;
-  s.channels = in->spec().nchannels;
-  s.values.resize(static_cast<size_t>(s.width * s.height * s.channels));
-  REQUIRE(in->read_image(0, 0, 0, s.channels, OIIO::TypeDesc::FLOAT, s.values.data()));
-  return s;
-}
+// The stored 8-bit code of a value libmatlearn's decode read.
+int code(const matlearn::Decoded& map, int x, int y, int c) { return static_cast<int>(std::lround(map.at(x, y, c) * 255.0f)); }
 
 // Runs make_dataset; its standard error goes to `errors` when given.
 int run(const std::string& arguments, const fs::path& errors = "/dev/null") {
@@ -128,9 +110,9 @@ TEST_CASE("ORM's G is the material's roughness and the label its class at every 
   size_t interior = 0;
   for (const matlearn::SampleId& id : matlearn::index_dataset(root)) {
     const fs::path variant = root / id.object / id.variant;
-    const Stored orm = read_stored(variant / "ORM" / (id.stem + ".png"));
-    const Stored label = read_stored(variant / "label" / (id.stem + ".png"));
-    const Stored depth = read_stored(variant / "depth" / (id.stem + ".exr"));
+    const matlearn::Decoded orm = matlearn::decode(variant / "ORM" / (id.stem + ".png"));
+    const matlearn::Decoded label = matlearn::decode(variant / "label" / (id.stem + ".png"));
+    const matlearn::Decoded depth = matlearn::decode(variant / "depth" / (id.stem + ".exr"));
     REQUIRE((orm.width == kSize && label.width == kSize && depth.width == kSize));
     // The classes metadata.json says the variant uses.
     const nlohmann::json metadata = nlohmann::json::parse(std::ifstream(variant / "metadata.json"));
@@ -138,7 +120,7 @@ TEST_CASE("ORM's G is the material's roughness and the label its class at every 
     for (const auto& [slot, material] : metadata["used_materials"].items()) used.insert(material["label_id"].get<int>());
     for (int y = 0; y < kSize; ++y)
       for (int x = 0; x < kSize; ++x) {
-        const int l = label.code(x, y, 0);
+        const int l = code(label, x, y, 0);
         INFO(id.str() << " pixel (" << x << ", " << y << ") label " << l);
         // The label marks exactly the covered pixels, and only with the variant's classes.
         CHECK((l > 0) == (depth.at(x, y, 3) > 0.0f));
@@ -149,12 +131,12 @@ TEST_CASE("ORM's G is the material's roughness and the label its class at every 
         // 8-bit codes exactly (no dither, no blend with the background).
         bool uniform = x > 0 && y > 0 && x + 1 < kSize && y + 1 < kSize;
         for (int dy = -1; uniform && dy <= 1; ++dy)
-          for (int dx = -1; uniform && dx <= 1; ++dx) uniform = label.code(x + dx, y + dy, 0) == l;
+          for (int dx = -1; uniform && dx <= 1; ++dx) uniform = code(label, x + dx, y + dy, 0) == l;
         if (!uniform) continue;
         ++interior;
-        CHECK(orm.code(x, y, 1) == (l == 7 ? kWoodRoughness : kMetalRoughness));
-        CHECK(orm.code(x, y, 2) == (l == 7 ? 0 : 255));
-        CHECK(orm.code(x, y, 3) == 255);
+        CHECK(code(orm, x, y, 1) == (l == 7 ? kWoodRoughness : kMetalRoughness));
+        CHECK(code(orm, x, y, 2) == (l == 7 ? 0 : 255));
+        CHECK(code(orm, x, y, 3) == 255);
       }
   }
   CHECK(interior > 1000);
@@ -166,15 +148,15 @@ TEST_CASE("libmatlearn's reader reads the dataset: roughness is ORM's G, the mas
   settings.size = kSize;  // as stored: no resize
   for (const matlearn::SampleId& id : matlearn::index_dataset(root)) {
     const matlearn::MaterialSample sample = matlearn::read_sample(root, id, settings);
-    const Stored orm = read_stored(root / id.object / id.variant / "ORM" / (id.stem + ".png"));
-    const Stored label = read_stored(root / id.object / id.variant / "label" / (id.stem + ".png"));
+    const matlearn::Decoded orm = matlearn::decode(root / id.object / id.variant / "ORM" / (id.stem + ".png"));
+    const matlearn::Decoded label = matlearn::decode(root / id.object / id.variant / "label" / (id.stem + ".png"));
     REQUIRE(sample.has_label);
     size_t mismatches = 0;
     for (int y = 0; y < kSize; ++y)
       for (int x = 0; x < kSize; ++x) {
         const size_t p = static_cast<size_t>(y * kSize + x);
         mismatches += std::abs(sample.roughness.values[p] - orm.at(x, y, 1)) > 1e-6f ? 1 : 0;
-        mismatches += (sample.mask[p] > 0) != (label.code(x, y, 0) > 0) ? 1 : 0;
+        mismatches += (sample.mask[p] > 0) != (code(label, x, y, 0) > 0) ? 1 : 0;
       }
     INFO(id.str());
     CHECK(mismatches == 0);
@@ -247,20 +229,20 @@ paper_texture_layout: true
   REQUIRE(samples.size() == 6);
   CHECK(samples.front().str() == "vase/metal_flat/000");
   // The references are the folders' constant maps.
-  const Stored roughness = read_stored(root / "ground_truth_roughness" / "wood_flat.png");
-  CHECK(roughness.code(0, 0, 0) == kWoodRoughness);
-  CHECK(roughness.code(7, 7, 2) == kWoodRoughness);
-  CHECK(read_stored(root / "ground_truth_metallic" / "metal_flat.png").code(3, 3, 1) == 255);
-  CHECK(read_stored(root / "ground_truth_basecolour" / "wood_flat.png").code(0, 0, 0) == 150);
+  const matlearn::Decoded roughness = matlearn::decode(root / "ground_truth_roughness" / "wood_flat.png");
+  CHECK(code(roughness, 0, 0, 0) == kWoodRoughness);
+  CHECK(code(roughness, 7, 7, 2) == kWoodRoughness);
+  CHECK(code(matlearn::decode(root / "ground_truth_metallic" / "metal_flat.png"), 3, 3, 1) == 255);
+  CHECK(code(matlearn::decode(root / "ground_truth_basecolour" / "wood_flat.png"), 0, 0, 0) == 150);
   for (const matlearn::SampleId& id : samples) {
     INFO(id.str());
-    const Stored shot = read_stored(root / "rendered_cropped" / id.object / id.variant / (id.stem + ".png"));
+    const matlearn::Decoded shot = matlearn::decode(root / "rendered_cropped" / id.object / id.variant / (id.stem + ".png"));
     // Square, cropped (smaller than the frame or the frame itself), white in the corners.
     CHECK(shot.width == shot.height);
     CHECK(shot.width <= 44);
     CHECK(shot.channels == 3);
-    CHECK(shot.code(0, 0, 0) == 255);
-    CHECK(shot.code(shot.width - 1, shot.height - 1, 1) == 255);
+    CHECK(code(shot, 0, 0, 0) == 255);
+    CHECK(code(shot, shot.width - 1, shot.height - 1, 1) == 255);
     matlearn::SampleSettings settings;
     settings.size = 16;
     const matlearn::MaterialSample sample = matlearn::read_sample(root, id, settings);

@@ -15,10 +15,10 @@
 #include <sstream>
 #include <string>
 
-#include <OpenImageIO/imageio.h>
 #include <nlohmann/json.hpp>
 
 #include "matlearn/dataset_splits.h"
+#include "matlearn/decoded_image.h"
 #include "matlearn/dataset_writer.h"
 #include "matlearn/python_random.h"
 #include "matlearn/sample_reader.h"
@@ -46,19 +46,13 @@ std::string output_of(const std::string& command) {
   return text;
 }
 
-// The stored values of an image file, straight as written (OpenImageIO would premultiply a PNG's
-// colour by its alpha on reading otherwise).
+// The stored values of an image file, straight as written, and its size.
 std::vector<float> stored_values(const fs::path& path, int& width, int& height, int& channels) {
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  auto in = OIIO::ImageInput::open(path.string(), &config);
-  REQUIRE(in);
-  width = in->spec().width;
-  height = in->spec().height;
-  channels = in->spec().nchannels;
-  std::vector<float> values(static_cast<size_t>(width * height * channels));
-  REQUIRE(in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, values.data()));
-  return values;
+  matlearn::Decoded map = decode(path);
+  width = map.width;
+  height = map.height;
+  channels = map.channels;
+  return std::move(map.values);
 }
 
 constexpr int kWidth = 5, kHeight = 4;
