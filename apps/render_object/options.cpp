@@ -263,6 +263,23 @@ void add_render_options(CLI::App& app, Options& o) {
       ->check(app_support::whole_number_in(1, std::numeric_limits<int>::max()))
       ->default_str(std::to_string(settings.samples_per_pixel))
       ->group(group);
+  app.add_option_function<double>(
+         "--noise-threshold",
+         [&o](const double& threshold) {
+           require(threshold >= 0.0 && threshold <= 1.0, "--noise-threshold", "a number in [0, 1] (0: off)");
+           o.noise_threshold = threshold;
+         },
+         "adaptive sampling as Cycles' Noise Threshold: a pixel stops once its relative error estimate is "
+         "below this (0.01 is Blender's default); --spp is then the most a pixel takes. 0 = off")
+      ->default_str("0")
+      ->group(group);
+  app.add_option_function<int>(
+         "--min-samples", [&o](const int& samples) { o.min_samples = samples; },
+         "with --noise-threshold: samples every pixel takes before its first check (0 = Cycles' automatic "
+         "max(4, ceil(16 / threshold^0.3)))")
+      ->check(app_support::whole_number_in(0, std::numeric_limits<int>::max()))
+      ->default_str("0")
+      ->group(group);
   app.add_option_function<uint32_t>(
          "--seed", [&o](const uint32_t& seed) { o.seed = seed; }, "sampler seed; the image depends only on it")
       ->check(app_support::whole_number_in(0, std::numeric_limits<uint32_t>::max()))
@@ -411,6 +428,8 @@ void apply_camera_options(const Options& o, CameraDescription& camera) {
 void apply_render_options(const Options& o, SceneDescription& scene) {
   matrender::RenderSettings& s = scene.settings;
   if (o.spp) s.samples_per_pixel = *o.spp;
+  if (o.noise_threshold) s.noise_threshold = *o.noise_threshold;
+  if (o.min_samples) s.min_samples = *o.min_samples;
   if (o.seed) s.seed = *o.seed;
   if (o.transparent) s.transparent_background = true;
   if (o.cycles_parity) s.cycles_parity = true;

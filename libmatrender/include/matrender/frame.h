@@ -38,8 +38,11 @@ enum Aov : uint32_t {
   // surface within RenderSettings::ambient_occlusion_distance (Cycles' AO node). Costs rays, so
   // it is never a default AOV.
   AovAmbientOcclusion = 1u << 7,
+  // The camera samples each pixel took: RenderSettings::samples_per_pixel everywhere unless
+  // adaptive sampling stopped some pixels early.
+  AovSampleCount = 1u << 8,
 };
-constexpr uint32_t kFirstParameterAovBit = 8;
+constexpr uint32_t kFirstParameterAovBit = 9;
 static_assert(kFirstParameterAovBit + matgeom::kMaterialParameterCount <= 32, "AOV bits fit in 32");
 
 // The AOV of a material parameter: its value at the first hit, named as in the table.
@@ -50,7 +53,7 @@ constexpr uint32_t kGeometricAovs =
 
 // Every AOV.
 constexpr uint32_t all_aovs() {
-  uint32_t mask = kGeometricAovs | AovAmbientOcclusion;
+  uint32_t mask = kGeometricAovs | AovAmbientOcclusion | AovSampleCount;
   for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) mask |= parameter_aov(info.id);
   return mask;
 }
@@ -89,6 +92,7 @@ struct FrameBuffers {
   std::vector<float> depth;          // metres along the camera axis
   std::vector<int32_t> label;        // material label id
   std::vector<int32_t> part_id;      // part id, -1 for background
+  std::vector<int32_t> sample_count;  // camera samples taken
 
   std::vector<float>& parameter(MaterialParameter p) { return parameters[static_cast<size_t>(p)]; }
   const std::vector<float>& parameter(MaterialParameter p) const { return parameters[static_cast<size_t>(p)]; }

@@ -17,6 +17,13 @@ enum class LightSelection { Importance, Uniform };
 
 struct RenderSettings {
   int samples_per_pixel = 64;
+  // Adaptive sampling as Cycles 3.4 (Noise Threshold and Min Samples; docs/conventions.md): a
+  // pixel stops taking samples once its relative error estimate falls below noise_threshold and
+  // its neighbours' have too; samples_per_pixel is then the most any pixel takes. 0 = off: every
+  // pixel takes samples_per_pixel. min_samples: the samples before the first check, 0 = Cycles'
+  // automatic max(4, ceil(16 / noise_threshold^0.3)).
+  double noise_threshold = 0.0;
+  int min_samples = 0;
   uint32_t seed = 0;
   int threads = 0;  // 0 = all hardware threads; the image does not depend on this
   // Cycles 3.4 defaults.
@@ -58,6 +65,10 @@ struct RenderStats {
   uint64_t discarded_samples = 0;  // path contributions that were NaN or Inf and were dropped
   bool cancelled = false;
 };
+
+// The fewest camera samples a pixel of a complete render takes under these settings:
+// samples_per_pixel, or, with adaptive sampling, the count of the first check if it is fewer.
+int fewest_samples_per_pixel(const RenderSettings& settings);
 
 // Renders `scene` (committing it if needed) through `camera` into `frame` (resized to the
 // camera's resolution). Thread-safe for concurrent renders of one committed scene.

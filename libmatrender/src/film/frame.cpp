@@ -26,6 +26,7 @@ void visit_buffers(FrameBuffers& frame, Visit&& visit) {
   visit(frame.depth, AovDepth, 1, 0.0f);
   visit(frame.label, AovLabel, 1, int32_t{0});
   visit(frame.part_id, AovPartId, 1, int32_t{-1});
+  visit(frame.sample_count, AovSampleCount, 1, int32_t{0});
 }
 
 }  // namespace
@@ -42,7 +43,8 @@ const std::vector<AovName>& aov_names() {
                              {"depth", AovDepth},
                              {"label", AovLabel},
                              {"part_id", AovPartId},
-                             {"alpha", AovAlpha}});
+                             {"alpha", AovAlpha},
+                             {"sample_count", AovSampleCount}});
     return list;
   }();
   return names;

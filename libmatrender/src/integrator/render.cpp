@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "film/adaptive_sampling.h"
 #include "film/camera_rays.h"
 #include "film/pixel_filter.h"
 #include "integrator/ambient_occlusion.h"
@@ -44,15 +46,17 @@ std::vector<Tile> make_tiles(int width, int height) {
   return tiles;
 }
 
-// Everything one pixel accumulates over its samples.
+// What one pixel accumulates over its samples, beside the sums of its material parameters and
+// tangent-space normal, which accumulate in the frame's own arrays (render_samples). With
+// adaptive sampling it is kept between the rounds of samples, so it stays small.
 struct PixelAccumulator {
   glm::dvec3 color{0.0};
+  glm::dvec3 second_estimate{0.0};  // adaptive sampling: the colour of the samples of its second half
   double coverage = 0.0;  // summed 1 - transparency of the camera rays
-  int hits = 0;
-  std::array<glm::dvec3, matgeom::kMaterialParameterCount> parameters{};  // by MaterialParameter; scalars in x
-  glm::dvec3 normal{0.0};
-  glm::dvec3 tangent_space_normal{0.0};
   double unoccluded = 0.0;  // summed fraction of each hit's occlusion rays that escaped
+  glm::vec3 normal{0.0f};
+  uint32_t samples = 0;
+  int32_t hits = 0;
   float nearest_offset2 = std::numeric_limits<float>::infinity();
   float depth = 0.0f;
   int32_t label = 0;
@@ -68,9 +72,15 @@ void validate(const Camera& camera, const RenderSettings& settings) {
   check_scene_point(glm::dvec3(camera.camera_to_world[3]), "render: the camera");
   if (!(camera.vertical_fov > 0.0 && camera.vertical_fov < M_PI))
     throw std::invalid_argument("render: vertical field of view must be in (0, pi) radians");
-  matgeom::require_memory(FrameBuffers::bytes_for(camera.width, camera.height, settings.aovs),
-                          "the colour and AOV buffers of a " + std::to_string(camera.width) + " x " +
-                              std::to_string(camera.height) + " image",
+  if (!(settings.noise_threshold >= 0.0 && settings.noise_threshold <= 1.0))
+    throw std::invalid_argument("render: the noise threshold must be in [0, 1] (0: adaptive sampling off)");
+  if (settings.min_samples < 0) throw std::invalid_argument("render: min samples must be >= 0 (0: automatic)");
+  const double pixels = static_cast<double>(camera.width) * static_cast<double>(camera.height);
+  const bool adaptive = settings.noise_threshold > 0.0;
+  matgeom::require_memory(FrameBuffers::bytes_for(camera.width, camera.height, settings.aovs) +
+                              (adaptive ? pixels * (sizeof(PixelAccumulator) + 1) : 0.0),
+                          std::string(adaptive ? "the colour and AOV buffers and adaptive sampling's sums" : "the colour and AOV buffers") +
+                              " of a " + std::to_string(camera.width) + " x " + std::to_string(camera.height) + " image",
                           "render");
   if (settings.samples_per_pixel < 1) throw std::invalid_argument("render: samples per pixel must be >= 1");
   if (settings.threads < 0) throw std::invalid_argument("render: threads must be >= 0");
@@ -85,6 +95,13 @@ void validate(const Camera& camera, const RenderSettings& settings) {
 }
 
 }  // namespace
+
+int fewest_samples_per_pixel(const RenderSettings& settings) {
+  const std::optional<AdaptiveSampling> adaptive =
+      AdaptiveSampling::from_settings(settings.noise_threshold, settings.min_samples);
+  if (!adaptive) return settings.samples_per_pixel;
+  return static_cast<int>(std::min<int64_t>(settings.samples_per_pixel, adaptive->next_check(0)));
+}
 
 RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& settings, FrameBuffers& frame) {
   validate(camera, settings);
@@ -112,23 +129,28 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
   const PixelFilterSampler& filter = blackman_harris_sampler();
   const glm::mat3 world_to_camera = glm::transpose(glm::mat3(rays.right(), rays.up(), rays.back()));
 
+  const std::optional<AdaptiveSampling> adaptive =
+      AdaptiveSampling::from_settings(settings.noise_threshold, settings.min_samples);
+
   frame.resize(camera.width, camera.height, settings.aovs);
   frame.transparent_background = settings.transparent_background;
   const std::vector<Tile> tiles = make_tiles(camera.width, camera.height);
-  std::atomic<uint64_t> ray_count{0}, discarded{0}, samples{0};
+  const size_t pixel_count = static_cast<size_t>(camera.width) * static_cast<size_t>(camera.height);
+  std::atomic<uint64_t> ray_count{0}, discarded{0}, samples{0}, sample_slots{0};
   std::atomic<bool> cancelled{false};
   const uint32_t spp = static_cast<uint32_t>(settings.samples_per_pixel);
-  const uint64_t total_samples = static_cast<uint64_t>(camera.width) * static_cast<uint64_t>(camera.height) * spp;
-  // Samples are counted, and progress reported, every kProgressSamples samples a thread takes,
-  // not per tile: at millions of samples per pixel one tile takes minutes.
+  // Progress counts sample slots: a sample taken, or one a converged pixel skips.
+  const uint64_t total_slots = static_cast<uint64_t>(pixel_count) * spp;
+  // Progress is reported every kProgressSamples slots a thread passes, not per tile: at millions
+  // of samples per pixel one tile takes minutes.
   constexpr uint64_t kProgressSamples = 1u << 16;
   std::mutex progress_mutex;
   double reported_fraction = 0.0;
-  auto count_samples = [&](uint64_t new_samples) {
-    const uint64_t done = samples.fetch_add(new_samples) + new_samples;
+  auto count_slots = [&](uint64_t new_slots) {
+    const uint64_t done = sample_slots.fetch_add(new_slots) + new_slots;
     if (!settings.progress) return;
     std::lock_guard<std::mutex> lock(progress_mutex);
-    const double fraction = static_cast<double>(done) / static_cast<double>(total_samples);
+    const double fraction = static_cast<double>(done) / static_cast<double>(total_slots);
     if (fraction <= reported_fraction) return;
     reported_fraction = fraction;
     settings.progress(fraction);
@@ -140,8 +162,8 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
     cancelled = true;
     return true;
   };
-  // Without AOVs beyond alpha a pixel only counts its hits.
-  const bool surface_aovs = (settings.aovs & ~static_cast<uint32_t>(AovAlpha)) != 0;
+  // Without AOVs beyond alpha and the sample count a pixel only counts its hits.
+  const bool surface_aovs = (settings.aovs & ~static_cast<uint32_t>(AovAlpha | AovSampleCount)) != 0;
   std::vector<const matgeom::MaterialParameterInfo*> parameter_aovs;
   for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters)
     if (settings.aovs & parameter_aov(info.id)) parameter_aovs.push_back(&info);
@@ -149,9 +171,22 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
   const int occlusion_rays = settings.ambient_occlusion_rays;
   const float occlusion_distance = static_cast<float>(settings.ambient_occlusion_distance);
 
-  auto render_pixel = [&](int x, int y, uint64_t& tile_rays, uint64_t& tile_discarded, uint64_t& uncounted_samples) {
+  // What one tile's thread counts before adding it to the render's totals.
+  struct TileCounts {
+    uint64_t rays = 0, discarded = 0, samples = 0, uncounted_slots = 0;
+  };
+  auto pass_slots = [&](TileCounts& counts, uint64_t slots) {
+    counts.uncounted_slots += slots;
+    if (counts.uncounted_slots < kProgressSamples) return;
+    count_slots(counts.uncounted_slots);
+    counts.uncounted_slots = 0;
+  };
+
+  // Takes samples [begin, end) of pixel (x, y) into acc; the material parameters and the
+  // tangent-space normal are summed into the frame's arrays.
+  auto render_samples = [&](int x, int y, uint32_t begin, uint32_t end, PixelAccumulator& acc, TileCounts& counts) {
     const uint32_t pixel_index = static_cast<uint32_t>(y) * static_cast<uint32_t>(camera.width) + static_cast<uint32_t>(x);
-    PixelAccumulator acc;
+    const size_t i = pixel_index;
     const PixelSeeds seeds(pixel_index, settings.seed);
     const PairSeeds occlusion_seeds = ambient_occlusion_seeds(pixel_index, settings.seed);
     static_assert(kPacketSamples == EmbreeScene::kPacketSize, "one sample packet per camera-ray packet");
@@ -160,14 +195,11 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
     RayHit camera_hits[kPacketSamples];
     // The surface each camera ray hits, for the AOVs; made once per pixel, filled by trace.
     SurfacePoint sp;
-    for (uint32_t first = 0; first < spp; first += kPacketSamples) {
+    for (uint32_t first = begin; first < end; first += kPacketSamples) {
       if (cancel_requested()) return;
-      const int count = static_cast<int>(std::min<uint32_t>(kPacketSamples, spp - first));
-      uncounted_samples += static_cast<uint64_t>(count);
-      if (uncounted_samples >= kProgressSamples) {
-        count_samples(uncounted_samples);
-        uncounted_samples = 0;
-      }
+      const int count = static_cast<int>(std::min<uint32_t>(kPacketSamples, end - first));
+      counts.samples += static_cast<uint64_t>(count);
+      pass_slots(counts, static_cast<uint64_t>(count));
       const SamplePacket packet(seeds, first);
       for (int lane = 0; lane < count; ++lane) {
         offsets[lane] = filter.sample(packet.point(0, lane));
@@ -176,32 +208,42 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
       }
       data.accel.intersect_coherent(rays.origin(), dirs, count, camera_hits);
       for (int lane = 0; lane < count; ++lane) {
+        const uint32_t sample = first + static_cast<uint32_t>(lane);
         const PathResult path = tracer.trace(rays.origin(), dirs[lane], camera_hits[lane], PixelSampler(packet, lane),
                                              surface_aovs ? &sp : nullptr);
-        tile_rays += path.rays;
+        ++acc.samples;
+        counts.rays += path.rays;
         if (is_finite(path.radiance)) {
           acc.color += glm::dvec3(path.radiance);
+          if (adaptive && in_second_estimate(shuffled_sobol_index(reverse_bits(sample), seeds.pair(0))))
+            acc.second_estimate += glm::dvec3(path.radiance);
         } else {
-          ++tile_discarded;
+          ++counts.discarded;
         }
         acc.coverage += 1.0 - static_cast<double>(path.transparency);
         if (!path.hit) continue;
         ++acc.hits;
         if (!surface_aovs) continue;
-        // Colours and scalars sum alike; a scalar's AOV reads x.
-        for (const matgeom::MaterialParameterInfo* info : parameter_aovs)
-          acc.parameters[static_cast<size_t>(info->id)] += glm::dvec3(
-              glm::clamp(sp.inputs.color(info->id), static_cast<float>(info->min), static_cast<float>(info->max)));
-        acc.normal += glm::dvec3(sp.shading_normal);
-        acc.tangent_space_normal += glm::dvec3(sp.tangent_space_normal);
+        for (const matgeom::MaterialParameterInfo* info : parameter_aovs) {
+          const glm::vec3 value =
+              glm::clamp(sp.inputs.color(info->id), static_cast<float>(info->min), static_cast<float>(info->max));
+          std::vector<float>& sum = frame.parameter(info->id);
+          if (info->kind == matgeom::ParameterKind::Color) {
+            for (int c = 0; c < 3; ++c) sum[3 * i + c] += value[c];
+          } else {
+            sum[i] += value.x;  // a scalar reads x
+          }
+        }
+        acc.normal += sp.shading_normal;
+        if (!frame.normal_tangent.empty())
+          for (int c = 0; c < 3; ++c) frame.normal_tangent[3 * i + c] += sp.tangent_space_normal[c];
         if (ambient_occlusion) {
-          const uint32_t sample = first + static_cast<uint32_t>(lane);
           uint32_t occlusion_rays_traced = 0;
           acc.unoccluded += static_cast<double>(unoccluded_rays(data.accel, sp, occlusion_distance, occlusion_seeds,
                                                                 sample * static_cast<uint32_t>(occlusion_rays),
                                                                 occlusion_rays, &occlusion_rays_traced)) /
                             occlusion_rays;
-          tile_rays += occlusion_rays_traced;
+          counts.rays += occlusion_rays_traced;
         }
         const float offset2 = glm::dot(offsets[lane], offsets[lane]);
         if (offset2 < acc.nearest_offset2) {
@@ -212,58 +254,97 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
         }
       }
     }
-    const size_t i = pixel_index;
-    const glm::dvec3 color = acc.color / static_cast<double>(spp);
+  };
+
+  // Turns pixel i's sums into its values.
+  auto finish_pixel = [&](size_t i, const PixelAccumulator& acc) {
+    if (!frame.sample_count.empty()) frame.sample_count[i] = static_cast<int32_t>(acc.samples);
+    if (acc.samples == 0) return;  // cancelled before it began
+    const double inv_samples = 1.0 / static_cast<double>(acc.samples);
+    const glm::dvec3 color = acc.color * inv_samples;
     for (int c = 0; c < 3; ++c) frame.color[3 * i + c] = static_cast<float>(color[c]);
-    if (!frame.alpha.empty()) frame.alpha[i] = static_cast<float>(acc.coverage / static_cast<double>(spp));
+    if (!frame.alpha.empty()) frame.alpha[i] = static_cast<float>(acc.coverage * inv_samples);
     if (acc.hits == 0) return;
-    const double inv_hits = 1.0 / acc.hits;
-    const double normal_len = glm::length(acc.normal);
-    const glm::vec3 normal = normal_len > 0.0 ? glm::vec3(acc.normal / normal_len) : glm::vec3(0.0f);
+    const float inv_hits = 1.0f / static_cast<float>(acc.hits);
+    const float normal_len = glm::length(acc.normal);
+    const glm::vec3 normal = normal_len > 0.0f ? acc.normal / normal_len : glm::vec3(0.0f);
     const glm::vec3 normal_camera = world_to_camera * normal;
-    const double tangent_len = glm::length(acc.tangent_space_normal);
-    const glm::vec3 tangent_space_normal =
-        tangent_len > 0.0 ? glm::vec3(acc.tangent_space_normal / tangent_len) : glm::vec3(0.0f, 0.0f, 1.0f);
     for (const matgeom::MaterialParameterInfo* info : parameter_aovs) {
-      const glm::dvec3& sum = acc.parameters[static_cast<size_t>(info->id)];
       std::vector<float>& buffer = frame.parameter(info->id);
-      if (info->kind == matgeom::ParameterKind::Color) {
-        for (int c = 0; c < 3; ++c) buffer[3 * i + c] = static_cast<float>(sum[c] * inv_hits);
-      } else {
-        buffer[i] = static_cast<float>(sum.x * inv_hits);
-      }
+      const int channels = info->kind == matgeom::ParameterKind::Color ? 3 : 1;
+      for (int c = 0; c < channels; ++c) buffer[channels * i + c] *= inv_hits;
+    }
+    if (!frame.normal_tangent.empty()) {
+      const glm::vec3 sum(frame.normal_tangent[3 * i], frame.normal_tangent[3 * i + 1], frame.normal_tangent[3 * i + 2]);
+      const float tangent_len = glm::length(sum);
+      const glm::vec3 tangent_space_normal = tangent_len > 0.0f ? sum / tangent_len : glm::vec3(0.0f, 0.0f, 1.0f);
+      for (int c = 0; c < 3; ++c) frame.normal_tangent[3 * i + c] = tangent_space_normal[c];
     }
     for (int c = 0; c < 3; ++c) {
       if (!frame.normal_world.empty()) frame.normal_world[3 * i + c] = normal[c];
       if (!frame.normal_camera.empty()) frame.normal_camera[3 * i + c] = normal_camera[c];
-      if (!frame.normal_tangent.empty()) frame.normal_tangent[3 * i + c] = tangent_space_normal[c];
     }
-    if (!frame.ambient_occlusion.empty()) frame.ambient_occlusion[i] = static_cast<float>(acc.unoccluded * inv_hits);
+    if (!frame.ambient_occlusion.empty())
+      frame.ambient_occlusion[i] = static_cast<float>(acc.unoccluded / static_cast<double>(acc.hits));
     if (!frame.depth.empty()) frame.depth[i] = acc.depth;
     if (!frame.label.empty()) frame.label[i] = acc.label;
     if (!frame.part_id.empty()) frame.part_id[i] = acc.part;
   };
 
-  auto render_tile = [&](const Tile& tile) {
-    uint64_t tile_rays = 0, tile_discarded = 0, uncounted_samples = 0;
-    for (int y = tile.y0; y < tile.y1; ++y)
-      for (int x = tile.x0; x < tile.x1; ++x) render_pixel(x, y, tile_rays, tile_discarded, uncounted_samples);
-    ray_count += tile_rays;
-    discarded += tile_discarded;
-    count_samples(uncounted_samples);
-    // So that the texture levels the cache has dropped meanwhile are freed.
-    release_pinned_texels();
+  tbb::task_arena arena(matgeom::worker_threads(settings.threads));
+  // Runs `visit_pixel(x, y, i, counts)` over the image, a tile per task.
+  auto for_each_pixel = [&](const auto& visit_pixel) {
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles.size(), 1), [&](const tbb::blocked_range<size_t>& range) {
+        for (size_t t = range.begin(); t != range.end(); ++t) {
+          if (cancel_requested()) return;
+          const Tile& tile = tiles[t];
+          TileCounts counts;
+          for (int y = tile.y0; y < tile.y1; ++y)
+            for (int x = tile.x0; x < tile.x1; ++x)
+              visit_pixel(x, y, static_cast<size_t>(y) * static_cast<size_t>(camera.width) + static_cast<size_t>(x),
+                          counts);
+          ray_count += counts.rays;
+          discarded += counts.discarded;
+          samples += counts.samples;
+          count_slots(counts.uncounted_slots);
+          // So that the texture levels the cache has dropped meanwhile are freed.
+          release_pinned_texels();
+        }
+      });
+    });
   };
 
-  tbb::task_arena arena(matgeom::worker_threads(settings.threads));
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles.size(), 1), [&](const tbb::blocked_range<size_t>& range) {
-      for (size_t t = range.begin(); t != range.end(); ++t) {
-        if (cancel_requested()) return;
-        render_tile(tiles[t]);
-      }
+  if (!adaptive) {
+    for_each_pixel([&](int x, int y, size_t i, TileCounts& counts) {
+      PixelAccumulator acc;
+      render_samples(x, y, 0, spp, acc, counts);
+      finish_pixel(i, acc);
     });
-  });
+  } else {
+    // Rounds of samples for the whole image, each up to the next check; pixels the check finds
+    // converged skip the rounds after it (docs/conventions.md, "Adaptive sampling").
+    std::vector<PixelAccumulator> accumulators(pixel_count);
+    std::vector<uint8_t> converged(pixel_count, 0);
+    for (uint32_t begin = 0; begin < spp && !cancelled;) {
+      const uint32_t end = std::min(spp, adaptive->next_check(begin));
+      for_each_pixel([&](int x, int y, size_t i, TileCounts& counts) {
+        if (converged[i])
+          pass_slots(counts, end - begin);
+        else
+          render_samples(x, y, begin, end, accumulators[i], counts);
+      });
+      if (end < spp) {
+        for (size_t i = 0; i < pixel_count; ++i)
+          if (!converged[i])
+            converged[i] = pixel_converged(accumulators[i].color, accumulators[i].second_estimate,
+                                           accumulators[i].samples, adaptive->error_bound());
+        keep_neighbours_sampling(converged, camera.width, camera.height);
+      }
+      begin = end;
+    }
+    for_each_pixel([&](int, int, size_t i, TileCounts&) { finish_pixel(i, accumulators[i]); });
+  }
 
   RenderStats stats;
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -91,8 +91,13 @@ struct PairSeeds {
 // both coordinates are nested_uniform_scramble(reverse_bits(r), seed) =
 // reverse_bits(laine_karras_permutation(r, seed)) for r = shuffled and
 // r = sobol_dimension1_reversed(shuffled): the inner reversals cancel.
+// The Sobol index a sample takes in a dimension pair: its own index, nested-uniform shuffled.
+inline uint32_t shuffled_sobol_index(uint32_t reversed_index, const PairSeeds& seeds) {
+  return reverse_bits(laine_karras_permutation(reversed_index, seeds.shuffle));
+}
+
 inline glm::vec2 owen_sobol_2d_reversed_index(uint32_t reversed_index, const PairSeeds& seeds) {
-  const uint32_t shuffled = reverse_bits(laine_karras_permutation(reversed_index, seeds.shuffle));
+  const uint32_t shuffled = shuffled_sobol_index(reversed_index, seeds);
   const uint32_t x_reversed = laine_karras_permutation(shuffled, seeds.x);
   const uint32_t y_reversed = laine_karras_permutation(sobol_dimension1_reversed(shuffled), seeds.y);
   // Both reversals in one 64-bit reversal: it swaps the halves and reverses each.

@@ -692,11 +692,14 @@ std::vector<ObjectDescription> read_objects(const Node& node, const fs::path& fo
 // ---- render settings ------------------------------------------------------------------------
 
 void read_render(const Node& node, SceneDescription& scene) {
-  node.expect_keys({"spp", "seed", "max_bounces", "max_diffuse_bounces", "max_glossy_bounces",
+  node.expect_keys({"spp", "noise_threshold", "min_samples", "seed", "max_bounces", "max_diffuse_bounces", "max_glossy_bounces",
                     "max_transmission_bounces", "max_transparent_bounces", "exposure",
                     "transparent_background", "cycles_parity", "light_selection", "mipmaps"});
   RenderSettings& s = scene.settings;
   if (auto n = node.find("spp")) s.samples_per_pixel = n->integer_at_least(1);
+  if (auto n = node.find("noise_threshold"))
+    s.noise_threshold = n->number_where([](double v) { return v >= 0.0 && v <= 1.0; }, "a number in [0, 1] (0: off)");
+  if (auto n = node.find("min_samples")) s.min_samples = n->integer_at_least(0);
   if (auto n = node.find("seed")) s.seed = n->uint32();
   if (auto n = node.find("max_bounces")) s.max_bounces = n->integer_at_least(0);
   if (auto n = node.find("max_diffuse_bounces")) s.max_diffuse_bounces = n->integer_at_least(0);
