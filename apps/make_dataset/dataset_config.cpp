@@ -49,7 +49,7 @@ camera:
 render:
   resolution: [128, 128]
   samples: 32
-  exposure: 0
+  exposure: auto
   bounces: {max: 12, diffuse: 4, glossy: 4, transmission: 12}
   ambient_occlusion: {error: 0.02, distance: 1.0}
   material_resolution: 256
@@ -341,7 +341,8 @@ void read_camera(const Value& v, CameraConfig& camera) {
 }
 
 void read_render(const Value& v, RenderConfig& render) {
-  v.check_keys({"resolution", "samples", "exposure", "bounces", "ambient_occlusion", "material_resolution"});
+  v.check_keys({"resolution", "samples", "noise_threshold", "min_samples", "exposure", "bounces", "ambient_occlusion",
+                "material_resolution"});
   if (const Value r = v.child("resolution"); r.present()) {
     if (r.is_text()) {
       render.width = render.height = static_cast<int>(r.whole(1, kMaxResolution));
@@ -353,8 +354,15 @@ void read_render(const Value& v, RenderConfig& render) {
     }
   }
   if (v.child("samples").present()) render.samples = static_cast<int>(v.child("samples").whole(1, kMaxSamples));
-  if (v.child("exposure").present())
-    render.exposure_stops = v.child("exposure").number(-matgeom::kMaxExposureStops, matgeom::kMaxExposureStops);
+  if (v.child("noise_threshold").present()) render.noise_threshold = v.child("noise_threshold").number(0.0, 1.0);
+  if (v.child("min_samples").present())
+    render.min_samples = static_cast<int>(v.child("min_samples").whole(0, kMaxSamples));
+  if (const Value exposure = v.child("exposure"); exposure.present()) {
+    if (exposure.is_text() && exposure.text() == "auto")
+      render.exposure_stops = std::nullopt;
+    else
+      render.exposure_stops = exposure.number(-matgeom::kMaxExposureStops, matgeom::kMaxExposureStops);
+  }
   if (const Value b = v.child("bounces"); b.present()) {
     b.check_keys({"max", "diffuse", "glossy", "transmission"});
     if (b.child("max").present()) render.max_bounces = static_cast<int>(b.child("max").whole(0, kMaxBounces));

@@ -64,8 +64,13 @@ struct CameraConfig {
 
 struct RenderConfig {
   int width = 512, height = 512;
-  int samples = 64;
-  double exposure_stops = 0.0;
+  int samples = 64;  // per pixel; with a noise threshold the most a pixel takes
+  // Adaptive sampling as Cycles 3.4 (matrender::RenderSettings): 0 = off.
+  double noise_threshold = 0.0;
+  int min_samples = 0;  // 0: Cycles' automatic rule
+  // Applied to the images; none: the grey-card rule (matrender::grey_card_exposure), one value
+  // per object for all its views and variants.
+  std::optional<double> exposure_stops;
   int max_bounces = 12, max_diffuse_bounces = 4, max_glossy_bounces = 4, max_transmission_bounces = 12;
   // ORM's R: the standard error its estimate may have at most (ambient occlusion rays per
   // camera sample follow from it and the samples), and Cycles' AO distance.

@@ -100,6 +100,7 @@ ObjectRenderer::ObjectRenderer(const DatasetConfig& config, size_t object)
   grid_.theta_max = camera.theta_max_deg * kDegree;
   grid_.n_phi = camera.n_phi;
   grid_.n_theta = camera.n_theta;
+  exposure_stops_ = config.render.exposure_stops.value_or(matrender::grey_card_exposure(*built_.rig, grid_));
 }
 
 void ObjectRenderer::select_variant(const matgeom::MaterialVariant& variant) {
@@ -152,15 +153,26 @@ matlearn::CameraIntrinsics ObjectRenderer::intrinsics() const {
 
 int ObjectRenderer::ambient_occlusion_rays() const {
   const double error = config_.render.ambient_occlusion_error;
-  const double rays = 0.25 / (error * error * config_.render.samples);
+  // Sized for the pixels that take the fewest samples: with adaptive sampling, those that stop
+  // at the first check.
+  const double rays = 0.25 / (error * error * fewest_samples());
   return static_cast<int>(std::clamp(std::ceil(rays - 1e-9), 1.0, 65536.0));
 }
+
+matrender::RenderSettings ObjectRenderer::sampling_settings() const {
+  matrender::RenderSettings settings;
+  settings.samples_per_pixel = config_.render.samples;
+  settings.noise_threshold = config_.render.noise_threshold;
+  settings.min_samples = config_.render.min_samples;
+  return settings;
+}
+
+int ObjectRenderer::fewest_samples() const { return matrender::fewest_samples_per_pixel(sampling_settings()); }
 
 bool ObjectRenderer::render(size_t view, uint32_t seed, int threads, const std::atomic<bool>* cancel,
                             matlearn::FrameMaps& maps) {
   const RenderConfig& r = config_.render;
-  matrender::RenderSettings settings;
-  settings.samples_per_pixel = r.samples;
+  matrender::RenderSettings settings = sampling_settings();
   settings.seed = seed;
   settings.threads = threads;
   settings.max_bounces = r.max_bounces;
@@ -188,7 +200,7 @@ bool ObjectRenderer::render(size_t view, uint32_t seed, int threads, const std::
   maps.normal_tangent = std::move(frame.normal_tangent);
   maps.depth = std::move(frame.depth);
   maps.label = std::move(frame.label);
-  maps.exposure_stops = r.exposure_stops;
+  maps.exposure_stops = exposure_stops_;
   return true;
 }
 
@@ -262,16 +274,23 @@ std::string ObjectRenderer::provenance_json(const DatasetPlan& plan, size_t vari
   const int ao_rays = ambient_occlusion_rays();
   json["render"] = {{"renderer", "matpredict libmatrender (Principled BSDF path tracer, Cycles 3.4 conventions)"},
                     {"samples", r.samples},
+                    {"noise_threshold", r.noise_threshold},
+                    {"min_samples", r.min_samples},
+                    {"fewest_samples", fewest_samples()},
                     {"max_bounces", r.max_bounces},
                     {"max_diffuse_bounces", r.max_diffuse_bounces},
                     {"max_glossy_bounces", r.max_glossy_bounces},
                     {"max_transmission_bounces", r.max_transmission_bounces},
-                    {"exposure_stops", r.exposure_stops},
+                    {"exposure_stops", exposure_stops_},
+                    {"exposure_rule", r.exposure_stops ? "configured"
+                                                       : "grey card: a Lambertian card at the grid's centre facing the "
+                                                         "camera shows half its albedo, for its illuminance averaged over "
+                                                         "the grid's views (log2(683 pi / lux) - 1)"},
                     {"transparent_background", true},
                     {"ambient_occlusion",
                      {{"rays_per_sample", ao_rays},
                       {"distance_m", r.ambient_occlusion_distance_m},
-                      {"standard_error_at_most", 0.5 / std::sqrt(static_cast<double>(r.samples) * ao_rays)}}},
+                      {"standard_error_at_most", 0.5 / std::sqrt(static_cast<double>(fewest_samples()) * ao_rays)}}},
                     {"frame_seeds", seeds}};
   json["configuration"] = config_.canonical_yaml;
   return json.dump();

@@ -36,8 +36,10 @@ class ObjectRenderer {
   matlearn::CameraIntrinsics intrinsics() const;
 
   // Ambient occlusion rays per camera sample that meet the configured standard error:
-  // 0.5 / sqrt(samples x rays) <= error (a Bernoulli variance of at most 1/4).
+  // 0.5 / sqrt(fewest_samples() x rays) <= error (a Bernoulli variance of at most 1/4).
   int ambient_occlusion_rays() const;
+  // The fewest camera samples a pixel takes (adaptive sampling may stop pixels early).
+  int fewest_samples() const;
 
   // Renders one view with `seed`; false when cancelled (the maps are then incomplete).
   bool render(size_t view, uint32_t seed, int threads, const std::atomic<bool>* cancel, matlearn::FrameMaps& maps);
@@ -46,11 +48,15 @@ class ObjectRenderer {
   std::string provenance_json(const DatasetPlan& plan, size_t variant) const;
 
  private:
+  // The configuration's samples per pixel and adaptive sampling.
+  matrender::RenderSettings sampling_settings() const;
+
   const DatasetConfig& config_;
   size_t object_index_;
   const ObjectConfig& object_;
   matrender::BuiltScene built_;
   matgeom::CameraGridSpec grid_;
+  double exposure_stops_ = 0.0;  // the configuration's, or the grey-card rule's for this object
   std::vector<matlearn::SlotMaterial> slot_materials_;
   std::vector<std::vector<uint32_t>> slot_parts_;  // the parts of each slot
 };

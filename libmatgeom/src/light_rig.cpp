@@ -13,10 +13,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Luminous efficacy that defines the lumen: 683 lm per watt of 555 nm light. Blender watts are
-// radiometric, so lux = 683 x (W/m^2 weighted by the lamp colour's luminance).
-constexpr double kLumensPerWatt = 683.0;
-
 // Paper: "Two additional accent lights are added on the vertical axis at +-35 degrees. If
 // r > 0.15 m these accents are area lights; otherwise they are 10 degree spot lights".
 constexpr double kAccentElevation = 35.0 * kPi / 180.0;
@@ -87,9 +83,9 @@ double polygon_irradiance_per_radiance(const std::array<glm::dvec3, 4>& polygon,
 }
 
 // Radiant irradiance (W/m^2 weighted by colour luminance) from an area lamp on a small surface
-// at `point` whose normal points at the lamp's centre. Cycles' area lamp: one-sided (down its
-// -Z), uniform radiance L = P c / (4 a b) (docs/conventions.md, "Lamps").
-double area_lamp_irradiance(const RigLight& light, const glm::dvec3& point) {
+// at `point` with unit normal `normal`. Cycles' area lamp: one-sided (down its -Z), uniform
+// radiance L = P c / (4 a b) (docs/conventions.md, "Lamps").
+double area_lamp_irradiance(const RigLight& light, const glm::dvec3& point, const glm::dvec3& normal) {
   const glm::dvec3 axis_x(light.light_to_world[0]);
   const glm::dvec3 axis_y(light.light_to_world[1]);
   const glm::dvec3 backward(light.light_to_world[2]);
@@ -104,21 +100,25 @@ double area_lamp_irradiance(const RigLight& light, const glm::dvec3& point) {
                                           to_lamp + half_x + half_y, to_lamp - half_x + half_y};
   const double radiance =
       light.power * luminance(light.color) / (4.0 * light.size_x * light.size_y);
-  return radiance * polygon_irradiance_per_radiance(corners, glm::normalize(to_lamp));
+  return radiance * polygon_irradiance_per_radiance(corners, normal);
 }
 
-// Radiant irradiance from a radius-0 Cycles spot lamp on a small surface at `point` facing it:
-// E = I a(w) / d^2 with on-axis intensity I = P c / (4 pi) (not concentrated into the cone) and
-// a(w) = cos t smoothstep((cos t - cos_half) / ((1 - cos_half) blend)) inside the cone
-// (docs/conventions.md, "Lamps"; t is the angle from the spot's axis).
-double spot_lamp_irradiance(const RigLight& light, const glm::dvec3& point) {
+// Radiant irradiance from a radius-0 Cycles spot lamp on a small surface at `point` with unit
+// normal `normal`: E = I a(w) cos / d^2 with on-axis intensity I = P c / (4 pi) (not concentrated
+// into the cone), a(w) = cos t smoothstep((cos t - cos_half) / ((1 - cos_half) blend)) inside the
+// cone (docs/conventions.md, "Lamps"; t is the angle from the spot's axis) and cos that between
+// the normal and the direction to the lamp.
+double spot_lamp_irradiance(const RigLight& light, const glm::dvec3& point, const glm::dvec3& normal) {
   const glm::dvec3 forward = -glm::dvec3(light.light_to_world[2]);
   const glm::dvec3 to_point = point - glm::dvec3(light.light_to_world[3]);
   const double distance_squared = glm::dot(to_point, to_point);
   // A delta lamp gives no defined irradiance at its own position.
   if (!(distance_squared > 0.0)) return 0.0;
+  const double distance = std::sqrt(distance_squared);
+  const double cos_surface = std::min(1.0, -glm::dot(normal, to_point) / distance);
+  if (!(cos_surface > 0.0)) return 0.0;
 
-  const double cos_axis = glm::dot(forward, to_point) / std::sqrt(distance_squared);
+  const double cos_axis = glm::dot(forward, to_point) / distance;
   const double cos_half = std::cos(0.5 * light.spot_angle);
   if (!(cos_axis > cos_half)) return 0.0;
   double falloff = cos_axis;
@@ -129,7 +129,12 @@ double spot_lamp_irradiance(const RigLight& light, const glm::dvec3& point) {
     falloff *= s * s * (3.0 - 2.0 * s);
   }
   const double intensity = light.power * luminance(light.color) / (4.0 * kPi);
-  return intensity * falloff / distance_squared;
+  return intensity * falloff * cos_surface / distance_squared;
+}
+
+double lamp_irradiance(const RigLight& light, const glm::dvec3& point, const glm::dvec3& normal) {
+  return light.kind == RigLightKind::Area ? area_lamp_irradiance(light, point, normal)
+                                          : spot_lamp_irradiance(light, point, normal);
 }
 
 }  // namespace
@@ -142,10 +147,17 @@ double spot_lamp_irradiance(const RigLight& light, const glm::dvec3& point) {
 double rig_illuminance_lux(const std::vector<RigLight>& lights, const glm::dvec3& point) {
   double irradiance = 0.0;
   for (const RigLight& light : lights) {
-    irradiance += light.kind == RigLightKind::Area ? area_lamp_irradiance(light, point)
-                                                   : spot_lamp_irradiance(light, point);
+    const glm::dvec3 to_lamp = glm::dvec3(light.light_to_world[3]) - point;
+    const double distance = glm::length(to_lamp);
+    if (distance > 0.0) irradiance += lamp_irradiance(light, point, to_lamp / distance);
   }
-  return kLumensPerWatt * irradiance;
+  return kLuxPerWattPerSquareMetre * irradiance;
+}
+
+double card_illuminance_lux(const std::vector<RigLight>& lights, const glm::dvec3& point, const glm::dvec3& normal) {
+  double irradiance = 0.0;
+  for (const RigLight& light : lights) irradiance += lamp_irradiance(light, point, normal);
+  return kLuxPerWattPerSquareMetre * irradiance;
 }
 
 LightRig make_light_rig(const glm::dvec3& center, double radius, const LightRigOptions& options) {

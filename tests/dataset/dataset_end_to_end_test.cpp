@@ -3,6 +3,7 @@
 // back map by map with OpenImageIO and with libmatlearn's reader, and checked by --verify.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -197,6 +198,59 @@ TEST_CASE("A folder made with other settings is refused, not mixed with new fram
   CHECK_THAT(text_of(dir / "errors.txt"), Catch::Contains("this variant was made with other settings"));
   CHECK(text_of(dir / "out" / "vase" / "var000" / "metadata.json") == before);
   CHECK(run(common + " --spp 2") == 0);  // the same settings resume
+}
+
+TEST_CASE("Images are exposed by the grey-card rule unless an exposure is given", "[dataset]") {
+  // A near-white plaster vase: with the rule, the lit object sits well inside the 8-bit range
+  // (it rendered at about code 62 at exposure 0); a number given instead is applied as it is.
+  const fs::path dir = fs::temp_directory_path() / "matpredict_dataset_exposure";
+  fs::remove_all(dir);
+  write_material_folder(dir / "materials" / "plaster_white", {240, 240, 240}, 200, 0);
+  std::ofstream(dir / "white.yaml")
+      << "objects: [{builtin: vase, materials: {all: [{matsynth: materials/plaster_white}]}}]\n"
+         "camera: {grid: [1, 2]}\nrender: {resolution: 40, samples: 16}\n";
+  struct Exposed {
+    double stops = 0.0;
+    std::string rule;
+    double median_code = 0.0;
+    double clipped = 0.0;  // fraction of the object's pixels with a channel at 255
+  };
+  auto make = [&](const std::string& name, const std::string& options) {
+    REQUIRE(run("--config " + (dir / "white.yaml").string() + " --output " + (dir / name).string() + " " + options) == 0);
+    const fs::path variant = dir / name / "vase" / "var000";
+    const nlohmann::json render = nlohmann::json::parse(std::ifstream(variant / "metadata.json"))["provenance"]["render"];
+    Exposed exposed{render["exposure_stops"].get<double>(), render["exposure_rule"].get<std::string>()};
+    std::vector<int> codes;
+    size_t clipped = 0;
+    for (const char* stem : {"000", "001"}) {
+      const matlearn::Decoded image = matlearn::decode(variant / "images" / (std::string(stem) + ".png"));
+      for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+          if (image.at(x, y, 3) < 1.0f) continue;
+          codes.push_back(code(image, x, y, 1));
+          for (int c = 0; c < 3; ++c)
+            if (code(image, x, y, c) == 255) {
+              ++clipped;
+              break;
+            }
+        }
+    }
+    REQUIRE(codes.size() > 100);
+    std::nth_element(codes.begin(), codes.begin() + static_cast<long>(codes.size() / 2), codes.end());
+    exposed.median_code = codes[codes.size() / 2];
+    exposed.clipped = static_cast<double>(clipped) / static_cast<double>(codes.size());
+    return exposed;
+  };
+  const Exposed automatic = make("auto", ""), given = make("given", "--exposure 0");
+  CAPTURE(automatic.stops, automatic.median_code, automatic.clipped, given.median_code);
+  CHECK(automatic.rule.rfind("grey card", 0) == 0);
+  CHECK(automatic.stops > 0.5);
+  CHECK(automatic.median_code > 110.0);
+  CHECK(automatic.median_code < 245.0);
+  CHECK(automatic.clipped < 0.05);
+  CHECK(given.rule == "configured");
+  CHECK(given.stops == 0.0);
+  CHECK(given.median_code < automatic.median_code);
 }
 
 TEST_CASE("A material folder with no class is refused before anything is written", "[dataset]") {

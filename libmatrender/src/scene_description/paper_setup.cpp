@@ -1,7 +1,11 @@
 #include "matrender/paper_setup.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <fmt/format.h>
 
+#include "matgeom/image_writing.h"
 #include "matrender/rig_lights.h"
 
 namespace matrender {
@@ -14,6 +18,17 @@ matgeom::LightRig paper_rig(const matgeom::Sphere& bounds, std::optional<double>
 
 matgeom::LightRig paper_rig(const matgeom::TriangleMesh& surface, std::optional<double> target_lux) {
   return paper_rig(matgeom::minimal_enclosing_sphere(surface.positions), target_lux);
+}
+
+double grey_card_exposure(const matgeom::LightRig& rig, const matgeom::CameraGridSpec& grid) {
+  double illuminance = 0.0;
+  const std::vector<matgeom::GridCamera> cameras = matgeom::camera_grid(grid);
+  for (const matgeom::GridCamera& camera : cameras)
+    illuminance += matgeom::card_illuminance_lux(rig.lights, grid.center, glm::normalize(camera.position - grid.center));
+  illuminance /= static_cast<double>(cameras.size());
+  if (!(illuminance > 0.0)) return 0.0;
+  const double stops = std::log2(matgeom::kLuxPerWattPerSquareMetre * M_PI / illuminance) - kGreyCardHeadroomStops;
+  return std::clamp(stops, -matgeom::kMaxExposureStops, matgeom::kMaxExposureStops);
 }
 
 void add_rig(Scene& scene, const matgeom::LightRig& rig) {
