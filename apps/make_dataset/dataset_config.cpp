@@ -13,6 +13,7 @@
 #include "matgeom/builtin_objects.h"
 #include "matgeom/image_writing.h"
 #include "matgeom/input_file.h"
+#include "matlearn/dataset_writer.h"
 
 namespace make_dataset {
 namespace {
@@ -20,7 +21,8 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr int kMaxResolution = 16384;
-constexpr int kMaxSamples = 1 << 20;
+// The sample count map stores each pixel's samples in 16 bits.
+constexpr int kMaxSamples = matlearn::kMaxSampleCount;
 constexpr int kMaxGridSide = 4096;
 constexpr int kMaxBounces = 1024;
 
@@ -358,10 +360,14 @@ void read_render(const Value& v, RenderConfig& render) {
   if (v.child("min_samples").present())
     render.min_samples = static_cast<int>(v.child("min_samples").whole(0, kMaxSamples));
   if (const Value exposure = v.child("exposure"); exposure.present()) {
-    if (exposure.is_text() && exposure.text() == "auto")
+    const std::string text = exposure.text();
+    if (text == "auto")
       render.exposure_stops = std::nullopt;
+    else if (app_support::number_problem(text, -matgeom::kMaxExposureStops, matgeom::kMaxExposureStops, false))
+      exposure.fail(fmt::format("expected auto or a number of stops from {} to {}, got {}", -matgeom::kMaxExposureStops,
+                                matgeom::kMaxExposureStops, text));
     else
-      render.exposure_stops = exposure.number(-matgeom::kMaxExposureStops, matgeom::kMaxExposureStops);
+      render.exposure_stops = *app_support::finite_number(text);
   }
   if (const Value b = v.child("bounces"); b.present()) {
     b.check_keys({"max", "diffuse", "glossy", "transmission"});

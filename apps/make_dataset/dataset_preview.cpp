@@ -15,6 +15,7 @@
 #include "matgeom/atomic_file.h"
 #include "matgeom/image_writing.h"
 #include "matgeom/material_classes.h"
+#include "matlearn/dataset_writer.h"
 #include "matlearn/decoded_image.h"
 
 namespace make_dataset {
@@ -36,7 +37,7 @@ struct Column {
   const char* folder;
   const char* extension;
 };
-constexpr std::array<Column, 9> kColumns = {{{"image", "images", ".png"},
+constexpr std::array<Column, 10> kColumns = {{{"image", "images", ".png"},
                                              {"albedo", "albedo", ".png"},
                                              {"roughness", "ORM", ".png"},
                                              {"metallic", "ORM", ".png"},
@@ -44,19 +45,45 @@ constexpr std::array<Column, 9> kColumns = {{{"image", "images", ".png"},
                                              {"normal (world)", "normal_obj", ".png"},
                                              {"normal (map)", "normal_mat", ".png"},
                                              {"depth", "depth", ".exr"},
-                                             {"label", "label", ".png"}}};
+                                             {"label", "label", ".png"},
+                                             {"samples", "sample_count", ".png"}}};
 
-// A frame drawn as the columns show it: width x height RGB per column.
-std::vector<std::vector<Rgb>> draw_frame(const fs::path& variant, const std::string& stem) {
+// A heat map of t in [0, 1], dark purple (few) through red to pale yellow (many): five
+// display-encoded stops of matplotlib's "inferno", linearly interpolated.
+Rgb heat(float t) {
+  constexpr std::array<Rgb, 5> kStops = {{{0.001f, 0.000f, 0.014f},
+                                          {0.258f, 0.039f, 0.406f},
+                                          {0.735f, 0.216f, 0.330f},
+                                          {0.988f, 0.645f, 0.040f},
+                                          {0.988f, 1.000f, 0.645f}}};
+  const float x = std::clamp(t, 0.0f, 1.0f) * static_cast<float>(kStops.size() - 1);
+  const size_t k = std::min(kStops.size() - 2, static_cast<size_t>(x));
+  const float f = x - static_cast<float>(k);
+  Rgb rgb;
+  for (size_t c = 0; c < 3; ++c) rgb[c] = kStops[k][c] + f * (kStops[k + 1][c] - kStops[k][c]);
+  return rgb;
+}
+
+// A frame drawn as the columns show it: width x height RGB per column. The sample counts are
+// drawn as a heat map of the fraction of max_samples (the render's; 0: unknown, the frame's
+// most) each pixel took, over the background too; a dataset without them (the repository's)
+// leaves that column grey.
+std::vector<std::vector<Rgb>> draw_frame(const fs::path& variant, const std::string& stem, int max_samples) {
   std::map<std::string, Map> maps;
+  const bool sample_counts = fs::is_directory(variant / "sample_count");
   for (const Column& column : kColumns)
-    if (!maps.count(column.folder)) maps[column.folder] = matlearn::decode(variant / column.folder / (stem + column.extension));
+    if (!maps.count(column.folder) && (sample_counts || std::string(column.folder) != "sample_count"))
+      maps[column.folder] = matlearn::decode(variant / column.folder / (stem + column.extension));
   const Map& label = maps.at("label");
   const Map& depth = maps.at("depth");
   const int w = label.width, h = label.height;
   for (const auto& [folder, map] : maps)
     if (map.width != w || map.height != h)
       throw std::runtime_error((variant / folder / stem).string() + ": its size differs from the frame's label map");
+  float most_samples = static_cast<float>(max_samples);
+  if (sample_counts && max_samples <= 0)
+    for (const float count : maps.at("sample_count").values)
+      most_samples = std::max(most_samples, count * static_cast<float>(matlearn::kMaxSampleCount));
   // Depth normalised over the object: near bright, far dark.
   float near = INFINITY, far = -INFINITY;
   for (int y = 0; y < h; ++y)
@@ -89,6 +116,9 @@ std::vector<std::vector<Rgb>> draw_frame(const fs::path& variant, const std::str
       const std::array<uint8_t, 3> colour = matgeom::label_colour(id);
       columns[8][p] = object ? Rgb{colour[0] / 255.0f, colour[1] / 255.0f, colour[2] / 255.0f}
                              : Rgb{kBackground, kBackground, kBackground};
+      columns[9][p] = sample_counts ? heat(maps.at("sample_count").at(x, y, 0) *
+                                           static_cast<float>(matlearn::kMaxSampleCount) / std::max(1.0f, most_samples))
+                                    : Rgb{kBackground, kBackground, kBackground};
     }
   return columns;
 }
@@ -138,6 +168,7 @@ struct VariantSheet {
   std::vector<std::string> stems;  // the rows
   std::string materials;           // "all: wood_raw_1 (wood)"
   std::string settings;            // "128 x 128, 32 spp"
+  int max_samples = 0;             // the render's samples per pixel, where metadata.json says
   int cell_width = 0;              // pixels, for the page's column headings
 };
 
@@ -165,9 +196,11 @@ VariantSheet write_sheet(const fs::path& variant, const fs::path& out, const Pre
       sheet.materials += (sheet.materials.empty() ? "" : "; ") + slot + ": " + used.value("material", "?") + " (" +
                          used.value("material_family", "?") + ")";
     const nlohmann::json summary = metadata.value("render_summary", nlohmann::json::object());
-    if (summary.contains("resolution") && summary.contains("samples"))
+    if (summary.contains("resolution") && summary.contains("samples") && summary["samples"].is_number_integer()) {
+      sheet.max_samples = summary["samples"].get<int>();
       sheet.settings = fmt::format("{} x {}, {} spp", summary["resolution"].value("width", 0),
-                                   summary["resolution"].value("height", 0), summary["samples"].get<int>());
+                                   summary["resolution"].value("height", 0), sheet.max_samples);
+    }
   }
 
   const int w = transforms.at("w").get<int>(), h = transforms.at("h").get<int>();
@@ -178,7 +211,8 @@ VariantSheet write_sheet(const fs::path& variant, const fs::path& out, const Pre
   const int sheet_h = static_cast<int>(rows) * (ch + kGapPixels) + kGapPixels;
   std::vector<float> pixels(static_cast<size_t>(sheet_w) * static_cast<size_t>(sheet_h) * 3, kGap);
   for (size_t r = 0; r < rows; ++r) {
-    const std::vector<std::vector<Rgb>> columns = draw_frame(variant, sheet.stems[r]);
+    const std::vector<std::vector<Rgb>> columns =
+        draw_frame(variant, sheet.stems[r], sheet.max_samples);
     for (size_t c = 0; c < columns.size(); ++c) {
       const std::vector<Rgb> cell = shrink(columns[c], w, h, cw, ch);
       const int ox = kGapPixels + static_cast<int>(c) * (cw + kGapPixels);

@@ -81,7 +81,8 @@ ordered_json matrix_json(const glm::dmat4& m) {
 uint32_t dataset_aovs() {
   using P = matrender::MaterialParameter;
   return matrender::AovAlpha | matrender::AovNormalWorld | matrender::AovNormalTangent | matrender::AovDepth |
-         matrender::AovLabel | matrender::AovAmbientOcclusion | matrender::parameter_aov(P::BaseColor) |
+         matrender::AovLabel | matrender::AovAmbientOcclusion | matrender::AovSampleCount |
+         matrender::parameter_aov(P::BaseColor) |
          matrender::parameter_aov(P::Roughness) | matrender::parameter_aov(P::Metallic);
 }
 
@@ -200,6 +201,7 @@ bool ObjectRenderer::render(size_t view, uint32_t seed, int threads, const std::
   maps.normal_tangent = std::move(frame.normal_tangent);
   maps.depth = std::move(frame.depth);
   maps.label = std::move(frame.label);
+  maps.sample_count = std::move(frame.sample_count);
   maps.exposure_stops = exposure_stops_;
   return true;
 }

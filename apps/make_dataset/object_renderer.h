@@ -14,8 +14,8 @@
 
 namespace make_dataset {
 
-// The AOVs a dataset frame needs: coverage, normals, depth, label, ambient occlusion, base
-// colour, roughness and metallic.
+// The AOVs a dataset frame needs: coverage, normals, depth, label, ambient occlusion, the
+// sample count, base colour, roughness and metallic.
 uint32_t dataset_aovs();
 
 class ObjectRenderer {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 
 #include <fmt/format.h>
@@ -40,9 +41,8 @@ nlohmann::json read_json(const fs::path& file, std::vector<std::string>& problem
 }
 
 // The label ids the variant's metadata.json says it uses.
-std::set<int> used_labels(const fs::path& folder, std::vector<std::string>& problems) {
+std::set<int> used_labels(const fs::path& folder, const nlohmann::json& metadata, std::vector<std::string>& problems) {
   std::set<int> labels;
-  const nlohmann::json metadata = read_json(folder / "metadata.json", problems);
   if (!metadata.is_object()) return labels;
   const auto used = metadata.find("used_materials");
   if (used == metadata.end() || !used->is_object()) {
@@ -59,10 +59,44 @@ std::set<int> used_labels(const fs::path& folder, std::vector<std::string>& prob
   return labels;
 }
 
-void verify_frame(const fs::path& folder, const std::string& stem, int width, int height,
-                  const std::set<int>& labels, std::vector<std::string>& problems) {
+// What every frame of a variant must agree with.
+struct VariantExpectations {
+  int width = 0, height = 0;
+  std::set<int> labels;       // metadata.json's used_materials
+  std::optional<int> samples;  // metadata.json's provenance.render.samples, where it says
+};
+
+// The most samples a pixel may have taken, as the variant's metadata.json states it.
+std::optional<int> stated_samples(const nlohmann::json& metadata) {
+  if (!metadata.is_object()) return std::nullopt;
+  const nlohmann::json::json_pointer pointer("/provenance/render/samples");
+  if (!metadata.contains(pointer) || !metadata[pointer].is_number_integer()) return std::nullopt;
+  return metadata[pointer].get<int>();
+}
+
+// A sample count map's problems: pixels without a sample, or with more than the render took.
+void verify_sample_counts(const fs::path& file, const matlearn::Decoded& counts, std::optional<int> samples,
+                          std::vector<std::string>& problems) {
+  size_t none = 0, beyond = 0;
+  for (const float value : counts.values) {
+    const long count = std::lround(value * static_cast<float>(matlearn::kMaxSampleCount));
+    if (count < 1) ++none;
+    if (samples && count > *samples) ++beyond;
+  }
+  if (none > 0) problems.push_back(fmt::format("{}: {} pixels took no sample", file.string(), none));
+  if (beyond > 0)
+    problems.push_back(fmt::format("{}: {} pixels took more than the {} samples metadata.json states", file.string(),
+                                   beyond, *samples));
+}
+
+void verify_frame(const fs::path& folder, const std::string& stem, const VariantExpectations& expected,
+                  std::vector<std::string>& problems) {
+  const int width = expected.width, height = expected.height;
   std::map<DatasetMap, matlearn::Decoded> maps;
   for (const matlearn::DatasetMapInfo& info : matlearn::dataset_maps()) {
+    // Our own maps are checked where the variant has their folder: the repository's datasets
+    // have none of them.
+    if (!info.repository && !fs::is_directory(folder / info.folder)) continue;
     const fs::path file = folder / info.folder / (stem + info.extension);
     if (!fs::is_regular_file(file)) {
       problems.push_back(file.string() + ": missing");
@@ -82,6 +116,9 @@ void verify_frame(const fs::path& folder, const std::string& stem, int width, in
     }
     maps.emplace(info.map, std::move(map));
   }
+  if (const auto counts = maps.find(DatasetMap::SampleCount); counts != maps.end())
+    verify_sample_counts(folder / "sample_count" / (stem + ".png"), counts->second, expected.samples, problems);
+  const std::set<int>& labels = expected.labels;
   const auto label = maps.find(DatasetMap::Label), depth = maps.find(DatasetMap::Depth), orm = maps.find(DatasetMap::Orm);
   if (label == maps.end()) return;
   const fs::path label_file = folder / "label" / (stem + ".png");
@@ -114,7 +151,10 @@ void verify_variant(const fs::path& folder, VerifyReport& report, std::set<std::
   std::vector<std::string>& problems = report.problems;
   const fs::path transforms_file = folder / "transforms.json";
   const nlohmann::json transforms = read_json(transforms_file, problems);
-  const std::set<int> labels = used_labels(folder, problems);
+  const nlohmann::json metadata = read_json(folder / "metadata.json", problems);
+  VariantExpectations expected;
+  expected.labels = used_labels(folder, metadata, problems);
+  expected.samples = stated_samples(metadata);
   if (!fs::is_regular_file(folder / "material_segmentation_map.json"))
     problems.push_back((folder / "material_segmentation_map.json").string() + ": missing");
   if (!transforms.is_object()) return;
@@ -123,7 +163,8 @@ void verify_variant(const fs::path& folder, VerifyReport& report, std::set<std::
     problems.push_back(transforms_file.string() + ": needs w, h and a frames list");
     return;
   }
-  const int width = transforms["w"].get<int>(), height = transforms["h"].get<int>();
+  expected.width = transforms["w"].get<int>();
+  expected.height = transforms["h"].get<int>();
   for (const nlohmann::json& frame : transforms["frames"]) {
     if (!frame.is_object() || !frame.contains("file_path") || !frame["file_path"].is_string() ||
         !frame.contains("transform_matrix") || !frame["transform_matrix"].is_array() ||
@@ -135,7 +176,7 @@ void verify_variant(const fs::path& folder, VerifyReport& report, std::set<std::
     const std::string stem = path.substr(path.rfind('/') + 1);
     ++report.frames;
     ids.insert(folder.parent_path().filename().string() + "/" + folder.filename().string() + "/" + stem);
-    verify_frame(folder, stem, width, height, labels, problems);
+    verify_frame(folder, stem, expected, problems);
   }
 }
 

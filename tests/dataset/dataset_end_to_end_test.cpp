@@ -200,6 +200,58 @@ TEST_CASE("A folder made with other settings is refused, not mixed with new fram
   CHECK(run(common + " --spp 2") == 0);  // the same settings resume
 }
 
+// A frame's sample counts, decoded from its 16-bit map.
+std::vector<int> sample_counts(const fs::path& variant, const std::string& stem) {
+  const matlearn::Decoded map = matlearn::decode(variant / "sample_count" / (stem + ".png"));
+  REQUIRE(map.channels == 1);
+  std::vector<int> counts;
+  for (const float v : map.values) counts.push_back(static_cast<int>(std::lround(v * 65535.0f)));
+  return counts;
+}
+
+TEST_CASE("Every pixel of a fixed-sample dataset took the samples the render states", "[dataset]") {
+  const fs::path& root = tiny_dataset();
+  for (const matlearn::SampleId& id : matlearn::index_dataset(root))
+    for (const int count : sample_counts(root / id.object / id.variant, id.stem)) REQUIRE(count == 8);
+}
+
+TEST_CASE("With a noise threshold, pixels stop where the image has converged", "[dataset]") {
+  // Threshold 0.05: Cycles' automatic minimum is ceil(16 / 0.05^0.3) = 40 samples, so pixels are
+  // first checked after 48; the bare background has no noise and stops there.
+  const fs::path dir = fs::temp_directory_path() / "matpredict_dataset_adaptive";
+  fs::remove_all(dir);
+  REQUIRE(run("--objects vase --materials plastic:1 --grid 1x2 --resolution 40 --material-resolution 16 --spp 256 "
+              "--noise-threshold 0.05 --output " + (dir / "out").string()) == 0);
+  CHECK(run("--verify " + (dir / "out").string()) == 0);
+  const fs::path variant = dir / "out" / "vase" / "var000";
+  const nlohmann::json render = nlohmann::json::parse(std::ifstream(variant / "metadata.json"))["provenance"]["render"];
+  CHECK(render["noise_threshold"].get<double>() == 0.05);
+  CHECK(render["fewest_samples"].get<int>() == 48);
+  size_t object_pixels = 0;
+  double object_samples = 0.0;
+  for (const char* stem : {"000", "001"}) {
+    const std::vector<int> counts = sample_counts(variant, stem);
+    const matlearn::Decoded depth = matlearn::decode(variant / "depth" / (std::string(stem) + ".exr"));
+    for (int y = 1; y + 1 < depth.height; ++y)
+      for (int x = 1; x + 1 < depth.width; ++x) {
+        const int count = counts[static_cast<size_t>(y * depth.width + x)];
+        REQUIRE(count >= 48);
+        REQUIRE(count <= 256);
+        bool background = true, object = true;  // the whole 3 x 3 neighbourhood
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const float coverage = depth.at(x + dx, y + dy, 3);
+            background &= coverage == 0.0f;
+            object &= coverage == 1.0f;
+          }
+        if (background) CHECK(count == 48);
+        if (object) ++object_pixels, object_samples += count;
+      }
+  }
+  REQUIRE(object_pixels > 50);
+  CHECK(object_samples / static_cast<double>(object_pixels) > 64.0);
+}
+
 TEST_CASE("Images are exposed by the grey-card rule unless an exposure is given", "[dataset]") {
   // A near-white plaster vase: with the rule, the lit object sits well inside the 8-bit range
   // (it rendered at about code 62 at exposure 0); a number given instead is applied as it is.

@@ -83,6 +83,7 @@ FrameMaps test_frame() {
     }
     maps.depth.push_back(hit ? 2.0f + 0.001f * static_cast<float>(p) : 0.0f);
     maps.label.push_back(hit ? 7 : 0);
+    maps.sample_count.push_back(hit ? 300 + static_cast<int32_t>(p) : 48);  // beyond 8 bits
   }
   return maps;
 }
@@ -101,7 +102,7 @@ TEST_CASE("Frame stems are zero-padded to the largest index, at least 3 digits, 
   CHECK(std::is_sorted(stems.begin(), stems.end()));
 }
 
-TEST_CASE("A frame's seven maps hold the documented encodings", "[learn]") {
+TEST_CASE("A frame's eight maps hold the documented encodings", "[learn]") {
   const fs::path variant = fresh_dir("matpredict_writer_frame") / "vase" / "var000";
   const FrameMaps maps = test_frame();
   write_frame_maps(variant, "000", maps);
@@ -149,6 +150,11 @@ TEST_CASE("A frame's seven maps hold the documented encodings", "[learn]") {
   CHECK(at(normal_mat, 0, 0) * 255.0f == Approx(128));
   CHECK(at(normal_mat, 0, 2) == 1.0f);
 
+  // Sample counts: 16-bit, exact, at every pixel.
+  const std::vector<float> samples = stored_values(variant / "sample_count" / "000.png", w, h, channels);
+  REQUIRE(channels == 1);
+  for (size_t p = 0; p < maps.coverage.size(); ++p) CHECK(std::lround(samples[p] * 65535.0f) == maps.sample_count[p]);
+
   // The repository loader's rule finds the frame as a sample.
   CHECK(index_dataset(variant.parent_path().parent_path()).size() == 1);
 }
@@ -173,7 +179,7 @@ TEST_CASE("A frame is complete only when every map decodes whole at its size", "
     CHECK(entry.path().filename().string().rfind(".", 0) != 0);
 }
 
-TEST_CASE("Frame maps of the wrong size or with a label beyond 8 bits are refused, nothing written", "[learn]") {
+TEST_CASE("Frame maps of the wrong size, with a label beyond 8 bits or a sample count beyond 16 are refused, nothing written", "[learn]") {
   const fs::path variant = fresh_dir("matpredict_writer_refused") / "o" / "var000";
   FrameMaps maps = test_frame();
   maps.depth.pop_back();
@@ -181,6 +187,12 @@ TEST_CASE("Frame maps of the wrong size or with a label beyond 8 bits are refuse
   maps = test_frame();
   maps.label[0] = 300;
   CHECK_THROWS_WITH(write_frame_maps(variant, "000", maps), Catch::Contains("label 300 does not fit"));
+  for (const int32_t count : {0, 65536}) {
+    maps = test_frame();
+    maps.sample_count[3] = count;
+    CHECK_THROWS_WITH(write_frame_maps(variant, "000", maps),
+                      Catch::Contains("sample count " + std::to_string(count) + " does not fit"));
+  }
   CHECK_FALSE(fs::exists(variant / "images" / "000.png"));
 }
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# make_dataset --verify on a dataset damaged in four ways: a map cut short, a map missing, a label
-# id of a class the variant does not use, a split file listing a frame that is not there. Each is
-# reported with its file, and the exit code is 1.
+# make_dataset --verify on a dataset damaged in five ways: a map cut short, a map missing, a label
+# id of a class the variant does not use, sample counts of 0 and beyond the render's samples, a
+# split file listing a frame that is not there. Each is reported with its file, and the exit code
+# is 1.
 # Usage: verify_damaged_test.sh MAKE_DATASET CONFIG OUTPUT_FOLDER
 set -u
 binary=$1
@@ -20,6 +21,16 @@ path = sys.argv[1]
 image = Image.open(path)
 image.point(lambda v: 3 if v > 0 else 0).save(path)
 PY
+# A pixel that took no sample and one that took more than the render's samples.
+/usr/bin/python3 - "$output/box_without_uvs/var001/sample_count/001.png" <<'PY'
+import sys
+from PIL import Image
+path = sys.argv[1]
+image = Image.open(path)
+image.putpixel((0, 0), 0)
+image.putpixel((1, 0), 999)
+image.save(path)
+PY
 echo "  - box_without_uvs/var009/000" >> "$output/config/paper_random_v1.yaml"
 "$binary" --verify "$output" > "$output.log" 2>&1
 code=$?
@@ -27,7 +38,9 @@ status=0
 [ "$code" -eq 1 ] || { echo "exit code $code, expected 1"; status=1; }
 for expected in "cannot decode $variant/ORM/000.png" "var000/depth/001.exr: missing" \
     "var001/label/000.png: label 3 (leather) is not among the variant's used_materials" \
-    "paper_random_v1.yaml: lists box_without_uvs/var009/000, no frame of the dataset" "4 problems"; do
+    "var001/sample_count/001.png: 1 pixels took no sample" \
+    "var001/sample_count/001.png: 1 pixels took more than the 2 samples metadata.json states" \
+    "paper_random_v1.yaml: lists box_without_uvs/var009/000, no frame of the dataset" "6 problems"; do
   grep -qF "$expected" "$output.log" || { echo "not reported: $expected"; status=1; }
 done
 [ "$status" -eq 0 ] || cat "$output.log"

@@ -1,6 +1,6 @@
 #pragma once
 // Writing a dataset in the MatPredict repository's layout (docs/dataset_format.md), which its
-// readers load unchanged, with its weak points fixed: one table of the seven per-frame maps, the
+// readers load unchanged, with its weak points fixed: one table of the eight per-frame maps, the
 // maps of one frame from plain arrays, and the per-variant records (transforms.json,
 // metadata.json, material_segmentation_map.json). Needs no renderer: make_dataset connects
 // libmatrender's frames to it.
@@ -13,10 +13,14 @@
 
 namespace matlearn {
 
-// The seven maps of a frame, in the order a frame's files are staged: images/ last, because
-// readers look for it first, so a frame whose image exists has every other map too.
-enum class DatasetMap { Albedo, Orm, Depth, NormalMaterial, NormalObject, Label, Images };
-constexpr size_t kDatasetMapCount = 7;
+// The eight maps of a frame (the repository's seven and the sample count), in the order a frame's
+// files are staged: images/ last, because readers look for it first, so a frame whose image
+// exists has every other map too.
+enum class DatasetMap { Albedo, Orm, Depth, NormalMaterial, NormalObject, Label, SampleCount, Images };
+constexpr size_t kDatasetMapCount = 8;
+
+// The most camera samples the 16-bit sample count map holds.
+constexpr int32_t kMaxSampleCount = 65535;
 
 struct DatasetMapInfo {
   DatasetMap map;
@@ -24,6 +28,7 @@ struct DatasetMapInfo {
   const char* extension;       // ".png" or ".exr"
   int channels;                // as written
   const char* transforms_key;  // the frame's key for the file in transforms.json
+  bool repository;             // the MatPredict repository writes it too (not: ours only)
   const char* content;         // one line for the docs
 };
 const std::array<DatasetMapInfo, kDatasetMapCount>& dataset_maps();
@@ -51,13 +56,14 @@ struct FrameMaps {
   std::vector<float> normal_tangent;     // unit XYZ, the normal map's tangent space
   std::vector<float> depth;              // metres along the camera axis, from one hit sample
   std::vector<int32_t> label;            // label id from one hit sample, 0 where nothing hit
+  std::vector<int32_t> sample_count;     // camera samples the pixel took (adaptive sampling stops some early)
   double exposure_stops = 0.0;           // applied to the image before encoding
 };
 
-// Writes the frame's seven files into `variant_folder`'s map folders (made if missing), each
+// Writes the frame's eight files into `variant_folder`'s map folders (made if missing), each
 // under a temporary name renamed when all are written, images/ last (matgeom::AtomicFileSet):
 // after a crash a frame is there whole or not at all. Throws std::invalid_argument for arrays
-// of the wrong size or a label beyond 255, std::runtime_error naming the file a write failed on.
+// of the wrong size, a label beyond 255 or a sample count outside [1, 65535], std::runtime_error naming the file a write failed on.
 void write_frame_maps(const std::filesystem::path& variant_folder, const std::string& stem, const FrameMaps& maps);
 
 // Whether every map of the frame is there and decodes whole at width x height with its channel

@@ -17,19 +17,21 @@ namespace fs = std::filesystem;
 
 // The encodings, one line each, are the docs' table (docs/dataset_format.md, "Per frame").
 constexpr std::array<DatasetMapInfo, kDatasetMapCount> kMaps = {{
-    {DatasetMap::Albedo, "albedo", ".png", 4, "file_path_albedo",
+    {DatasetMap::Albedo, "albedo", ".png", 4, "file_path_albedo", true,
      "base colour, sRGB-encoded 8-bit, straight alpha = coverage"},
-    {DatasetMap::Orm, "ORM", ".png", 4, "file_path_orm",
+    {DatasetMap::Orm, "ORM", ".png", 4, "file_path_orm", true,
      "R ambient occlusion, G roughness, B metallic, linear 8-bit; A = 255 where the object is"},
-    {DatasetMap::Depth, "depth", ".exr", 4, "file_path_depth",
+    {DatasetMap::Depth, "depth", ".exr", 4, "file_path_depth", true,
      "R = G = B = depth along the camera axis in metres (32-bit float, never scaled by coverage); A = coverage"},
-    {DatasetMap::NormalMaterial, "normal_mat", ".png", 4, "file_path_normal_mat",
+    {DatasetMap::NormalMaterial, "normal_mat", ".png", 4, "file_path_normal_mat", true,
      "the normal map's tangent-space normal, 0.5 n + 0.5, 8-bit; A = 255 where the object is"},
-    {DatasetMap::NormalObject, "normal_obj", ".png", 4, "file_path_normal",
+    {DatasetMap::NormalObject, "normal_obj", ".png", 4, "file_path_normal", true,
      "world-space shading normal, 0.5 n + 0.5, 8-bit; A = 255 where the object is"},
-    {DatasetMap::Label, "label", ".png", 1, "file_path_label",
+    {DatasetMap::Label, "label", ".png", 1, "file_path_label", true,
      "material class id (8-bit grey) of one sample per pixel, nonzero exactly where coverage > 0"},
-    {DatasetMap::Images, "images", ".png", 4, "file_path",
+    {DatasetMap::SampleCount, "sample_count", ".png", 1, "file_path_sample_count", false,
+     "camera samples the pixel took (16-bit grey, every pixel): the render's samples, or fewer where adaptive sampling stopped it"},
+    {DatasetMap::Images, "images", ".png", 4, "file_path", true,
      "the render, sRGB-encoded 8-bit, straight alpha = coverage"},
 }};
 
@@ -59,6 +61,7 @@ void check_sizes(const FrameMaps& maps) {
   check_size(maps.normal_tangent, 3 * n, "normal_tangent");
   check_size(maps.depth, n, "depth");
   check_size(maps.label, n, "label");
+  check_size(maps.sample_count, n, "sample_count");
 }
 
 // A data map's pixel: the values where the object is, with A = 1 so that readers which
@@ -112,6 +115,10 @@ void write_frame_maps(const fs::path& variant_folder, const std::string& stem, c
   for (const int32_t label : maps.label)
     if (label < 0 || label > 255)
       throw std::invalid_argument("frame maps: label " + std::to_string(label) + " does not fit the 8-bit label map");
+  for (const int32_t count : maps.sample_count)
+    if (count < 1 || count > kMaxSampleCount)
+      throw std::invalid_argument("frame maps: sample count " + std::to_string(count) +
+                                  " does not fit the 16-bit sample count map (1 to 65535)");
   for (const DatasetMapInfo& info : kMaps) fs::create_directories(variant_folder / info.folder);
   matgeom::AtomicFileSet set(map_file(variant_folder, kMaps.back(), stem));
   auto path = [&](DatasetMap map) { return map_file(variant_folder, kMaps[static_cast<size_t>(map)], stem).string(); };
@@ -143,6 +150,9 @@ void write_frame_maps(const fs::path& variant_folder, const std::string& stem, c
   std::vector<float> label(n);
   for (size_t p = 0; p < n; ++p) label[p] = maps.coverage[p] > 0.0f ? static_cast<float>(maps.label[p]) : 0.0f;
   matgeom::write_data_png(path(DatasetMap::Label), w, h, 1, label.data(), 1.0, 0.0, false, &set);
+
+  const std::vector<float> sample_count(maps.sample_count.begin(), maps.sample_count.end());
+  matgeom::write_data_png(path(DatasetMap::SampleCount), w, h, 1, sample_count.data(), 1.0, 0.0, true, &set);
 
   matgeom::write_display_png(path(DatasetMap::Images), w, h, maps.color.data(), maps.coverage.data(),
                              maps.exposure_stops, &set);

@@ -52,7 +52,8 @@ void write_transforms(const fs::path& variant_folder, const CameraIntrinsics& k,
     ordered_json entry;
     // The repository's keys first, in its order, then the maps it does not list.
     for (const DatasetMap map : {DatasetMap::Images, DatasetMap::Albedo, DatasetMap::NormalObject, DatasetMap::Orm,
-                                 DatasetMap::Depth, DatasetMap::Label, DatasetMap::NormalMaterial}) {
+                                 DatasetMap::Depth, DatasetMap::Label, DatasetMap::NormalMaterial,
+                                 DatasetMap::SampleCount}) {
       const DatasetMapInfo& info = dataset_maps()[static_cast<size_t>(map)];
       entry[info.transforms_key] = std::string(info.folder) + "/" + frame.stem;  // no extension, as the repository
     }
