@@ -85,15 +85,15 @@ int main(int argc, char** argv) {
       make_dataset::ObjectRenderer renderer(config, object);
       renderer.select_variant(plan.variants[object][variant]);
       setup_seconds += seconds_since(setup);
-      fmt::print("{}: set up in {:.1f} s, {} AO rays per camera sample\n", name, seconds_since(setup),
-                 renderer.ambient_occlusion_rays());
+      fmt::print("{}: set up in {:.1f} s\n", name, seconds_since(setup));
       std::unique_ptr<make_dataset::ObjectRenderer> reference_renderer;
       for (int k = 0; k < views; ++k) {
         const size_t view = views == 1 ? plan.views / 2 : static_cast<size_t>(k) * (plan.views - 1) / static_cast<size_t>(views - 1);
         const uint32_t seed = make_dataset::frame_seed(config.seed, {object, variant, view});
         matlearn::FrameMaps maps;
         const Clock::time_point start = Clock::now();
-        renderer.render(view, seed, workers, nullptr, maps);
+        matrender::RenderStats stats;
+        renderer.render(view, seed, workers, nullptr, maps, &stats);
         const double seconds = seconds_since(start);
         const Clock::time_point written = Clock::now();
         matlearn::write_frame_maps(scratch / name, make_dataset::view_stem(plan, view), maps);
@@ -117,7 +117,10 @@ int main(int argc, char** argv) {
                               100.0 * image_errors.back(), ao_errors.back());
           ++referenced;
         }
-        fmt::print("{} variant {} view {}: {:.1f} s{}\n", name, variant, view, seconds, error);
+        fmt::print("{} variant {} view {}: {:.1f} s, {:.1f} rays per sample, AO standard error estimated {:.4f} "
+                   "(largest {:.4f}){}\n",
+                   name, variant, view, seconds, static_cast<double>(stats.rays) / static_cast<double>(stats.camera_samples),
+                   stats.occlusion_rms_standard_error, stats.occlusion_max_standard_error, error);
         std::fflush(stdout);
       }
     }

@@ -152,14 +152,6 @@ matlearn::CameraIntrinsics ObjectRenderer::intrinsics() const {
                                       config_.camera.vertical_fov_deg * kDegree);
 }
 
-int ObjectRenderer::ambient_occlusion_rays() const {
-  const double error = config_.render.ambient_occlusion_error;
-  // Sized for the pixels that take the fewest samples: with adaptive sampling, those that stop
-  // at the first check.
-  const double rays = 0.25 / (error * error * fewest_samples());
-  return static_cast<int>(std::clamp(std::ceil(rays - 1e-9), 1.0, 65536.0));
-}
-
 matrender::RenderSettings ObjectRenderer::sampling_settings() const {
   matrender::RenderSettings settings;
   settings.samples_per_pixel = config_.render.samples;
@@ -171,7 +163,7 @@ matrender::RenderSettings ObjectRenderer::sampling_settings() const {
 int ObjectRenderer::fewest_samples() const { return matrender::fewest_samples_per_pixel(sampling_settings()); }
 
 bool ObjectRenderer::render(size_t view, uint32_t seed, int threads, const std::atomic<bool>* cancel,
-                            matlearn::FrameMaps& maps) {
+                            matlearn::FrameMaps& maps, matrender::RenderStats* stats) {
   const RenderConfig& r = config_.render;
   matrender::RenderSettings settings = sampling_settings();
   settings.seed = seed;
@@ -183,12 +175,13 @@ bool ObjectRenderer::render(size_t view, uint32_t seed, int threads, const std::
   settings.transparent_background = true;
   using P = matrender::MaterialParameter;
   settings.aovs = dataset_aovs();
-  settings.ambient_occlusion_rays = ambient_occlusion_rays();
+  settings.ambient_occlusion_error = r.ambient_occlusion_error;
   settings.ambient_occlusion_distance = r.ambient_occlusion_distance_m;
   settings.cancel = cancel;
   matrender::FrameBuffers frame;
-  const matrender::RenderStats stats = matrender::render(built_.scene, view_camera(view), settings, frame);
-  if (stats.cancelled) return false;
+  const matrender::RenderStats result = matrender::render(built_.scene, view_camera(view), settings, frame);
+  if (stats) *stats = result;
+  if (result.cancelled) return false;
   maps.width = frame.width;
   maps.height = frame.height;
   maps.color = std::move(frame.color);
@@ -273,7 +266,6 @@ std::string ObjectRenderer::provenance_json(const DatasetPlan& plan, size_t vari
   ordered_json seeds = ordered_json::object();
   for (size_t view = 0; view < plan.views; ++view)
     seeds[view_stem(plan, view)] = frame_seed(config_.seed, {object, variant, view});
-  const int ao_rays = ambient_occlusion_rays();
   json["render"] = {{"renderer", "matpredict libmatrender (Principled BSDF path tracer, Cycles 3.4 conventions)"},
                     {"samples", r.samples},
                     {"noise_threshold", r.noise_threshold},
@@ -290,9 +282,11 @@ std::string ObjectRenderer::provenance_json(const DatasetPlan& plan, size_t vari
                                                          "the grid's views (log2(683 pi / lux) - 1)"},
                     {"transparent_background", true},
                     {"ambient_occlusion",
-                     {{"rays_per_sample", ao_rays},
-                      {"distance_m", r.ambient_occlusion_distance_m},
-                      {"standard_error_at_most", 0.5 / std::sqrt(static_cast<double>(fewest_samples()) * ao_rays)}}},
+                     {{"distance_m", r.ambient_occlusion_distance_m},
+                      {"standard_error_at_most", r.ambient_occlusion_error},
+                      {"rule", "each pixel traces occlusion rays from its hits until the standard error estimated from "
+                               "its own trials, sqrt(p (1 - p) / n) with p = (escaped + 1) / (n + 2), is at most the "
+                               "bound; stratified directions make the true error smaller"}}},
                     {"frame_seeds", seeds}};
   json["configuration"] = config_.canonical_yaml;
   return json.dump();

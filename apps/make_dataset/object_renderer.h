@@ -35,14 +35,13 @@ class ObjectRenderer {
   matlearn::FramePose view_pose(size_t view, const std::string& stem) const;
   matlearn::CameraIntrinsics intrinsics() const;
 
-  // Ambient occlusion rays per camera sample that meet the configured standard error:
-  // 0.5 / sqrt(fewest_samples() x rays) <= error (a Bernoulli variance of at most 1/4).
-  int ambient_occlusion_rays() const;
   // The fewest camera samples a pixel takes (adaptive sampling may stop pixels early).
   int fewest_samples() const;
 
-  // Renders one view with `seed`; false when cancelled (the maps are then incomplete).
-  bool render(size_t view, uint32_t seed, int threads, const std::atomic<bool>* cancel, matlearn::FrameMaps& maps);
+  // Renders one view with `seed`, its figures into *stats when given; false when cancelled (the
+  // maps are then incomplete).
+  bool render(size_t view, uint32_t seed, int threads, const std::atomic<bool>* cancel, matlearn::FrameMaps& maps,
+              matrender::RenderStats* stats = nullptr);
 
   // Everything needed to render a frame of the selected variant again, as a JSON object.
   std::string provenance_json(const DatasetPlan& plan, size_t variant) const;

@@ -17,7 +17,8 @@ namespace {
 // A floor at z = 0 and, when ceiling_height > 0, a ceiling above it, both 400 m wide so that their
 // edges lie far beyond any occlusion distance used here; the camera looks straight down at the
 // floor from below the ceiling.
-FrameBuffers render_floor(double ceiling_height, double distance, int spp, int rays, uint32_t aovs) {
+FrameBuffers render_floor(double ceiling_height, double distance, int spp, int rays, uint32_t aovs,
+                          double error = 0.0, RenderStats* stats = nullptr) {
   Scene scene;
   const uint32_t grey = scene.add_material(test_scenes::lambert(0.5f));
   scene.add_mesh(test_scenes::horizontal_square(400.0), {grey});
@@ -28,11 +29,25 @@ FrameBuffers render_floor(double ceiling_height, double distance, int spp, int r
   settings.samples_per_pixel = spp;
   settings.ambient_occlusion_rays = rays;
   settings.ambient_occlusion_distance = distance;
+  settings.ambient_occlusion_error = error;
   settings.aovs = aovs;
   settings.seed = 11;
   FrameBuffers frame;
-  render(scene, camera, settings, frame);
+  const RenderStats result = render(scene, camera, settings, frame);
+  if (stats) *stats = result;
   return frame;
+}
+
+// Root mean square of a - b over the pixels where `mask` > 0.
+double rms_difference(const std::vector<float>& a, const std::vector<float>& b, const std::vector<float>& mask) {
+  double sum = 0.0;
+  size_t n = 0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    if (!(mask[i] > 0.0f)) continue;
+    sum += (double(a[i]) - b[i]) * (double(a[i]) - b[i]);
+    ++n;
+  }
+  return n > 0 ? std::sqrt(sum / static_cast<double>(n)) : 0.0;
 }
 
 }  // namespace
@@ -105,11 +120,70 @@ TEST_CASE("The tangent-space normal AOV is the normal map's texel, (0, 0, 1) wit
   CHECK(bumpy_pixels > 50);
 }
 
+TEST_CASE("Ambient occlusion to an error bound stays within it at a fraction of the worst case's rays", "[render]") {
+  // Under a plane at h the unoccluded fraction is (h / d)^2 at every pixel: every pixel's error is
+  // its own, and their RMS must stay within the bound. An open floor (nothing within d) needs far
+  // fewer rays than the worst case 0.25 / error^2 per pixel, a half-occluded one about that many.
+  constexpr int kSpp = 16;
+  constexpr double kError = 0.02;
+  const double worst_case_trials = 0.25 / (kError * kError);
+  for (const double h : {0.0, 0.3, std::sqrt(0.5), 0.95}) {
+    const double expected = h > 0.0 ? h * h : 1.0;
+    RenderStats stats;
+    const FrameBuffers frame = render_floor(h, 1.0, kSpp, 0, AovAmbientOcclusion | AovAlpha, kError, &stats);
+    const std::vector<float> truth(frame.ambient_occlusion.size(), static_cast<float>(expected));
+    const double rms = rms_difference(frame.ambient_occlusion, truth, frame.alpha);
+    // Rays per pixel: the occlusion rays beside the camera samples' own (at most 2 each here: a
+    // lamp and a bounce ray, counted in both renders alike).
+    RenderStats fixed_stats;
+    render_floor(h, 1.0, kSpp, 1, AovAmbientOcclusion, 0.0, &fixed_stats);
+    const double pixels = static_cast<double>(frame.alpha.size());
+    const double occlusion_rays = (static_cast<double>(stats.rays) - (static_cast<double>(fixed_stats.rays) - kSpp * pixels)) / pixels;
+    CAPTURE(h, rms, occlusion_rays, stats.occlusion_rms_standard_error, stats.occlusion_max_standard_error);
+    CHECK(rms <= kError);
+    CHECK(stats.occlusion_rms_standard_error <= kError);
+    CHECK(stats.occlusion_max_standard_error <= kError);
+    if (h == 0.0) CHECK(occlusion_rays < 0.25 * worst_case_trials);
+    CHECK(occlusion_rays < 1.3 * worst_case_trials);
+  }
+}
+
+TEST_CASE("Ambient occlusion to an error bound agrees with a high-ray reference where occlusion varies", "[render]") {
+  // A ball resting on a floor: occlusion from none far away to nearly full at the contact.
+  Scene scene;
+  const uint32_t grey = scene.add_material(test_scenes::lambert(0.5f));
+  scene.add_mesh(test_scenes::horizontal_square(400.0), {grey});
+  scene.add_mesh(test_scenes::uv_sphere(0.3, 24, {0.0, 0.0, 0.3}), {grey});
+  scene.add_light(PointLight{glm::dvec3(1.0, -1.0, 2.0), 50.0, glm::dvec3(1.0)});
+  const Camera camera = Camera::look_at({1.2, -1.2, 0.9}, {0, 0, 0.15}, {0, 0, 1}, 0.8, 40, 30);
+  RenderSettings settings;
+  settings.aovs = AovAmbientOcclusion | AovAlpha;
+  settings.samples_per_pixel = 256;
+  settings.ambient_occlusion_rays = 64;  // 16,384 trials a pixel: standard error below 0.004
+  settings.seed = 5;
+  FrameBuffers reference, bounded;
+  render(scene, camera, settings, reference);
+  constexpr double kError = 0.02;
+  settings.samples_per_pixel = 32;
+  settings.ambient_occlusion_error = kError;
+  settings.seed = 6;
+  const RenderStats stats = render(scene, camera, settings, bounded);
+  const double rms = rms_difference(bounded.ambient_occlusion, reference.ambient_occlusion, reference.alpha);
+  CAPTURE(rms, stats.occlusion_rms_standard_error);
+  // The reference's own noise adds in quadrature.
+  CHECK(rms <= std::sqrt(kError * kError + 0.004 * 0.004));
+  CHECK(stats.occlusion_rms_standard_error <= kError);
+}
+
 TEST_CASE("Ambient occlusion without rays or with a distance of 0 is refused", "[render]") {
   CHECK_THROWS_WITH(render_floor(0.5, 1.0, 1, 0, AovAmbientOcclusion),
                     "render: ambient occlusion needs at least 1 ray per sample and a distance in (0, 65536] m");
   CHECK_THROWS_WITH(render_floor(0.5, 0.0, 1, 1, AovAmbientOcclusion),
                     "render: ambient occlusion needs at least 1 ray per sample and a distance in (0, 65536] m");
+  CHECK_THROWS_WITH(render_floor(0.5, 1.0, 1, 0, AovAmbientOcclusion, 0.0001),
+                    "render: the ambient occlusion error must be 0 (a fixed ray count) or in [0.001, 0.5]");
+  CHECK_THROWS_WITH(render_floor(0.5, 1.0, 1, 0, AovAmbientOcclusion, std::nan("")),
+                    "render: the ambient occlusion error must be 0 (a fixed ray count) or in [0.001, 0.5]");
   // Settings the AOV does not use are not checked.
   CHECK_NOTHROW(render_floor(0.5, 0.0, 1, 0, AovAlpha));
 }

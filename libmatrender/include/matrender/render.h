@@ -44,12 +44,17 @@ struct RenderSettings {
   // hit point only, as Cycles 3.4 on the CPU (and always in cycles_parity).
   bool mipmaps = true;
   uint32_t aovs = default_aovs();
-  // Ambient occlusion (AovAmbientOcclusion): rays each camera sample that hits traces from its
-  // hit, and how far a surface may be to occlude (Cycles' AO node: 1 m). A pixel's estimate
-  // averages spp x rays Bernoulli trials, so its standard error is at most
-  // 0.5 / sqrt(spp x rays) (less: the directions are stratified).
-  int ambient_occlusion_rays = 4;
+  // Ambient occlusion (AovAmbientOcclusion): how far a surface may be to occlude (Cycles' AO
+  // node: 1 m), and how many rays each camera sample that hits traces from its hit. With
+  // ambient_occlusion_error > 0 each pixel traces as many as its own trials show it needs for a
+  // standard error of at most that (ambient_occlusion.h: a Bernoulli bound with the pixel's
+  // regularised estimate; open surfaces need far fewer than half-occluded ones), and
+  // ambient_occlusion_rays is not used. Otherwise every hit traces ambient_occlusion_rays, and
+  // a pixel's standard error is at most 0.5 / sqrt(hits x rays) (less: the directions are
+  // stratified).
   double ambient_occlusion_distance = 1.0;
+  double ambient_occlusion_error = 0.0;
+  int ambient_occlusion_rays = 4;
   // Called with the finished fraction of all samples in [0, 1], from a render thread, every 65,536
   // samples a thread takes and when a tile ends; calls are serialised and the fraction increases.
   std::function<void(double)> progress;
@@ -63,6 +68,10 @@ struct RenderStats {
   uint64_t camera_samples = 0;
   uint64_t rays = 0;               // closest-hit and shadow rays traced
   uint64_t discarded_samples = 0;  // path contributions that were NaN or Inf and were dropped
+  // Ambient occlusion's estimated standard error (OcclusionTally) over the pixels a sample hit:
+  // the root mean square and the largest.
+  double occlusion_rms_standard_error = 0.0;
+  double occlusion_max_standard_error = 0.0;
   bool cancelled = false;
 };
 

@@ -33,6 +33,8 @@ namespace matrender {
 namespace {
 
 constexpr int kTileSize = 16;
+// Below it the worst case, 0.25 / error^2, exceeds 250,000 rays per pixel.
+constexpr double kMinOcclusionError = 0.001;
 
 struct Tile {
   int x0, y0, x1, y1;
@@ -53,7 +55,8 @@ struct PixelAccumulator {
   glm::dvec3 color{0.0};
   glm::dvec3 second_estimate{0.0};  // adaptive sampling: the colour of the samples of its second half
   double coverage = 0.0;  // summed 1 - transparency of the camera rays
-  double unoccluded = 0.0;  // summed fraction of each hit's occlusion rays that escaped
+  OcclusionTally occlusion;
+  OcclusionSite last_hit;  // where occlusion rays the pixel still misses at the end start
   glm::vec3 normal{0.0f};
   uint32_t samples = 0;
   int32_t hits = 0;
@@ -88,10 +91,14 @@ void validate(const Camera& camera, const RenderSettings& settings) {
       settings.max_transmission_bounces < 0 || settings.max_transparent_bounces < 0)
     throw std::invalid_argument("render: bounce limits must be >= 0");
   if ((settings.aovs & AovAmbientOcclusion) &&
-      (settings.ambient_occlusion_rays < 1 ||
+      ((settings.ambient_occlusion_error == 0.0 && settings.ambient_occlusion_rays < 1) ||
        !(settings.ambient_occlusion_distance > 0.0 && settings.ambient_occlusion_distance <= kMaxSceneCoordinate)))
     throw std::invalid_argument("render: ambient occlusion needs at least 1 ray per sample and a distance in (0, " +
                                 std::to_string(static_cast<int64_t>(kMaxSceneCoordinate)) + "] m");
+  if ((settings.aovs & AovAmbientOcclusion) &&
+      !(settings.ambient_occlusion_error == 0.0 ||
+        (settings.ambient_occlusion_error >= kMinOcclusionError && settings.ambient_occlusion_error <= 0.5)))
+    throw std::invalid_argument("render: the ambient occlusion error must be 0 (a fixed ray count) or in [0.001, 0.5]");
 }
 
 }  // namespace
@@ -168,13 +175,19 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
   for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters)
     if (settings.aovs & parameter_aov(info.id)) parameter_aovs.push_back(&info);
   const bool ambient_occlusion = (settings.aovs & AovAmbientOcclusion) != 0;
-  const int occlusion_rays = settings.ambient_occlusion_rays;
+  const double occlusion_error = settings.ambient_occlusion_error;
   const float occlusion_distance = static_cast<float>(settings.ambient_occlusion_distance);
 
   // What one tile's thread counts before adding it to the render's totals.
   struct TileCounts {
     uint64_t rays = 0, discarded = 0, samples = 0, uncounted_slots = 0;
+    // Over the pixels finished, for RenderStats' occlusion figures.
+    double occlusion_squared_error = 0.0, occlusion_max_error = 0.0;
+    uint64_t occlusion_pixels = 0;
   };
+  // Each tile's occlusion figures, summed in tile order at the end so they do not depend on
+  // which thread finished first.
+  std::vector<TileCounts> tile_occlusion(tiles.size());
   auto pass_slots = [&](TileCounts& counts, uint64_t slots) {
     counts.uncounted_slots += slots;
     if (counts.uncounted_slots < kProgressSamples) return;
@@ -198,6 +211,7 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
     for (uint32_t first = begin; first < end; first += kPacketSamples) {
       if (cancel_requested()) return;
       const int count = static_cast<int>(std::min<uint32_t>(kPacketSamples, end - first));
+
       counts.samples += static_cast<uint64_t>(count);
       pass_slots(counts, static_cast<uint64_t>(count));
       const SamplePacket packet(seeds, first);
@@ -238,11 +252,14 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
         if (!frame.normal_tangent.empty())
           for (int c = 0; c < 3; ++c) frame.normal_tangent[3 * i + c] += sp.tangent_space_normal[c];
         if (ambient_occlusion) {
+          acc.last_hit = OcclusionSite::of(sp);
+          const int rays_now = occlusion_error > 0.0
+                                   ? occlusion_rays_per_hit(acc.occlusion, acc.samples, static_cast<uint32_t>(acc.hits),
+                                                            end - sample, occlusion_error)
+                                   : settings.ambient_occlusion_rays;
           uint32_t occlusion_rays_traced = 0;
-          acc.unoccluded += static_cast<double>(unoccluded_rays(data.accel, sp, occlusion_distance, occlusion_seeds,
-                                                                sample * static_cast<uint32_t>(occlusion_rays),
-                                                                occlusion_rays, &occlusion_rays_traced)) /
-                            occlusion_rays;
+          trace_occlusion_rays(data.accel, acc.last_hit, occlusion_distance, occlusion_seeds, rays_now, acc.occlusion,
+                               &occlusion_rays_traced);
           counts.rays += occlusion_rays_traced;
         }
         const float offset2 = glm::dot(offsets[lane], offsets[lane]);
@@ -254,10 +271,16 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
         }
       }
     }
+    if (occlusion_error > 0.0 && acc.hits > 0) {
+      uint32_t occlusion_rays_traced = 0;
+      top_up_occlusion(data.accel, acc.last_hit, occlusion_distance, occlusion_seeds, occlusion_error, acc.occlusion,
+                       &occlusion_rays_traced);
+      counts.rays += occlusion_rays_traced;
+    }
   };
 
   // Turns pixel i's sums into its values.
-  auto finish_pixel = [&](size_t i, const PixelAccumulator& acc) {
+  auto finish_pixel = [&](size_t i, const PixelAccumulator& acc, TileCounts& counts) {
     if (!frame.sample_count.empty()) frame.sample_count[i] = static_cast<int32_t>(acc.samples);
     if (acc.samples == 0) return;  // cancelled before it began
     const double inv_samples = 1.0 / static_cast<double>(acc.samples);
@@ -284,8 +307,15 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
       if (!frame.normal_world.empty()) frame.normal_world[3 * i + c] = normal[c];
       if (!frame.normal_camera.empty()) frame.normal_camera[3 * i + c] = normal_camera[c];
     }
-    if (!frame.ambient_occlusion.empty())
-      frame.ambient_occlusion[i] = static_cast<float>(acc.unoccluded / static_cast<double>(acc.hits));
+    if (!frame.ambient_occlusion.empty()) {
+      frame.ambient_occlusion[i] =
+          acc.occlusion.trials > 0 ? static_cast<float>(static_cast<double>(acc.occlusion.escaped) / acc.occlusion.trials)
+                                   : 0.0f;
+      const double error = acc.occlusion.standard_error();
+      counts.occlusion_squared_error += error * error;
+      counts.occlusion_max_error = std::max(counts.occlusion_max_error, error);
+      ++counts.occlusion_pixels;
+    }
     if (!frame.depth.empty()) frame.depth[i] = acc.depth;
     if (!frame.label.empty()) frame.label[i] = acc.label;
     if (!frame.part_id.empty()) frame.part_id[i] = acc.part;
@@ -308,6 +338,9 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
           discarded += counts.discarded;
           samples += counts.samples;
           count_slots(counts.uncounted_slots);
+          tile_occlusion[t].occlusion_squared_error += counts.occlusion_squared_error;
+          tile_occlusion[t].occlusion_max_error = std::max(tile_occlusion[t].occlusion_max_error, counts.occlusion_max_error);
+          tile_occlusion[t].occlusion_pixels += counts.occlusion_pixels;
           // So that the texture levels the cache has dropped meanwhile are freed.
           release_pinned_texels();
         }
@@ -319,7 +352,7 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
     for_each_pixel([&](int x, int y, size_t i, TileCounts& counts) {
       PixelAccumulator acc;
       render_samples(x, y, 0, spp, acc, counts);
-      finish_pixel(i, acc);
+      finish_pixel(i, acc, counts);
     });
   } else {
     // Rounds of samples for the whole image, each up to the next check; pixels the check finds
@@ -343,7 +376,7 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
       }
       begin = end;
     }
-    for_each_pixel([&](int, int, size_t i, TileCounts&) { finish_pixel(i, accumulators[i]); });
+    for_each_pixel([&](int, int, size_t i, TileCounts& counts) { finish_pixel(i, accumulators[i], counts); });
   }
 
   RenderStats stats;
@@ -352,6 +385,14 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
   stats.rays = ray_count;
   stats.discarded_samples = discarded;
   stats.cancelled = cancelled;
+  double occlusion_squared_error = 0.0;
+  uint64_t occlusion_pixels = 0;
+  for (const TileCounts& tile : tile_occlusion) {
+    occlusion_squared_error += tile.occlusion_squared_error;
+    occlusion_pixels += tile.occlusion_pixels;
+    stats.occlusion_max_standard_error = std::max(stats.occlusion_max_standard_error, tile.occlusion_max_error);
+  }
+  if (occlusion_pixels > 0) stats.occlusion_rms_standard_error = std::sqrt(occlusion_squared_error / occlusion_pixels);
   return stats;
 }
 
