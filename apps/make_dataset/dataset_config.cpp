@@ -343,8 +343,8 @@ void read_camera(const Value& v, CameraConfig& camera) {
 }
 
 void read_render(const Value& v, RenderConfig& render) {
-  v.check_keys({"resolution", "samples", "noise_threshold", "min_samples", "exposure", "bounces", "ambient_occlusion",
-                "material_resolution"});
+  v.check_keys({"resolution", "samples", "noise_threshold", "min_samples", "denoise", "exposure", "bounces",
+                "ambient_occlusion", "material_resolution"});
   if (const Value r = v.child("resolution"); r.present()) {
     if (r.is_text()) {
       render.width = render.height = static_cast<int>(r.whole(1, kMaxResolution));
@@ -357,6 +357,7 @@ void read_render(const Value& v, RenderConfig& render) {
   }
   if (v.child("samples").present()) render.samples = static_cast<int>(v.child("samples").whole(1, kMaxSamples));
   if (v.child("noise_threshold").present()) render.noise_threshold = v.child("noise_threshold").number(0.0, 1.0);
+  if (v.child("denoise").present()) render.denoise = v.child("denoise").boolean();
   if (v.child("min_samples").present())
     render.min_samples = static_cast<int>(v.child("min_samples").whole(0, kMaxSamples));
   if (const Value exposure = v.child("exposure"); exposure.present()) {

@@ -68,6 +68,7 @@ struct RenderConfig {
   // Adaptive sampling as Cycles 3.4 (matrender::RenderSettings): 0 = off.
   double noise_threshold = 0.0;
   int min_samples = 0;  // 0: Cycles' automatic rule
+  bool denoise = false;  // matrender::RenderSettings::denoise
   // Applied to the images; none: the grey-card rule (matrender::grey_card_exposure), one value
   // per object for all its views and variants.
   std::optional<double> exposure_stops;

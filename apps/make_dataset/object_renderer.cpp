@@ -157,6 +157,7 @@ matrender::RenderSettings ObjectRenderer::sampling_settings() const {
   settings.samples_per_pixel = config_.render.samples;
   settings.noise_threshold = config_.render.noise_threshold;
   settings.min_samples = config_.render.min_samples;
+  settings.denoise = config_.render.denoise;
   return settings;
 }
 
@@ -271,6 +272,7 @@ std::string ObjectRenderer::provenance_json(const DatasetPlan& plan, size_t vari
                     {"noise_threshold", r.noise_threshold},
                     {"min_samples", r.min_samples},
                     {"fewest_samples", fewest_samples()},
+                    {"denoise", r.denoise},
                     {"max_bounces", r.max_bounces},
                     {"max_diffuse_bounces", r.max_diffuse_bounces},
                     {"max_glossy_bounces", r.max_glossy_bounces},

@@ -325,6 +325,10 @@ void add_render_options(CLI::App& app, Options& o) {
                "look textures up bilinearly at the hit point only, as Cycles 3.4 on the CPU, instead of "
                "filtering them over each camera ray's footprint")
       ->group(group);
+  app.add_flag("--denoise", o.denoise,
+               "filter the colour after rendering (an edge-avoiding a-trous wavelet guided by the base colour, "
+               "normal, depth, label and the colour's variance; docs/conventions.md, \"Denoising\")")
+      ->group(group);
   app.add_flag("--cycles-parity", o.cycles_parity,
                "reproduce Blender 3.4 Cycles' own estimators where they are biased (clearcoat: lamp "
                "reflections up to 1.76x too bright; the multiscatter GGX walk), for parity with images made in Blender")
@@ -433,6 +437,9 @@ void apply_render_options(const Options& o, SceneDescription& scene) {
   if (o.seed) s.seed = *o.seed;
   if (o.transparent) s.transparent_background = true;
   if (o.cycles_parity) s.cycles_parity = true;
+  if (o.denoise) s.denoise = true;
+  if (s.denoise && s.cycles_parity)
+    throw InputError("--denoise and --cycles-parity exclude each other: Blender 3.4 in Debian has no denoiser");
   if (o.light_selection) s.light_selection = *o.light_selection;
   if (o.no_mipmaps) s.mipmaps = false;
   if (o.exposure) scene.exposure_stops = *o.exposure;

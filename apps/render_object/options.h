@@ -35,6 +35,7 @@ struct Options {
   // Each set value overrides the scene's (the scene file's camera and render block).
   std::optional<int> spp;
   std::optional<double> noise_threshold;
+  bool denoise = false;
   std::optional<int> min_samples;
   std::optional<uint32_t> seed;
   std::optional<int> width;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "matgeom/camera_grid.h"
+#include "matgeom/srgb.h"
 
 namespace matgeom {
 namespace {
@@ -21,9 +22,6 @@ constexpr double kAccentSpotAngle = 10.0 * kPi / 180.0;  // full cone, as Blende
 constexpr double kAccentSpotBlend = 0.15;                // Blender's default spot_blend
 
 const glm::dvec3 kLampColor(0.8, 0.8, 0.8);  // paper: neutral grey-white Blender RGB
-
-// Rec.709 luminance of a linear RGB colour.
-double luminance(const glm::dvec3& rgb) { return 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b; }
 
 // Paper: N_theta = ceil(4 + 2 r / 0.25), 6 <= N_theta <= 12.
 int ring_light_count(double radius) {
@@ -99,7 +97,7 @@ double area_lamp_irradiance(const RigLight& light, const glm::dvec3& point, cons
   const std::array<glm::dvec3, 4> corners{to_lamp - half_x - half_y, to_lamp + half_x - half_y,
                                           to_lamp + half_x + half_y, to_lamp - half_x + half_y};
   const double radiance =
-      light.power * luminance(light.color) / (4.0 * light.size_x * light.size_y);
+      light.power * rec709_luminance(light.color) / (4.0 * light.size_x * light.size_y);
   return radiance * polygon_irradiance_per_radiance(corners, normal);
 }
 
@@ -128,7 +126,7 @@ double spot_lamp_irradiance(const RigLight& light, const glm::dvec3& point, cons
     const double s = into_cone / smooth_width;
     falloff *= s * s * (3.0 - 2.0 * s);
   }
-  const double intensity = light.power * luminance(light.color) / (4.0 * kPi);
+  const double intensity = light.power * rec709_luminance(light.color) / (4.0 * kPi);
   return intensity * falloff * cos_surface / distance_squared;
 }
 

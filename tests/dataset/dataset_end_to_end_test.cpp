@@ -217,16 +217,18 @@ TEST_CASE("Every pixel of a fixed-sample dataset took the samples the render sta
 
 TEST_CASE("With a noise threshold, pixels stop where the image has converged", "[dataset]") {
   // Threshold 0.05: Cycles' automatic minimum is ceil(16 / 0.05^0.3) = 40 samples, so pixels are
-  // first checked after 48; the bare background has no noise and stops there.
+  // first checked after 48; the bare background has no noise and stops there. Denoised too: the
+  // filter changes the image only.
   const fs::path dir = fs::temp_directory_path() / "matpredict_dataset_adaptive";
   fs::remove_all(dir);
   REQUIRE(run("--objects vase --materials plastic:1 --grid 1x2 --resolution 40 --material-resolution 16 --spp 256 "
-              "--noise-threshold 0.05 --output " + (dir / "out").string()) == 0);
+              "--noise-threshold 0.05 --denoise true --output " + (dir / "out").string()) == 0);
   CHECK(run("--verify " + (dir / "out").string()) == 0);
   const fs::path variant = dir / "out" / "vase" / "var000";
   const nlohmann::json render = nlohmann::json::parse(std::ifstream(variant / "metadata.json"))["provenance"]["render"];
   CHECK(render["noise_threshold"].get<double>() == 0.05);
   CHECK(render["fewest_samples"].get<int>() == 48);
+  CHECK(render["denoise"].get<bool>());
   size_t object_pixels = 0;
   double object_samples = 0.0;
   for (const char* stem : {"000", "001"}) {

@@ -41,8 +41,11 @@ enum Aov : uint32_t {
   // The camera samples each pixel took: RenderSettings::samples_per_pixel everywhere unless
   // adaptive sampling stopped some pixels early.
   AovSampleCount = 1u << 8,
+  // The variance of the pixel's colour estimate (of the mean of its samples' Rec.709 luminance):
+  // what the denoiser weighs neighbours by.
+  AovColorVariance = 1u << 9,
 };
-constexpr uint32_t kFirstParameterAovBit = 9;
+constexpr uint32_t kFirstParameterAovBit = 10;
 static_assert(kFirstParameterAovBit + matgeom::kMaterialParameterCount <= 32, "AOV bits fit in 32");
 
 // The AOV of a material parameter: its value at the first hit, named as in the table.
@@ -53,7 +56,7 @@ constexpr uint32_t kGeometricAovs =
 
 // Every AOV.
 constexpr uint32_t all_aovs() {
-  uint32_t mask = kGeometricAovs | AovAmbientOcclusion | AovSampleCount;
+  uint32_t mask = kGeometricAovs | AovAmbientOcclusion | AovSampleCount | AovColorVariance;
   for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) mask |= parameter_aov(info.id);
   return mask;
 }
@@ -93,6 +96,7 @@ struct FrameBuffers {
   std::vector<int32_t> label;        // material label id
   std::vector<int32_t> part_id;      // part id, -1 for background
   std::vector<int32_t> sample_count;  // camera samples taken
+  std::vector<float> color_variance;  // of the mean luminance, from the spread of the samples
 
   std::vector<float>& parameter(MaterialParameter p) { return parameters[static_cast<size_t>(p)]; }
   const std::vector<float>& parameter(MaterialParameter p) const { return parameters[static_cast<size_t>(p)]; }

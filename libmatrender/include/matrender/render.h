@@ -39,6 +39,10 @@ struct RenderSettings {
   // estimator's image depends on the MIS weights.
   bool cycles_parity = false;
   LightSelection light_selection = LightSelection::Importance;
+  // Filter the colour after rendering (matrender/denoise.h), guided by AOVs the frame then holds
+  // too (kDenoiseGuideAovs) whether asked for or not. Not with cycles_parity: Blender 3.4 as
+  // Debian ships it has no denoiser to be on a par with.
+  bool denoise = false;
   // Filter textures over each camera ray's footprint (a ray cone, continued through mirrors and
   // glass) from their mip levels, so a 4k map seen from afar does not alias; off: bilinear at the
   // hit point only, as Cycles 3.4 on the CPU (and always in cycles_parity).

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "bsdf/microfacet_ggx.h"
+#include "matgeom/srgb.h"
 #include "util/channel_average.h"
 
 namespace matrender {
@@ -10,9 +11,6 @@ namespace {
 
 // Cycles' CLOSURE_WEIGHT_CUTOFF: closures weaker than this are not made.
 constexpr float kClosureWeightCutoff = 1e-5f;
-
-// Rec.709 luminance, Cycles' linear_rgb_to_gray for the default scene-linear space.
-float luminance(const glm::vec3& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
 
 // Cycles' glass: the Fresnel reflectance toward the viewer splits the glass weight between a
 // reflection (whose interpolated Fresnel is 1 unless specular tint colours it) and a refraction
@@ -69,7 +67,7 @@ PrincipledParameters::PrincipledParameters(const PrincipledInputs& inputs, Clear
   multiscatter = inputs.distribution == SpecularDistribution::MultiscatterGGX && roughness > 0.075f;
 
   // The base colour's hue: tint = base / lum (white for black), for the specular and sheen tints.
-  const float lum = luminance(base);
+  const float lum = matgeom::rec709_luminance(base);  // Cycles' linear_rgb_to_gray for scene-linear
   const glm::vec3 tint = lum > 0.0f ? base / lum : glm::vec3(1.0f);
 
   const float sheen = glm::clamp(inputs.scalar(MaterialParameter::Sheen), 0.0f, 1.0f);

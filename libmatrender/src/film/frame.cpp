@@ -27,6 +27,7 @@ void visit_buffers(FrameBuffers& frame, Visit&& visit) {
   visit(frame.label, AovLabel, 1, int32_t{0});
   visit(frame.part_id, AovPartId, 1, int32_t{-1});
   visit(frame.sample_count, AovSampleCount, 1, int32_t{0});
+  visit(frame.color_variance, AovColorVariance, 1, 0.0f);
 }
 
 }  // namespace
@@ -44,7 +45,8 @@ const std::vector<AovName>& aov_names() {
                              {"label", AovLabel},
                              {"part_id", AovPartId},
                              {"alpha", AovAlpha},
-                             {"sample_count", AovSampleCount}});
+                             {"sample_count", AovSampleCount},
+                             {"color_variance", AovColorVariance}});
     return list;
   }();
   return names;

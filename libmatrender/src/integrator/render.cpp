@@ -22,7 +22,9 @@
 #include "integrator/path_tracer.h"
 #include "lights/light_sampler.h"
 #include "matgeom/memory_limit.h"
+#include "matgeom/srgb.h"
 #include "matgeom/threads.h"
+#include "matrender/denoise.h"
 #include "matrender/scene_limits.h"
 #include "sampling/pixel_sampler.h"
 #include "scene/scene_data.h"
@@ -54,6 +56,7 @@ std::vector<Tile> make_tiles(int width, int height) {
 struct PixelAccumulator {
   glm::dvec3 color{0.0};
   glm::dvec3 second_estimate{0.0};  // adaptive sampling: the colour of the samples of its second half
+  double luminance_squares = 0.0;    // summed squared Rec.709 luminance of the samples, for the variance
   double coverage = 0.0;  // summed 1 - transparency of the camera rays
   OcclusionTally occlusion;
   OcclusionSite last_hit;  // where occlusion rays the pixel still misses at the end start
@@ -65,6 +68,11 @@ struct PixelAccumulator {
   int32_t label = 0;
   int32_t part = -1;
 };
+
+// The AOVs a render fills: those asked for, and the denoiser's guides when it runs.
+uint32_t rendered_aovs(const RenderSettings& settings) {
+  return settings.aovs | (settings.denoise ? kDenoiseGuideAovs : 0u);
+}
 
 void validate(const Camera& camera, const RenderSettings& settings) {
   if (camera.width < 1 || camera.height < 1)
@@ -80,22 +88,24 @@ void validate(const Camera& camera, const RenderSettings& settings) {
   if (settings.min_samples < 0) throw std::invalid_argument("render: min samples must be >= 0 (0: automatic)");
   const double pixels = static_cast<double>(camera.width) * static_cast<double>(camera.height);
   const bool adaptive = settings.noise_threshold > 0.0;
-  matgeom::require_memory(FrameBuffers::bytes_for(camera.width, camera.height, settings.aovs) +
+  matgeom::require_memory(FrameBuffers::bytes_for(camera.width, camera.height, rendered_aovs(settings)) +
                               (adaptive ? pixels * (sizeof(PixelAccumulator) + 1) : 0.0),
                           std::string(adaptive ? "the colour and AOV buffers and adaptive sampling's sums" : "the colour and AOV buffers") +
                               " of a " + std::to_string(camera.width) + " x " + std::to_string(camera.height) + " image",
                           "render");
   if (settings.samples_per_pixel < 1) throw std::invalid_argument("render: samples per pixel must be >= 1");
+  if (settings.denoise && settings.cycles_parity)
+    throw std::invalid_argument("render: the denoiser is no part of Cycles parity (Blender 3.4 in Debian has none)");
   if (settings.threads < 0) throw std::invalid_argument("render: threads must be >= 0");
   if (settings.max_bounces < 0 || settings.max_diffuse_bounces < 0 || settings.max_glossy_bounces < 0 ||
       settings.max_transmission_bounces < 0 || settings.max_transparent_bounces < 0)
     throw std::invalid_argument("render: bounce limits must be >= 0");
-  if ((settings.aovs & AovAmbientOcclusion) &&
+  if ((rendered_aovs(settings) & AovAmbientOcclusion) &&
       ((settings.ambient_occlusion_error == 0.0 && settings.ambient_occlusion_rays < 1) ||
        !(settings.ambient_occlusion_distance > 0.0 && settings.ambient_occlusion_distance <= kMaxSceneCoordinate)))
     throw std::invalid_argument("render: ambient occlusion needs at least 1 ray per sample and a distance in (0, " +
                                 std::to_string(static_cast<int64_t>(kMaxSceneCoordinate)) + "] m");
-  if ((settings.aovs & AovAmbientOcclusion) &&
+  if ((rendered_aovs(settings) & AovAmbientOcclusion) &&
       !(settings.ambient_occlusion_error == 0.0 ||
         (settings.ambient_occlusion_error >= kMinOcclusionError && settings.ambient_occlusion_error <= 0.5)))
     throw std::invalid_argument("render: the ambient occlusion error must be 0 (a fixed ray count) or in [0.001, 0.5]");
@@ -139,7 +149,8 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
   const std::optional<AdaptiveSampling> adaptive =
       AdaptiveSampling::from_settings(settings.noise_threshold, settings.min_samples);
 
-  frame.resize(camera.width, camera.height, settings.aovs);
+  const uint32_t aovs = rendered_aovs(settings);
+  frame.resize(camera.width, camera.height, aovs);
   frame.transparent_background = settings.transparent_background;
   const std::vector<Tile> tiles = make_tiles(camera.width, camera.height);
   const size_t pixel_count = static_cast<size_t>(camera.width) * static_cast<size_t>(camera.height);
@@ -170,11 +181,12 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
     return true;
   };
   // Without AOVs beyond alpha and the sample count a pixel only counts its hits.
-  const bool surface_aovs = (settings.aovs & ~static_cast<uint32_t>(AovAlpha | AovSampleCount)) != 0;
+  const bool surface_aovs = (aovs & ~static_cast<uint32_t>(AovAlpha | AovSampleCount | AovColorVariance)) != 0;
   std::vector<const matgeom::MaterialParameterInfo*> parameter_aovs;
   for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters)
-    if (settings.aovs & parameter_aov(info.id)) parameter_aovs.push_back(&info);
-  const bool ambient_occlusion = (settings.aovs & AovAmbientOcclusion) != 0;
+    if (aovs & parameter_aov(info.id)) parameter_aovs.push_back(&info);
+  const bool ambient_occlusion = (aovs & AovAmbientOcclusion) != 0;
+  const bool color_variance = (aovs & AovColorVariance) != 0;
   const double occlusion_error = settings.ambient_occlusion_error;
   const float occlusion_distance = static_cast<float>(settings.ambient_occlusion_distance);
 
@@ -229,6 +241,10 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
         counts.rays += path.rays;
         if (is_finite(path.radiance)) {
           acc.color += glm::dvec3(path.radiance);
+          if (color_variance) {
+            const double l = matgeom::rec709_luminance(path.radiance);
+            acc.luminance_squares += l * l;
+          }
           if (adaptive && in_second_estimate(shuffled_sobol_index(reverse_bits(sample), seeds.pair(0))))
             acc.second_estimate += glm::dvec3(path.radiance);
         } else {
@@ -287,6 +303,12 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
     const glm::dvec3 color = acc.color * inv_samples;
     for (int c = 0; c < 3; ++c) frame.color[3 * i + c] = static_cast<float>(color[c]);
     if (!frame.alpha.empty()) frame.alpha[i] = static_cast<float>(acc.coverage * inv_samples);
+    if (!frame.color_variance.empty() && acc.samples > 1) {
+      // The unbiased sample variance over n, the variance of the mean.
+      const double mean = matgeom::rec709_luminance(color);
+      const double spread = std::max(0.0, acc.luminance_squares * inv_samples - mean * mean);
+      frame.color_variance[i] = static_cast<float>(spread / (static_cast<double>(acc.samples) - 1.0));
+    }
     if (acc.hits == 0) return;
     const float inv_hits = 1.0f / static_cast<float>(acc.hits);
     const float normal_len = glm::length(acc.normal);
@@ -377,6 +399,12 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
       begin = end;
     }
     for_each_pixel([&](int, int, size_t i, TileCounts& counts) { finish_pixel(i, accumulators[i], counts); });
+  }
+
+  if (settings.denoise && !cancelled) {
+    DenoiseSettings denoising;
+    denoising.threads = settings.threads;
+    denoise(frame, denoising);
   }
 
   RenderStats stats;

@@ -1,5 +1,6 @@
 #include "matrender/image_io.h"
 
+#include <cmath>
 #include <filesystem>
 
 #include "matgeom/atomic_file.h"
@@ -61,6 +62,15 @@ std::vector<std::string> write_frame(const FrameBuffers& frame, const std::strin
   write_float_pass("normal_camera", frame.normal_camera, 3, {"X", "Y", "Z"}, 127.5, 127.5);
   write_float_pass("normal_tangent", frame.normal_tangent, 3, {"X", "Y", "Z"}, 127.5, 127.5);
   write_float_pass("ambient_occlusion", frame.ambient_occlusion, 1, {"Y"}, 255.0, 0.0);
+  // The PNG shows the standard error (its square root) on the colour's scale: 1 is white.
+  if (!frame.color_variance.empty()) {
+    std::vector<float> standard_error(frame.color_variance.size());
+    for (size_t k = 0; k < standard_error.size(); ++k) standard_error[k] = std::sqrt(frame.color_variance[k]);
+    written.push_back(file("color_variance", "exr"));
+    matgeom::write_exr(written.back(), w, h, {"Y"}, frame.color_variance.data(), &set);
+    written.push_back(file("color_variance", "png"));
+    matgeom::write_data_png(written.back(), w, h, 1, standard_error.data(), 255.0, 0.0, false, &set);
+  }
   if (!frame.depth.empty()) {
     written.push_back(file("depth", "exr"));
     matgeom::write_exr(written.back(), w, h, {"Z"}, frame.depth.data(), &set);

@@ -694,7 +694,7 @@ std::vector<ObjectDescription> read_objects(const Node& node, const fs::path& fo
 void read_render(const Node& node, SceneDescription& scene) {
   node.expect_keys({"spp", "noise_threshold", "min_samples", "seed", "max_bounces", "max_diffuse_bounces", "max_glossy_bounces",
                     "max_transmission_bounces", "max_transparent_bounces", "exposure",
-                    "transparent_background", "cycles_parity", "light_selection", "mipmaps"});
+                    "transparent_background", "cycles_parity", "light_selection", "mipmaps", "denoise"});
   RenderSettings& s = scene.settings;
   if (auto n = node.find("spp")) s.samples_per_pixel = n->integer_at_least(1);
   if (auto n = node.find("noise_threshold"))
@@ -712,6 +712,8 @@ void read_render(const Node& node, SceneDescription& scene) {
   if (auto n = node.find("transparent_background")) s.transparent_background = n->boolean();
   if (auto n = node.find("cycles_parity")) s.cycles_parity = n->boolean();
   if (auto n = node.find("mipmaps")) s.mipmaps = n->boolean();
+  if (auto n = node.find("denoise")) s.denoise = n->boolean();
+  if (s.denoise && s.cycles_parity) node.fail("denoise and cycles_parity exclude each other: Blender 3.4 in Debian has no denoiser");
   if (auto n = node.find("light_selection"))
     s.light_selection = n->choice({"importance", "uniform"}) == 0 ? LightSelection::Importance : LightSelection::Uniform;
 }
