@@ -20,6 +20,7 @@
 #include "dataset_run.h"
 #include "verify_dataset.h"
 #include "matgeom/memory_limit.h"
+#include "matlearn/dataset_writer.h"
 
 using make_dataset::InputError;
 using make_dataset::Override;
@@ -204,9 +205,11 @@ int make(const Options& options) {
                split.train.empty() || split.test.empty() || (split.val.empty() && split.strategy != "random")
                    ? " (too few groups to fill every split)"
                    : "");
-  fmt::print("wrote {} ({}): per object and variant images/, albedo/, ORM/, depth/, normal_mat/, normal_obj/, "
-             "label/, transforms.json, metadata.json; config/ holds the split files\n",
-             config.output, matgeom::byte_size_text(static_cast<double>(make_dataset::folder_bytes(config.output))));
+  std::string folders;
+  for (const matlearn::DatasetMapInfo& map : matlearn::dataset_maps()) folders += std::string(map.folder) + "/, ";
+  fmt::print("wrote {} ({}): per object and variant {}transforms.json, metadata.json; config/ holds the split files\n",
+             config.output, matgeom::byte_size_text(static_cast<double>(make_dataset::folder_bytes(config.output))),
+             folders);
   return 0;
 }
 
