@@ -287,7 +287,7 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
         }
       }
     }
-    if (occlusion_error > 0.0 && acc.hits > 0) {
+    if (ambient_occlusion && occlusion_error > 0.0 && acc.hits > 0) {
       uint32_t occlusion_rays_traced = 0;
       top_up_occlusion(data.accel, acc.last_hit, occlusion_distance, occlusion_seeds, occlusion_error, acc.occlusion,
                        &occlusion_rays_traced);
