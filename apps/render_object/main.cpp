@@ -53,12 +53,18 @@ void report_rig(const BuiltScene& built) {
              rig.power_scale == 1.0 ? "" : fmt::format(" (powers scaled by {:.3g})", rig.power_scale));
 }
 
-void report_summary(const matrender::RenderStats& stats, const BuiltScene& built, int spp) {
+void report_summary(const matrender::RenderStats& stats, const BuiltScene& built, const matrender::RenderSettings& settings) {
   const double seconds = std::max(stats.seconds, 1e-9);
-  fmt::print("rendered {}x{} at {} spp in {:.2f} s: {:.1f} M samples/s, {:.1f} M rays/s, {} discarded samples, "
+  const double pixels = static_cast<double>(built.camera.width) * static_cast<double>(built.camera.height);
+  const std::string adaptive =
+      settings.noise_threshold > 0.0
+          ? fmt::format(" (adaptive: {:.1f} a pixel on average)", static_cast<double>(stats.camera_samples) / pixels)
+          : "";
+  fmt::print("rendered {}x{} at {} spp{} in {:.2f} s: {:.1f} M samples/s, {:.1f} M rays/s, {} discarded samples, "
              "BVH {:.0f} ms\n",
-             built.camera.width, built.camera.height, spp, stats.seconds, stats.camera_samples / seconds * 1e-6,
-             stats.rays / seconds * 1e-6, stats.discarded_samples, built.scene.bvh_build_seconds() * 1e3);
+             built.camera.width, built.camera.height, settings.samples_per_pixel, adaptive, stats.seconds,
+             stats.camera_samples / seconds * 1e-6, stats.rays / seconds * 1e-6, stats.discarded_samples,
+             built.scene.bvh_build_seconds() * 1e3);
 }
 
 // Only scenes with image textures have texels to report.
@@ -89,7 +95,7 @@ int render_and_write(const Options& options) {
       matrender::write_frame(frame, options.output_folder, built.frame_stem, description.exposure_stops);
   report_files(files, options.output_folder);
   report_rig(built);
-  report_summary(stats, built, settings.samples_per_pixel);
+  report_summary(stats, built, settings);
   report_textures();
   // A signal that came while the files were written let them finish: they are complete, and the
   // exit code still says the run was asked to stop.
