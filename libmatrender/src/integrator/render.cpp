@@ -223,7 +223,6 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
     for (uint32_t first = begin; first < end; first += kPacketSamples) {
       if (cancel_requested()) return;
       const int count = static_cast<int>(std::min<uint32_t>(kPacketSamples, end - first));
-
       counts.samples += static_cast<uint64_t>(count);
       pass_slots(counts, static_cast<uint64_t>(count));
       const SamplePacket packet(seeds, first);
