@@ -10,10 +10,9 @@
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
+#include "bench_scenes.h"
 #include "image_error.h"
-#include "matrender/paper_setup.h"
 #include "matrender/render.h"
-#include "matrender/scene_builder.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"ambient_occlusion_bench: ambient occlusion to an error bound beside a fixed ray count"};
@@ -34,24 +33,9 @@ int main(int argc, char** argv) {
   fmt::print("| object | view | AO rays | seconds | rays per sample | AO RMSE against the reference | estimated RMS error |\n"
              "|---|---:|---|---:|---:|---:|---:|\n");
   for (const std::string& name : objects) {
-    matrender::SceneDescription scene;
-    matrender::MaterialDescription library;
-    library.library = matrender::LibraryMaterialRequest{matgeom::parse_library_material(material), 256, {}};
-    scene.materials.emplace("material", library);
-    matrender::ObjectDescription object;
-    object.source = matrender::BuiltinObject{name, 0};
-    object.material = "material";
-    scene.objects.push_back(object);
-    scene.lights = matrender::LightRigDescription{matrender::kPaperTargetIlluminanceLux};
-    scene.camera.placement = matrender::MatrixPlacement{};
-    matrender::BuiltScene built = matrender::build_scene(scene);
-    matgeom::CameraGridSpec grid;
-    grid.center = built.bounds.center;
-    const double fov = 0.6911;
-    grid.radius = built.bounds.radius / std::sin(0.5 * fov) / 0.9;
-    grid.n_phi = grid.n_theta = 2;
+    matrender::BuiltScene built = bench::builtin_in_library_material(name, material, 256);
     for (int view : {0, 1}) {
-      const matrender::Camera camera = matrender::grid_view(grid, view, view, resolution, resolution, fov);
+      const matrender::Camera camera = bench::framed_grid_view(built, view, resolution);
       matrender::RenderSettings settings;
       settings.threads = threads;
       settings.transparent_background = true;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "matgeom/tangents.h"
+#include "matrender/paper_setup.h"
 
 namespace bench {
 
@@ -65,5 +66,29 @@ double peak_rss_mib() { return status_mib("VmHWM:"); }
 double rss_mib() { return status_mib("VmRSS:"); }
 
 void reset_peak_rss() { std::ofstream("/proc/self/clear_refs") << "5"; }
+
+matrender::BuiltScene builtin_in_library_material(const std::string& object, const std::string& spec,
+                                                  int material_resolution) {
+  matrender::SceneDescription scene;
+  matrender::MaterialDescription material;
+  material.library = matrender::LibraryMaterialRequest{matgeom::parse_library_material(spec), material_resolution, {}};
+  scene.materials.emplace("material", material);
+  matrender::ObjectDescription description;
+  description.source = matrender::BuiltinObject{object, 0};
+  description.material = "material";
+  scene.objects.push_back(description);
+  scene.lights = matrender::LightRigDescription{matrender::kPaperTargetIlluminanceLux};
+  scene.camera.placement = matrender::MatrixPlacement{};
+  return matrender::build_scene(scene);
+}
+
+matrender::Camera framed_grid_view(const matrender::BuiltScene& built, int k, int resolution) {
+  constexpr double kFieldOfView = 0.6911;  // Blender's 50 mm lens on its 36 mm sensor
+  matgeom::CameraGridSpec grid;
+  grid.center = built.bounds.center;
+  grid.radius = built.bounds.radius / std::sin(0.5 * kFieldOfView) / 0.9;
+  grid.n_phi = grid.n_theta = 2;
+  return matrender::grid_view(grid, k, k, resolution, resolution, kFieldOfView);
+}
 
 }  // namespace bench

@@ -8,32 +8,10 @@
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
+#include "bench_scenes.h"
 #include "image_error.h"
-#include "matrender/paper_setup.h"
 #include "matrender/render.h"
-#include "matrender/scene_builder.h"
 
-namespace {
-
-struct Case {
-  std::string object, material;
-};
-
-matrender::BuiltScene object_in_material(const Case& c, int material_resolution) {
-  matrender::SceneDescription scene;
-  matrender::MaterialDescription material;
-  material.library = matrender::LibraryMaterialRequest{matgeom::parse_library_material(c.material), material_resolution, {}};
-  scene.materials.emplace("material", material);
-  matrender::ObjectDescription object;
-  object.source = matrender::BuiltinObject{c.object, 0};
-  object.material = "material";
-  scene.objects.push_back(object);
-  scene.lights = matrender::LightRigDescription{matrender::kPaperTargetIlluminanceLux};
-  scene.camera.placement = matrender::MatrixPlacement{};
-  return matrender::build_scene(scene);
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"denoise_bench: the denoiser's error against a converged reference, raw beside denoised"};
@@ -52,14 +30,9 @@ int main(int argc, char** argv) {
   fmt::print("| object | material | spp | raw RMSE | raw s | denoised RMSE | denoised s |\n|---|---|---:|---:|---:|---:|---:|\n");
   for (const std::string& spec : cases) {
     const size_t colon = spec.find(':');
-    const Case c{spec.substr(0, colon), spec.substr(colon + 1)};
-    matrender::BuiltScene built = object_in_material(c, 512);
-    matgeom::CameraGridSpec grid;
-    grid.center = built.bounds.center;
-    const double fov = 0.6911;
-    grid.radius = built.bounds.radius / std::sin(0.5 * fov) / 0.9;
-    grid.n_phi = grid.n_theta = 2;
-    const matrender::Camera camera = matrender::grid_view(grid, 1, 1, resolution, resolution, fov);
+    const std::string object = spec.substr(0, colon), material = spec.substr(colon + 1);
+    matrender::BuiltScene built = bench::builtin_in_library_material(object, material, 512);
+    const matrender::Camera camera = bench::framed_grid_view(built, 1, resolution);
     matrender::RenderSettings settings;
     settings.threads = threads;
     settings.transparent_background = true;
@@ -72,7 +45,7 @@ int main(int argc, char** argv) {
     for (const int spp : spps) {
       settings.samples_per_pixel = spp;
       settings.seed = 1;
-      std::string row = fmt::format("| {} | {} | {} ", c.object, c.material, spp);
+      std::string row = fmt::format("| {} | {} | {} ", object, material, spp);
       for (const bool denoised : {false, true}) {
         settings.denoise = denoised;
         matrender::FrameBuffers frame;

@@ -101,7 +101,8 @@ ObjectRenderer::ObjectRenderer(const DatasetConfig& config, size_t object)
   grid_.theta_max = camera.theta_max_deg * kDegree;
   grid_.n_phi = camera.n_phi;
   grid_.n_theta = camera.n_theta;
-  exposure_stops_ = config.render.exposure_stops.value_or(matrender::grey_card_exposure(*built_.rig, grid_));
+  exposure_stops_ = config.render.exposure_stops ? *config.render.exposure_stops
+                                                 : matrender::grey_card_exposure(*built_.rig, grid_);
 }
 
 void ObjectRenderer::select_variant(const matgeom::MaterialVariant& variant) {

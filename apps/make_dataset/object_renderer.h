@@ -47,7 +47,7 @@ class ObjectRenderer {
   std::string provenance_json(const DatasetPlan& plan, size_t variant) const;
 
  private:
-  // The configuration's samples per pixel and adaptive sampling.
+  // The configuration's sampling: samples per pixel, adaptive sampling, the denoiser.
   matrender::RenderSettings sampling_settings() const;
 
   const DatasetConfig& config_;

@@ -14,6 +14,7 @@
 
 #include "matgeom/srgb.h"
 #include "matgeom/threads.h"
+#include "util/finite.h"
 
 namespace matrender {
 namespace {
@@ -40,9 +41,7 @@ void require(bool present, const char* what) {
   if (!present) throw std::invalid_argument(std::string("denoise: the frame has no ") + what + " (kDenoiseGuideAovs)");
 }
 
-bool finite_non_negative(const glm::vec3& c) {
-  return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && c.x >= 0.0f && c.y >= 0.0f && c.z >= 0.0f;
-}
+bool finite_non_negative(const glm::vec3& c) { return is_finite(c) && c.x >= 0.0f && c.y >= 0.0f && c.z >= 0.0f; }
 
 Guides read_guides(const FrameBuffers& frame) {
   Guides g;
@@ -66,7 +65,7 @@ Guides read_guides(const FrameBuffers& frame) {
     const glm::vec3 normal(frame.normal_world[3 * p], frame.normal_world[3 * p + 1], frame.normal_world[3 * p + 2]);
     const float normal_length = glm::length(normal);
     if (!surface || !(normal_length > 0.0f) || !finite_non_negative(colour) || !finite_non_negative(albedo) || !std::isfinite(frame.depth[p]) ||
-        !std::isfinite(frame.color_variance[p]) || !(std::isfinite(normal.x) && std::isfinite(normal.y) && std::isfinite(normal.z)))
+        !std::isfinite(frame.color_variance[p]) || !is_finite(normal))
       continue;
     g.filtered[p] = 1;
     g.demodulation[p] = glm::max(albedo, glm::vec3(kMinAlbedo)) * (frame.transparent_background ? coverage : 1.0f);
