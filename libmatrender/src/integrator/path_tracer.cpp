@@ -75,14 +75,14 @@ PathTracer::PathTracer(const SceneData& scene, const LightSampler& lights, const
 glm::vec3 PathTracer::lamps_hit(const glm::vec3& origin, const glm::vec3& dir, float t_max, float bsdf_pdf,
                                 bool bsdf_delta, bool camera_ray, const PickSite& from) const {
   glm::vec3 sum(0.0f);
-  lights_.for_each_area_hit(origin, dir, t_max, [&](const auto& lamp, float t) {
+  lights_.for_each_area_hit(origin, dir, t_max, [&](size_t index, const auto& lamp, float t) {
     if (camera_ray && !lamp.visible_to_camera()) return;
     // The lamp's density from where the ray left: the scattering vertex `from`, not a surface the
     // ray passed through since (origin).
     const float weight =
         bsdf_delta || camera_ray
             ? 1.0f
-            : power_heuristic(bsdf_pdf, lights_.pick_probability(lamp, from) * lamp.pdf(from.p, dir, t + glm::length(origin - from.p)));
+            : power_heuristic(bsdf_pdf, lights_.pick_probability(index, from) * lamp.pdf(from.p, dir, t + glm::length(origin - from.p)));
     sum += weight * lamp.radiance(dir);
   });
   return sum;
@@ -173,11 +173,12 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     const glm::vec3 emitted = sp.emitted();
     if (emitted != glm::vec3(0.0f)) {
       float weight = 1.0f;
-      const PreparedMeshEmitter* emitter = lights_.emitter_of(hit.mesh);
+      const std::optional<size_t> emitter = lights_.emitter_index(hit.mesh);
       if (!camera_ray && !bsdf_delta && emitter) {
         const float t = glm::length(sp.position - scattered.p);
+        const auto& mesh_emitter = std::get<PreparedMeshEmitter>(lights_.light(*emitter));
         weight = power_heuristic(bsdf_pdf, lights_.pick_probability(*emitter, scattered) *
-                                               emitter->pdf(scattered.p, dir, t, hit.triangle));
+                                               mesh_emitter.pdf(scattered.p, dir, t, hit.triangle));
       }
       result.radiance += throughput * emitted * weight;
     }

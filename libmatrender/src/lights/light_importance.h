@@ -17,8 +17,7 @@ namespace matrender {
 
 // cos(max(0, a - b)) from the cosines and sines of a and b in [0, pi].
 inline float cos_of_clamped_difference(float cos_a, float sin_a, float cos_b, float sin_b) {
-  if (cos_a >= cos_b) return 1.0f;  // a <= b
-  return cos_a * cos_b + sin_a * sin_b;
+  return cos_a >= cos_b ? 1.0f : cos_a * cos_b + sin_a * sin_b;  // 1 where a <= b
 }
 
 // The largest cosine between `axis` (unit) and a direction from the shading point into a sphere
@@ -39,16 +38,32 @@ inline float receiving_bound(const ReceivingDirections& receiving, const glm::ve
 // A sphere of `radius` around a point at `distance`, as the cosine and sine of the half-angle it
 // subtends; a point inside sees it all around (s = 90 degrees).
 struct SubtendedCone {
-  float cos_s = 1.0f, sin_s = 0.0f;
+  float cos_s, sin_s;
+  // Selects rather than an early return, so that loops over lights vectorise.
   SubtendedCone(float radius, float distance) {
-    if (!(distance > radius)) {
-      cos_s = 0.0f;
-      sin_s = 1.0f;
-      return;
-    }
-    sin_s = radius / distance;
-    cos_s = std::sqrt(std::max(0.0f, 1.0f - sin_s * sin_s));
+    const bool outside = distance > radius;
+    const float sin_outside = radius / distance;
+    sin_s = outside ? sin_outside : 1.0f;
+    cos_s = outside ? std::sqrt(std::max(0.0f, 1.0f - sin_outside * sin_outside)) : 0.0f;
   }
 };
+
+// The bound for a one-sided emitter of `power` (radiance times area, channel mean) within a sphere
+// of `radius` about `center`, emitting into the half-space away from unit `back`: 0 where p is
+// not in front of it. Written without early returns, so that a loop over emitters (the
+// rectangles of rect_lamp_importance.h) becomes vector instructions.
+inline float one_sided_emitter_importance(const glm::vec3& center, const glm::vec3& back, float radius, float power,
+                                          const glm::vec3& p, const ReceivingDirections& receiving) {
+  const glm::vec3 to_center = center - p;
+  const float distance2 = glm::dot(to_center, to_center);
+  const float distance = std::sqrt(distance2);
+  const glm::vec3 direction = to_center / distance;
+  const SubtendedCone cone(radius, distance);
+  // The emitter's cosine is between -back and the way to p, -direction.
+  const float emitting = cone_cosine_bound(back, direction, cone.cos_s, cone.sin_s);
+  const float receiving_factor = receiving_bound(receiving, direction, cone.cos_s, cone.sin_s);
+  const float bound = power * emitting * receiving_factor / std::max(distance2, radius * radius);
+  return glm::dot(to_center, back) > 0.0f ? bound : 0.0f;
+}
 
 }  // namespace matrender

@@ -22,6 +22,7 @@ LightSampler::LightSampler(const std::vector<Light>& lights, const WorldLight& w
     : selection_(selection) {
   const std::vector<PreparedRectLight> rects = prepare_rect_lights(lights);
   area_hits_ = RectLightHits(rects);
+  rect_importance_ = RectLampImportance(rects);
   lights_.assign(rects.begin(), rects.end());
   rect_count_ = rects.size();
   for (const PreparedRectLight& rect : rects) camera_visible_lamps_ = camera_visible_lamps_ || rect.visible_to_camera();
@@ -68,15 +69,25 @@ PickSite LightSampler::site(const glm::vec3& p, const ReceivingDirections& recei
   PickSite site;
   site.p = p;
   site.receiving = receiving;
-  if (selection_ == LightSelection::Importance) {
-    const bool keep = sampled_count_ <= PickSite::kKeptWeights;
-    for (size_t i = 0; i < sampled_count_; ++i) {
-      const float weight = with_light(lights_[i], [&](const auto& light) { return light.importance(p, receiving); });
-      if (keep) site.weights[i] = weight;
-      site.total_importance += weight;
-    }
+  if (selection_ != LightSelection::Importance) return site;
+  if (sampled_count_ <= PickSite::kKeptWeights) {
+    // The rectangles all at once, then the other lights one by one.
+    rect_importance_.evaluate(p, receiving, site.weights.data());
+    for (size_t i = rect_count_; i < sampled_count_; ++i)
+      site.weights[i] = with_light(lights_[i], [&](const auto& light) { return light.importance(p, receiving); });
   }
+  for (size_t i = 0; i < sampled_count_; ++i) site.total_importance += importance(i, site);
   return site;
+}
+
+float LightSampler::importance(size_t index, const PickSite& site) const {
+  if (sampled_count_ <= PickSite::kKeptWeights) return site.weights[index];
+  return with_light(lights_[index], [&](const auto& light) { return light.importance(site.p, site.receiving); });
+}
+
+float LightSampler::pick_probability(size_t index, const PickSite& site) const {
+  if (selection_ == LightSelection::Uniform) return empty() ? 0.0f : 1.0f / static_cast<float>(sampled_count_);
+  return site.total_importance > 0.0f ? importance(index, site) / site.total_importance : 0.0f;
 }
 
 std::optional<LightSampler::Pick> LightSampler::pick(const PickSite& site, float* u) const {
@@ -89,16 +100,11 @@ std::optional<LightSampler::Pick> LightSampler::pick(const PickSite& site, float
   }
   if (!(site.total_importance > 0.0f)) return std::nullopt;
   // Walk the lights' intervals of the total until u's falls in one.
-  const bool kept = sampled_count_ <= PickSite::kKeptWeights;
-  const auto weight_of = [&](size_t i) {
-    return kept ? site.weights[i]
-                : with_light(lights_[i], [&](const auto& light) { return light.importance(site.p, site.receiving); });
-  };
   const float target = *u * site.total_importance;
   float below = 0.0f;
   size_t last_lit = sampled_count_;
   for (size_t i = 0; i < sampled_count_; ++i) {
-    const float weight = weight_of(i);
+    const float weight = importance(i, site);
     if (!(weight > 0.0f)) continue;
     last_lit = i;
     if (target < below + weight || i + 1 == sampled_count_) {
@@ -109,7 +115,7 @@ std::optional<LightSampler::Pick> LightSampler::pick(const PickSite& site, float
   }
   // Rounding left u past the last interval: it belongs to the last light that has one.
   if (last_lit == sampled_count_) return std::nullopt;
-  const float weight = weight_of(last_lit);
+  const float weight = importance(last_lit, site);
   *u = 0x1.fffffep-1f;
   return Pick{last_lit, weight / site.total_importance};
 }
@@ -130,7 +136,7 @@ glm::vec3 LightSampler::escaped_radiance(const glm::vec3& dir, float bsdf_pdf, b
     with_light(lights_[index], [&](const auto& light) {
       if constexpr (std::decay_t<decltype(light)>::type() == LightType::Infinite) {
         if (camera_ray && !light.visible_to_camera()) return;
-        const float light_pdf = index < sampled_count_ ? pick_probability(light, from) * light.pdf(dir) : 0.0f;
+        const float light_pdf = index < sampled_count_ ? pick_probability(index, from) * light.pdf(dir) : 0.0f;
         const float weight = unweighted || camera_ray ? 1.0f : power_heuristic(bsdf_pdf, light_pdf);
         sum += weight * light.radiance(dir);
       }

@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include "lights/light_sample.h"
+#include "lights/rect_lamp_importance.h"
 #include "lights/rect_light_hits.h"
 #include "lights/scene_light.h"
 #include "lights/world_light.h"
@@ -53,12 +54,8 @@ class LightSampler {
 
   // The site at p, its total importance summed (for importance selection).
   PickSite site(const glm::vec3& p, const ReceivingDirections& receiving) const;
-  // The probability that a pick at `site` draws `light`, one of the distribution's lights.
-  template <class L>
-  float pick_probability(const L& light, const PickSite& site) const {
-    if (selection_ == LightSelection::Uniform) return empty() ? 0.0f : 1.0f / static_cast<float>(sampled_count_);
-    return site.total_importance > 0.0f ? light.importance(site.p, site.receiving) / site.total_importance : 0.0f;
-  }
+  // The probability that a pick at `site` draws light(index), one of the distribution's lights.
+  float pick_probability(size_t index, const PickSite& site) const;
 
   struct Pick {
     size_t index;       // into light()
@@ -75,25 +72,26 @@ class LightSampler {
   std::optional<LightSample> sample(const PickSite& site, glm::vec2 u) const;
 
   bool has_area_lights() const { return !area_hits_.empty() || disk_count_ > 0; }
-  // The emitter of a mesh's emitting triangles, or null.
-  const PreparedMeshEmitter* emitter_of(uint32_t mesh) const {
-    return mesh < emitter_of_mesh_.size() && emitter_of_mesh_[mesh] >= 0
-               ? std::get_if<PreparedMeshEmitter>(&lights_[static_cast<size_t>(emitter_of_mesh_[mesh])])
-               : nullptr;
+  // The index of the light that is a mesh's emitting triangles (a PreparedMeshEmitter), or
+  // nothing.
+  std::optional<size_t> emitter_index(uint32_t mesh) const {
+    if (mesh >= emitter_of_mesh_.size() || emitter_of_mesh_[mesh] < 0) return std::nullopt;
+    return static_cast<size_t>(emitter_of_mesh_[mesh]);
   }
   // Some area lamp is visible to camera rays (most scenes have none, and their camera rays then
   // look for no lamp).
   bool has_camera_visible_lamps() const { return camera_visible_lamps_; }
-  // Calls visit(area_light, t) for each area light (a PreparedRectLight or a PreparedDiskLamp)
-  // whose emitting side the ray meets at a distance t in (0, t_max), in order.
+  // Calls visit(index, area_light, t) for each area light (a PreparedRectLight or a
+  // PreparedDiskLamp, light(index)) whose emitting side the ray meets at a distance t in
+  // (0, t_max), in order.
   template <class Visit>
   void for_each_area_hit(const glm::vec3& origin, const glm::vec3& dir, float t_max, Visit&& visit) const {
     area_hits_.for_each_hit(origin, dir, t_max, [&](size_t index, float t) {
-      visit(*std::get_if<PreparedRectLight>(&lights_[index]), t);
+      visit(index, *std::get_if<PreparedRectLight>(&lights_[index]), t);
     });
     for (size_t i = rect_count_; i < rect_count_ + disk_count_; ++i) {
       const PreparedDiskLamp& disk = *std::get_if<PreparedDiskLamp>(&lights_[i]);
-      if (const std::optional<float> t = disk.intersect(origin, dir, t_max)) visit(disk, *t);
+      if (const std::optional<float> t = disk.intersect(origin, dir, t_max)) visit(i, disk, *t);
     }
   }
 
@@ -108,7 +106,11 @@ class LightSampler {
   std::vector<SceneLight> lights_;
   size_t sampled_count_ = 0;
   std::vector<size_t> infinite_;  // indices of the infinite lights
+  // light(index)'s importance at the site: kept there, or evaluated again.
+  float importance(size_t index, const PickSite& site) const;
+
   RectLightHits area_hits_;       // over lights(0 .. rect_count_ - 1)
+  RectLampImportance rect_importance_;  // the same
   size_t rect_count_ = 0;
   size_t disk_count_ = 0;         // lights(rect_count_ .. rect_count_ + disk_count_ - 1)
   std::vector<int32_t> emitter_of_mesh_;  // index into lights_ by mesh, -1 for none

@@ -35,16 +35,7 @@ PreparedRectLight::PreparedRectLight(const RectLight& light) {
 }
 
 float PreparedRectLight::importance(const glm::vec3& p, const ReceivingDirections& receiving) const {
-  if (!sees_emitting_side(p)) return 0.0f;
-  const glm::vec3 to_center = center_ - p;
-  const float distance2 = glm::dot(to_center, to_center);
-  const float distance = std::sqrt(distance2);
-  const glm::vec3 direction = to_center / distance;
-  const SubtendedCone cone(bounding_radius_, distance);
-  // The lamp emits down -z: the cosine at the lamp is between -z and the way to p.
-  const float emitting = cone_cosine_bound(rect_.z, direction, cone.cos_s, cone.sin_s);
-  const float receiving_factor = receiving_bound(receiving, direction, cone.cos_s, cone.sin_s);
-  return power_ * emitting * receiving_factor / std::max(distance2, bounding_radius_ * bounding_radius_);
+  return one_sided_emitter_importance(center_, rect_.z, bounding_radius_, power_, p, receiving);
 }
 
 bool PreparedRectLight::sees_emitting_side(const glm::vec3& p) const {

@@ -36,6 +36,10 @@ class PreparedRectLight {
   // The lamp's rectangle; its z is the lamp's +Z, the side that does not emit.
   const Rectangle3& rectangle() const { return rect_; }
   glm::vec3 center() const { return center_; }
+  // Half the diagonal: the radius of the sphere about center() that holds the lamp.
+  float bounding_radius() const { return bounding_radius_; }
+  // Radiance times area, channel mean.
+  float power() const { return power_; }
 
  private:
   bool sees_emitting_side(const glm::vec3& p) const;
