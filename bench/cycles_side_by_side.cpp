@@ -120,23 +120,6 @@ matrender::Scene our_scene(const shaders_ref::CyclesScene& description) {
   return scene;
 }
 
-struct Curve {
-  std::vector<double> seconds, error;  // by increasing sample count
-};
-
-// Seconds to reach `target` error, interpolated log-log between the measured points; NaN when
-// the curve never gets there.
-double seconds_to_reach(const Curve& curve, double target) {
-  for (size_t k = 0; k < curve.error.size(); ++k) {
-    if (curve.error[k] > target) continue;
-    if (k == 0) return curve.seconds[0];
-    const double t = (std::log(curve.error[k - 1]) - std::log(target)) /
-                     (std::log(curve.error[k - 1]) - std::log(curve.error[k]));
-    return std::exp(std::log(curve.seconds[k - 1]) + t * (std::log(curve.seconds[k]) - std::log(curve.seconds[k - 1])));
-  }
-  return std::nan("");
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -168,8 +151,8 @@ int main(int argc, char** argv) {
       const shaders_ref::CyclesScene description = make_scene(name, triangles, resolution, checker, sky);
       // Cycles first, alone on the machine; its reference is rendered last.
       std::vector<shaders_ref::CyclesRender> cycles_renders;
-      for (const int spp : spp_list) cycles_renders.push_back({spp, 0, "", 0.0});
-      cycles_renders.push_back({reference_spp, 0, "", 0.0});
+      for (const int spp : spp_list) cycles_renders.push_back({spp, 0});
+      cycles_renders.push_back({reference_spp, 0});
       fmt::print(stderr, "{}: rendering with Blender into {} ...\n", name, work + "/" + name);
       shaders_ref::render_with_cycles(description, cycles_renders, threads, work + "/" + name, blender);
       const std::vector<float> cycles_reference =
@@ -199,7 +182,7 @@ int main(int argc, char** argv) {
       const std::vector<float> reference = render_ours(variants[0], reference_spp, &unused);
       const std::vector<float> reference_without_mipmaps = render_ours(variants[2], reference_spp, &unused);
 
-      std::vector<Curve> curves(variants.size() + 1);  // ours, uniform, no mip-mapping, Cycles
+      std::vector<bench::Curve> curves(variants.size() + 1);  // ours, uniform, no mip-mapping, Cycles
       for (size_t k = 0; k < spp_list.size(); ++k) {
         for (size_t v = 0; v < variants.size(); ++v) {
           double seconds;
@@ -218,18 +201,18 @@ int main(int argc, char** argv) {
       fmt::print("|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
       for (size_t k = 0; k < spp_list.size(); ++k) {
         fmt::print("| {} ", spp_list[k]);
-        for (const Curve& c : curves) fmt::print("| {:.3f} | {:.5f} ", c.seconds[k], c.error[k]);
+        for (const bench::Curve& c : curves) fmt::print("| {:.3f} | {:.5f} ", c.seconds[k], c.error[k]);
         fmt::print("|\n");
       }
       fmt::print("\nSeconds to reach Cycles' errors (interpolated log-log):\n\n");
       fmt::print("| RMSE | ours s | uniform selection / ours | no mip-mapping / ours | Cycles s | Cycles / ours |\n");
       fmt::print("|---:|---:|---:|---:|---:|---:|\n");
       for (const double target : curves.back().error) {
-        const double ours = seconds_to_reach(curves[0], target);
-        const double cycles = seconds_to_reach(curves[3], target);
+        const double ours = bench::seconds_to_reach(curves[0], target);
+        const double cycles = bench::seconds_to_reach(curves[3], target);
         fmt::print("| {:.5f} | {:.3f} | {:.2f} | {:.2f} | {:.3f} | {:.2f} |\n", target, ours,
-                   seconds_to_reach(curves[1], target) / ours, seconds_to_reach(curves[2], target) / ours, cycles,
-                   cycles / ours);
+                   bench::seconds_to_reach(curves[1], target) / ours, bench::seconds_to_reach(curves[2], target) / ours,
+                   cycles, cycles / ours);
       }
       fmt::print("\nConverged ({} spp): ours without mip-mapping against Cycles RMSE {:.5f}, mean pixel ratio {:.4f}; "
                  "ours with mip-mapping against without RMSE {:.5f}.\n\n",

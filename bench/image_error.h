@@ -31,4 +31,22 @@ inline double mean(const std::vector<float>& image) {
   return sum / static_cast<double>(image.size());
 }
 
+// Error against time of one way of rendering, point by point.
+struct Curve {
+  std::vector<double> seconds, error;  // by increasing time
+};
+
+// Seconds to reach `target` error, interpolated log-log between the measured points; the first
+// point's when it is already there, NaN when the curve never gets there.
+inline double seconds_to_reach(const Curve& curve, double target) {
+  for (size_t k = 0; k < curve.error.size(); ++k) {
+    if (curve.error[k] > target) continue;
+    if (k == 0) return curve.seconds[0];
+    const double t =
+        (std::log(curve.error[k - 1]) - std::log(target)) / (std::log(curve.error[k - 1]) - std::log(curve.error[k]));
+    return std::exp(std::log(curve.seconds[k - 1]) + t * (std::log(curve.seconds[k]) - std::log(curve.seconds[k - 1])));
+  }
+  return std::nan("");
+}
+
 }  // namespace bench

@@ -7,15 +7,13 @@
 #
 #   blender -b --factory-startup -noaudio --python-exit-code 1 -P blender_gltf_import.py -- FILE.glb OUT.json
 import json
+import os
 import sys
 
 import bpy
-import numpy
 
-# Debian 12's Blender 3.4 importer still uses numpy.bool, which Debian's numpy 1.24 removed
-# (set_poly_smoothing fails on every file with normals); the alias is what it meant.
-if not hasattr(numpy, "bool"):
-    numpy.bool = bool
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # blender_gltf.py lies beside this script
+from blender_gltf import import_gltf  # noqa: E402
 
 
 def upstream_image(socket):
@@ -95,7 +93,7 @@ def main():
     if len(arguments) != 2:
         sys.exit("usage: blender -b --factory-startup -P blender_gltf_import.py -- FILE.glb OUT.json")
     bpy.ops.wm.read_factory_settings(use_empty=True)
-    bpy.ops.import_scene.gltf(filepath=arguments[0])
+    import_gltf(arguments[0])
     materials = {m.name: material_nodes(m) for m in bpy.data.materials if m.use_nodes}
     with open(arguments[1], "w") as f:
         json.dump(materials, f)

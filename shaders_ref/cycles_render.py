@@ -4,20 +4,27 @@
 #
 #   blender -b --factory-startup -noaudio --python-exit-code 1 -P cycles_render.py -- SCENE.json
 #
-# SCENE.json holds the mesh (with UVs when a base colour image is given), material, lamps,
-# camera and background, plus "threads", "renders"
-# ([{"spp", "seed", "path"}]) and "timings_path", where {"<path>": seconds} is written. The
-# settings below switch off what would make Cycles' converged image differ from the unbiased
-# integral libmatrender computes (clamping, glossy blur, adaptive sampling, denoising) and keep
-# Cycles' defaults otherwise; the shadow terminator geometry offset comes from the description.
+# SCENE.json holds the mesh (with UVs when a base colour image is given) and material, or in
+# their place "gltf", a file Blender's glTF importer brings in with its own node setups; the
+# lamps, camera, background, bounces and "settings", plus "threads", "renders" ([{"spp", "seed",
+# "noise_threshold", "path"}], rendered in order) and "timings_path", where {"<path>": seconds}
+# is written. Settings "parity" switch off what would make Cycles' converged image differ from
+# the unbiased integral libmatrender computes (clamping, glossy blur); "blender_defaults" keep
+# Cycles' defaults, as a Blender user has them. Either way there is no denoising (Debian's build
+# has no denoiser), and adaptive sampling is on only for a render given a noise threshold; the
+# shadow terminator geometry offset of the mesh comes from the description.
 import json
 import math
+import os
 import sys
 import time
 
 import bpy
 import mathutils
 from mathutils import Matrix
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # blender_gltf.py lies beside this script
+from blender_gltf import import_gltf  # noqa: E402
 
 
 def matrix_from_columns(values):
@@ -149,15 +156,19 @@ def set_world(scene, background, environment):
     scene.world = world
 
 
-def set_cycles(scene, threads):
+def set_cycles(scene, threads, settings, bounces):
     scene.render.engine = "CYCLES"
     cycles = scene.cycles
     cycles.device = "CPU"
-    cycles.use_adaptive_sampling = False
     cycles.use_denoising = False
-    cycles.sample_clamp_direct = 0.0
-    cycles.sample_clamp_indirect = 0.0
-    cycles.blur_glossy = 0.0
+    if settings == "parity":
+        cycles.sample_clamp_direct = 0.0
+        cycles.sample_clamp_indirect = 0.0
+        cycles.blur_glossy = 0.0
+    cycles.max_bounces = bounces["total"]
+    cycles.diffuse_bounces = bounces["diffuse"]
+    cycles.glossy_bounces = bounces["glossy"]
+    cycles.transmission_bounces = bounces["transmission"]
     cycles.pixel_filter_type = "BLACKMAN_HARRIS"
     cycles.filter_width = 1.5
     scene.render.threads_mode = "FIXED"
@@ -178,15 +189,25 @@ def main():
         description = json.load(f)
     bpy.ops.wm.read_factory_settings(use_empty=True)
     scene = bpy.context.scene
-    material = make_material(description["material"], description["distribution"], description.get("base_color_image"))
-    add_mesh(scene, description["mesh"], material)
+    if "gltf" in description:
+        import_gltf(description["gltf"])
+    else:
+        material = make_material(description["material"], description["distribution"],
+                                 description.get("base_color_image"))
+        add_mesh(scene, description["mesh"], material)
     add_lamps(scene, description["lamps"])
     add_camera(scene, description["camera"])
     set_world(scene, description["background"], description.get("environment"))
-    set_cycles(scene, description["threads"])
+    set_cycles(scene, description["threads"], description["settings"], description["bounces"])
 
     timings = {}
     for render in description["renders"]:
+        # Samples is Max Samples under adaptive sampling; Min Samples 0 is Cycles' automatic.
+        threshold = render["noise_threshold"]
+        scene.cycles.use_adaptive_sampling = threshold is not None
+        if threshold is not None:
+            scene.cycles.adaptive_threshold = threshold
+            scene.cycles.adaptive_min_samples = 0
         scene.cycles.samples = render["spp"]
         scene.cycles.seed = render["seed"]
         scene.render.filepath = render["path"]

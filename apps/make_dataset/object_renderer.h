@@ -8,6 +8,7 @@
 
 #include "dataset_config.h"
 #include "dataset_plan.h"
+#include "matgeom/object_asset.h"
 #include "matlearn/dataset_writer.h"
 #include "matrender/render.h"
 #include "matrender/scene_builder.h"
@@ -30,6 +31,15 @@ class ObjectRenderer {
 
   // The materials of the selected variant, slot by slot.
   const std::vector<matlearn::SlotMaterial>& slot_materials() const { return slot_materials_; }
+
+  // The selected variant as an asset a glTF writer takes (for another renderer to get the same
+  // object): the object's surface in world space, each part in its slot's material with the maps
+  // repeated per UV unit as this renderer repeats them. The materials are loaded (generated)
+  // again.
+  matgeom::ObjectAsset variant_asset() const;
+
+  // The scene the views are rendered in: its lamps and background.
+  const matrender::Scene& scene() const { return built_.scene; }
 
   matrender::Camera view_camera(size_t view) const;
   matlearn::FramePose view_pose(size_t view, const std::string& stem) const;
@@ -56,6 +66,7 @@ class ObjectRenderer {
   matrender::BuiltScene built_;
   matgeom::CameraGridSpec grid_;
   double exposure_stops_ = 0.0;  // the configuration's, or the grey-card rule's for this object
+  matgeom::MaterialVariant variant_;  // the selected one
   std::vector<matlearn::SlotMaterial> slot_materials_;
   std::vector<std::vector<uint32_t>> slot_parts_;  // the parts of each slot
 };

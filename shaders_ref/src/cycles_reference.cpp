@@ -77,7 +77,8 @@ json describe_lamp(const matrender::Light& light) {
           {"color", rgb(sun.color)}};
 }
 
-json describe(const CyclesScene& scene) {
+// The mesh in its one material, as cycles_render.py rebuilds them.
+json describe_mesh_object(const CyclesScene& scene) {
   json positions = json::array(), normals = json::array(), triangles = json::array();
   for (const glm::vec3& p : scene.mesh.positions) positions.push_back({p.x, p.y, p.z});
   for (const glm::vec3& n : scene.mesh.normals) normals.push_back({n.x, n.y, n.z});
@@ -102,14 +103,6 @@ json describe(const CyclesScene& scene) {
     for (const glm::vec2& uv : scene.mesh.uvs) uvs.push_back({uv.x, uv.y});
   if (scene.mesh.normals.size() != scene.mesh.positions.size())
     throw std::invalid_argument("render_with_cycles: the mesh needs one normal per vertex");
-  json lamps = json::array();
-  for (const matrender::Light& lamp : scene.lamps) lamps.push_back(describe_lamp(lamp));
-  const matrender::Camera& c = scene.camera;
-  json environment = nullptr;
-  if (scene.environment)
-    environment = {{"path", scene.environment->exr_path},
-                   {"strength", scene.environment->strength},
-                   {"rotation_z", scene.environment->rotation_z}};
   return {{"mesh",
            {{"positions", positions},
             {"normals", normals},
@@ -118,15 +111,30 @@ json describe(const CyclesScene& scene) {
             {"shadow_terminator_geometry_offset", scene.shadow_terminator_geometry_offset}}},
           {"material", node_inputs(m)},
           {"base_color_image", base_color_image},
-          {"distribution", m.distribution == matrender::SpecularDistribution::MultiscatterGGX ? "MULTI_GGX" : "GGX"},
-          {"lamps", lamps},
-          {"camera",
-           {{"camera_to_world", column_major(c.camera_to_world)},
-            {"vertical_fov", c.vertical_fov},
-            {"width", c.width},
-            {"height", c.height}}},
-          {"background", {scene.background.r, scene.background.g, scene.background.b}},
-          {"environment", environment}};
+          {"distribution", m.distribution == matrender::SpecularDistribution::MultiscatterGGX ? "MULTI_GGX" : "GGX"}};
+}
+
+json describe(const CyclesScene& scene) {
+  json description = scene.gltf_path.empty() ? describe_mesh_object(scene) : json{{"gltf", scene.gltf_path}};
+  json lamps = json::array();
+  for (const matrender::Light& lamp : scene.lamps) lamps.push_back(describe_lamp(lamp));
+  description["lamps"] = lamps;
+  const matrender::Camera& c = scene.camera;
+  description["camera"] = {{"camera_to_world", column_major(c.camera_to_world)},
+                           {"vertical_fov", c.vertical_fov},
+                           {"width", c.width},
+                           {"height", c.height}};
+  description["background"] = {scene.background.r, scene.background.g, scene.background.b};
+  description["environment"] = nullptr;
+  if (scene.environment)
+    description["environment"] = {{"path", scene.environment->exr_path},
+                                  {"strength", scene.environment->strength},
+                                  {"rotation_z", scene.environment->rotation_z}};
+  const CyclesBounces& b = scene.bounces;
+  description["bounces"] = {
+      {"total", b.total}, {"diffuse", b.diffuse}, {"glossy", b.glossy}, {"transmission", b.transmission}};
+  description["settings"] = scene.settings == CyclesSettings::Parity ? "parity" : "blender_defaults";
+  return description;
 }
 
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
@@ -159,9 +167,14 @@ void render_with_cycles(const CyclesScene& scene, std::vector<CyclesRender>& ren
   description["timings_path"] = folder + "/cycles_timings.json";
   json jobs = json::array();
   for (CyclesRender& render : renders) {
-    render.exr_path =
-        folder + "/cycles_" + std::to_string(render.samples_per_pixel) + "_" + std::to_string(render.seed) + ".exr";
-    jobs.push_back({{"spp", render.samples_per_pixel}, {"seed", render.seed}, {"path", render.exr_path}});
+    const json threshold = render.noise_threshold ? json(*render.noise_threshold) : json(nullptr);
+    render.exr_path = folder + "/cycles_" + std::to_string(render.samples_per_pixel) + "_" +
+                      std::to_string(render.seed) + (render.noise_threshold ? "_threshold_" + threshold.dump() : "") +
+                      ".exr";
+    jobs.push_back({{"spp", render.samples_per_pixel},
+                    {"seed", render.seed},
+                    {"noise_threshold", threshold},
+                    {"path", render.exr_path}});
   }
   description["renders"] = jobs;
   const std::string scene_path = folder + "/scene.json", log_path = folder + "/blender.log";

@@ -201,7 +201,7 @@ void check_agreement(const std::string& name, const Agreement& a) {
 // Both renderers with seeds 1 and 2, compared; Blender's files go to cycles_work_folder(name).
 Agreement agreement_with_cycles(const shaders_ref::CyclesScene& scene, const std::string& name,
                                 bool cycles_parity = false) {
-  std::vector<shaders_ref::CyclesRender> renders = {{kSamples, 1, "", 0.0}, {kSamples, 2, "", 0.0}};
+  std::vector<shaders_ref::CyclesRender> renders = {{kSamples, 1}, {kSamples, 2}};
   shaders_ref::render_with_cycles(scene, renders, 2, cycles_work_folder(name));
   return compare(render_ours(scene, 1, cycles_parity), render_ours(scene, 2, cycles_parity),
                  shaders_ref::read_rgb_exr(renders[0].exr_path, kResolution, kResolution),
@@ -432,7 +432,7 @@ TEST_CASE("The shadow terminator geometry offset changes renders as it does in C
   material.set(matrender::MaterialParameter::Roughness, 0.5f);
   const auto render_both = [&](float offset, std::vector<float> ours[2], std::vector<float> cycles[2]) {
     const shaders_ref::CyclesScene scene = paper_scene(material, 6, offset);
-    std::vector<shaders_ref::CyclesRender> renders = {{kSamples, 1, "", 0.0}, {kSamples, 2, "", 0.0}};
+    std::vector<shaders_ref::CyclesRender> renders = {{kSamples, 1}, {kSamples, 2}};
     shaders_ref::render_with_cycles(scene, renders, 2, cycles_work_folder("terminator_" + std::to_string(offset)));
     for (int k = 0; k < 2; ++k) {
       ours[k] = render_ours(scene, static_cast<uint32_t>(k + 1));

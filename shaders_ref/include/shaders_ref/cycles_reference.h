@@ -24,22 +24,43 @@ struct CyclesEnvironment {
   double rotation_z = 0.0;  // radians
 };
 
+// Light Paths > Max Bounces; Cycles' defaults.
+struct CyclesBounces {
+  int total = 12, diffuse = 4, glossy = 4, transmission = 12;
+};
+
+enum class CyclesSettings {
+  // What would make Cycles' converged image differ from the unbiased integral libmatrender
+  // computes is switched off: light clamping and the glossy filter.
+  Parity,
+  // Cycles' defaults, as a Blender user has them (indirect light clamped at 10, glossy filter 1).
+  BlenderDefaults,
+};
+
 // What Blender rebuilds: one smooth mesh (vertex normals) in one Principled material (constant
-// inputs, and at most a base colour image file on the mesh's UVs),
+// inputs, and at most a base colour image file on the mesh's UVs), or a glTF file in their place;
 // lamps of every kind, a camera and a uniform background or an environment map.
 struct CyclesScene {
   matgeom::TriangleMesh mesh;
   matrender::Material material;
+  // When not empty, replaces `mesh` and `material`: Blender's own glTF importer makes the objects
+  // and their node setups from the file, the way assets reach a Blender user.
+  std::string gltf_path;
   std::vector<matrender::Light> lamps;
   matrender::Camera camera;
   glm::vec3 background{0.0f};
   std::optional<CyclesEnvironment> environment;  // replaces the background
   float shadow_terminator_geometry_offset = 0.1f;  // Cycles' default, as matrender::MeshOptions
+  CyclesBounces bounces;
+  CyclesSettings settings = CyclesSettings::Parity;
 };
 
 struct CyclesRender {
-  int samples_per_pixel = 16;
+  int samples_per_pixel = 16;  // with a noise threshold, Max Samples
   uint32_t seed = 0;
+  // Adaptive sampling at this Noise Threshold, with Min Samples 0 (Cycles' automatic); none:
+  // every pixel takes samples_per_pixel.
+  std::optional<double> noise_threshold;
   std::string exr_path;  // filled by render_with_cycles
   double seconds = 0.0;  // the whole render call: scene sync, BVH, sampling, writing the EXR
 };
@@ -47,8 +68,9 @@ struct CyclesRender {
 // True when `blender --version` runs and reports Blender 3.4.
 bool cycles_available(const std::string& blender = "blender");
 
-// Writes `folder`/scene.json and runs Blender once for all `renders`, each into
-// `folder`/cycles_<spp>_<seed>.exr. Throws std::runtime_error naming Blender's log on failure.
+// Writes `folder`/scene.json and runs Blender once for all `renders`, in order, each into
+// `folder`/cycles_<spp>_<seed>[_threshold_<threshold>].exr. Throws std::runtime_error naming
+// Blender's log on failure.
 void render_with_cycles(const CyclesScene& scene, std::vector<CyclesRender>& renders, int threads,
                         const std::string& folder, const std::string& blender = "blender");
 
