@@ -10,11 +10,12 @@ namespace matgeom {
 // One node, one mesh, one primitive per part with material k = asset.materials[k]. Converts
 // Blender's +Z up to glTF's +Y up ((x, y, z) -> (x, z, -y)) and v to 1 - v, so read_gltf gives
 // the asset back. Images are embedded as PNG; roughness and metallic read from other channels or
-// images than glTF's (G and B of one image) are packed into one. MaterialDesc's specular,
-// specular tint, IOR and label id have no glTF core counterpart and are not written. Writes a temporary file and renames it;
-// throws std::invalid_argument for an asset it cannot express (no triangles, fewer materials
-// than parts, an image index out of range) and std::runtime_error naming the path when the
-// file cannot be written.
+// images than glTF's (G and B of one image) are packed into one. IOR, clearcoat, transmission,
+// velvet (as sheen) and emission strength go into their KHR_materials_* extensions; specular,
+// specular tint and label id have no glTF counterpart and are not written. Writes a temporary
+// file and renames it; throws std::invalid_argument for an asset it cannot express (no
+// triangles, fewer materials than parts, an image index out of range) and std::runtime_error
+// naming the path when the file cannot be written.
 void write_gltf(const ObjectAsset& asset, const std::string& path);
 
 }  // namespace matgeom
