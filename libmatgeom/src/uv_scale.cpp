@@ -5,9 +5,13 @@
 namespace matgeom {
 namespace {
 
-// glTF's transform applies the scale first (uv' = T R S uv), so scaling S by k and the
-// offset by nothing repeats the image k times about the UV origin.
+// The image looked up at transform(k uv) in our (Blender's, v-up) UVs, as
+// matrender::with_texture_repeats repeats it and a Blender Mapping node's Scale does: k times
+// about the origin of Blender's UVs, which is (0, 1) in glTF's (v down). Scaling S alone would
+// repeat about glTF's origin, the image's top-left corner, and shift it by k - 1 in v.
 TextureTransform repeated(TextureTransform transform, double repeats) {
+  const double s = std::sin(transform.rotation), c = std::cos(transform.rotation);
+  transform.offset -= (repeats - 1.0) * transform.scale.y * glm::dvec2(s, c);
   transform.scale *= repeats;
   return transform;
 }

@@ -4,6 +4,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "matgeom/texture_transform.h"
+
 using namespace matgeom;
 
 namespace {
@@ -47,6 +49,31 @@ TEST_CASE("with_texture_repeats scales the transforms of the images a material r
   CHECK(repeated[MaterialParameter::BaseColor].transform.scale == glm::dvec2(8.0, 12.0));
   CHECK(repeated.normal_transform.scale == glm::dvec2(4.0));
   CHECK(repeated[MaterialParameter::Roughness].transform.is_identity());  // a constant: nothing to repeat
+}
+
+TEST_CASE("Repeated maps stay anchored at the origin of our UVs, wherever glTF's lies", "[geom]") {
+  // Not a whole number of repeats: a shift by whole tiles would hide under the wrap.
+  const double k = 1.46;
+  const auto lookup = [](const TextureTransform& t, glm::vec2 uv) { return uv_affine(t).apply(uv); };
+  MaterialDesc material;
+  material.normal_image = 0;
+  // Unplaced: the image repeats k times from (0, 0), so (u, v) reads the image at (k u, k v).
+  const TextureTransform plain = with_texture_repeats(material, k).normal_transform;
+  for (const glm::vec2 uv : {glm::vec2(0.0f), glm::vec2(1.0f, 0.0f), glm::vec2(0.0f, 1.0f), glm::vec2(0.3f, 0.8f)}) {
+    const glm::vec2 read = lookup(plain, uv);
+    CHECK(read.x == Approx(k * uv.x).margin(1e-5));
+    CHECK(read.y == Approx(k * uv.y).margin(1e-5));
+  }
+  // Placed (moved, turned, stretched): the repeated placement reads at (k u, k v) what the
+  // original read there.
+  material.normal_transform = TextureTransform{{0.25, -0.5}, 0.75, {2.0, 3.0}};
+  const TextureTransform placed = with_texture_repeats(material, k).normal_transform;
+  for (const glm::vec2 uv : {glm::vec2(0.0f), glm::vec2(1.0f, 0.0f), glm::vec2(0.3f, 0.8f), glm::vec2(-1.5f, 2.25f)}) {
+    const glm::vec2 expected = lookup(material.normal_transform, static_cast<float>(k) * uv);
+    const glm::vec2 read = lookup(placed, uv);
+    CHECK(read.x == Approx(expected.x).margin(1e-4));
+    CHECK(read.y == Approx(expected.y).margin(1e-4));
+  }
 }
 
 TEST_CASE("assign_material_to_all_parts repeats a folder material's maps to size on every part", "[geom]") {

@@ -16,7 +16,9 @@
 #include "matgeom/png_encoding.h"
 #include "matgeom/srgb.h"
 #include "matgeom/tangents.h"
+#include "matgeom/uv_scale.h"
 #include "matrender/asset.h"
+#include "matrender/material.h"
 #include "matrender/scene_builder.h"
 #include "matrender/scene_file.h"
 #include "test_scenes.h"
@@ -184,4 +186,33 @@ TEST_CASE("A folder's physical size sets how often its maps repeat on a part", "
   CHECK(steps >= 7);
   CHECK(steps <= 8);
   std::filesystem::remove_all(root);
+}
+
+TEST_CASE("A material repeated for export reads its maps where the renderer's repeated material does", "[render]") {
+  // make_dataset renders a library material repeated by matrender::with_texture_repeats and
+  // exports the same variant (glTF, for Blender) repeated by matgeom::with_texture_repeats: both
+  // must put each map at the same place, or the exported object shows its pattern shifted (by
+  // k - 1 tiles in v, as the hammered metal's dents were). Non-integer repeats, so that a shift
+  // cannot hide as whole tiles.
+  const std::vector<matgeom::ImagePixels> images = {uniform_image(2, 128, 128, 255), uniform_image(2, 200, 100, 50)};
+  for (const matgeom::TextureTransform& placement :
+       {matgeom::TextureTransform{}, matgeom::TextureTransform{{0.25, -0.5}, 0.75, {2.0, 3.0}}}) {
+    for (const double k : {1.46093, 4.0, 0.3}) {
+      matgeom::MaterialDesc desc("tiled");
+      desc.normal_image = 0;
+      desc.normal_transform = placement;
+      desc.set_image(MaterialParameter::BaseColor, 1);
+      desc[MaterialParameter::BaseColor].transform = placement;
+      const Material rendered = with_texture_repeats(material_from_desc(desc, images), static_cast<float>(k));
+      const Material exported = material_from_desc(matgeom::with_texture_repeats(desc, k), images);
+      for (const glm::vec2 uv : {glm::vec2(0.0f), glm::vec2(1.0f, 0.0f), glm::vec2(0.3f, 0.8f), glm::vec2(-1.5f, 2.25f)}) {
+        const glm::vec2 a = rendered.normal_map_uv_transform.apply(uv);
+        const glm::vec2 b = exported.normal_map_uv_transform.apply(uv);
+        CHECK(glm::length(a - b) < 1e-4f);
+        const glm::vec2 c = rendered[MaterialParameter::BaseColor].uv_transform.apply(uv);
+        const glm::vec2 d = exported[MaterialParameter::BaseColor].uv_transform.apply(uv);
+        CHECK(glm::length(c - d) < 1e-4f);
+      }
+    }
+  }
 }

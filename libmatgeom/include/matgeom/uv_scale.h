@@ -22,7 +22,10 @@ std::optional<double> metres_per_uv_unit(const TriangleMesh& mesh, uint32_t part
 double texture_repeats(const TriangleMesh& mesh, uint32_t part, double tile_size_m);
 
 // The material with every image it reads (parameters and normal map) repeated `repeats` times
-// per UV unit, on top of the transform it has.
+// per UV unit, on top of the transform it has: an image placed at T(uv) is then looked up at
+// T(repeats uv), scaled about the origin of our (Blender's, v-up) UVs as a Blender Mapping node's
+// Scale does and as matrender::with_texture_repeats repeats it. In glTF's terms (v down) that is
+// about (0, 1), so the transform's offset moves too.
 MaterialDesc with_texture_repeats(const MaterialDesc& material, double repeats);
 
 // Puts every part of `asset` in `material` (its images replace the asset's; the parts keep their
