@@ -40,6 +40,10 @@ class ObjectRenderer {
 
   // The scene the views are rendered in: its lamps and background.
   const matrender::Scene& scene() const { return built_.scene; }
+  // The scene material each part of the object renders with in the selected variant.
+  const std::vector<uint32_t>& part_materials() const {
+    return built_.scene.part_materials(built_.object_meshes.front());
+  }
 
   matrender::Camera view_camera(size_t view) const;
   matlearn::FramePose view_pose(size_t view, const std::string& stem) const;
