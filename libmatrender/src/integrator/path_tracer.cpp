@@ -138,8 +138,11 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
   // `vertex` counts every surface met, transparent ones included, so each gets its own random
   // numbers.
   for (int vertex = 0;; ++vertex) {
-    const RayHit hit = vertex == 0 ? camera_hit : scene_.accel.intersect(origin, dir, kInfinity);
-    ++result.rays;
+    RayHit hit = camera_hit;
+    if (vertex > 0) {
+      hit = scene_.accel.intersect(origin, dir, kInfinity);
+      ++result.rays;
+    }
     // Still the camera's ray: it has passed only through transparent surfaces.
     const bool camera_ray = bounce == 0;
     // Later rays see the lamps, weighted against NEE; camera rays only those visible to them,

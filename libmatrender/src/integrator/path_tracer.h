@@ -34,7 +34,7 @@ struct PathResult {
   bool hit = false;           // the camera ray hit a surface
   float transparency = 0.0f;  // of the camera ray through transparent surfaces to the background (1: a miss)
   float first_distance = 0.0f;
-  uint32_t rays = 0;          // closest-hit plus shadow rays traced
+  uint32_t rays = 0;          // closest-hit and shadow rays traced after the camera's
 };
 
 class PathTracer {

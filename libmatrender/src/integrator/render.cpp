@@ -1,5 +1,6 @@
 #include "matrender/render.h"
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <chrono>
@@ -18,6 +19,7 @@
 #include "film/adaptive_sampling.h"
 #include "film/camera_rays.h"
 #include "film/pixel_filter.h"
+#include "film/reachable_pixels.h"
 #include "integrator/ambient_occlusion.h"
 #include "integrator/path_tracer.h"
 #include "lights/light_sampler.h"
@@ -144,6 +146,16 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
                            settings.cycles_parity ? MultiscatterWalk::Cycles34 : MultiscatterWalk::Exact,
                            mipmaps ? rays.pixel_spread_angle() : 0.0f});
   const PixelFilterSampler& filter = blackman_harris_sampler();
+  // Camera rays of pixels outside it meet nothing: they see the background (and lamps visible to
+  // the camera, which lie outside the vertices' box).
+  const PixelRect pixels_seeing_scene =
+      lights.has_camera_visible_lamps()
+          ? PixelRect{0, 0, camera.width, camera.height}
+          : pixels_seeing_box(rays, camera.width, camera.height, data.vertex_lower, data.vertex_upper);
+  // What every camera ray that meets nothing sees, when it does not depend on the direction: the
+  // samples of a pixel outside pixels_seeing_scene then need no ray at all.
+  const std::optional<glm::vec3> uniform_background =
+      settings.transparent_background ? std::optional<glm::vec3>(glm::vec3(0.0f)) : lights.uniform_camera_background();
   const glm::mat3 world_to_camera = glm::transpose(glm::mat3(rays.right(), rays.up(), rays.back()));
 
   const std::optional<AdaptiveSampling> adaptive =
@@ -207,10 +219,48 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
     counts.uncounted_slots = 0;
   };
 
+  // Adds the radiance of camera sample `sample` of the pixel with `seeds` to acc.
+  auto add_radiance = [&](const glm::vec3& radiance, uint32_t sample, const PixelSeeds& seeds, PixelAccumulator& acc,
+                          TileCounts& counts) {
+    ++acc.samples;
+    if (!is_finite(radiance)) {
+      ++counts.discarded;
+      return;
+    }
+    acc.color += glm::dvec3(radiance);
+    if (color_variance) {
+      const double l = matgeom::rec709_luminance(radiance);
+      acc.luminance_squares += l * l;
+    }
+    if (adaptive && in_second_estimate(shuffled_sobol_index(reverse_bits(sample), seeds.pair(0))))
+      acc.second_estimate += glm::dvec3(radiance);
+  };
+
+  // Samples [begin, end) of a pixel whose camera rays all meet nothing and see a uniform
+  // background: what render_samples would sum for them, without their rays.
+  auto add_background_samples = [&](uint32_t pixel_index, uint32_t begin, uint32_t end, PixelAccumulator& acc,
+                                    TileCounts& counts) {
+    const PixelSeeds seeds(pixel_index, settings.seed);
+    for (uint32_t first = begin; first < end; first += kPacketSamples) {
+      if (cancel_requested()) return;
+      const uint32_t count = std::min<uint32_t>(kPacketSamples, end - first);
+      counts.samples += count;
+      pass_slots(counts, count);
+      // Each sample covers nothing (the background shows through whole).
+      for (uint32_t sample = first; sample < first + count; ++sample)
+        add_radiance(*uniform_background, sample, seeds, acc, counts);
+    }
+  };
+
   // Takes samples [begin, end) of pixel (x, y) into acc; the material parameters and the
   // tangent-space normal are summed into the frame's arrays.
   auto render_samples = [&](int x, int y, uint32_t begin, uint32_t end, PixelAccumulator& acc, TileCounts& counts) {
     const uint32_t pixel_index = static_cast<uint32_t>(y) * static_cast<uint32_t>(camera.width) + static_cast<uint32_t>(x);
+    const bool sees_scene = pixels_seeing_scene.contains(x, y);
+    if (!sees_scene && uniform_background) {
+      add_background_samples(pixel_index, begin, end, acc, counts);
+      return;
+    }
     const size_t i = pixel_index;
     const PixelSeeds seeds(pixel_index, settings.seed);
     const PairSeeds occlusion_seeds = ambient_occlusion_seeds(pixel_index, settings.seed);
@@ -231,24 +281,18 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
         dirs[lane] = rays.direction(static_cast<float>(x) + 0.5f + offsets[lane].x,
                                     static_cast<float>(y) + 0.5f + offsets[lane].y);
       }
-      data.accel.intersect_coherent(rays.origin(), dirs, count, camera_hits);
+      if (sees_scene) {
+        data.accel.intersect_coherent(rays.origin(), dirs, count, camera_hits);
+        counts.rays += static_cast<uint64_t>(count);
+      } else {
+        std::fill(camera_hits, camera_hits + count, RayHit());
+      }
       for (int lane = 0; lane < count; ++lane) {
         const uint32_t sample = first + static_cast<uint32_t>(lane);
         const PathResult path = tracer.trace(rays.origin(), dirs[lane], camera_hits[lane], PixelSampler(packet, lane),
                                              surface_aovs ? &sp : nullptr);
-        ++acc.samples;
         counts.rays += path.rays;
-        if (is_finite(path.radiance)) {
-          acc.color += glm::dvec3(path.radiance);
-          if (color_variance) {
-            const double l = matgeom::rec709_luminance(path.radiance);
-            acc.luminance_squares += l * l;
-          }
-          if (adaptive && in_second_estimate(shuffled_sobol_index(reverse_bits(sample), seeds.pair(0))))
-            acc.second_estimate += glm::dvec3(path.radiance);
-        } else {
-          ++counts.discarded;
-        }
+        add_radiance(path.radiance, sample, seeds, acc, counts);
         acc.coverage += 1.0 - static_cast<double>(path.transparency);
         if (!path.hit) continue;
         ++acc.hits;

@@ -30,6 +30,7 @@ class PreparedEnvironmentLight {
 
   static constexpr LightType type() { return LightType::Infinite; }
   static constexpr bool visible_to_camera() { return true; }
+  static constexpr bool same_radiance_everywhere() { return false; }
 
   // A direction drawn from the density; nothing when the map is black. `receiving` plays no
   // part: most directions of a map are seen from any side.

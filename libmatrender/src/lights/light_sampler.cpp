@@ -145,4 +145,16 @@ glm::vec3 LightSampler::escaped_radiance(const glm::vec3& dir, float bsdf_pdf, b
   return sum;
 }
 
+std::optional<glm::vec3> LightSampler::uniform_camera_background() const {
+  for (size_t index : infinite_) {
+    const bool varies = with_light(lights_[index], [](const auto& light) {
+      if constexpr (std::decay_t<decltype(light)>::type() == LightType::Infinite)
+        return light.visible_to_camera() && !light.same_radiance_everywhere();
+      return false;
+    });
+    if (varies) return std::nullopt;
+  }
+  return escaped_radiance(glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, false, true, PickSite());
+}
+
 }  // namespace matrender

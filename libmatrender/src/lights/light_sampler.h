@@ -101,6 +101,9 @@ class LightSampler {
   // to the camera, whole.
   glm::vec3 escaped_radiance(const glm::vec3& dir, float bsdf_pdf, bool unweighted, bool camera_ray,
                              const PickSite& from) const;
+  // What a camera ray that meets nothing sees (its escaped_radiance) when that is the same in
+  // every direction; nothing when an infinite light visible to the camera varies with direction.
+  std::optional<glm::vec3> uniform_camera_background() const;
 
  private:
   std::vector<SceneLight> lights_;

@@ -10,8 +10,8 @@
 // solid-angle density of sample() giving wi, radiance(dir) toward a ray along dir, and
 // visible_to_camera(). Emissive meshes (Area too) are found by the rays' own hits: pdf(p, wi, t,
 // triangle). Infinite lights, which rays that leave the scene see: pdf(direction),
-// radiance(direction) and visible_to_camera(); those that sample() can draw are in the
-// distribution.
+// radiance(direction), visible_to_camera() and same_radiance_everywhere() (radiance does not
+// depend on the direction); those that sample() can draw are in the distribution.
 #include <variant>
 
 #include "lights/disk_lamp.h"

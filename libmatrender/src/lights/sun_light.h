@@ -24,6 +24,7 @@ class PreparedSunLight {
   // delta light.
   static constexpr LightType type() { return LightType::Infinite; }
   static constexpr bool visible_to_camera() { return false; }
+  static constexpr bool same_radiance_everywhere() { return false; }
 
   std::optional<LightSample> sample(const glm::vec3& p, const ReceivingDirections& receiving, glm::vec2 u) const;
   float pdf(const glm::vec3& direction) const;

@@ -18,6 +18,7 @@ class UniformBackground {
 
   static constexpr LightType type() { return LightType::Infinite; }
   static constexpr bool visible_to_camera() { return true; }
+  static constexpr bool same_radiance_everywhere() { return true; }
   // Not part of the light-sampling distribution (LightSampler leaves it out): no sample, and a
   // density of 0 everywhere, so a ray that escapes takes its radiance with MIS weight 1.
   std::optional<LightSample> sample(const glm::vec3&, const ReceivingDirections&, glm::vec2) const {

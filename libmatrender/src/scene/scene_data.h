@@ -2,6 +2,7 @@
 // What a committed scene holds: geometry in the layout shading needs, materials, lamps and the
 // Embree BVH over the geometry.
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -36,6 +37,10 @@ class SceneData {
   bool committed = false;
   double build_seconds = 0.0;
   size_t triangle_count = 0;
+  // The box around every vertex of every mesh, set by commit (empty, lower above upper, without
+  // meshes): nothing a ray can hit lies outside it.
+  glm::vec3 vertex_lower{std::numeric_limits<float>::infinity()};
+  glm::vec3 vertex_upper{-std::numeric_limits<float>::infinity()};
 };
 
 }  // namespace matrender
