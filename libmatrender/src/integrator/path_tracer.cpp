@@ -138,11 +138,10 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
   // `vertex` counts every surface met, transparent ones included, so each gets its own random
   // numbers.
   for (int vertex = 0;; ++vertex) {
-    RayHit hit = camera_hit;
-    if (vertex > 0) {
-      hit = scene_.accel.intersect(origin, dir, kInfinity);
-      ++result.rays;
-    }
+    // One const initialisation: GCC 12 compiled a copy reassigned for later vertices into a loop
+    // 12 % slower on the 10k sphere (render_bench), with fewer instructions.
+    const RayHit hit = vertex == 0 ? camera_hit : scene_.accel.intersect(origin, dir, kInfinity);
+    if (vertex > 0) ++result.rays;  // the camera's ray is the caller's
     // Still the camera's ray: it has passed only through transparent surfaces.
     const bool camera_ray = bounce == 0;
     // Later rays see the lamps, weighted against NEE; camera rays only those visible to them,
