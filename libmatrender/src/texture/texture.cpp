@@ -4,8 +4,11 @@
 #include <atomic>
 #include <cctype>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <stdexcept>
+
+#include <emmintrin.h>
 
 #include <OpenImageIO/imageio.h>
 
@@ -45,6 +48,38 @@ int wrap_index(int i, int n, Wrap wrap) {
   if (wrap == Wrap::Clamp) return i < 0 ? 0 : (i >= n ? n - 1 : i);
   const int r = i % n;
   return r < 0 ? r + n : r;
+}
+
+// Texel (x, y) of `level` as four floats in one register: bytes over 255 (level.texel's value,
+// exactly), or the stored floats.
+template <bool kBytes>
+__m128 texel_lanes(const TexelLevel& level, int x, int y) {
+  const size_t i = static_cast<size_t>(y) * static_cast<size_t>(level.width) + static_cast<size_t>(x);
+  if constexpr (!kBytes) {
+    return _mm_loadu_ps(&level.floats[i].x);
+  } else {
+    uint32_t rgba;
+    std::memcpy(&rgba, level.bytes.data() + 4 * i, sizeof(rgba));
+    const __m128i zero = _mm_setzero_si128();
+    const __m128i words = _mm_unpacklo_epi16(_mm_unpacklo_epi8(_mm_cvtsi32_si128(static_cast<int>(rgba)), zero), zero);
+    return _mm_mul_ps(_mm_cvtepi32_ps(words), _mm_set1_ps(1.0f / 255.0f));
+  }
+}
+
+// (1 - ty) ((1 - tx) t00 + tx t10) + ty ((1 - tx) t01 + tx t11) over the four channels at once
+// (SSE2, in every x86-64): the same operations in the same order as per channel, so the same
+// floats. A bilinear lookup's texels were a third of its instructions one channel at a time.
+template <bool kBytes>
+glm::vec4 blend_texels(const TexelLevel& level, int x0, int x1, int y0, int y1, float tx, float ty) {
+  const __m128 left = _mm_set1_ps(1.0f - tx), right = _mm_set1_ps(tx);
+  const __m128 row0 = _mm_add_ps(_mm_mul_ps(left, texel_lanes<kBytes>(level, x0, y0)),
+                                 _mm_mul_ps(right, texel_lanes<kBytes>(level, x1, y0)));
+  const __m128 row1 = _mm_add_ps(_mm_mul_ps(left, texel_lanes<kBytes>(level, x0, y1)),
+                                 _mm_mul_ps(right, texel_lanes<kBytes>(level, x1, y1)));
+  const __m128 value = _mm_add_ps(_mm_mul_ps(_mm_set1_ps(1.0f - ty), row0), _mm_mul_ps(_mm_set1_ps(ty), row1));
+  glm::vec4 out;
+  _mm_storeu_ps(&out.x, value);
+  return out;
 }
 
 }  // namespace
@@ -249,9 +284,8 @@ glm::vec4 Texture::bilinear(const TexelLevel& level, glm::vec2 uv) const {
   const int x1 = index(fx, 1, level.width);
   const int y0 = index(fy, 0, level.height);
   const int y1 = index(fy, 1, level.height);
-  const auto texel = [&](int ix, int iy) { return level.texel(ix, iy); };
-  return (1.0f - ty) * ((1.0f - tx) * texel(x0, y0) + tx * texel(x1, y0)) +
-         ty * ((1.0f - tx) * texel(x0, y1) + tx * texel(x1, y1));
+  return level.stored_as_bytes() ? blend_texels<true>(level, x0, x1, y0, y1, tx, ty)
+                                 : blend_texels<false>(level, x0, x1, y0, y1, tx, ty);
 }
 
 std::shared_ptr<const Texture> Texture::load_udim(const std::string& pattern, ColorSpace space, Wrap wrap) {
