@@ -69,6 +69,7 @@ struct RenderSettings {
 
 struct RenderStats {
   double seconds = 0.0;
+  // Every sample a pixel took, those of pixels that cannot see the scene (which need no ray) too.
   uint64_t camera_samples = 0;
   uint64_t rays = 0;               // closest-hit and shadow rays traced
   uint64_t discarded_samples = 0;  // path contributions that were NaN or Inf and were dropped
