@@ -136,15 +136,14 @@ const Background& Scene::background() const { return data_->background; }
 void Scene::commit() {
   if (data_->committed) return;
   const auto start = std::chrono::steady_clock::now();
-  for (const MeshData& m : data_->meshes) {
-    data_->accel.add_triangle_mesh(m.positions, m.triangles);
+  for (const MeshData& m : data_->meshes) data_->accel.add_triangle_mesh(m.positions, m.triangles);
+  data_->accel.commit();
+  data_->build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  for (const MeshData& m : data_->meshes)
     for (const glm::vec3& p : m.positions) {
       data_->vertex_lower = glm::min(data_->vertex_lower, p);
       data_->vertex_upper = glm::max(data_->vertex_upper, p);
     }
-  }
-  data_->accel.commit();
-  data_->build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   data_->committed = true;
 }
 
