@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <memory>
 #include <vector>
 
 #include "matgeom/memory_limit.h"
@@ -124,28 +125,45 @@ namespace {
 // the threads share.
 struct Pins {
   uint64_t ids[kPinnedPages] = {};
-  std::shared_ptr<const TexelLevel> texels[kPinnedPages];
+  const TexelLevel* texels[kPinnedPages] = {};
+  std::shared_ptr<const TexelLevel> owners[kPinnedPages];  // what keeps texels[i] alive
 };
-thread_local Pins pins;
+// Lookups reach the pins through a plain pointer: a thread_local with a destructor costs every
+// access a second TLS lookup, for its guard, and pinning inline made the lookup save registers
+// (52 instructions a lookup on the textured vase, 27 now). The pins are freed at the thread's
+// exit by owned_pins.
+thread_local Pins* thread_pins = nullptr;
+thread_local std::unique_ptr<Pins> owned_pins;
+
+[[gnu::noinline]] const TexelLevel& pin(TexelPage& page, size_t slot) {
+  if (!thread_pins) {
+    owned_pins = std::make_unique<Pins>();
+    thread_pins = owned_pins.get();
+  }
+  Pins& p = *thread_pins;
+  p.owners[slot] = page.acquire();
+  p.texels[slot] = p.owners[slot].get();
+  p.ids[slot] = page.id();
+  return *p.texels[slot];
+}
 
 }  // namespace
 
 const TexelLevel& pinned_texels(TexelPage& page) {
-  Pins& p = pins;
+  const Pins* p = thread_pins;
   const uint64_t id = page.id();
   const size_t slot = id % kPinnedPages;
-  if (p.ids[slot] != id) {
-    p.texels[slot] = page.acquire();
-    p.ids[slot] = id;
-  }
-  return *p.texels[slot];
+  if (p && p->ids[slot] == id) return *p->texels[slot];
+  return pin(page, slot);
 }
 
 void release_pinned_texels() {
-  Pins& p = pins;
+  Pins* p = thread_pins;
+  if (!p) return;
   for (size_t i = 0; i < kPinnedPages; ++i) {
-    p.ids[i] = 0;
-    p.texels[i].reset();
+    p->ids[i] = 0;
+    p->texels[i] = nullptr;
+    p->owners[i].reset();
   }
 }
 
