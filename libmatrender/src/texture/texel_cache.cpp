@@ -125,8 +125,7 @@ namespace {
 // the threads share.
 struct Pins {
   uint64_t ids[kPinnedPages] = {};
-  const TexelLevel* texels[kPinnedPages] = {};
-  std::shared_ptr<const TexelLevel> owners[kPinnedPages];  // what keeps texels[i] alive
+  std::shared_ptr<const TexelLevel> texels[kPinnedPages];
 };
 // Lookups reach the pins through a plain pointer: a thread_local with a destructor costs every
 // access a second TLS lookup, for its guard, and pinning inline made the lookup save registers
@@ -141,8 +140,7 @@ thread_local std::unique_ptr<Pins> owned_pins;
     thread_pins = owned_pins.get();
   }
   Pins& p = *thread_pins;
-  p.owners[slot] = page.acquire();
-  p.texels[slot] = p.owners[slot].get();
+  p.texels[slot] = page.acquire();
   p.ids[slot] = page.id();
   return *p.texels[slot];
 }
@@ -162,8 +160,7 @@ void release_pinned_texels() {
   if (!p) return;
   for (size_t i = 0; i < kPinnedPages; ++i) {
     p->ids[i] = 0;
-    p->texels[i] = nullptr;
-    p->owners[i].reset();
+    p->texels[i].reset();
   }
 }
 
