@@ -220,6 +220,12 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
     counts.uncounted_slots = 0;
   };
 
+  // Whether camera sample `sample` of the pixel with `seeds` counts in adaptive sampling's
+  // second estimate.
+  auto in_second_half = [&](uint32_t sample, const PixelSeeds& seeds) {
+    return in_second_estimate(shuffled_sobol_index(reverse_bits(sample), seeds.pair(0)));
+  };
+
   // Adds the radiance of camera sample `sample` of the pixel with `seeds` to acc.
   auto add_radiance = [&](const glm::vec3& radiance, uint32_t sample, const PixelSeeds& seeds, PixelAccumulator& acc,
                           TileCounts& counts) {
@@ -233,8 +239,7 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
       const double l = matgeom::rec709_luminance(radiance);
       acc.luminance_squares += l * l;
     }
-    if (adaptive && in_second_estimate(shuffled_sobol_index(reverse_bits(sample), seeds.pair(0))))
-      acc.second_estimate += glm::dvec3(radiance);
+    if (adaptive && in_second_half(sample, seeds)) acc.second_estimate += glm::dvec3(radiance);
   };
 
   // Samples [begin, end) of a pixel whose camera rays all meet nothing and see a uniform
@@ -265,8 +270,7 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
         for (uint32_t k = 0; k < count; ++k) acc.luminance_squares += luminance * luminance;
       if (adaptive)
         for (uint32_t sample = first; sample < first + count; ++sample)
-          if (in_second_estimate(shuffled_sobol_index(reverse_bits(sample), seeds.pair(0))))
-            acc.second_estimate += radiance;
+          if (in_second_half(sample, seeds)) acc.second_estimate += radiance;
     }
   };
 
