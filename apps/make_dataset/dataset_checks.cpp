@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <filesystem>
 
 #include <fmt/format.h>
 
@@ -59,6 +60,8 @@ std::vector<std::vector<uint32_t>> parts_of_slots(const DatasetConfig& config, s
 
 
 void check_before_writing(const DatasetConfig& config) {
+  if (std::filesystem::exists(config.output) && !std::filesystem::is_directory(config.output))
+    throw InputError(config.output + ": the output is a file, not a folder; give --output a folder's name");
   // A frame's buffers, and the maps the writer encodes from them (about as much again).
   const int w = config.render.width, h = config.render.height;
   if (const auto problem = matgeom::memory_problem(
@@ -76,6 +79,11 @@ void check_before_writing(const DatasetConfig& config) {
     } catch (const std::exception& e) {
       throw InputError(config.source + ": " + object_key(o) + ": " + e.what());
     }
+    // Every candidate is a textured material, and without UVs a texture shows one texel.
+    if (object.uv_pass == matrender::UvPassMode::Never && asset.mesh.uvs.empty())
+      throw InputError(config.source + ": " + object_key(o) +
+                       ".uv_pass: never, but the mesh has no texture coordinates, so each material would show one "
+                       "texel of its maps; use when_missing (the default) to give it the paper's UV pass");
     const size_t part_count = std::max({static_cast<size_t>(asset.mesh.part_count()), asset.materials.size(), size_t{1}});
     parts_of_slots(config, o, asset.mesh.part_names, part_count);
     if (config.paper_texture_layout && object.slots.size() != 1)

@@ -1,6 +1,7 @@
 #include "dataset_config.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -10,6 +11,8 @@
 #include <yaml-cpp/yaml.h>
 
 #include "common/number_options.h"
+#include "common/yaml_checks.h"
+#include "dataset_folders.h"
 #include "matgeom/builtin_objects.h"
 #include "matgeom/image_writing.h"
 #include "matgeom/input_file.h"
@@ -70,13 +73,18 @@ class Sources {
  public:
   explicit Sources(std::string file) : file_(std::move(file)) {}
   void overridden(const std::string& key, const std::string& option) { options_[key] = option; }
-  // "config.yaml: render.samples" or "--spp (render.samples)".
+  bool is_overridden(const std::string& key) const { return options_.count(key) > 0; }
+  // "config.yaml: render.samples" or "--spp (render.samples)": the option that set the key or a
+  // key around it, else the option that set a key inside it (`--set render.resolution.1=64` on a
+  // file whose resolution is one side makes `render.resolution` wrong), else the file.
   std::string at(const std::string& key) const {
     if (key.empty()) return file_;
     for (std::string prefix = key;; prefix = prefix.substr(0, prefix.rfind('.'))) {
       if (const auto it = options_.find(prefix); it != options_.end()) return it->second + " (" + key + ")";
       if (prefix.find('.') == std::string::npos) break;
     }
+    for (const auto& [overridden_key, option] : options_)
+      if (overridden_key.rfind(key + ".", 0) == 0) return option + " (" + key + ")";
     return file_ + ": " + key;
   }
   const std::string& file() const { return file_; }
@@ -92,12 +100,20 @@ class Value {
   Value(YAML::Node node, std::string key, const Sources& sources)
       : node_(std::move(node)), key_(std::move(key)), sources_(sources) {}
 
-  bool present() const { return node_.IsDefined() && !node_.IsNull(); }
+  // Whether the key is given. A key written with no value (`samples:`, `--set render.samples=`)
+  // is refused rather than read as absent, which would silently give it its default.
+  bool present() const {
+    if (is_null()) fail("no value given: write one, or leave the key out for its default");
+    return node_.IsDefined();
+  }
+  // Whether the key is given as null (`~`, `null` or nothing), which only `max_variants` accepts.
+  bool is_null() const { return node_.IsDefined() && node_.IsNull(); }
   const std::string& key() const { return key_; }
   [[noreturn]] void fail(const std::string& message) const { throw InputError(sources_.at(key_) + ": " + message); }
 
   Value child(const std::string& name) const {
-    return Value(node_.IsMap() ? node_[name] : YAML::Node(), key_.empty() ? name : key_ + "." + name, sources_);
+    return Value(node_.IsMap() ? node_[name] : YAML::Node(YAML::NodeType::Undefined),
+                 key_.empty() ? name : key_ + "." + name, sources_);
   }
   // The map's keys must all be among `known`.
   void check_keys(const std::set<std::string>& known) const {
@@ -168,14 +184,18 @@ class Value {
 };
 
 // Sets the node at dotted `key` of `root` to `value`, making maps on the way ("a.b.c"; a number
-// indexes a list).
+// indexes a list). A single value on the way is not replaced by a map: the key is misspelled.
 void apply_override(YAML::Node root, const Override& o) {
+  if (o.value.find_first_not_of(" \t") == std::string::npos)
+    throw InputError(o.option + ": no value given: write one (null where the key takes none)");
   YAML::Node value;
   try {
     value = YAML::Load(o.value);
   } catch (const YAML::Exception& e) {
     throw InputError(o.option + ": \"" + o.value + "\" is not a YAML value: " + e.msg);
   }
+  if (const std::optional<std::string> problem = app_support::repeated_key_problem(value))
+    throw InputError(o.option + ": " + *problem);
   std::vector<std::string> parts;
   for (size_t start = 0;;) {
     const size_t dot = o.key.find('.', start);
@@ -191,18 +211,26 @@ void apply_override(YAML::Node root, const Override& o) {
       if (!index || *index < 0 || static_cast<size_t>(*index) >= node.size())
         throw InputError(o.option + ": " + o.key + ": \"" + parts[k] + "\" is not an index of that list");
       path.push_back(node[static_cast<size_t>(*index)]);
-    } else {
-      if (!node[parts[k]].IsDefined() || node[parts[k]].IsNull() || node[parts[k]].IsScalar())
-        node[parts[k]] = YAML::Node(YAML::NodeType::Map);
+    } else if (node.IsMap()) {
+      if (!node[parts[k]].IsDefined() || node[parts[k]].IsNull()) node[parts[k]] = YAML::Node(YAML::NodeType::Map);
       path.push_back(node[parts[k]]);
+    } else {
+      throw InputError(o.option + ": " + o.key + ": " + parts[k - 1] + " is a single value, with no key \"" +
+                       parts[k] + "\" inside");
     }
   }
   YAML::Node& parent = path.back();
   const std::optional<int64_t> index = app_support::whole_number(parts.back());
-  if (parent.IsSequence() && index && *index >= 0 && static_cast<size_t>(*index) < parent.size())
+  if (parent.IsSequence()) {
+    if (!index || *index < 0 || static_cast<size_t>(*index) >= parent.size())
+      throw InputError(o.option + ": " + o.key + ": \"" + parts.back() + "\" is not an index of that list");
     parent[static_cast<size_t>(*index)] = value;
-  else
+  } else if (parent.IsMap()) {
     parent[parts.back()] = value;
+  } else {
+    throw InputError(o.option + ": " + o.key + ": " + parts[parts.size() - 2] + " is a single value, with no key \"" +
+                     parts.back() + "\" inside");
+  }
 }
 
 MaterialCandidate read_candidate(const Value& v, const fs::path& base) {
@@ -237,14 +265,24 @@ std::vector<SlotConfig> read_slots(const Value& object, const Value& defaults, c
   if (!materials.present()) object.fail("no materials: give `materials` here or at the top level");
   std::map<std::string, std::vector<std::string>> parts;
   if (object.child("slots").present())
-    for (const auto& [slot, list] : object.child("slots").entries())
+    for (const auto& [slot, list] : object.child("slots").entries()) {
       for (const Value& part : list.items()) parts[slot].push_back(part.text());
+      if (parts[slot].empty())
+        list.fail("an empty part list; a slot that takes every part not listed is left out of `slots`");
+    }
   std::vector<SlotConfig> slots;
   for (const auto& [slot, list] : materials.entries()) {
     SlotConfig config;
     config.key = slot;
     config.parts = parts[slot];
-    for (const Value& item : list.items()) config.candidates.push_back(read_candidate(item, base));
+    for (const Value& item : list.items()) {
+      MaterialCandidate candidate = read_candidate(item, base);
+      for (const MaterialCandidate& earlier : config.candidates)
+        if (earlier.name == candidate.name)
+          item.fail("\"" + earlier.spelled + "\" and \"" + candidate.spelled + "\" are both \"" + candidate.name +
+                    "\" in the dataset; list each material of a slot once");
+      config.candidates.push_back(std::move(candidate));
+    }
     if (config.candidates.empty()) list.fail("a slot needs at least one candidate material");
     slots.push_back(std::move(config));
   }
@@ -259,7 +297,16 @@ std::vector<SlotConfig> read_slots(const Value& object, const Value& defaults, c
   return slots;
 }
 
-ObjectConfig read_object(const Value& v, const Value& defaults, const fs::path& base, std::set<std::string>& names) {
+// Object names by their lower-case spelling, for folders that differ only in case.
+using FolderNames = std::map<std::string, std::string>;
+
+std::string folded_case(std::string name) {
+  std::transform(name.begin(), name.end(), name.begin(),
+                 [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); });
+  return name;
+}
+
+ObjectConfig read_object(const Value& v, const Value& defaults, const fs::path& base, FolderNames& names) {
   v.check_keys({"name", "builtin", "mesh", "seed", "uv_pass", "slots", "materials"});
   ObjectConfig object;
   const bool builtin = v.child("builtin").present(), mesh = v.child("mesh").present();
@@ -288,11 +335,17 @@ ObjectConfig read_object(const Value& v, const Value& defaults, const fs::path& 
     object.source = matrender::MeshFile{path.lexically_normal().string()};
     object.name = path.stem().string();
   }
-  if (v.child("name").present()) object.name = v.child("name").text();
-  if (object.name.empty() || object.name.find_first_of("/\\") != std::string::npos || object.name[0] == '.' ||
-      object.name.rfind("_tmp", 0) == 0)
-    v.child("name").fail("\"" + object.name + "\" cannot name a folder of the dataset");
-  if (!names.insert(object.name).second) v.child("name").fail("two objects are named \"" + object.name + "\"");
+  const bool named = v.child("name").present();
+  if (named) object.name = v.child("name").text();
+  const Value name_source = named ? v.child("name") : v.child(builtin ? "builtin" : "mesh");
+  if (const std::optional<std::string> problem = object_folder_problem(object.name))
+    name_source.fail("\"" + object.name + "\" cannot name the object's folder: " + *problem +
+                     (named ? "" : "; give the object a `name`"));
+  if (const auto [earlier, inserted] = names.emplace(folded_case(object.name), object.name); !inserted)
+    name_source.fail(earlier->second == object.name
+                         ? "two objects are named \"" + object.name + "\"; give one a `name`"
+                         : "\"" + object.name + "\" and \"" + earlier->second +
+                               "\" differ only in case, so they would be one folder on Windows and macOS");
   if (v.child("uv_pass").present()) {
     const std::string mode = v.child("uv_pass").text();
     if (mode == "never") object.uv_pass = matrender::UvPassMode::Never;
@@ -405,7 +458,10 @@ DatasetConfig read_config(const Value& root, const fs::path& base) {
   root.check_keys({"output", "seed", "variants", "materials", "objects", "camera", "render", "lights", "splits",
                    "paper_texture_layout"});
   DatasetConfig config;
-  if (root.child("output").present()) config.output = root.child("output").text();
+  if (const Value output = root.child("output"); output.present()) {
+    config.output = output.text();
+    if (config.output.empty()) output.fail("an empty folder name; name the dataset's folder");
+  }
   if (root.child("seed").present()) config.seed = root.child("seed").seed();
   if (const Value variants = root.child("variants"); variants.present()) {
     variants.check_keys({"strategy", "max_variants", "seed"});
@@ -415,11 +471,11 @@ DatasetConfig read_config(const Value& root, const fs::path& base) {
       else if (strategy == "zip") config.combination = matgeom::VariantCombination::Zip;
       else variants.child("strategy").fail("expected cartesian or zip, got " + strategy);
     }
-    if (variants.child("max_variants").present())
-      config.max_variants = static_cast<uint64_t>(variants.child("max_variants").whole(1, 1000000));
+    if (const Value cap = variants.child("max_variants"); !cap.is_null() && cap.present())
+      config.max_variants = static_cast<uint64_t>(cap.whole(1, 1000000));
     if (variants.child("seed").present()) config.variant_seed = variants.child("seed").seed();
   }
-  std::set<std::string> names;
+  FolderNames names;
   const Value objects = root.child("objects");
   if (!objects.present()) root.fail("no objects: the configuration needs an `objects` list");
   for (const Value& object : objects.items()) config.objects.push_back(read_object(object, root.child("materials"), base, names));
@@ -450,6 +506,8 @@ namespace {
 DatasetConfig read_root(YAML::Node root, const std::string& source, const fs::path& base,
                         const std::vector<Override>& overrides) {
   if (!root.IsMap()) throw InputError(source + ": expected a mapping of keys at the top");
+  if (const std::optional<std::string> problem = app_support::repeated_key_problem(root))
+    throw InputError(source + ": " + *problem);
   Sources sources(source);
   for (const Override& o : overrides) {
     apply_override(root, o);
@@ -457,6 +515,10 @@ DatasetConfig read_root(YAML::Node root, const std::string& source, const fs::pa
   }
   DatasetConfig config = read_config(Value(root, "", sources), base);
   config.source = source;
+  // Like every path of the file, its output is relative to it; one given on the command line is
+  // relative to the current folder, as a shell's paths are.
+  if (!sources.is_overridden("output") && fs::path(config.output).is_relative() && base != fs::current_path())
+    config.output = (base / config.output).lexically_normal().string();
   // Where the dataset goes is not part of what is rendered: a copy made elsewhere, or shards
   // written to other folders, record the same configuration.
   YAML::Node recorded = YAML::Clone(root);

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "common/number_options.h"
+#include "dataset_folders.h"
 #include "matgeom/atomic_file.h"
 #include "matlearn/dataset_splits.h"
 #include "matlearn/dataset_writer.h"
@@ -101,11 +102,11 @@ std::vector<std::string> variant_material_names(const ObjectConfig& object, cons
 
 std::vector<matlearn::SplitFile> write_dataset_records(const DatasetConfig& config, const DatasetPlan& plan) {
   const fs::path root(config.output);
-  fs::create_directories(root / "config");
-  for (const char* record : {"material_segmentation_map.yaml", "config/object_disjoint_v1.yaml",
-                             "config/variance_disjoint_v1.yaml", "config/material_disjoint_v1.yaml",
-                             "config/paper_random_v1.yaml"})
-    matgeom::remove_stale_temporaries(root / record, false);
+  fs::create_directories(root / kConfigFolder);
+  matgeom::remove_stale_temporaries(root / kSegmentationMapFile, false);
+  for (const char* split : {"object_disjoint_v1.yaml", "variance_disjoint_v1.yaml", "material_disjoint_v1.yaml",
+                            "paper_random_v1.yaml"})
+    matgeom::remove_stale_temporaries(root / kConfigFolder / split, false);
   matlearn::write_segmentation_map_yaml(root);
   std::vector<matlearn::SampleId> samples;
   std::vector<std::vector<std::string>> materials;
@@ -133,7 +134,7 @@ std::vector<matlearn::SplitFile> write_dataset_records(const DatasetConfig& conf
       {matlearn::random_split(sorted, train, config.split_seed), {train, 0.0, 1.0 - train}}};
   std::vector<matlearn::SplitFile> written;
   for (const auto& [split, split_ratios] : splits) {
-    matlearn::write_split_file(root / "config" / (split.name + ".yaml"), split, split_ratios, dataset_root);
+    matlearn::write_split_file(root / kConfigFolder / (split.name + ".yaml"), split, split_ratios, dataset_root);
     written.push_back(split);
   }
   return written;

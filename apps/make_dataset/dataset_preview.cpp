@@ -299,7 +299,7 @@ window.addEventListener("load", () => {
 
 PreviewSummary write_preview(const fs::path& root, const PreviewOptions& options) {
   const std::vector<fs::path> variants = variant_folders(root, "transforms.json");
-  const fs::path out = root / "preview";
+  const fs::path out = root / kPreviewFolder;
   fs::create_directories(out);
   std::vector<VariantSheet> sheets;
   for (const fs::path& variant : variants) sheets.push_back(write_sheet(variant, out, options));

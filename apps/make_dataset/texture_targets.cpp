@@ -3,6 +3,7 @@
 #include <exception>
 #include <set>
 
+#include "dataset_folders.h"
 #include "matgeom/material_library.h"
 #include "matgeom/srgb.h"
 #include "matgeom/unorm.h"
@@ -43,7 +44,7 @@ matgeom::ImagePixels reference(const matgeom::FolderMaterial& folder, MaterialPa
 }  // namespace
 
 std::filesystem::path texture_target_root(const DatasetConfig& config) {
-  return std::filesystem::path(config.output) / "paper_textures";
+  return std::filesystem::path(config.output) / kPaperTexturesFolder;
 }
 
 matlearn::MaterialReferences material_references(const matgeom::FolderMaterial& folder) {

@@ -185,13 +185,13 @@ void verify_variant(const fs::path& folder, VerifyReport& report, std::set<std::
 VerifyReport verify_dataset(const fs::path& root) {
   const std::vector<fs::path> variants = variant_folders(root, "images");
   VerifyReport report;
-  if (!fs::is_regular_file(root / "material_segmentation_map.yaml"))
-    report.problems.push_back((root / "material_segmentation_map.yaml").string() + ": missing");
+  if (!fs::is_regular_file(root / kSegmentationMapFile))
+    report.problems.push_back((root / kSegmentationMapFile).string() + ": missing");
   std::set<std::string> ids;
   for (const fs::path& variant : variants) verify_variant(variant, report, ids);
   // Every split file lists frames of the dataset, each once.
-  if (fs::is_directory(root / "config"))
-    for (const fs::directory_entry& entry : fs::directory_iterator(root / "config")) {
+  if (fs::is_directory(root / kConfigFolder))
+    for (const fs::directory_entry& entry : fs::directory_iterator(root / kConfigFolder)) {
       if (entry.path().extension() != ".yaml") continue;
       try {
         const matlearn::SplitFile split = matlearn::read_split_file(entry.path());
