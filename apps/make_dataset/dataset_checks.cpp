@@ -3,14 +3,18 @@
 #include <algorithm>
 #include <exception>
 #include <filesystem>
+#include <fstream>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "matgeom/builtin_objects.h"
 #include "matgeom/material_classes.h"
 #include "matgeom/material_folder.h"
 #include "matgeom/memory_limit.h"
+#include "dataset_folders.h"
 #include "matgeom/mesh_io.h"
+#include "matlearn/dataset_writer.h"
 #include "object_renderer.h"
 
 namespace make_dataset {
@@ -108,6 +112,68 @@ void check_before_writing(const DatasetConfig& config) {
                            "after its class (\"wood_oak\") or give its metadata.json a category");
       }
   }
+}
+
+// The configuration a variant folder's metadata.json records (its provenance), or nothing when
+// it has none that parses.
+std::optional<std::string> recorded_configuration(const std::filesystem::path& variant) {
+  std::ifstream in(variant / "metadata.json");
+  if (!in) return std::nullopt;
+  const nlohmann::json metadata = nlohmann::json::parse(in, nullptr, false);
+  const nlohmann::json::json_pointer pointer("/provenance/configuration");
+  if (metadata.is_discarded() || !metadata.is_object() || !metadata.contains(pointer) || !metadata[pointer].is_string())
+    return std::nullopt;
+  return metadata[pointer].get<std::string>();
+}
+
+void check_output_matches_plan(const DatasetConfig& config, const DatasetPlan& plan) {
+  namespace fs = std::filesystem;
+  const fs::path root(config.output);
+  if (!fs::is_directory(root)) return;
+  // Hidden entries are the writer's temporaries (atomic_file.h).
+  const auto listed_folders = [](const fs::path& folder) {
+    std::vector<std::string> names;
+    for (const fs::directory_entry& entry : fs::directory_iterator(folder))
+      if (entry.is_directory() && entry.path().filename().string()[0] != '.')
+        names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  };
+  std::vector<std::string> strangers;  // folders the plan does not make
+  std::vector<fs::path> made;           // variant folders it makes, from an earlier run
+  for (const std::string& name : listed_folders(root)) {
+    if (name == kConfigFolder || name == kPreviewFolder || name == kPaperTexturesFolder) continue;
+    const auto object = std::find_if(config.objects.begin(), config.objects.end(),
+                                     [&](const ObjectConfig& o) { return o.name == name; });
+    if (object == config.objects.end()) {
+      strangers.push_back(name + "/");
+      continue;
+    }
+    const size_t index = static_cast<size_t>(object - config.objects.begin());
+    const size_t count = plan.variants[index].size();
+    for (const std::string& variant : listed_folders(root / name)) {
+      bool planned = false;
+      for (size_t v = 0; v < count && !planned; ++v) planned = variant == matlearn::variant_folder_name(v, count);
+      if (planned) made.push_back(root / name / variant);
+      else strangers.push_back(name + "/" + variant + "/");
+    }
+  }
+  if (!strangers.empty()) {
+    std::string shown;
+    for (size_t k = 0; k < std::min<size_t>(strangers.size(), 5); ++k) shown += (k ? ", " : "") + strangers[k];
+    if (strangers.size() > 5) shown += fmt::format(" and {} more", strangers.size() - 5);
+    throw InputError(config.output + ": holds " + shown +
+                     ", which this configuration does not make; their frames would be in none of its split files. "
+                     "Render into another --output, or remove them");
+  }
+  // Found before the split files are written, which a refusal at the variant would leave listing
+  // this run's frames.
+  for (const fs::path& variant : made)
+    if (const std::optional<std::string> recorded = recorded_configuration(variant);
+        recorded && *recorded != config.canonical_yaml)
+      throw InputError((variant / "metadata.json").string() +
+                       ": this variant was made with other settings (the configuration it records differs from "
+                       "this run's); render into another --output, or delete the folder to render it again");
 }
 
 }  // namespace make_dataset

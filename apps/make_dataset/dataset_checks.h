@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "dataset_config.h"
+#include "dataset_plan.h"
 
 namespace make_dataset {
 
@@ -21,5 +22,11 @@ std::vector<std::vector<uint32_t>> parts_of_slots(const DatasetConfig& config, s
 // Loads each object's geometry (not its textures) and checks its slots, and checks each
 // candidate's class. Throws InputError.
 void check_before_writing(const DatasetConfig& config);
+
+// Throws InputError when the output folder holds object or variant folders the plan does not make
+// (a second run with other objects, or fewer variants, into the same folder): their frames would
+// be in none of the split files this run writes, and two datasets would pass for one. Also when a
+// variant folder records another configuration: both before the split files are written.
+void check_output_matches_plan(const DatasetConfig& config, const DatasetPlan& plan);
 
 }  // namespace make_dataset

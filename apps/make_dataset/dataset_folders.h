@@ -13,6 +13,9 @@ inline constexpr const char* kConfigFolder = "config";        // the split files
 inline constexpr const char* kPreviewFolder = "preview";      // --preview's contact sheets
 inline constexpr const char* kPaperTexturesFolder = "paper_textures";  // paper_texture_layout
 inline constexpr const char* kSegmentationMapFile = "material_segmentation_map.yaml";
+// The split files in config/, each listing every frame once (docs/dataset_format.md, "Splits").
+inline constexpr const char* kSplitFiles[] = {"object_disjoint_v1.yaml", "variance_disjoint_v1.yaml",
+                                              "material_disjoint_v1.yaml", "paper_random_v1.yaml"};
 
 // What keeps `name` from naming an object's folder on every file system a dataset is copied to
 // ("it is 300 bytes long, more than the 255 a file name may have"), or nothing.

@@ -104,9 +104,7 @@ std::vector<matlearn::SplitFile> write_dataset_records(const DatasetConfig& conf
   const fs::path root(config.output);
   fs::create_directories(root / kConfigFolder);
   matgeom::remove_stale_temporaries(root / kSegmentationMapFile, false);
-  for (const char* split : {"object_disjoint_v1.yaml", "variance_disjoint_v1.yaml", "material_disjoint_v1.yaml",
-                            "paper_random_v1.yaml"})
-    matgeom::remove_stale_temporaries(root / kConfigFolder / split, false);
+  for (const char* split : kSplitFiles) matgeom::remove_stale_temporaries(root / kConfigFolder / split, false);
   matlearn::write_segmentation_map_yaml(root);
   std::vector<matlearn::SampleId> samples;
   std::vector<std::vector<std::string>> materials;

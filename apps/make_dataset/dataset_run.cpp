@@ -61,6 +61,7 @@ RunSummary run_dataset(const DatasetConfig& config, const DatasetPlan& plan, con
   RunSummary summary;
   for (size_t k = 0; k < plan.frames.size(); ++k) summary.frames += options.shard.owns(k) ? 1 : 0;
   check_before_writing(config);
+  check_output_matches_plan(config, plan);
   summary.splits = write_dataset_records(config, plan);
   if (config.paper_texture_layout) write_material_references(config);
 

@@ -64,6 +64,23 @@ std::string text_of(const fs::path& file) {
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
+// make_dataset --verify's exit code; what it printed goes to `report`.
+int verify(const fs::path& root, const fs::path& report) {
+  const std::string command =
+      std::string(MATPREDICT_MAKE_DATASET) + " --verify " + root.string() + " > " + report.string() + " 2>&1";
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// Replaces the first occurrence of `from` in a text file.
+void replace_in_file(const fs::path& file, const std::string& from, const std::string& to) {
+  std::string text = text_of(file);
+  const size_t at = text.find(from);
+  REQUIRE(at != std::string::npos);
+  text.replace(at, from.size(), to);
+  std::ofstream(file) << text;
+}
+
 // The tiny dataset, made once for all the checks below.
 const fs::path& tiny_dataset() {
   static const fs::path root = [] {
@@ -104,6 +121,93 @@ TEST_CASE("The tiny dataset has every frame of the plan, and --verify finds no p
     const matlearn::SplitFile file = matlearn::read_split_file(root / "config" / (std::string(split) + ".yaml"));
     CHECK(file.train.size() + file.val.size() + file.test.size() == 18);
   }
+}
+
+// Sets the depth (R, G and B) of the first `values.size()` covered pixels of a depth map.
+void damage_depth(const fs::path& file, const std::vector<float>& values) {
+  const matlearn::Decoded depth = matlearn::decode(file);
+  std::vector<float> pixels = depth.values;
+  size_t next = 0;
+  for (size_t p = 0; p < pixels.size() / 4 && next < values.size(); ++p)
+    if (pixels[4 * p + 3] > 0.0f) {
+      for (int c = 0; c < 3; ++c) pixels[4 * p + static_cast<size_t>(c)] = values[next];
+      ++next;
+    }
+  REQUIRE(next == values.size());
+  OIIO::ImageSpec spec(depth.width, depth.height, 4, OIIO::TypeDesc::FLOAT);
+  auto out = OIIO::ImageOutput::create(file.string());
+  REQUIRE(out);
+  REQUIRE(out->open(file.string(), spec));
+  REQUIRE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
+  REQUIRE(out->close());
+}
+
+TEST_CASE("--verify finds damaged depth, segmentation maps that contradict the labels, and split files that "
+          "contradict the dataset", "[dataset]") {
+  const fs::path dir = fs::temp_directory_path() / "matpredict_dataset_verify_records";
+  fs::remove_all(dir);
+  fs::copy(tiny_dataset(), dir, fs::copy_options::recursive);
+  // Three covered pixels: NaN, 0, and 1 km behind an object a metre across.
+  damage_depth(dir / "chair" / "var000" / "depth" / "001.exr", {std::nanf(""), 0.0f, 1000.0f});
+  // Labels 4 and 7 (metal and wood) named the other way round.
+  replace_in_file(dir / "vase" / "var000" / "material_segmentation_map.json", "\"4\": \"metal\"", "\"4\": \"wood\"");
+  replace_in_file(dir / "material_segmentation_map.yaml", "metal: 4", "metal: 7");
+  // A split file gone, and one whose counts contradict its lists.
+  fs::remove(dir / "config" / "material_disjoint_v1.yaml");
+  replace_in_file(dir / "config" / "object_disjoint_v1.yaml", "total: 18", "total: 17");
+  // A second object copied in, as a second run into the same folder made it before: in no split.
+  fs::copy(dir / "vase", dir / "vase_again", fs::copy_options::recursive);
+
+  const fs::path report = dir / "report.txt";
+  CHECK(verify(dir, report) == 1);
+  const std::string text = text_of(report);
+  INFO(text);
+  const std::string depth = (dir / "chair" / "var000" / "depth" / "001.exr").string();
+  CHECK_THAT(text, Catch::Contains(depth + ": 1 of the object's pixels have a depth that is NaN or infinite"));
+  CHECK_THAT(text, Catch::Contains(depth + ": 1 of the object's pixels have a depth of 0 or less"));
+  CHECK_THAT(text, Catch::Contains(depth + ": 1 of the object's pixels have a depth outside"));
+  CHECK_THAT(text, Catch::Contains("vase/var000/material_segmentation_map.json: names label 4 \"wood\", but it is metal"));
+  CHECK_THAT(text, Catch::Contains("material_segmentation_map.json: material_family_to_id is not the inverse"));
+  CHECK_THAT(text, Catch::Contains("material_segmentation_map.yaml: label 7 is given to both metal and wood"));
+  CHECK_THAT(text, Catch::Contains((dir / "config" / "material_disjoint_v1.yaml").string() + ": missing"));
+  CHECK_THAT(text, Catch::Contains("object_disjoint_v1.yaml: counts.total is 17, but its three lists 18 frames"));
+  CHECK_THAT(text, Catch::Contains("paper_random_v1.yaml: 6 frames of the dataset are in none of its lists (the "
+                                   "first: vase_again/var000/000)"));
+  // Nothing else: an undamaged frame, map or file is not reported.
+  CHECK_THAT(text, Catch::Contains(": 13 problems"));
+}
+
+TEST_CASE("--verify names frames the object is in no pixel of", "[dataset]") {
+  const fs::path dir = fs::temp_directory_path() / "matpredict_dataset_far_camera";
+  fs::remove_all(dir);
+  // 5 km away the vase is far below a pixel: every frame is empty, and would train to loss 0.
+  REQUIRE(run("--objects vase --materials plastic:1 --grid 1x2 --resolution 16 --spp 1 --material-resolution 16 "
+              "--set 'camera.radius={rule: fixed, metres: 5000}' --output " + (dir / "out").string()) == 0);
+  CHECK(verify(dir / "out", dir / "report.txt") == 1);
+  const std::string text = text_of(dir / "report.txt");
+  INFO(text);
+  for (const char* stem : {"000", "001"})
+    CHECK_THAT(text, Catch::Contains((dir / "out" / "vase" / "var000" / "label" / stem).string() +
+                                     ".png: the object is in no pixel of the frame"));
+  CHECK_THAT(text, Catch::Contains(": 2 problems"));
+}
+
+TEST_CASE("A second run with other objects or fewer variants into a folder is refused before anything is written",
+          "[dataset]") {
+  const fs::path dir = fs::temp_directory_path() / "matpredict_dataset_second_run";
+  fs::remove_all(dir);
+  const std::string common = "--grid 1x2 --resolution 16 --spp 1 --material-resolution 16 --output " + (dir / "out").string();
+  REQUIRE(run("--objects vase --materials plastic:1,wood:2 " + common) == 0);
+  const std::string splits = text_of(dir / "out" / "config" / "object_disjoint_v1.yaml");
+  CHECK(run("--objects mug --materials plastic:1,wood:2 " + common, dir / "errors.txt") == 2);
+  CHECK_THAT(text_of(dir / "errors.txt"), Catch::Contains("holds vase/, which this configuration does not make"));
+  CHECK(run("--objects vase --materials plastic:1 " + common, dir / "errors.txt") == 2);
+  CHECK_THAT(text_of(dir / "errors.txt"), Catch::Contains("holds vase/var001/, which this configuration does not make"));
+  CHECK(run("--objects vase --materials plastic:1,wood:3 " + common, dir / "errors.txt") == 2);
+  CHECK_THAT(text_of(dir / "errors.txt"), Catch::Contains("var000/metadata.json: this variant was made with other settings"));
+  CHECK(text_of(dir / "out" / "config" / "object_disjoint_v1.yaml") == splits);
+  CHECK_FALSE(fs::exists(dir / "out" / "mug"));
+  CHECK(verify(dir / "out", dir / "report.txt") == 0);
 }
 
 TEST_CASE("ORM's G is the material's roughness and the label its class at every covered pixel", "[dataset]") {

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # make_dataset --verify on a dataset damaged in five ways: a map cut short, a map missing, a label
 # id of a class the variant does not use, sample counts of 0 and beyond the render's samples, a
-# split file listing a frame that is not there. Each is reported with its file, and the exit code
-# is 1.
+# split file listing a frame that is not there (so its counts contradict its lists). Each is
+# reported with its file, and the exit code is 1.
 # Usage: verify_damaged_test.sh MAKE_DATASET CONFIG OUTPUT_FOLDER
 set -u
 binary=$1
@@ -40,7 +40,9 @@ for expected in "cannot decode $variant/ORM/000.png" "var000/depth/001.exr: miss
     "var001/label/000.png: label 3 (leather) is not among the variant's used_materials" \
     "var001/sample_count/001.png: 1 pixels took no sample" \
     "var001/sample_count/001.png: 1 pixels took more than the 2 samples metadata.json states" \
-    "paper_random_v1.yaml: lists box_without_uvs/var009/000, no frame of the dataset" "6 problems"; do
+    "paper_random_v1.yaml: lists box_without_uvs/var009/000, no frame of the dataset" \
+    "paper_random_v1.yaml: counts.test is 1, but its test lists 2 frames" \
+    "paper_random_v1.yaml: counts.total is 4, but its three lists 5 frames" "8 problems"; do
   grep -qF "$expected" "$output.log" || { echo "not reported: $expected"; status=1; }
 done
 [ "$status" -eq 0 ] || cat "$output.log"
