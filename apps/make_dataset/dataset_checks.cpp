@@ -1,6 +1,10 @@
 #include "dataset_checks.h"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -8,11 +12,11 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "dataset_folders.h"
 #include "matgeom/builtin_objects.h"
 #include "matgeom/material_classes.h"
 #include "matgeom/material_folder.h"
 #include "matgeom/memory_limit.h"
-#include "dataset_folders.h"
 #include "matgeom/mesh_io.h"
 #include "matlearn/dataset_writer.h"
 #include "object_renderer.h"
@@ -63,9 +67,25 @@ std::vector<std::vector<uint32_t>> parts_of_slots(const DatasetConfig& config, s
 }
 
 
+// Throws InputError when the output folder cannot be made or written: it is a file, a file is
+// where one of its parents would be, or the nearest existing folder is not writable.
+void check_output_folder(const std::string& output) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::path absolute = fs::absolute(output, error);
+  fs::path nearest = absolute;
+  while (!fs::exists(nearest, error) && nearest.has_relative_path()) nearest = nearest.parent_path();
+  if (!fs::is_directory(nearest, error))
+    throw InputError(nearest == absolute
+                         ? output + ": the output is a file, not a folder; give --output a folder's name"
+                         : output + ": " + nearest.string() + " is a file, so no folder can be made in it");
+  if (::access(nearest.c_str(), W_OK | X_OK) != 0)
+    throw InputError(output + ": " + nearest.string() + " is not writable (" + std::strerror(errno) +
+                     "); give --output a folder you can write to");
+}
+
 void check_before_writing(const DatasetConfig& config) {
-  if (std::filesystem::exists(config.output) && !std::filesystem::is_directory(config.output))
-    throw InputError(config.output + ": the output is a file, not a folder; give --output a folder's name");
+  check_output_folder(config.output);
   // A frame's buffers, and the maps the writer encodes from them (about as much again).
   const int w = config.render.width, h = config.render.height;
   if (const auto problem = matgeom::memory_problem(

@@ -6,6 +6,8 @@
 // render settings. The page checks in the browser that every image loaded and says so.
 #include <cstddef>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 namespace make_dataset {
 
@@ -16,12 +18,15 @@ struct PreviewOptions {
 
 struct PreviewSummary {
   size_t sheets = 0;
-  std::filesystem::path index;  // the page
+  std::filesystem::path index;        // the page
+  std::vector<std::string> damaged;  // maps that could not be read, drawn as broken tiles: file and why
 };
 
-// Writes <root>/preview/<object>__<variant>.png for every variant and <root>/preview/index.html.
-// Throws InputError when `root` holds no dataset, std::runtime_error when a map cannot be read or
-// a file written.
+// Writes <root>/preview/<object>__<variant>.png for every variant and <root>/preview/index.html,
+// replacing the folder whole once everything is written. A map that cannot be read is drawn as a
+// broken tile and named on the page and in the summary. Throws InputError when `root` holds no
+// dataset, std::runtime_error when a variant's records cannot be read or a file written; then
+// the preview folder is as it was.
 PreviewSummary write_preview(const std::filesystem::path& root, const PreviewOptions& options = {});
 
 }  // namespace make_dataset

@@ -6,6 +6,7 @@
 
 #include "dataset_checks.h"
 #include "matgeom/atomic_file.h"
+#include "matgeom/cancellation.h"
 #include "matgeom/input_file.h"
 #include "matlearn/dataset_writer.h"
 #include "object_renderer.h"
@@ -78,7 +79,12 @@ RunSummary run_dataset(const DatasetConfig& config, const DatasetPlan& plan, con
       current_variant = SIZE_MAX;
     }
     if (frame.variant != current_variant) {
-      renderer->select_variant(plan.variants[frame.object][frame.variant]);
+      try {
+        renderer->select_variant(plan.variants[frame.object][frame.variant], options.cancel);
+      } catch (const matgeom::Cancelled&) {
+        summary.cancelled = true;
+        break;
+      }
       write_variant_records(config, plan, *renderer, frame.object, frame.variant);
       current_variant = frame.variant;
     }

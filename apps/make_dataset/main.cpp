@@ -3,6 +3,7 @@
 // in shards. This file only parses the command line, calls the parts that do the work and reports.
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -158,7 +159,12 @@ int verify(const std::string& folder) {
 int preview(const std::string& folder) {
   const make_dataset::PreviewSummary summary = make_dataset::write_preview(folder);
   fmt::print("wrote {} contact sheets and {}: open it in a browser\n", summary.sheets, summary.index.string());
-  return 0;
+  if (summary.damaged.empty()) return 0;
+  for (const std::string& problem : summary.damaged) fmt::print("{}\n", problem);
+  return report_error(fmt::format("{} maps could not be read; the sheets draw them as red and black stripes, and "
+                                  "--verify checks the whole dataset",
+                                  summary.damaged.size()),
+                      kRuntimeFailure);
 }
 
 int make(const Options& options) {
@@ -239,6 +245,8 @@ int main(int argc, char** argv) {
     return make(options);
   } catch (const InputError& e) {
     return report_error(e.what(), kInputError);
+  } catch (const std::filesystem::filesystem_error& e) {
+    return report_error(app_support::filesystem_error_text(e), kRuntimeFailure);
   } catch (const std::exception& e) {
     return report_error(e.what(), kRuntimeFailure);
   }

@@ -129,8 +129,9 @@ ObjectRenderer::ObjectRenderer(const DatasetConfig& config, size_t object)
                                                  : matrender::grey_card_exposure(*built_.rig, grid_);
 }
 
-void ObjectRenderer::select_variant(const matgeom::MaterialVariant& variant) {
+void ObjectRenderer::select_variant(const matgeom::MaterialVariant& variant, const std::atomic<bool>* cancel) {
   variant_ = variant;
+  built_.materials.cancel_on(cancel);
   matrender::ObjectDescription materials;
   materials.origin = matrender::Origin{config_.source, "/objects"};
   const std::vector<std::string>& part_names = built_.object_surfaces.front().part_names;

@@ -196,7 +196,7 @@ FolderMaterial generate_library_material(const LibraryMaterialSpec& spec, const 
   const std::string name =
       std::string(material_class(spec.material_class).name) + "_" + style.info.name + "_" + std::to_string(spec.seed);
   return library::rasterise_recipe(style.make(random), name, spec.material_class, style.info.tile_size_m,
-                                   options.resolution, options.threads);
+                                   options.resolution, options.threads, options.cancel);
 }
 
 std::string library_styles_markdown() {

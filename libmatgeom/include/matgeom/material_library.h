@@ -6,11 +6,13 @@
 // way MatSynth's materials are stored and one reader reads both. Maps are seamless, their values
 // inside the class's stated physical ranges, and their bytes the same for a seed whatever the
 // thread count (docs/material_library.md).
+#include <atomic>
 #include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "matgeom/cancellation.h"
 #include "matgeom/material_classes.h"
 #include "matgeom/material_folder.h"
 #include "matgeom/material_parameters.h"
@@ -61,11 +63,13 @@ constexpr int kMaxLibraryResolution = 8192;
 struct LibraryOptions {
   int resolution = 1024;  // texels along each side of every map (datasets use 512 to 4096)
   int threads = 0;        // worker threads (matgeom::worker_threads): 0, every hardware thread
+  const std::atomic<bool>* cancel = nullptr;  // when set, generation throws matgeom::Cancelled
 };
 
 // Generates the material, named "<class>_<style>_<seed>" (which material_class_of_folder reads
 // back as its class) and labelled with its class. Throws std::invalid_argument for Background, an
-// unknown style or a resolution outside [kMinLibraryResolution, kMaxLibraryResolution].
+// unknown style or a resolution outside [kMinLibraryResolution, kMaxLibraryResolution], and
+// matgeom::Cancelled (matgeom/cancellation.h) within a row of options.cancel being set.
 FolderMaterial generate_library_material(const LibraryMaterialSpec& spec, const LibraryOptions& options = {});
 
 // The styles, and the classes' ranges, as the markdown tables of docs/material_library.md (a test

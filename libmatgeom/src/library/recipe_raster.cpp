@@ -7,6 +7,7 @@
 #include <thread>
 #include <vector>
 
+#include "matgeom/cancellation.h"
 #include "matgeom/srgb.h"
 #include "matgeom/threads.h"
 #include "matgeom/unorm.h"
@@ -15,13 +16,16 @@ namespace matgeom::library {
 namespace {
 
 // Runs row(y) for every y in [0, rows) on `threads` threads, rows interleaved; rethrows the
-// first exception a row threw.
+// first exception a row threw, Cancelled among them.
 template <class RowFunction>
-void for_each_row(int rows, int threads, const RowFunction& row) {
+void for_each_row(int rows, int threads, const std::atomic<bool>* cancel, const RowFunction& row) {
   std::vector<std::exception_ptr> errors(static_cast<size_t>(threads));
   const auto work = [&](int worker) {
     try {
-      for (int y = worker; y < rows; y += threads) row(y);
+      for (int y = worker; y < rows; y += threads) {
+        throw_if_cancelled(cancel);
+        row(y);
+      }
     } catch (...) {
       errors[static_cast<size_t>(worker)] = std::current_exception();
     }
@@ -56,7 +60,7 @@ struct Uniformity {
 }  // namespace
 
 FolderMaterial rasterise_recipe(const Recipe& recipe, const std::string& name, MaterialClass material_class,
-                                double tile_size_m, int resolution, int threads) {
+                                double tile_size_m, int resolution, int threads, const std::atomic<bool>* cancel) {
   using P = MaterialParameter;
   const int workers = worker_threads(threads);
   const size_t texels = static_cast<size_t>(resolution) * static_cast<size_t>(resolution);
@@ -68,7 +72,7 @@ FolderMaterial rasterise_recipe(const Recipe& recipe, const std::string& name, M
   // Per row, so threads never share one: base colour, roughness, metallic, opacity, height.
   std::vector<std::array<Uniformity, 5>> row_uniformity(static_cast<size_t>(resolution));
 
-  for_each_row(resolution, workers, [&](int y) {
+  for_each_row(resolution, workers, cancel, [&](int y) {
     std::array<Uniformity, 5>& uniformity = row_uniformity[static_cast<size_t>(y)];
     for (int x = 0; x < resolution; ++x) {
       const glm::dvec2 uv((x + 0.5) / resolution, 1.0 - (y + 0.5) / resolution);
@@ -123,7 +127,7 @@ FolderMaterial rasterise_recipe(const Recipe& recipe, const std::string& name, M
       const int wx = (x + resolution) % resolution, wy = (y + resolution) % resolution;
       return height[static_cast<size_t>(wy) * static_cast<size_t>(resolution) + static_cast<size_t>(wx)];
     };
-    for_each_row(resolution, workers, [&](int y) {
+    for_each_row(resolution, workers, cancel, [&](int y) {
       for (int x = 0; x < resolution; ++x) {
         const size_t i = static_cast<size_t>(y) * static_cast<size_t>(resolution) + static_cast<size_t>(x);
         height_map.data[i] = unorm8((height[i] - *low) / span);

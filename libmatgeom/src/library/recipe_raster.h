@@ -1,5 +1,6 @@
 #pragma once
 // Turns a recipe into the maps of a material folder at a chosen resolution.
+#include <atomic>
 #include <string>
 
 #include "library/recipe.h"
@@ -12,8 +13,9 @@ namespace matgeom::library {
 // A map whose texels are all equal becomes a constant, not an image. The normal map is the
 // slope of the relief at the tile's physical size (central differences across the wrap), the
 // height map that relief normalised to [0, 1]; neither is written for a flat recipe.
-// `tile_size_m` is the length the tile covers on a surface (MatSynth's physical size).
+// `tile_size_m` is the length the tile covers on a surface (MatSynth's physical size). Throws
+// Cancelled within a row of `cancel` (when given) being set.
 FolderMaterial rasterise_recipe(const Recipe& recipe, const std::string& name, MaterialClass material_class,
-                                double tile_size_m, int resolution, int threads);
+                                double tile_size_m, int resolution, int threads, const std::atomic<bool>* cancel);
 
 }  // namespace matgeom::library

@@ -3,6 +3,7 @@
 // load nothing: a texture file, material folder or library material shared by several materials
 // is loaded or generated once. What build_scene assigns parts from, and what a tool keeps to put
 // an object in other materials later without rebuilding its BVH (scene_builder.h).
+#include <atomic>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -21,6 +22,10 @@ class SceneMaterials {
       : described_(std::move(described)) {}
 
   bool has(const std::string& name) const { return described_.count(name) != 0; }
+
+  // Loading stops with matgeom::Cancelled once `cancel` is set: before each texture and folder,
+  // and within a row of a library material's maps. A run's, not the scene's: set by the app.
+  void cancel_on(const std::atomic<bool>* cancel) { cancel_ = cancel; }
 
   // The scene material id of the described material `name`, added to `scene` when first asked
   // for. Throws InputError naming the file when one of its inputs fails to load, and
@@ -44,6 +49,7 @@ class SceneMaterials {
   std::map<std::string, double> folder_tile_sizes_, library_tile_sizes_;  // keyed as the two above
   std::map<std::string, double> tile_sizes_;  // metres per repeat of a scene material's maps, by name
   std::map<std::pair<std::string, float>, uint32_t> repeated_ids_;  // by name and repeats
+  const std::atomic<bool>* cancel_ = nullptr;
 };
 
 }  // namespace matrender

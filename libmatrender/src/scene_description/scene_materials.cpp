@@ -2,6 +2,7 @@
 
 #include <exception>
 
+#include "matgeom/cancellation.h"
 #include "matgeom/material_folder.h"
 #include "matgeom/material_library.h"
 #include "matgeom/uv_scale.h"
@@ -36,6 +37,7 @@ TexturePtr SceneMaterials::texture(const std::optional<TextureFile>& file) {
   if (!file) return nullptr;
   TexturePtr& loaded = textures_[std::make_tuple(file->path, file->color_space, file->wrap)];
   if (!loaded) {
+    matgeom::throw_if_cancelled(cancel_);
     try {
       loaded = Texture::load(file->path, file->color_space, file->wrap);
     } catch (const std::exception& e) {
@@ -51,6 +53,7 @@ Material SceneMaterials::folder_material(const std::string& name, const Material
   auto read = folder_materials_.find(file.path);
   if (read == folder_materials_.end()) {
     matgeom::FolderMaterial folder;
+    matgeom::throw_if_cancelled(cancel_);
     try {
       folder = matgeom::read_material_folder(file.path);
     } catch (const std::exception& e) {
@@ -75,7 +78,9 @@ Material SceneMaterials::library_material(const std::string& name, const Materia
   if (made == library_materials_.end()) {
     matgeom::FolderMaterial generated;
     try {
-      generated = matgeom::generate_library_material(request.spec, {request.resolution, 0});
+      generated = matgeom::generate_library_material(request.spec, {request.resolution, 0, cancel_});
+    } catch (const matgeom::Cancelled&) {
+      throw;
     } catch (const std::exception& e) {
       throw request.origin.error("", e.what());
     }
