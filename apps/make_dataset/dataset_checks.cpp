@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <exception>
 #include <filesystem>
@@ -13,7 +14,9 @@
 #include <nlohmann/json.hpp>
 
 #include "dataset_folders.h"
+#include "matgeom/bounding_sphere.h"
 #include "matgeom/builtin_objects.h"
+#include "matgeom/image_header.h"
 #include "matgeom/material_classes.h"
 #include "matgeom/material_folder.h"
 #include "matgeom/memory_limit.h"
@@ -67,6 +70,25 @@ std::vector<std::vector<uint32_t>> parts_of_slots(const DatasetConfig& config, s
 }
 
 
+// Throws InputError when the cameras would see object `o` (its surface `mesh`) smaller than a
+// pixel in every frame, as a fixed radius of 5 km does: frames without the object train to a loss
+// of 0. The radius rule and the sphere's angular size are the renderer's (object_renderer.h).
+void check_object_in_view(const DatasetConfig& config, size_t o, const matgeom::TriangleMesh& mesh) {
+  const matgeom::Sphere bounds = matgeom::minimal_enclosing_sphere(mesh.positions);
+  const glm::dvec3 centre = matgeom::surface_centroid(mesh);
+  const int height = config.render.height;
+  const double radius = camera_grid_radius(config.camera, mesh, bounds, centre,
+                                           static_cast<double>(config.render.width) / height);
+  const double farthest = radius + glm::length(bounds.center - centre);
+  const double half_fov = 0.5 * config.camera.vertical_fov_deg * M_PI / 180.0;
+  // The sphere's projected radius in pixels at the frame's centre, seen from its farthest camera.
+  const double pixels = bounds.radius / farthest / std::tan(half_fov) * 0.5 * height;
+  if (pixels < 0.5)
+    throw InputError(fmt::format("{}: camera.radius: the cameras are {:.4g} m from {}, which is {:.3g} m across: it "
+                                 "would cover less than a pixel of every frame",
+                                 config.source, radius, object_key(o), 2.0 * bounds.radius));
+}
+
 // Throws InputError when the output folder cannot be made or written: it is a file, a file is
 // where one of its parents would be, or the nearest existing folder is not writable.
 void check_output_folder(const std::string& output) {
@@ -108,6 +130,7 @@ void check_before_writing(const DatasetConfig& config) {
       throw InputError(config.source + ": " + object_key(o) +
                        ".uv_pass: never, but the mesh has no texture coordinates, so each material would show one "
                        "texel of its maps; use when_missing (the default) to give it the paper's UV pass");
+    check_object_in_view(config, o, asset.mesh);
     const size_t part_count = std::max({static_cast<size_t>(asset.mesh.part_count()), asset.materials.size(), size_t{1}});
     parts_of_slots(config, o, asset.mesh.part_names, part_count);
     if (config.paper_texture_layout && object.slots.size() != 1)
@@ -117,7 +140,13 @@ void check_before_writing(const DatasetConfig& config) {
     for (const SlotConfig& slot : object.slots)
       for (const MaterialCandidate& candidate : slot.candidates) {
         const auto* folder = std::get_if<std::string>(&candidate.source);
-        if (!folder || matgeom::material_class_of_folder(candidate.name)) continue;
+        if (!folder) continue;
+        // Its maps are decoded when a variant first uses them, after records are written.
+        for (const std::filesystem::directory_entry& file : std::filesystem::directory_iterator(*folder))
+          if (const std::optional<std::string> problem = matgeom::declared_size_problem(file.path()))
+            throw InputError(config.source + ": " + object_key(o) + ".materials." + slot.key + ": " +
+                             file.path().string() + ": " + *problem);
+        if (matgeom::material_class_of_folder(candidate.name)) continue;
         // A folder whose name names no class may still say it in its metadata.
         std::optional<matgeom::MaterialClass> found;
         try {

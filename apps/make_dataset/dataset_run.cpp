@@ -1,5 +1,6 @@
 #include "dataset_run.h"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <memory>
@@ -9,6 +10,7 @@
 #include "matgeom/cancellation.h"
 #include "matgeom/input_file.h"
 #include "matlearn/dataset_writer.h"
+#include "matlearn/decoded_image.h"
 #include "object_renderer.h"
 #include "texture_targets.h"
 
@@ -55,6 +57,18 @@ void write_variant_records(const DatasetConfig& config, const DatasetPlan& plan,
   matlearn::write_segmentation_map_json(folder);
 }
 
+// Whether a label map marks any pixel as the object's.
+template <class Label>
+bool shows_object(const std::vector<Label>& labels) {
+  return std::any_of(labels.begin(), labels.end(), [](Label label) { return label > 0; });
+}
+
+// "vase/var000/003", as split files name frames.
+std::string frame_id(const DatasetConfig& config, const fs::path& variant_folder, const FrameRef& frame,
+                     const std::string& stem) {
+  return config.objects[frame.object].name + "/" + variant_folder.filename().string() + "/" + stem;
+}
+
 }  // namespace
 
 RunSummary run_dataset(const DatasetConfig& config, const DatasetPlan& plan, const RunOptions& options) {
@@ -98,6 +112,8 @@ RunSummary run_dataset(const DatasetConfig& config, const DatasetPlan& plan, con
     if (matlearn::frame_is_complete(folder, stem, config.render.width, config.render.height) &&
         (!config.paper_texture_layout || matlearn::texture_target_screenshot_is_complete(screenshot))) {
       ++summary.skipped;
+      if (!shows_object(matlearn::decode(folder / "label" / (stem + ".png")).values))
+        summary.empty_frames.push_back(frame_id(config, folder, frame, stem));
     } else {
       // Only this shard writes the frame: whatever temporaries of it are there were left by a
       // run of this shard that was killed outright.
@@ -110,6 +126,7 @@ RunSummary run_dataset(const DatasetConfig& config, const DatasetPlan& plan, con
         break;
       }
       matlearn::write_frame_maps(folder, stem, maps);
+      if (!shows_object(maps.label)) summary.empty_frames.push_back(frame_id(config, folder, frame, stem));
       if (config.paper_texture_layout)
         matlearn::write_texture_target_screenshot(texture_target_root(config), config.objects[frame.object].name,
                                                   material, stem, maps);

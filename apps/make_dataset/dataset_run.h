@@ -29,6 +29,7 @@ struct RunSummary {
   double render_seconds = 0.0;  // of the frames rendered
   bool cancelled = false;
   std::vector<matlearn::SplitFile> splits;  // written to config/
+  std::vector<std::string> empty_frames;    // rendered this run with the object in no pixel: "vase/var000/003"
 };
 
 // Throws InputError when an object, a material or the folder's earlier contents do not fit the

@@ -216,6 +216,12 @@ int make(const Options& options) {
   fmt::print("wrote {} ({}): per object and variant {}transforms.json, metadata.json; config/ holds the split files\n",
              config.output, matgeom::byte_size_text(static_cast<double>(make_dataset::folder_bytes(config.output))),
              folders);
+  // Written, as rendered, but a frame without the object trains to a loss of 0: not a success.
+  if (!summary.empty_frames.empty())
+    return report_error(fmt::format("{} frames show the object in no pixel (the first: {}); are the cameras too far "
+                                    "(camera.radius) or the resolution too low?",
+                                    summary.empty_frames.size(), summary.empty_frames.front()),
+                        kRuntimeFailure);
   return 0;
 }
 

@@ -8,6 +8,7 @@
 #include <set>
 
 #include <fmt/format.h>
+#include <OpenImageIO/imageio.h>
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
@@ -15,6 +16,7 @@
 #include "common/number_options.h"
 #include "dataset_config.h"
 #include "dataset_folders.h"
+#include "matgeom/image_header.h"
 #include "matgeom/material_classes.h"
 #include "matlearn/dataset_index.h"
 #include "matlearn/decoded_image.h"
@@ -256,6 +258,22 @@ void verify_sample_counts(const fs::path& file, const matlearn::Decoded& counts,
                                    beyond, *samples));
 }
 
+// What is wrong with the size a map's header declares, against transforms.json's and what the
+// file can hold; nothing when it matches or the header cannot be read (decoding then says why).
+std::optional<std::string> declared_size_mismatch(const fs::path& file, int width, int height) {
+  if (const std::optional<std::string> problem = matgeom::declared_size_problem(file))
+    return file.string() + ": " + *problem;
+  const auto input = OIIO::ImageInput::open(file.string());
+  if (!input) {
+    OIIO::geterror();  // cleared: decode reports it
+    return std::nullopt;
+  }
+  const OIIO::ImageSpec& spec = input->spec();
+  if (spec.width == width && spec.height == height) return std::nullopt;
+  return fmt::format("{}: declares {} x {} pixels, but transforms.json says the frames are {} x {}", file.string(),
+                     spec.width, spec.height, width, height);
+}
+
 void verify_frame(const fs::path& folder, const std::string& stem, const VariantExpectations& expected,
                   const std::optional<CameraAxis>& camera, std::vector<std::string>& problems) {
   const int width = expected.width, height = expected.height;
@@ -267,6 +285,11 @@ void verify_frame(const fs::path& folder, const std::string& stem, const Variant
     const fs::path file = folder / info.folder / (stem + info.extension);
     if (!fs::is_regular_file(file)) {
       problems.push_back(file.string() + ": missing");
+      continue;
+    }
+    // The header first: a map declaring another size is not decoded (nor allocated for).
+    if (const std::optional<std::string> problem = declared_size_mismatch(file, width, height)) {
+      problems.push_back(*problem);
       continue;
     }
     matlearn::Decoded map;

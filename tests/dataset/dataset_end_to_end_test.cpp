@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -155,6 +156,12 @@ TEST_CASE("--verify finds damaged depth, segmentation maps that contradict the l
   // A split file gone, and one whose counts contradict its lists.
   fs::remove(dir / "config" / "material_disjoint_v1.yaml");
   replace_in_file(dir / "config" / "object_disjoint_v1.yaml", "total: 18", "total: 17");
+  // An image of another size, and an albedo whose header declares 60000 x 60000 pixels in 324
+  // bytes: both refused from their headers.
+  write_constant_png(dir / "chair" / "var001" / "images" / "002.png", 3, {10, 20, 30});
+  const fs::path hostile = dir / "chair" / "var001" / "albedo" / "002.png";
+  REQUIRE(std::system(("/usr/bin/python3 " + std::string(MATPREDICT_DECLARED_SIZE_PNG) + " 60000 60000 " +
+                       hostile.string()).c_str()) == 0);
   // A second object copied in, as a second run into the same folder made it before: in no split.
   fs::copy(dir / "vase", dir / "vase_again", fs::copy_options::recursive);
 
@@ -166,6 +173,9 @@ TEST_CASE("--verify finds damaged depth, segmentation maps that contradict the l
   CHECK_THAT(text, Catch::Contains(depth + ": 1 of the object's pixels have a depth that is NaN or infinite"));
   CHECK_THAT(text, Catch::Contains(depth + ": 1 of the object's pixels have a depth of 0 or less"));
   CHECK_THAT(text, Catch::Contains(depth + ": 1 of the object's pixels have a depth outside"));
+  CHECK_THAT(text, Catch::Contains((dir / "chair" / "var001" / "images" / "002.png").string() +
+                                   ": declares 8 x 8 pixels, but transforms.json says the frames are 48 x 48"));
+  CHECK_THAT(text, Catch::Contains(hostile.string() + ": declares 60000 x 60000 pixels, 3.4 GiB of image data"));
   CHECK_THAT(text, Catch::Contains("vase/var000/material_segmentation_map.json: names label 4 \"wood\", but it is metal"));
   CHECK_THAT(text, Catch::Contains("material_segmentation_map.json: material_family_to_id is not the inverse"));
   CHECK_THAT(text, Catch::Contains("material_segmentation_map.yaml: label 7 is given to both metal and wood"));
@@ -174,22 +184,45 @@ TEST_CASE("--verify finds damaged depth, segmentation maps that contradict the l
   CHECK_THAT(text, Catch::Contains("paper_random_v1.yaml: 6 frames of the dataset are in none of its lists (the "
                                    "first: vase_again/var000/000)"));
   // Nothing else: an undamaged frame, map or file is not reported.
-  CHECK_THAT(text, Catch::Contains(": 13 problems"));
+  CHECK_THAT(text, Catch::Contains(": 15 problems"));
 }
 
-TEST_CASE("--verify names frames the object is in no pixel of", "[dataset]") {
-  const fs::path dir = fs::temp_directory_path() / "matpredict_dataset_far_camera";
+// Overwrites an image with zeros of the same size, channels and type: a frame without the object.
+void zero_image(const fs::path& file) {
+  auto in = OIIO::ImageInput::open(file.string());
+  REQUIRE(in);
+  const OIIO::ImageSpec spec = in->spec();
+  in->close();
+  std::vector<std::byte> zeros(spec.image_bytes());
+  auto out = OIIO::ImageOutput::create(file.string());
+  REQUIRE(out);
+  REQUIRE(out->open(file.string(), spec));
+  REQUIRE(out->write_image(spec.format, zeros.data()));
+  REQUIRE(out->close());
+}
+
+TEST_CASE("A frame the object is in no pixel of is named by make_dataset and --verify, and 5 km away is refused",
+          "[dataset]") {
+  const fs::path dir = fs::temp_directory_path() / "matpredict_dataset_empty_frame";
   fs::remove_all(dir);
-  // 5 km away the vase is far below a pixel: every frame is empty, and would train to loss 0.
-  REQUIRE(run("--objects vase --materials plastic:1 --grid 1x2 --resolution 16 --spp 1 --material-resolution 16 "
-              "--set 'camera.radius={rule: fixed, metres: 5000}' --output " + (dir / "out").string()) == 0);
+  fs::copy(tiny_dataset().parent_path(), dir, fs::copy_options::recursive);
+  // The label, the depth's coverage and ORM's alpha all say: nothing here.
+  const fs::path variant = dir / "out" / "vase" / "var000";
+  for (const char* map : {"label/003.png", "depth/003.exr", "ORM/003.png"}) zero_image(variant / map);
   CHECK(verify(dir / "out", dir / "report.txt") == 1);
   const std::string text = text_of(dir / "report.txt");
   INFO(text);
-  for (const char* stem : {"000", "001"})
-    CHECK_THAT(text, Catch::Contains((dir / "out" / "vase" / "var000" / "label" / stem).string() +
-                                     ".png: the object is in no pixel of the frame"));
-  CHECK_THAT(text, Catch::Contains(": 2 problems"));
+  CHECK_THAT(text, Catch::Contains((variant / "label" / "003.png").string() + ": the object is in no pixel of the frame"));
+  CHECK_THAT(text, Catch::Contains(": 1 problems"));
+  // make_dataset run again finds every frame complete, and says that one frame shows nothing.
+  CHECK(run("--config " + (dir / "tiny.yaml").string() + " --output " + (dir / "out").string(), dir / "errors.txt") == 1);
+  CHECK_THAT(text_of(dir / "errors.txt"), Catch::Contains("1 frames show the object in no pixel (the first: vase/var000/003)"));
+  // A camera 5 km from a vase would render nothing but background: refused before writing.
+  CHECK(run("--objects vase --materials plastic:1 --grid 1x2 --resolution 16 --spp 1 --material-resolution 16 "
+            "--set 'camera.radius={rule: fixed, metres: 5000}' --output " + (dir / "far").string(),
+            dir / "errors.txt") == 2);
+  CHECK_THAT(text_of(dir / "errors.txt"), Catch::Contains("camera.radius: the cameras are 5000 m from objects.0, which is"));
+  CHECK_FALSE(fs::exists(dir / "far"));
 }
 
 TEST_CASE("A second run with other objects or fewer variants into a folder is refused before anything is written",

@@ -6,12 +6,14 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 
 #include <emmintrin.h>
 
 #include <OpenImageIO/imageio.h>
 
+#include "matgeom/image_header.h"
 #include "matgeom/input_file.h"
 #include "matgeom/memory_limit.h"
 #include "matgeom/srgb.h"
@@ -42,6 +44,13 @@ void require_texture_memory(const std::string& name, int width, int height, doub
   const double texels = static_cast<double>(width) * static_cast<double>(height);
   matgeom::require_memory(texels * (texel_bytes + staging_bytes_per_texel),
                           "its " + std::to_string(width) + " x " + std::to_string(height) + " texels", name);
+}
+
+// Refuses a file whose header declares more pixels than its bytes can hold, before the decoder
+// allocates for them (matgeom/image_header.h).
+void require_plausible_header(const std::string& path) {
+  if (const std::optional<std::string> problem = matgeom::declared_size_problem(path))
+    throw std::runtime_error(path + ": " + *problem);
 }
 
 int wrap_index(int i, int n, Wrap wrap) {
@@ -160,6 +169,7 @@ Texture::Decoded Texture::decode_bytes(int width, int height, int channels, cons
 
 Texture::Decoded Texture::decode_file(const std::string& path, ColorSpace space) {
   matgeom::require_input_file(path);
+  require_plausible_header(path);
   // Straight colour as stored (Cycles' default alpha mode); OpenImageIO would premultiply.
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
@@ -316,6 +326,7 @@ std::shared_ptr<const Texture> Texture::load_udim(const std::string& pattern, Co
     const int number = std::stoi(digits);
     if (number < 1001) continue;
     // Every tile's header now, so that a broken one is an error before rendering, not during.
+    require_plausible_header(entry.path().string());
     auto input = OIIO::ImageInput::open(entry.path().string());
     if (!input) throw std::runtime_error(entry.path().string() + ": cannot read image: " + OIIO::geterror());
     auto tile = std::make_unique<UdimTile>();
