@@ -13,6 +13,7 @@
 #include "common/exit_codes.h"
 #include "common/interrupt.h"
 #include "matgeom/builtin_objects.h"
+#include "matgeom/cancellation.h"
 #include "matgeom/material_classes.h"
 #include "matgeom/material_library.h"
 #include "matgeom/material_parameters.h"
@@ -80,7 +81,12 @@ int render_and_write(const Options& options) {
   const std::atomic<bool>* cancel = app_support::cancel_on_interrupt();
   matrender::set_texture_memory_limit(options.texture_memory_mib << 20);
   const SceneDescription description = render_object::describe_scene(options);
-  BuiltScene built = matrender::build_scene(description);
+  BuiltScene built;
+  try {
+    built = matrender::build_scene(description, cancel);
+  } catch (const matgeom::Cancelled&) {
+    return report_error("interrupted; nothing written", app_support::interrupted_exit_code());
+  }
 
   matrender::RenderSettings settings = description.settings;
   app_support::ProgressBar progress("render");

@@ -1,6 +1,7 @@
 #pragma once
 // Turning a SceneDescription into what the renderer takes: loads meshes and textures, places the
 // objects, assigns materials, makes the lights and the camera, and builds the BVH.
+#include <atomic>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,8 +29,9 @@ struct BuiltScene {
 };
 
 // Throws InputError naming the described item when an input fails to load or does not fit
-// (unreadable mesh or texture, unknown part name).
-BuiltScene build_scene(const SceneDescription& description);
+// (unreadable mesh or texture, unknown part name), and matgeom::Cancelled soon after `cancel`
+// (when given) is set while materials load (SceneMaterials::cancel_on).
+BuiltScene build_scene(const SceneDescription& description, const std::atomic<bool>* cancel = nullptr);
 
 // Puts object `object` (its index in the description) in other materials of the description:
 // `materials.material` on every part and `materials.part_materials` by part name, as

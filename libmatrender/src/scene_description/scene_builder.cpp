@@ -193,7 +193,7 @@ Background load_background(const BackgroundDescription& description) {
 
 }  // namespace
 
-BuiltScene build_scene(const SceneDescription& description) {
+BuiltScene build_scene(const SceneDescription& description, const std::atomic<bool>* cancel) {
   std::vector<matgeom::ObjectAsset> assets;
   for (const ObjectDescription& object : description.objects) {
     assets.push_back(load_object(object));
@@ -204,6 +204,7 @@ BuiltScene build_scene(const SceneDescription& description) {
   BuiltScene built;
   built.bounds = matgeom::minimal_enclosing_sphere(surface.positions);
   built.materials = SceneMaterials(description.materials);
+  built.materials.cancel_on(cancel);
   for (size_t k = 0; k < assets.size(); ++k) {
     add_object(built.scene, description.objects[k], assets[k], built.materials);
     built.object_meshes.push_back(static_cast<uint32_t>(built.scene.mesh_count() - 1));
