@@ -16,5 +16,5 @@ build="$root/build-fuzz"
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \
   -DMATPREDICT_FUZZ=ON -DMATPREDICT_BUILD_BENCH=OFF \
   -DMATPREDICT_FUZZ_SECONDS="${MATPREDICT_FUZZ_SECONDS:-60}"
-cmake --build "$build" --target fuzz_ply fuzz_obj fuzz_gltf fuzz_material_folder fuzz_scene fuzz_dataset_config fuzz_checkpoint checkpoint_seed
+cmake --build "$build" --target fuzz_ply fuzz_obj fuzz_mtl fuzz_gltf fuzz_material_folder fuzz_scene fuzz_dataset_config fuzz_checkpoint checkpoint_seed
 ctest --test-dir "$build" -L fuzz --output-on-failure

@@ -19,7 +19,9 @@
 
 #include "file_error.h"
 #include "gltf/extensions.h"
+#include "gltf/json_checks.h"
 #include "image_bytes.h"
+#include "image_file.h"
 #include "matgeom/input_file.h"
 #include "matgeom/tangents.h"
 #include "matgeom/text.h"
@@ -61,6 +63,46 @@ void check_required_extensions(const GltfFile& file) {
   }
 }
 
+// tinygltf::LoadImageData reads its user data as a LoadImageDataOption, a struct of this one
+// bool, which Debian's libtinygltf keeps out of its public header: true keeps each image's own
+// channel count (grey, grey-alpha, RGB, RGBA) instead of expanding it to RGBA.
+struct LoadImageDataOption {
+  bool preserve_channels = true;
+};
+
+// How tinygltf decodes the file's images: as the OBJ and material-folder readers decode theirs
+// (image_file.h), with the first problem in our words.
+struct ImageDecoding {
+  LoadImageDataOption option;
+  std::string problem;
+};
+
+// The problem with an image tinygltf's decoder refused: stb_image's or the size the JSON states.
+std::string undecoded_image_problem(std::string_view bytes, int width, int height) {
+  tinygltf::Image decoded;
+  std::string ignored;
+  const int size = static_cast<int>(bytes.size());
+  const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+  if ((width > 0 || height > 0) && tinygltf::LoadImageData(&decoded, 0, &ignored, &ignored, 0, 0, data, size, nullptr)) {
+    return concat("the image is ", decoded.width, "x", decoded.height, ", but the file says ", width, "x", height);
+  }
+  return undecodable_image(bytes);
+}
+
+// A tinygltf::LoadImageDataFunction.
+bool decode_gltf_image(tinygltf::Image* image, const int index, std::string* errors, std::string* warnings, int width,
+                       int height, const unsigned char* bytes, int size, void* user_data) {
+  auto& decoding = *static_cast<ImageDecoding*>(user_data);
+  const std::string_view data(reinterpret_cast<const char*>(bytes), static_cast<size_t>(size));
+  std::optional<std::string> problem = unread_image_format(data);
+  if (!problem &&
+      tinygltf::LoadImageData(image, index, errors, warnings, width, height, bytes, size, &decoding.option))
+    return true;
+  if (decoding.problem.empty())
+    decoding.problem = concat("image ", index, ": ", problem ? *problem : undecoded_image_problem(data, width, height));
+  return false;
+}
+
 GltfFile load_gltf(const std::string& path) {
   if (const std::optional<std::string> problem = input_file_problem(path)) fail(path, *problem);
 
@@ -71,23 +113,26 @@ GltfFile load_gltf(const std::string& path) {
     fail(path, "not a binary glTF file (the header does not start with 'glTF')");
   }
 
+  gltf::check_gltf_json(path, binary);
   GltfFile file;
   file.path = path;
   tinygltf::TinyGLTF loader;
-  // Keep the images' own channel count (grey, grey-alpha, RGB, RGBA) instead of expanding to RGBA.
-  loader.SetPreserveImageChannels(true);
+  ImageDecoding decoding;
+  loader.SetImageLoader(decode_gltf_image, &decoding);
   std::string errors;
   std::string warnings;
   const bool loaded = binary ? loader.LoadBinaryFromFile(&file.model, &errors, &warnings, path)
                              : loader.LoadASCIIFromFile(&file.model, &errors, &warnings, path);
+  if (!decoding.problem.empty()) fail(path, decoding.problem);
+  // tinygltf's messages quote what they could not read, data URIs included: passed on cut.
   if (!loaded) {
-    std::string problem = "tinygltf could not load the file: " + trim(errors);
-    if (!warnings.empty()) problem += " (warnings: " + trim(warnings) + ")";
+    std::string problem = "tinygltf could not load the file: " + without_data_uris(trim(errors));
+    if (!warnings.empty()) problem += " (warnings: " + without_data_uris(trim(warnings)) + ")";
     fail(path, problem);
   }
   // tinygltf 2.7 warns only when an external image cannot be read; continuing would silently
   // render the material without its texture, so a warning is an error here.
-  if (!warnings.empty()) fail(path, "tinygltf: " + trim(warnings));
+  if (!warnings.empty()) fail(path, "tinygltf: " + without_data_uris(trim(warnings)));
 
   check_required_extensions(file);
   const auto& used = file.model.extensionsUsed;
@@ -318,6 +363,7 @@ glm::dmat4 node_local_transform(const GltfFile& file, size_t node_index) {
 
 struct MeshInstance {
   size_t mesh = 0;
+  size_t node = 0;
   glm::dmat4 world{1.0};
 };
 
@@ -375,7 +421,7 @@ std::vector<MeshInstance> collect_mesh_instances(const GltfFile& file) {
       if (static_cast<size_t>(node.mesh) >= model.meshes.size()) {
         fail(file.path, concat("node ", n, ": mesh ", node.mesh, " does not exist"));
       }
-      instances.push_back({static_cast<size_t>(node.mesh), world});
+      instances.push_back({static_cast<size_t>(node.mesh), n, world});
     }
     for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) stack.push_back({*child, world});
   }
@@ -575,6 +621,24 @@ void check_finite_positions(const GltfFile& file, const TriangleMesh& mesh,
   }
 }
 
+// Morph targets are not applied: the base shape is read, which is the shape the file shows only
+// while every weight is 0 (the default without weights). An instance weighted otherwise is
+// refused (the node's weights replace the mesh's).
+void check_morph_weights(const GltfFile& file, const MeshInstance& instance) {
+  const tinygltf::Mesh& mesh = file.model.meshes[instance.mesh];
+  const bool has_targets = std::any_of(mesh.primitives.begin(), mesh.primitives.end(),
+                                       [](const tinygltf::Primitive& p) { return !p.targets.empty(); });
+  const std::vector<double>& node_weights = file.model.nodes[instance.node].weights;
+  const std::vector<double>& weights = node_weights.empty() ? mesh.weights : node_weights;
+  if (!has_targets || std::all_of(weights.begin(), weights.end(), [](double w) { return w == 0.0; })) return;
+  std::string listed;
+  constexpr size_t kShown = 8;
+  for (size_t w = 0; w < std::min(weights.size(), kShown); ++w) listed += concat(w == 0 ? "" : ", ", weights[w]);
+  if (weights.size() > kShown) listed += concat(", ... (", weights.size(), " weights)");
+  fail(file.path, concat("mesh ", instance.mesh, " (node ", instance.node, "): morph target weights ", listed,
+                         " are not applied; only the base shape is read, so every weight must be 0"));
+}
+
 // Every primitive of every mesh instance, transformed into Blender's frame, with normals and
 // (where there are UVs) tangents.
 std::vector<PrimitivePiece> read_pieces(const GltfFile& file) {
@@ -585,6 +649,7 @@ std::vector<PrimitivePiece> read_pieces(const GltfFile& file) {
     const double determinant = glm::determinant(glm::dmat3(transform));
     if (!(std::abs(determinant) > 0.0) || !std::isfinite(determinant)) continue;
 
+    check_morph_weights(file, instance);
     const tinygltf::Mesh& gltf_mesh = file.model.meshes[instance.mesh];
     for (size_t p = 0; p < gltf_mesh.primitives.size(); ++p) {
       const std::string what = concat("mesh ", instance.mesh, " primitive ", p);
@@ -857,7 +922,7 @@ MaterialDesc convert_material(const GltfFile& file, ImageTable& images, size_t i
   // so MASK renders with the same fractional alpha as BLEND. OPAQUE leaves Alpha at 1.
   const bool uses_alpha = material.alphaMode == "BLEND" || material.alphaMode == "MASK";
   if (!uses_alpha && material.alphaMode != "OPAQUE")
-    fail(file.path, concat(what, ": alphaMode \"", material.alphaMode, "\" is not OPAQUE, MASK or BLEND"));
+    fail(file.path, concat(what, ": alphaMode ", excerpt(material.alphaMode), " is not OPAQUE, MASK or BLEND"));
   if (uses_alpha)
     desc.set(P::Alpha, checked_factor(file, P::Alpha, pbr.baseColorFactor[3], what + " baseColorFactor alpha"));
   desc.set(P::Metallic, checked_factor(file, P::Metallic, pbr.metallicFactor, what + " metallicFactor"));

@@ -6,15 +6,26 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "matgeom/object_asset.h"
 
 namespace matgeom {
 
 // Decodes `file` into `out` (4 channels; 16-bit channels rounded to 8 bits), named `name`; or
-// returns the problem ("no such file", "cannot decode the image (...)", ...).
+// returns the problem ("no such file", "cannot decode the image: ...", ...).
 std::optional<std::string> decode_image_file(const std::filesystem::path& file, const std::string& name,
                                              ImagePixels& out);
+
+// The format of encoded image bytes, from their signature, when stb_image must not be given them:
+// a float format (OpenEXR, Radiance HDR: it would tone-map the values to 8 bits) or one it cannot
+// read (TIFF, WebP, KTX, DDS, JPEG 2000, AVIF/HEIF). Stated as a problem: "an OpenEXR image;
+// images are read from PNG, JPEG, BMP or TGA files".
+std::optional<std::string> unread_image_format(std::string_view bytes);
+
+// Why stb_image failed on `bytes`, in our words: the damaged or truncated data of the format their
+// signature names, or none of the formats read here.
+std::string undecodable_image(std::string_view bytes);
 
 // What Blender makes of a data (Non-Color) image's colour fed to a float socket, as a
 // roughness or metallic map is: its luminance, with the Rec. 709 weights of Blender's default

@@ -138,6 +138,24 @@ glm::dvec3 parameter_value(const fs::path& file, const MaterialParameterInfo& in
   return v;
 }
 
+// MatSynth's categories that are no class of ours: the folder's name decides for them.
+constexpr std::array<const char*, 3> kCategoriesWithoutClass = {"ground", "misc", "blends"};
+
+// The class a metadata.json category names (case-insensitively), none for MatSynth's categories
+// without one; any other word is refused (a misspelt class would otherwise label the material 0).
+std::optional<MaterialClass> category_class(const fs::path& file, const std::string& category) {
+  const std::string name = lowercase(category);
+  const std::optional<MaterialClass> named = material_class_named(name);
+  if (named && named != MaterialClass::Background) return named;
+  if (std::find(kCategoriesWithoutClass.begin(), kCategoriesWithoutClass.end(), name) != kCategoriesWithoutClass.end())
+    return std::nullopt;
+  std::string known;
+  for (const MaterialClassInfo& info : kMaterialClasses)
+    if (info.id != MaterialClass::Background) known += std::string(known.empty() ? "" : ", ") + info.name;
+  for (const char* without_class : kCategoriesWithoutClass) known += std::string(", ") + without_class;
+  fail(file.string(), "category: unknown category " + excerpt(category) + " (known: " + known + ")");
+}
+
 Metadata read_metadata(const fs::path& file) {
   Metadata metadata;
   std::error_code missing;
@@ -147,11 +165,9 @@ Metadata read_metadata(const fs::path& file) {
   const json doc = json::parse(text, nullptr, false);
   if (doc.is_discarded()) fail(file.string(), "not valid JSON");
   if (!doc.is_object()) fail(file.string(), "expected a JSON object");
-  // MatSynth's categories "ground", "misc" and "blends" are no class of ours: the folder's name decides.
   if (const auto category = doc.find("category"); category != doc.end()) {
     if (!category->is_string()) fail(file.string(), "category: expected a string");
-    metadata.material_class = material_class_named(lowercase(category->get<std::string>()));
-    if (metadata.material_class == MaterialClass::Background) metadata.material_class.reset();
+    metadata.material_class = category_class(file, category->get<std::string>());
   }
   if (const auto size = doc.find("physical_size"); size != doc.end() && !size->is_null()) {
     if (!size->is_number() || !(size->get<double>() > 0.0) || !std::isfinite(size->get<double>()))

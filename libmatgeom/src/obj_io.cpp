@@ -18,7 +18,7 @@
 
 // Reading is four steps: the OBJ text is screened for the inputs tinyobjloader 2.0.0rc10 handles
 // badly; tinyobjloader parses and triangulates it, reading every "mtllib" through
-// MaterialLibraries, which marks what each material leaves out; the faces become one vertex per
+// MaterialLibraries, which screens each .mtl and marks what each material leaves out; the faces become one vertex per
 // distinct v/vt/vn triple with a part per material slot or group; the used MTL materials become
 // MaterialDescs as Blender's OBJ importer builds its Principled BSDF. Writing is done by hand.
 //

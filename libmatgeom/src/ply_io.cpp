@@ -32,15 +32,6 @@
 namespace matgeom {
 namespace {
 
-// Text from the file for an error message, quoted and cut short: a corrupt file can put anything
-// where a keyword or a number should be.
-std::string excerpt(std::string_view text) {
-  constexpr size_t kMaxShown = 60;
-  std::string shown(text.substr(0, kMaxShown));
-  if (text.size() > kMaxShown) shown += "...";
-  return "\"" + shown + "\"";
-}
-
 std::string load_file(const std::string& path) {
   if (const std::optional<std::string> problem = input_file_problem(path)) fail(path, *problem);
   std::error_code error;
@@ -421,27 +412,30 @@ class BodyReader {
     if (token.empty()) fail_here("truncated file: missing values");
     const char* const first = token.data();
     const char* const last = first + token.size();
-    const auto malformed = [&] {
-      fail_here(concat("malformed number ", excerpt(token), " for a ", traits(type).name));
+    const TypeTraits& range = traits(type);
+    // A number as written that the property's type cannot hold is refused with the type's range.
+    const auto check = [&](std::from_chars_result result, bool in_range) {
+      if (result.ptr != last || (result.ec != std::errc() && result.ec != std::errc::result_out_of_range))
+        fail_here(concat("malformed number ", excerpt(token), " for a ", range.name));
+      if (result.ec == std::errc::result_out_of_range || !in_range) {
+        fail_here(is_integer(type) ? concat("number ", excerpt(token), " is outside a ", range.name, "'s range [",
+                                            range.lowest, ", ", range.highest, "]")
+                                   : concat("number ", excerpt(token), " is beyond the range of a ", range.name));
+      }
     };
     if (type == PlyType::Float32) {
       float value = 0.0f;
-      const auto [end, error] = std::from_chars(first, last, value);
-      if (error != std::errc() || end != last) malformed();
+      check(std::from_chars(first, last, value), true);
       return value;
     }
     if (type == PlyType::Float64) {
       double value = 0.0;
-      const auto [end, error] = std::from_chars(first, last, value);
-      if (error != std::errc() || end != last) malformed();
+      check(std::from_chars(first, last, value), true);
       return value;
     }
     int64_t value = 0;
-    const auto [end, error] = std::from_chars(first, last, value);
-    const TypeTraits& range = traits(type);
-    if (error != std::errc() || end != last || value < range.lowest || value > range.highest) {
-      malformed();
-    }
+    const std::from_chars_result result = std::from_chars(first, last, value);
+    check(result, value >= range.lowest && value <= range.highest);
     return static_cast<double>(value);
   }
 

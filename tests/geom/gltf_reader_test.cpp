@@ -671,6 +671,172 @@ TEST_CASE("glTF reader errors name the file and the problem", "[geom]") {
   }
 }
 
+namespace {
+
+// A triangle of material 0 (`material`), textured by `image` through a texture with sampler 0
+// (`sampler`), when given.
+std::string write_material_triangle(const TempDir& dir, const std::string& stem, const json& material,
+                                    const std::vector<uint8_t>& image = {}, const json& sampler = json(),
+                                    Container container = Container::Glb) {
+  GltfWriter writer(dir, stem, container);
+  const int positions = writer.add_vec3(kTriangle);
+  writer.doc()["meshes"] =
+      json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", positions}}}, {"material", 0}}})}}});
+  writer.doc()["nodes"] = json::array({{{"mesh", 0}}});
+  json textured = material;
+  if (!image.empty()) {
+    json texture = {{"source", writer.add_image(image, stem + ".png")}};
+    if (!sampler.is_null()) {
+      writer.doc()["samplers"] = json::array({sampler});
+      texture["sampler"] = 0;
+    }
+    writer.doc()["textures"] = json::array({texture});
+    textured["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}};
+  }
+  writer.doc()["materials"] = json::array({textured});
+  return writer.write();
+}
+
+// (encode_png checks its input with REQUIRE, so it runs inside a test.)
+std::vector<uint8_t> grey_png() { return encode_png(2, 2, 1, {10, 20, 30, 40}); }
+
+}  // namespace
+
+TEST_CASE("glTF values tinygltf would pass unseen are checked as written", "[geom]") {
+  TempDir dir;
+  using Catch::Matchers::Contains;
+  constexpr const char* kWrapModes = "33071 (CLAMP_TO_EDGE), 33648 (MIRRORED_REPEAT), 10497 (REPEAT)";
+
+  SECTION("sampler values outside glTF's enums") {
+    for (const auto& [sampler, problem] : {
+             std::pair{json{{"wrapS", 1234}}, std::string("sampler 0 wrapS: 1234 is not one of glTF's values: ") + kWrapModes},
+             std::pair{json{{"wrapT", "clamp"}}, std::string("sampler 0 wrapT: \"clamp\" is not one of glTF's values")},
+             std::pair{json{{"wrapS", 33071.5}}, std::string("sampler 0 wrapS: 33071.5 is not one of")},
+             std::pair{json{{"magFilter", 9984}}, std::string("sampler 0 magFilter: 9984 is not one of glTF's values: "
+                                                              "9728 (NEAREST), 9729 (LINEAR)")},
+             std::pair{json{{"minFilter", 5}}, std::string("sampler 0 minFilter: 5 is not one of glTF's values")},
+         }) {
+      const std::string path = write_material_triangle(dir, "sampled", json::object(), grey_png(), sampler);
+      INFO(sampler.dump());
+      CHECK_THAT(read_error(path), Contains(path + ": " + problem));
+    }
+    const std::string path = write_material_triangle(
+        dir, "sampled", json::object(), grey_png(),
+        {{"wrapS", kClampToEdge}, {"wrapT", 33648}, {"magFilter", 9728}, {"minFilter", 9987}});
+    CHECK(matgeom::read_gltf(path).materials.at(0)[P::BaseColor].image == 0);
+  }
+  SECTION("alpha cutoffs and factors of the wrong type or sign") {
+    for (const auto& [material, problem] : {
+             std::pair{json{{"alphaMode", "MASK"}, {"alphaCutoff", -0.5}},
+                       "material 0 alphaCutoff: -0.5 is negative (glTF's alphaCutoff is 0 or more)"},
+             std::pair{json{{"alphaMode", "MASK"}, {"alphaCutoff", "half"}}, "material 0 alphaCutoff: \"half\" is not a number"},
+             std::pair{json{{"pbrMetallicRoughness", {{"metallicFactor", "x"}}}},
+                       "material 0 pbrMetallicRoughness.metallicFactor: \"x\" is not a number"},
+             std::pair{json{{"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, "1", 1}}}}},
+                       "material 0 pbrMetallicRoughness.baseColorFactor: [1,1,\"1\",1] is not an array of 4 numbers"},
+             std::pair{json{{"emissiveFactor", {1, 1}}}, "material 0 emissiveFactor: [1,1] is not an array of 3 numbers"},
+             std::pair{json{{"normalTexture", {{"index", 0}, {"scale", "big"}}}},
+                       "material 0 normalTexture.scale: \"big\" is not a number"},
+             std::pair{json{{"occlusionTexture", {{"index", -1}}}},
+                       "material 0 occlusionTexture.index: -1 is not a whole number of 0 or more"},
+             std::pair{json{{"alphaMode", 3}}, "material 0 alphaMode: 3 is not a string"},
+         }) {
+      const std::string path = write_material_triangle(dir, "factors", material);
+      INFO(material.dump());
+      CHECK_THAT(read_error(path), Contains(path + ": " + problem));
+    }
+    // JSON has no NaN, and a number beyond a double is no JSON number either.
+    const std::string path = write_material_triangle(dir, "cutoff", {{"alphaMode", "MASK"}, {"alphaCutoff", 0.25}},
+                                                     {}, json(), Container::EmbeddedDataUri);
+    const std::string text = read_bytes(path);
+    const size_t cutoff = text.find("0.25");
+    REQUIRE(cutoff != std::string::npos);
+    write_text(path, text.substr(0, cutoff) + "NaN" + text.substr(cutoff + 4));
+    CHECK_THAT(read_error(path), Contains(path + ": not valid JSON (at byte "));
+    write_text(path, text.substr(0, cutoff) + "1e999" + text.substr(cutoff + 4));
+    CHECK_THAT(read_error(path), Contains(path + ": the JSON holds the number \"1e999\", beyond the range of a double"));
+  }
+  SECTION("images in formats not read, or damaged") {
+    const std::vector<uint8_t> exr = {0x76, 0x2F, 0x31, 0x01, 2, 0, 0, 0, 'c', 'h', 'a', 'n', 'n', 'e', 'l', 's'};
+    std::string path = write_material_triangle(dir, "exr", json::object(), exr);
+    std::string error = read_error(path);
+    CHECK_THAT(error, Contains(path + ": image 0: an OpenEXR image; images are read from PNG, JPEG, BMP or TGA files"));
+    CHECK_THAT(error, !Contains("Unknown image format") && !Contains("STB"));
+    std::vector<uint8_t> truncated = encode_png(4, 4, 3, std::vector<uint8_t>(48, 90));
+    truncated.resize(truncated.size() - 30);
+    path = write_material_triangle(dir, "truncated", json::object(), truncated);
+    error = read_error(path);
+    CHECK_THAT(error, Contains(path + ": image 0: the PNG data is damaged or cut short"));
+    CHECK_THAT(error, !Contains("Unknown image format") && !Contains("STB"));
+  }
+}
+
+TEST_CASE("glTF morph targets are refused unless every weight leaves the base shape", "[geom]") {
+  TempDir dir;
+  using Catch::Matchers::Contains;
+  const auto write_morphed = [&](const json& mesh_weights, const json& node_weights) {
+    GltfWriter writer(dir, "morphed", Container::Glb);
+    const int positions = writer.add_vec3(kTriangle);
+    const int offsets = writer.add_vec3({0, 0, 1, 0, 0, 1, 0, 0, 1});
+    json mesh = {{"primitives", json::array({{{"attributes", {{"POSITION", positions}}},
+                                              {"targets", json::array({{{"POSITION", offsets}}})}}})}};
+    if (!mesh_weights.is_null()) mesh["weights"] = mesh_weights;
+    json node = {{"mesh", 0}};
+    if (!node_weights.is_null()) node["weights"] = node_weights;
+    writer.doc()["meshes"] = json::array({mesh});
+    writer.doc()["nodes"] = json::array({node});
+    return writer.write();
+  };
+  std::string path = write_morphed({0.5}, json());
+  CHECK_THAT(read_error(path), Contains(path + ": mesh 0 (node 0): morph target weights 0.5 are not applied; only "
+                                               "the base shape is read, so every weight must be 0"));
+  path = write_morphed({0.0}, {0.25});  // the node's weights replace the mesh's
+  CHECK_THAT(read_error(path), Contains("morph target weights 0.25 are not applied"));
+  // Weights of 0 (glTF's default) show the base shape: the triangle as written, z = 0.
+  for (const auto& [mesh_weights, node_weights] : {std::pair{json(), json()}, std::pair{json{0.5}, json{0.0}}}) {
+    const matgeom::ObjectAsset asset = matgeom::read_gltf(write_morphed(mesh_weights, node_weights));
+    REQUIRE(asset.mesh.vertex_count() == 3);
+    for (const glm::vec3& p : asset.mesh.positions) CHECK(p.y == 0.0f);  // glTF's z is Blender's -y
+  }
+}
+
+TEST_CASE("glTF errors never echo a data URI", "[geom]") {
+  TempDir dir;
+  using Catch::Matchers::Contains;
+  // 30,000 vertices of float positions: a buffer of 360,000 bytes, 480,000 characters of base64.
+  std::vector<float> positions(90000, 0.5f);
+  GltfWriter writer(dir, "long", Container::EmbeddedDataUri);
+  writer.add_vec3(positions);
+  writer.doc()["meshes"] = json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", 0}}}}})}}});
+  writer.doc()["nodes"] = json::array({{{"mesh", 0}}});
+  const std::string path = writer.write();
+  json doc = json::parse(read_bytes(path));
+  doc["buffers"][0]["byteLength"] = 360004;
+  write_text(path, doc.dump());
+  std::string error = read_error(path);
+  CHECK_THAT(error, Contains(path + ": buffer 0: byteLength 360004, but its data URI "
+                                    "(\"data:application/octet-stream;base64,\" and 480000 characters) decodes to "
+                                    "360000 bytes"));
+  CHECK(error.size() < path.size() + 200);
+  // tinygltf takes a data URI of a media type it does not decode for a file name, and quoted it.
+  doc["buffers"][0]["byteLength"] = 360000;
+  doc["buffers"][0]["uri"] = "data:application/x-unknown;base64," + std::string(480000, 'A');
+  write_text(path, doc.dump());
+  error = read_error(path);
+  CHECK_THAT(error, Contains(path + ": buffer 0 uri: a data URI starting \"data:application/x-unknown;base64,\"; "
+                                    "the data URIs read are base64 of application/octet-stream, "
+                                    "application/gltf-buffer"));
+  CHECK(error.size() < path.size() + 200);
+  // Data that decodes to nothing (no base64 character) fails in tinygltf, which quotes the URI:
+  // passed on cut after its media type.
+  doc["buffers"][0]["byteLength"] = 0;
+  doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + std::string(480000, '!');
+  write_text(path, doc.dump());
+  error = read_error(path);
+  CHECK_THAT(error, Contains(path + ": ") && Contains("data:application/octet-stream;base64,<480000 characters of data>"));
+  CHECK(error.size() < path.size() + 700);
+}
+
 TEST_CASE("glTF reader walks a node hierarchy 100,000 levels deep without recursion", "[geom]") {
   TempDir dir;
   GltfWriter writer(dir, "deep", Container::EmbeddedDataUri);

@@ -227,7 +227,12 @@ TEST_CASE("Each kind of broken material folder gets its own message", "[geom]") 
         std::pair{R"({"normal_convention": "metal"})", "normal_convention: expected \"opengl\" or \"directx\""},
         std::pair{R"({"parameters": {"shininess": 3}})", "parameters: unknown material parameter \"shininess\""},
         std::pair{R"({"parameters": {"ior": 0.5}})", "parameters/ior: 0.5 is outside [1, 1000]"},
-        std::pair{R"({"parameters": {"base_color": 0.5}})", "parameters/base_color: expected [r, g, b]"}}) {
+        std::pair{R"({"parameters": {"base_color": 0.5}})", "parameters/base_color: expected [r, g, b]"},
+        // A misspelt class used to give the folder label 0 without a word.
+        std::pair{R"({"category": "Wod"})",
+                  "category: unknown category \"Wod\" (known: concrete, fabric, leather, metal, plastic, stone, wood, "
+                  "marble, ceramic, terracotta, plaster, rubber, paper, glass, ground, misc, blends)"},
+        std::pair{R"({"category": "background"})", "category: unknown category \"background\""}}) {
     CAPTURE(text);
     write_text(metadata, text);
     CHECK_THAT(read_error(folder.string()), Contains(metadata + ": " + problem));

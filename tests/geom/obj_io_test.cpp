@@ -184,11 +184,11 @@ TEST_CASE("OBJ reader maps MTL statements as Blender's importer does", "[geom]")
       {"glass", "illum 9\nKa 1 1 1", glm::dvec3(0.8), 1.0, 0.0, 0.0},
       // Pr and Pm replace what Ns and Ka give.
       {"pbr", "illum 3\nKa 0.9 0.9 0.9\nNs 0\nPr 0.3\nPm 0.2", glm::dvec3(0.8), 0.3, 0.2, 0.0},
-      // Out of [0, 1]: clamped; Ns beyond 1000 counts as 1000.
-      {"clamped", "Kd 2 0.5 0\nKs 3 3 3\nPr 1.5\nPm -0.5\nillum 4", {1.0, 0.5, 0.0}, 1.0, 1.0, 1.0},
+      // Ns beyond 1000 (the spec's "normal" range) counts as 1000, as in Blender.
       {"shiny", "Ns 4000", glm::dvec3(0.8), 0.0, 0.0, 0.0},
-      // A negative Kd component: Blender keeps its default base colour.
-      {"negative", "Kd -0.5 0.2 0.2", glm::dvec3(0.8), 1.0, 0.0, 0.0},
+      // The bounds of [0, 1] themselves, and a colour of one number: a grey (the MTL spec).
+      {"bounds", "Kd 1 0 1\nKs 1 1 1\nPr 1\nPm 0\nillum 4", {1.0, 0.0, 1.0}, 1.0, 0.0, 1.0},
+      {"grey", "Kd 0.25", glm::dvec3(0.25), 1.0, 0.0, 0.0},
   };
   std::string obj = "mtllib cases.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n";
   std::string mtl;
@@ -527,11 +527,13 @@ TEST_CASE("OBJ reader errors name the file and the problem", "[geom]") {
     }
   }
   SECTION("NaN and infinite vertices") {
-    // tinyobjloader reads 0e999 as 0 x inf = NaN; 1e999 is infinite.
-    for (const char* vertex : {"v 0e999 0 0\n", "v 0 1e999 0\n", "vn 0 0 -1e999\n"}) {
+    // tinyobjloader reads 0e999 as 0 x inf = NaN; 1e999 is infinite, 1e39 beyond its float.
+    write_text(path, triangle + "v 0e999 0 0\nf 1 2 3\n");
+    CHECK_THAT(read_error(path), Contains(path + ": ") && Contains("non-finite position 4"));
+    for (const char* vertex : {"v 0 1e999 0\n", "vn 0 0 -1e999\n", "vt 1e39 0\n"}) {
       write_text(path, triangle + vertex + "f 1 2 3\n");
       INFO(vertex);
-      CHECK_THAT(read_error(path), Contains(path + ": ") && Contains("non-finite"));
+      CHECK_THAT(read_error(path), Contains(path + ": line 4: ") && Contains("is not a finite number"));
     }
   }
   SECTION("words tinyobjloader would silently read as 0") {
@@ -551,9 +553,11 @@ TEST_CASE("OBJ reader errors name the file and the problem", "[geom]") {
       CHECK_THAT(read_error(path), Contains(path + ": ") && Contains("no faces"));
     }
   }
-  SECTION("a face tinyobjloader cannot parse") {
+  SECTION("a face index 0, which OBJ does not have") {
     write_text(path, triangle + "f 0 1 2\n");
-    CHECK_THAT(read_error(path), Contains(path + ": ") && Contains("tinyobjloader"));
+    const std::string error = read_error(path);
+    CHECK_THAT(error, Contains(path + ": face index 0: indices count from 1, or back from -1 (line 4, corner \"0\")"));
+    CHECK_THAT(error, !Contains("tinyobjloader") && !Contains("zero value"));
   }
   SECTION("missing .mtl") {
     write_text(path, "mtllib nowhere.mtl\n" + triangle + "f 1 2 3\n");
@@ -581,6 +585,148 @@ TEST_CASE("OBJ reader errors name the file and the problem", "[geom]") {
     write_text(path, text + "\n");
     CHECK_THAT(read_error(path), Contains(path + ": ") && Contains("corners"));
   }
+}
+
+TEST_CASE("OBJ statements are checked where they are written, indices reported as written", "[geom]") {
+  TempDir dir;
+  const std::string path = dir.file("shape.obj");
+  const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  // Each statement on line 4, after the triangle's vertices, and what the error says about it.
+  for (const auto& [statement, problem] : {
+           std::pair{"v 1 2\n", "line 4: a 'v' line takes x y z (and w, or r g b); this one has 2 numbers"},
+           std::pair{"vn 0 1\n", "line 4: a 'vn' line takes x y z; this one has 2 numbers"},
+           std::pair{"f 1 2\n", "line 4: a 'f' line needs 3 or more corners; this one has 2"},
+           // tinyobjloader's atoi wraps 99999999999 to 1215752191: the text as written is reported.
+           std::pair{"f 1 2 99999999999\n", "face index out of range: position 99999999999 but the file has 3 "
+                                            "before this line (line 4, corner \"99999999999\")"},
+           std::pair{"f 1 2 -4\n", "face index out of range: position -4 but the file has 3 before this line (line 4"},
+           std::pair{"f 1//1 2 3\n", "face index out of range: normal 1 but the file has 0 before this line (line 4, "
+                                     "corner \"1//1\")"},
+           std::pair{"f 1/x 2 3\n", "face index \"x\" is not a whole number (line 4, corner \"1/x\")"},
+           std::pair{"f 1.5 2 3\n", "face index \"1.5\" is not a whole number (line 4, corner \"1.5\")"},
+           std::pair{"f 1/1/1/1 2 3\n", "a face corner is v, v/vt, v//vn or v/vt/vn (line 4, corner \"1/1/1/1\")"},
+           std::pair{"l 1 0\n", "line index 0: indices count from 1, or back from -1 (line 4, corner \"0\")"},
+       }) {
+    write_text(path, triangle + statement);
+    INFO(statement);
+    const std::string error = read_error(path);
+    CHECK_THAT(error, Contains(path + ": " + problem));
+    CHECK_THAT(error, !Contains("1215752191") && !Contains("tinyobjloader"));
+  }
+  // A later vertex does not count for an earlier face; a comment after the corners is no index.
+  write_text(path, "v 0 0 0\nv 1 0 0\nf 1 2 3\nv 0 1 0\n");
+  CHECK_THAT(read_error(path), Contains(path + ": face index out of range: position 3 but the file has 2 before this "
+                                               "line (line 3, corner \"3\")"));
+  write_text(path, triangle + "f 1 2 3 # the only face\nv 1 2 3 1\nvt 0.5\n");
+  CHECK(read_obj(path).mesh.triangle_count() == 1);
+}
+
+TEST_CASE("OBJ reader refuses a usemtl naming no material, at its line", "[geom]") {
+  TempDir dir;
+  const std::string path = dir.file("used.obj");
+  write_text(dir.file("used.mtl"), "newmtl wood\nKd 0.5 0.4 0.3\nnewmtl steel\nPm 1\n");
+  const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  write_text(path, "mtllib used.mtl\n" + triangle + "usemtl wood\nf 1 2 3\nusemtl stone\nf 1 3 2\n");
+  CHECK_THAT(read_error(path), Contains(path + ": line 7: usemtl \"stone\": no such material (its material "
+                                               "libraries define \"wood\", \"steel\")"));
+  // tinyobjloader reads a library when it meets its mtllib, so a usemtl before it finds nothing.
+  write_text(path, triangle + "usemtl wood\nf 1 2 3\nmtllib used.mtl\n");
+  CHECK_THAT(read_error(path), Contains(path + ": line 4: usemtl \"wood\": no such material (its material "
+                                               "library is named by an \"mtllib\" after this line)"));
+  write_text(dir.file("empty.mtl"), "# nothing\n");
+  write_text(path, "mtllib empty.mtl\n" + triangle + "usemtl wood\nf 1 2 3\n");
+  CHECK_THAT(read_error(path), Contains(path + ": line 5: usemtl \"wood\": no such material (no material "
+                                               "library defines any material)"));
+  // Without any mtllib (an OBJ exported without its .mtl) the faces take the default material.
+  write_text(path, triangle + "usemtl wood\nf 1 2 3\n");
+  CHECK(read_obj(path).mesh.triangle_count() == 1);
+}
+
+TEST_CASE("MTL numbers are checked where they are written, against the range their parameter can use",
+          "[geom]") {
+  TempDir dir;
+  const std::string obj = dir.file("checked.obj");
+  const std::string mtl = dir.file("checked.mtl");
+  write_text(obj, "mtllib checked.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n");
+  write_bytes(dir.file("t.png"), encode_png(1, 1, 1, {7}));
+  // Each statement on line 2 of material m, and what the error says about it (the ranges are the
+  // parameter table's: colours, roughness, metallic, opacity, clearcoat and sheen in [0, 1], IOR in
+  // [1, 1000], emission strength up to 10^6).
+  for (const auto& [statement, problem] : {
+           // tinyobjloader read each of these words as 0.
+           std::pair{"Kd nan 0 0", "Kd: \"nan\" is not a finite number"},
+           std::pair{"Kd red 0.2 0.2", "Kd: \"red\" is not a finite number"},
+           std::pair{"Kd 0.5 inf 0", "Kd: \"inf\" is not a finite number"},
+           std::pair{"Kd 0.5 0.5 1e39", "Kd: \"1e39\" is not a finite number"},
+           // A negative component replaced the whole colour by the default grey; 5 was clamped to 1.
+           std::pair{"Kd -0.5 0.2 0.2", "Kd: \"-0.5\" is outside [0, 1]"},
+           std::pair{"Kd 5", "Kd: \"5\" is outside [0, 1]"},
+           std::pair{"Kd 0.5 0.5", "Kd takes 3 numbers (or 1 for a grey); it has 2"},
+           std::pair{"Ka 0.2 0.2 1.2", "Ka: \"1.2\" is outside [0, 1]"},
+           std::pair{"Ks 3 3 3", "Ks: \"3\" is outside [0, 1]"},
+           std::pair{"Tf 0.5 x 0.5", "Tf: \"x\" is not a finite number"},
+           std::pair{"Ke -1 0 0", "Ke: \"-1\" is outside [0, 1000000]"},
+           std::pair{"Ns -5", "Ns: \"-5\" is outside [0, ...)"},
+           std::pair{"Ns 100 200", "Ns takes 1 number; it has 2"},
+           std::pair{"Ni 0.5", "Ni: \"0.5\" is outside [1, 1000]"},
+           std::pair{"d 1.5", "d: \"1.5\" is outside [0, 1]"},
+           std::pair{"Tr -0.1", "Tr: \"-0.1\" is outside [0, 1]"},
+           std::pair{"Pr 1.5", "Pr: \"1.5\" is outside [0, 1]"},
+           std::pair{"Pm -0.5", "Pm: \"-0.5\" is outside [0, 1]"},
+           std::pair{"Pc 2", "Pc: \"2\" is outside [0, 1]"},
+           std::pair{"Pcr nan", "Pcr: \"nan\" is not a finite number"},
+           std::pair{"Ps shiny", "Ps: \"shiny\" is not a finite number"},
+           std::pair{"illum 2.5", "illum: \"2.5\" is not a whole number"},
+           std::pair{"illum 11", "illum: \"11\" is outside [0, 10]"},
+           // Map options: numbers checked the same way, words among their choices.
+           std::pair{"map_Bump -bm -1 t.png", "map_Bump -bm: \"-1\" is outside [0, ...)"},
+           std::pair{"map_Kd -bm t.png", "map_Kd -bm: \"t.png\" is not a finite number"},
+           std::pair{"map_Kd -o nan t.png", "map_Kd -o: \"nan\" is not a finite number"},
+           std::pair{"map_Kd -s 2 2 1 t.png", "map_Kd -s \"2\": texture scales are not applied"},
+           std::pair{"map_Kd -o 0 0.5 t.png", "map_Kd -o \"0.5\": texture offsets are not applied"},
+           std::pair{"map_Kd -mm", "map_Kd -mm needs 1 or 2 numbers"},
+           std::pair{"map_Kd -clamp maybe t.png", "map_Kd -clamp takes one of on, off; not \"maybe\""},
+           std::pair{"map_Kd -texres 0 t.png", "map_Kd -texres: \"0\" is outside [1, 2147483647]"},
+           std::pair{"map_Kd -imfchan q t.png", "map_Kd -imfchan takes one of r, g, b, m, l, z; not \"q\""},
+           std::pair{"map_Kd -zoom 2 t.png", "map_Kd: unknown option \"-zoom\""},
+           std::pair{"map_Kd", "map_Kd: no file name"},
+           std::pair{"newmtl m", "material \"m\" is defined twice (first on line 1)"},
+       }) {
+    write_text(mtl, std::string("newmtl m\n") + statement + "\n");
+    INFO(statement);
+    CHECK_THAT(read_error(obj), Contains(obj + ": " + mtl + ": line 2: " + problem));
+  }
+  // A file name after fewer than three numbers of -s: tinyobjloader would take it as the third.
+  write_text(mtl, "newmtl m\nmap_Kd -s 1 1 t.png\nmap_Bump -bm 0.5 -o 0 t.png\n");
+  const ObjectAsset asset = read_obj(obj);
+  REQUIRE(asset.images.size() == 1);
+  CHECK(asset.materials[0][P::BaseColor].image == 0);
+  CHECK(asset.materials[0].normal_image == 0);
+  CHECK(asset.materials[0].normal_strength == 0.5);
+  write_text(mtl, "Kd 1 1 1\nnewmtl\n");
+  CHECK_THAT(read_error(obj), Contains(obj + ": " + mtl + ": line 2: newmtl without a material name"));
+}
+
+TEST_CASE("OBJ textures in formats not read, or damaged, are named as such", "[geom]") {
+  TempDir dir;
+  const std::string obj = dir.file("textured.obj");
+  write_text(obj, "mtllib textured.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n");
+  write_text(dir.file("textured.mtl"), "newmtl m\nmap_Kd texture.img\n");
+  const std::string texture = dir.file("texture.img");
+  // An OpenEXR file starts with its magic number and version 2; stb_image called it "Unknown image format".
+  write_bytes(texture, std::string("\x76\x2f\x31\x01" "\x02\x00\x00\x00" "channels", 16));
+  std::string error = read_error(obj);
+  CHECK_THAT(error, Contains(obj + ": ") && Contains(texture + ": cannot decode the image: an OpenEXR image; images are "
+                                                               "read from PNG, JPEG, BMP or TGA files"));
+  CHECK_THAT(error, !Contains("Unknown image format") && !Contains("STB"));
+  std::vector<uint8_t> png = encode_png(4, 4, 3, std::vector<uint8_t>(48, 90));
+  png.resize(png.size() - 30);  // the image data cut short
+  write_bytes(texture, png);
+  error = read_error(obj);
+  CHECK_THAT(error, Contains(texture + ": cannot decode the image: the PNG data is damaged or cut short"));
+  CHECK_THAT(error, !Contains("Unknown image format") && !Contains("STB"));
+  write_text(texture, "plain text");
+  CHECK_THAT(read_error(obj), Contains(texture + ": cannot decode the image: not an image in a format read here"));
 }
 
 TEST_CASE("OBJ reader ignores the tags and skin weights tinyobjloader mishandles", "[geom]") {

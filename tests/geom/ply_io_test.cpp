@@ -445,8 +445,13 @@ TEST_CASE("PLY reader errors name the file and the problem", "[geom]") {
     write_bytes(path, ascii_ply(3, 1, "0 0 0\n1 0.5.2 0\n0 1 0\n3 0 1 2\n"));
     CHECK_THAT(read_error(path), Contains(path) && Contains("malformed number \"0.5.2\"") &&
                                      Contains("vertex 1, property y"));
+    // Numbers the property's type cannot hold, reported as written with the type's range.
     write_bytes(path, ascii_ply(3, 1, "0 0 0\n1 0 0\n0 1 0\n300 0 1 2\n"));
-    CHECK_THAT(read_error(path), Contains(path) && Contains("malformed number \"300\""));
+    CHECK_THAT(read_error(path), Contains(path + ": number \"300\" is outside a uchar's range [0, 255] (face 0, "
+                                                 "property vertex_indices)"));
+    write_bytes(path, ascii_ply(3, 1, "0 0 0\n1 1e39 0\n0 1 0\n3 0 1 2\n"));
+    CHECK_THAT(read_error(path), Contains(path + ": number \"1e39\" is beyond the range of a float (vertex 1, "
+                                                 "property y)"));
   }
   SECTION("truncated ASCII") {
     write_bytes(path, ascii_ply(3, 1, "0 0 0\n1 0 0\n0 1 0\n3 0 1"));

@@ -10,8 +10,10 @@ namespace matgeom {
 // applies node transforms, converts glTF's +Y up to Blender's +Z up ((x, y, z) -> (x, -z, y)),
 // and makes one part per glTF material (primitives without one share a default slot).
 // Normals are computed (area-weighted) where missing; tangents with compute_tangents() where
-// missing and UVs exist. Throws std::runtime_error whose message starts with the path and names
-// the problem (unreadable, not glTF, index out of range, non-finite vertex, no triangles...).
+// missing and UVs exist. Morph targets are not applied: a mesh whose weights are not all 0 is
+// refused. Throws std::runtime_error whose message starts with the path and names the problem
+// (unreadable, not glTF, a value of the wrong type or outside glTF's enums, index out of range,
+// non-finite vertex, no triangles...).
 ObjectAsset read_gltf(const std::string& path);
 
 }  // namespace matgeom

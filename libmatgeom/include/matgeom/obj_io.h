@@ -18,8 +18,9 @@ struct ObjReadOptions {
 // Reads positions, normals and UVs (split into one vertex per distinct v/vt/vn triple),
 // triangulates polygons, and maps MTL materials to MaterialDesc (Kd, map_Kd, Pr/map_Pr, Pm/map_Pm,
 // norm/map_Bump; the conventions are in src/obj/mtl_materials.cpp and mtl_textures.cpp). Faces
-// without a material share a part named "default". Throws std::runtime_error starting with the
-// path and naming the problem.
+// without a material share a part named "default". Every number is checked where the OBJ or MTL
+// file writes it (src/obj/obj_text_screening.h, mtl_text_screening.h). Throws std::runtime_error
+// starting with the path and naming the problem, with the line for OBJ and MTL statements.
 ObjectAsset read_obj(const std::string& path, const ObjReadOptions& options = {});
 
 // Writes the mesh with one "g"/"usemtl" block per part and a .mtl beside it (same stem) with the

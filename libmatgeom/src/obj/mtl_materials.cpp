@@ -19,8 +19,9 @@
 // (checked by importing a file into Blender 3.4.1); the PBR extension (Pr, Pm, map_Pr, map_Pm) is
 // read as Blender 3.5 added it: its values, when given, replace the ones derived from Ns and Ka.
 // Ignored: Tr (Blender ignores it), map_Ns, refl, disp, anisotropy, map_Ks, and the texture
-// options -o, -s (Blender adds a Mapping node for them) and -type. Blender ignores -clamp, so
-// textures repeat. tinyobjloader reads Kt as Tf; Blender may not.
+// option -type. Blender ignores -clamp, so textures repeat. The options -o and -s, for which
+// Blender adds a Mapping node, are refused unless they leave the texture in place
+// (mtl_text_screening.cpp). tinyobjloader reads Kt as Tf; Blender may not.
 
 namespace matgeom::obj {
 namespace {
@@ -43,8 +44,9 @@ IllumFlags illum_flags(int illum) {
 
 bool given3(const tinyobj::real_t* values) { return values[0] >= 0.0f && values[1] >= 0.0f && values[2] >= 0.0f; }
 
-// Blender passes MTL values through; here they are clamped to the parameter's range (a base
-// colour above 1 would reflect more light than arrives).
+// The screening refused every value outside its parameter's range as written
+// (mtl_text_screening.cpp); tinyobjloader's own decimal arithmetic ("100e-2" is 100 x 5^-2 x 2^-2)
+// can still land a rounding step outside it.
 double clamped(MaterialParameter p, double value) { return clamp_to_range(p, value); }
 
 double mean3(const tinyobj::real_t* values) {
@@ -59,7 +61,7 @@ class MaterialConverter {
   MaterialDesc convert(size_t index) const {
     const tinyobj::material_t& material = file_.materials[index];
     const std::string what =
-        concat(file_.material_libraries[index], ": material '", material.name, "'");
+        concat(file_.material_libraries[index], ": material ", excerpt(material.name));
     check_finite_values(material, what);
     MaterialDesc desc(material.name);
     set_scalars(material, desc);
@@ -68,6 +70,8 @@ class MaterialConverter {
   }
 
  private:
+  // The screening checked every number as written; tinyobjloader's own arithmetic can still make
+  // a NaN or an infinity of one (0e999 is 0 x inf to it).
   void check_finite_values(const tinyobj::material_t& material, const std::string& what) const {
     const auto finite3 = [](const tinyobj::real_t* v) {
       return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
@@ -87,10 +91,10 @@ class MaterialConverter {
   static void set_scalars(const tinyobj::material_t& material, MaterialDesc& desc) {
     using P = MaterialParameter;
     const IllumFlags illum = illum_flags(material.illum);
-    // Base colour: Kd when no component is negative; otherwise Principled's default grey, which
-    // MaterialDesc already holds.
+    // Base colour: Kd when given; otherwise Principled's default grey, which MaterialDesc
+    // already holds.
     const glm::dvec3 kd(material.diffuse[0], material.diffuse[1], material.diffuse[2]);
-    if (kd.r >= 0.0 && kd.g >= 0.0 && kd.b >= 0.0) {
+    if (given3(material.diffuse)) {
       desc.set(P::BaseColor, glm::dvec3(clamped(P::BaseColor, kd.r), clamped(P::BaseColor, kd.g), clamped(P::BaseColor, kd.b)));
     }
     // Specular: the mean of Ks; without Ks, 1 with highlights and 0 otherwise.
@@ -183,7 +187,8 @@ class MaterialConverter {
   // map, not a height map, with strength max(0, -bm). Blender ignores "norm", the PBR
   // extension's normal map, which is read here when map_Bump is absent. Without -bm Blender 3.4
   // leaves its -1 marker, making the strength 0 and the map invisible; the MTL default -bm 1
-  // (tinyobjloader's) is kept instead.
+  // (tinyobjloader's) is kept instead. A negative -bm, which would hide the map, is refused
+  // (mtl_text_screening.cpp).
   void set_normal_texture(const tinyobj::material_t& material, size_t index,
                           const std::string& what, MaterialDesc& desc) const {
     const bool bump = !material.bump_texname.empty();
@@ -192,7 +197,7 @@ class MaterialConverter {
                                       : source(material.normal_texname, index, what + " norm");
     desc.normal_image = textures_.color_texture(normal);
     const tinyobj::texture_option_t& options = bump ? material.bump_texopt : material.normal_texopt;
-    desc.normal_strength = std::max(0.0, static_cast<double>(options.bump_multiplier));
+    desc.normal_strength = options.bump_multiplier;
   }
 
   // Texture paths are relative to the .mtl's directory (Blender's first choice; its fallbacks

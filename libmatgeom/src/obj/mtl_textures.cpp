@@ -12,10 +12,14 @@
 namespace matgeom::obj {
 namespace {
 
+// Linux's PATH_MAX: no longer path names a file that can be opened.
+constexpr size_t kMaxPathShown = 4096;
+
 ImagePixels decode_texture(const std::string& obj_path, const TextureSource& source) {
   ImagePixels pixels;
   if (const std::optional<std::string> problem = decode_image_file(source.file, source.name, pixels))
-    fail(obj_path, concat(source.what, ": texture ", source.file.string(), ": ", *problem));
+    // The file name is the rest of an MTL line, which may be megabytes long.
+    fail(obj_path, concat(source.what, ": texture ", cut_short(source.file.string(), kMaxPathShown), ": ", *problem));
   return pixels;
 }
 

@@ -15,7 +15,7 @@ namespace matgeom::obj {
 struct TextureSource {
   std::string name;  // as the .mtl writes it
   std::filesystem::path file;
-  std::string what;  // "<mtl>: material '<name>' map_Kd"
+  std::string what;  // "<mtl>: material \"<name>\" map_Kd"
 };
 
 // The decoded textures the asset's materials reference, each decoded once.

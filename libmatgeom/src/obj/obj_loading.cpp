@@ -1,5 +1,6 @@
 #include "obj/obj_loading.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <map>
@@ -9,6 +10,7 @@
 #include "file_error.h"
 #include "matgeom/input_file.h"
 #include "matgeom/text.h"
+#include "obj/mtl_text_screening.h"
 #include "obj/obj_text_screening.h"
 
 namespace matgeom::obj {
@@ -20,12 +22,44 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// What a "usemtl" naming no material it can use is missing, for its error message.
+std::string missing_material_reason(const ObjFile& file, const std::string& name) {
+  const auto defined = [&](const tinyobj::material_t& m) { return m.name == name; };
+  if (std::any_of(file.materials.begin(), file.materials.end(), defined))
+    return "its material library is named by an \"mtllib\" after this line";
+  // tinyobjloader adds an unnamed material for a library without "newmtl".
+  std::vector<std::string> names;
+  for (const tinyobj::material_t& m : file.materials)
+    if (!m.name.empty()) names.push_back(m.name);
+  if (names.empty()) return "no material library defines any material";
+  std::string listed;
+  const size_t shown = std::min<size_t>(names.size(), 10);
+  for (size_t m = 0; m < shown; ++m) listed += (m == 0 ? "" : ", ") + excerpt(names[m]);
+  if (shown < names.size()) listed += concat(" and ", names.size() - shown, " more");
+  return "its material libraries define " + listed;
+}
+
+// tinyobjloader gives the faces after a "usemtl" whose material no library read so far defines
+// no material, with only a warning; such a file is refused, at the first line using the name. An
+// OBJ that names no library at all (exported without its .mtl) is read with the default
+// material, as Blender gives it empty materials of those names: no name there can be a typo.
+void check_material_uses(const ObjFile& file, const std::string& text) {
+  constexpr std::string_view kBefore = "material [ '", kAfter = "' ] not found in .mtl";
+  const size_t found = file.warnings.find(kBefore);
+  if (found == std::string::npos || !names_material_library(text)) return;
+  const size_t begin = found + kBefore.size();
+  const std::string name = file.warnings.substr(begin, file.warnings.find(kAfter, begin) - begin);
+  fail(file.path, concat("line ", first_use_line(text, name), ": usemtl ", excerpt(name),
+                         ": no such material (", missing_material_reason(file, name), ")"));
+}
+
 // Reads the .mtl files "mtllib" names for tinyobjloader, relative to the OBJ's directory as
-// Blender resolves them, remembering the file each material comes from and the files that
-// could not be read (tinyobjloader would only warn about those).
+// Blender resolves them, screened, remembering the file each material comes from and the files
+// that could not be read (tinyobjloader would only warn about those).
 class MaterialLibraries : public tinyobj::MaterialReader {
  public:
-  explicit MaterialLibraries(fs::path obj_directory) : obj_directory_(std::move(obj_directory)) {}
+  explicit MaterialLibraries(std::string obj_path)
+      : obj_path_(std::move(obj_path)), obj_directory_(fs::path(obj_path_).parent_path()) {}
 
   bool operator()(const std::string& library, std::vector<tinyobj::material_t>* materials,
                   std::map<std::string, int>* material_map, std::string* warnings,
@@ -36,7 +70,7 @@ class MaterialLibraries : public tinyobj::MaterialReader {
       missing_.push_back(file.string());
       return false;
     }
-    std::istringstream stream(with_not_given_markers(text));
+    std::istringstream stream(with_not_given_markers(screened_mtl_text(obj_path_, file.string(), text)));
     tinyobj::LoadMtl(material_map, materials, &stream, warnings, errors);
     sources_.resize(materials->size(), file.string());
     return true;
@@ -46,6 +80,7 @@ class MaterialLibraries : public tinyobj::MaterialReader {
   const std::vector<std::string>& missing() const { return missing_; }
 
  private:
+  std::string obj_path_;
   fs::path obj_directory_;
   std::vector<std::string> sources_;  // the .mtl file of material k
   std::vector<std::string> missing_;
@@ -61,7 +96,7 @@ ObjFile load_obj(const std::string& path) {
   ObjFile file;
   file.path = path;
   std::istringstream stream(text);
-  MaterialLibraries libraries(fs::path(path).parent_path());
+  MaterialLibraries libraries(path);
   std::string errors;
   const bool parsed = tinyobj::LoadObj(&file.attrib, &file.shapes, &file.materials, &file.warnings,
                                        &errors, &stream, &libraries, /*triangulate=*/true,
@@ -71,11 +106,14 @@ ObjFile load_obj(const std::string& path) {
   }
   if (!parsed || !errors.empty()) fail(path, "tinyobjloader: " + trim(errors));
   file.material_libraries = libraries.sources();
+  check_material_uses(file, text);
   return file;
 }
 
 // ---------------------------------------------------------------------------------------------
-// Checks on what tinyobjloader returns
+// Checks on what tinyobjloader returns: the screening reports bad numbers and indices as the file
+// writes them, with their line; these hold the arrays safe from any value tinyobjloader's own
+// parsing makes differently (its decimal arithmetic reads 0e999 as 0 x inf, a NaN).
 
 namespace {
 

@@ -1,22 +1,28 @@
 #pragma once
-// Text as tinyobjloader sees it: the OBJ and MTL text is screened and marked before
-// tinyobjloader 2.0.0rc10 parses it, for the inputs it handles badly and for the values it
-// would otherwise fill in unseen.
+// OBJ text as tinyobjloader sees it: screened before tinyobjloader 2.0.0rc10 parses it, for the
+// inputs it handles badly and for the values it would otherwise fill in or wrap unseen.
+#include <cstddef>
 #include <string>
+#include <string_view>
 
 namespace matgeom::obj {
 
-// Prepares OBJ text for tinyobjloader 2.0.0rc10, which mishandles two statements that mean
-// nothing to a triangle mesh: it copies every "t" (subdivision tag) line, with up to 3 x 8192
-// values each, into every shape, so a few kilobytes of tags can claim gigabytes; and it converts
-// "vw" (skin weight) joint numbers to int unchecked, undefined for 1e40. Their lines are blanked,
-// which keeps the line numbers of tinyobjloader's messages. Polygons with too many corners are
-// refused.
+// Checks every vertex and face statement of OBJ text where it is written, throwing
+// std::runtime_error("<path>: line <n>: <problem>"): vertex coordinates are finite numbers of
+// the count the statement takes; faces have 3 or more corners (up to kMaxPolygonCorners), and
+// lines and points 1 or more, whose indices name vertices that come before them, reported as
+// written. Prepares the text for tinyobjloader, which mishandles two statements that mean nothing
+// to a triangle mesh: it copies every "t" (subdivision tag) line, with up to 3 x 8192 values
+// each, into every shape, so a few kilobytes of tags can claim gigabytes; and it converts "vw"
+// (skin weight) joint numbers to int unchecked, undefined for 1e40. Their lines are blanked, as
+// are comments after corners (which tinyobjloader would read as index 0); line numbers stay.
 void screen_obj_text(const std::string& path, std::string& text);
 
-// An .mtl text with kNotGivenMarkers at the start and after every "newmtl" line, recognised as
-// tinyobjloader's LoadMtl recognises it (trailing blanks trimmed, then "newmtl" and a blank).
-// Lines end in \n after this.
-std::string with_not_given_markers(const std::string& text);
+// The number of the first line of OBJ text whose "usemtl" names `material` as tinyobjloader reads
+// the name (its first word); 0 if none does.
+size_t first_use_line(const std::string& text, std::string_view material);
+
+// Whether the OBJ text has an "mtllib" statement.
+bool names_material_library(const std::string& text);
 
 }  // namespace matgeom::obj
