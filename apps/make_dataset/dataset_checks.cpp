@@ -1,11 +1,7 @@
 #include "dataset_checks.h"
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +9,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "common/output_folder.h"
 #include "dataset_folders.h"
 #include "matgeom/bounding_sphere.h"
 #include "matgeom/builtin_objects.h"
@@ -89,25 +86,9 @@ void check_object_in_view(const DatasetConfig& config, size_t o, const matgeom::
                                  config.source, radius, object_key(o), 2.0 * bounds.radius));
 }
 
-// Throws InputError when the output folder cannot be made or written: it is a file, a file is
-// where one of its parents would be, or the nearest existing folder is not writable.
-void check_output_folder(const std::string& output) {
-  namespace fs = std::filesystem;
-  std::error_code error;
-  const fs::path absolute = fs::absolute(output, error);
-  fs::path nearest = absolute;
-  while (!fs::exists(nearest, error) && nearest.has_relative_path()) nearest = nearest.parent_path();
-  if (!fs::is_directory(nearest, error))
-    throw InputError(nearest == absolute
-                         ? output + ": the output is a file, not a folder; give --output a folder's name"
-                         : output + ": " + nearest.string() + " is a file, so no folder can be made in it");
-  if (::access(nearest.c_str(), W_OK | X_OK) != 0)
-    throw InputError(output + ": " + nearest.string() + " is not writable (" + std::strerror(errno) +
-                     "); give --output a folder you can write to");
-}
-
 void check_before_writing(const DatasetConfig& config) {
-  check_output_folder(config.output);
+  if (const std::optional<std::string> problem = app_support::output_folder_problem(config.output))
+    throw InputError("output: " + *problem + "; give --output a folder you can write to");
   // A frame's buffers, and the maps the writer encodes from them (about as much again).
   const int w = config.render.width, h = config.render.height;
   if (const auto problem = matgeom::memory_problem(

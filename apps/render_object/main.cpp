@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cstdio>
 #include <exception>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,7 @@
 
 #include "common/exit_codes.h"
 #include "common/interrupt.h"
+#include "common/output_folder.h"
 #include "matgeom/builtin_objects.h"
 #include "matgeom/cancellation.h"
 #include "matgeom/material_classes.h"
@@ -78,6 +80,8 @@ void report_textures() {
 }
 
 int render_and_write(const Options& options) {
+  if (const std::optional<std::string> problem = app_support::output_folder_problem(options.output_folder))
+    throw InputError("--output: " + *problem);
   const std::atomic<bool>* cancel = app_support::cancel_on_interrupt();
   matrender::set_texture_memory_limit(options.texture_memory_mib << 20);
   const SceneDescription description = render_object::describe_scene(options);
