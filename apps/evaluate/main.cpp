@@ -12,6 +12,7 @@
 #include "common/progress_bar.h"
 #include "common/thread_count.h"
 #include "matgeom/atomic_file.h"
+#include "matlearn/dataset_error.h"
 #include "matlearn/dataset_index.h"
 #include "matlearn/evaluation/evaluator.h"
 #include "matlearn/evaluation/inference.h"
@@ -49,6 +50,21 @@ std::vector<matlearn::SampleId> samples_to_score(const Options& o) {
   // train_regressor's split without a split file: whole variant folders, 80/20 by the seed.
   const auto parts = matlearn::split_by_variant(matlearn::index_dataset(o.dataset_root), matlearn::SplitRatios{}, o.seed);
   return o.split == "train" ? parts[0] : parts[1];
+}
+
+// How many samples were not scored for having no object pixel, and which (the first `named`, or
+// all when `named` is 0); empty when every sample was scored.
+std::string unscored_text(const matlearn::EvaluationResult& result, size_t total, int image_size, size_t named) {
+  const std::vector<matlearn::SampleId>& empty = result.empty_samples;
+  if (empty.empty()) return "";
+  std::string text = fmt::format("{} of {} samples {} not scored: the object covers no pixel of {} at {} x {} px, "
+                                 "where the metrics are undefined:",
+                                 empty.size(), total, empty.size() == 1 ? "was" : "were",
+                                 empty.size() == 1 ? "it" : "them", image_size, image_size);
+  const size_t shown = named == 0 ? empty.size() : std::min(named, empty.size());
+  for (size_t i = 0; i < shown; ++i) text += (i ? ", " : " ") + empty[i].str();
+  if (shown < empty.size()) text += fmt::format(" and {} more", empty.size() - shown);
+  return text;
 }
 
 std::string file_name(const std::string& text) {
@@ -117,10 +133,19 @@ int run(const Options& o) {
   settings.batch_size = o.batch_size;
   settings.threads = app_support::announced_worker_threads("evaluate", "--threads", o.threads);
   app_support::ProgressBar bar("evaluate");
-  const matlearn::EvaluationResult result = matlearn::evaluate_samples(
-      *model, header, o.dataset_root, samples, settings,
-      [&bar](size_t done, size_t total) { bar.update(static_cast<double>(done) / static_cast<double>(total)); });
+  matlearn::EvaluationResult result;
+  try {
+    result = matlearn::evaluate_samples(
+        *model, header, o.dataset_root, samples, settings,
+        [&bar](size_t done, size_t total) { bar.update(static_cast<double>(done) / static_cast<double>(total)); });
+  } catch (...) {
+    bar.finish();  // the error's line below the bar's, not on it
+    throw;
+  }
   bar.finish();
+  // The console names the first few; the report, which is the record, all of them.
+  if (const std::string unscored = unscored_text(result, samples.size(), header.image_size, 5); !unscored.empty())
+    fmt::print(stderr, "evaluate: warning: {}\n", unscored);
 
   const std::string convention =
       o.paper_compat
@@ -128,11 +153,13 @@ int run(const Options& o) {
             "its SAM), background set to 0, whole images; only for comparing with the paper"
           : "correct: float maps in [0, 1], data range 1, only the object's pixels (each family's pixels in the "
             "material table); SAM in degrees, - for one-channel maps";
+  const std::string unscored = unscored_text(result, samples.size(), header.image_size, 0);
   const std::string preamble = fmt::format(
-      "# Evaluation of {}\n\nCheckpoint `{}` ({}, {} epochs, {} px), {} split of `{}`: {} samples.\n"
+      "# Evaluation of {}\n\nCheckpoint `{}` ({}, {} epochs, {} px), {} split of `{}`: {} samples, {} scored.{}\n"
       "Metrics: {}. Predictions are the sigmoid of the network's output, as in training.\n",
       header.network, checkpoint.string(), header.network, header.epochs_done, header.image_size, o.split,
-      o.dataset_root.string(), samples.size(), convention);
+      o.dataset_root.string(), samples.size(), samples.size() - result.empty_samples.size(),
+      unscored.empty() ? "" : "\n" + unscored, convention);
   const std::vector<matlearn::ReportTable> tables = matlearn::report_tables(result.scores);
   // The tables and panels appear together or not at all; the tables last, as readers open them.
   matgeom::OutputFolder folder(o.output_dir), panels(o.output_dir / "panels");
@@ -198,6 +225,8 @@ int main(int argc, char** argv) {
   try {
     return run(o);
   } catch (const InputError& e) {
+    return app_support::report_error("evaluate", e.what(), app_support::kInputError);
+  } catch (const matlearn::DatasetError& e) {
     return app_support::report_error("evaluate", e.what(), app_support::kInputError);
   } catch (const std::exception& e) {
     return app_support::report_error("evaluate", e.what(), app_support::kRuntimeFailure);

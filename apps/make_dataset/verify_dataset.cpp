@@ -314,10 +314,18 @@ void verify_frame(const fs::path& folder, const std::string& stem, const Variant
     verify_depth(folder / "depth" / (stem + ".exr"), depth->second, expected.bounds, camera, problems);
   if (label == maps.end()) return;
   const fs::path label_file = folder / "label" / (stem + ".png");
+  // The ids as written, 8 or 16 bits (decoded as floats a 16-bit 7 would read as 0).
+  matlearn::DecodedIds ids;
+  try {
+    ids = matlearn::decode_ids(label_file);
+  } catch (const std::runtime_error& e) {
+    problems.push_back(one_line(e.what()));
+    return;
+  }
   std::set<int> found;
   size_t mask_disagreements = 0;
-  for (size_t p = 0; p < label->second.values.size(); ++p) {
-    const int id = static_cast<int>(std::lround(label->second.values[p] * 255.0f));
+  for (size_t p = 0; p < ids.ids.size(); ++p) {
+    const int id = ids.ids[p];
     found.insert(id);
     const bool object = id > 0;
     const bool covered = depth != maps.end() && depth->second.values[4 * p + 3] > 0.0f;

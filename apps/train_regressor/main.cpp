@@ -14,6 +14,7 @@
 #include "common/thread_count.h"
 #include "example_dataset.h"
 #include "matgeom/atomic_file.h"
+#include "matlearn/dataset_error.h"
 #include "matlearn/models/regressor.h"
 #include "matlearn/training/trainer.h"
 #include "training_options.h"
@@ -126,7 +127,22 @@ int train(Options options, bool example) {
                validation, r.learning_rate, r.seconds);
     std::fflush(stdout);
   };
-  if (!trainer.train(callbacks)) {
+  bool finished = false;
+  try {
+    finished = trainer.train(callbacks);
+  } catch (const matlearn::TrainingDiverged& e) {
+    if (bar) bar->finish();
+    // The trainer writes no checkpoint of a diverged epoch, so last.pt is the last good one.
+    throw std::runtime_error(std::string(e.what()) + "; " +
+                             (trainer.epochs_done() > 0 && std::filesystem::exists(last)
+                                  ? fmt::format("{} still holds epoch {}, the last that finished", last.string(),
+                                                trainer.epochs_done())
+                                  : std::string("no checkpoint was written")));
+  } catch (...) {
+    if (bar) bar->finish();  // the error's line below the bar's, not on it
+    throw;
+  }
+  if (!finished) {
     if (bar) bar->finish();
     // config.yaml holds every setting of this run, so the command below is the whole of it.
     const std::string resume_command =
@@ -165,6 +181,8 @@ int main(int argc, char** argv) {
   try {
     return train(options, /*example=*/argc == 1);
   } catch (const InputError& e) {
+    return app_support::report_error("train_regressor", e.what(), app_support::kInputError);
+  } catch (const matlearn::DatasetError& e) {
     return app_support::report_error("train_regressor", e.what(), app_support::kInputError);
   } catch (const std::exception& e) {
     return app_support::report_error("train_regressor", e.what(), app_support::kRuntimeFailure);

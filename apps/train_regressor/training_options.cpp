@@ -1,6 +1,8 @@
 #include "training_options.h"
 
 #include <algorithm>
+#include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include <yaml-cpp/yaml.h>
@@ -8,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "common/number_options.h"
+#include "common/yaml_checks.h"
 #include "matlearn/sample_loader.h"
 
 namespace train_regressor {
@@ -214,6 +217,9 @@ std::map<std::string, std::string> resolve_settings(const Options& options) {
       throw InputError(file + ": not valid YAML: " + e.what());
     }
     if (!root.IsMap()) throw InputError(file + ": expected a mapping of settings");
+    // yaml-cpp keeps both entries of a repeated key, and this loop would take the last.
+    if (const std::optional<std::string> problem = app_support::repeated_key_problem(root))
+      throw InputError(file + ": " + *problem);
     for (const auto& entry : root) {
       const std::string key = entry.first.as<std::string>();
       const bool ignored = std::count(ignored_repository_keys().begin(), ignored_repository_keys().end(), key) > 0;
@@ -224,6 +230,11 @@ std::map<std::string, std::string> resolve_settings(const Options& options) {
     }
   }
   for (const auto& [key, value] : options.command_line) settings[key] = value;
+  // Paths as absolute ones, relative to the folder the command runs in as given: the config.yaml
+  // a run saves then works from any folder, with the resume command it prints.
+  for (const char* key : {"dataset_root", "split_file", "encoder_weights", "output_dir", "pretrained_model"})
+    if (!settings[key].empty())
+      settings[key] = std::filesystem::absolute(settings[key]).lexically_normal().string();
   // The paper's optimiser for the network, where none was chosen.
   const bool swin = network_name(settings["model_name"]) == "swin_t_u";
   if (settings["optimizer_name"].empty()) settings["optimizer_name"] = swin ? "adamw" : "adam";
@@ -282,13 +293,14 @@ matlearn::TrainingConfig training_config(const std::map<std::string, std::string
   if (s.at("dataset_root").empty()) throw InputError("no dataset: give --dataset-root or dataset_root in --config");
   c.dataset_root = s.at("dataset_root");
   try {
-    const std::vector<matlearn::SampleId> all = matlearn::index_dataset(c.dataset_root);
-    if (all.empty()) throw InputError(c.dataset_root.string() + ": no samples in the MatPredict layout");
     if (!s.at("split_file").empty()) {
       const matlearn::SplitFile split = matlearn::read_split_file(s.at("split_file"));
       c.train_samples = matlearn::split_samples(split, "train", c.dataset_root);
       c.validation_samples = matlearn::split_samples(split, "val", c.dataset_root);
+      if (c.train_samples.empty()) throw InputError(s.at("split_file") + ": its train list is empty");
     } else {
+      const std::vector<matlearn::SampleId> all = matlearn::index_dataset(c.dataset_root);
+      if (all.empty()) throw InputError(c.dataset_root.string() + ": no samples in the MatPredict layout");
       const auto parts = matlearn::split_by_variant(all, matlearn::SplitRatios{}, c.seed);
       c.train_samples = parts[0];
       c.validation_samples = parts[1];

@@ -17,6 +17,7 @@
 
 #include "data/resample.h"
 #include "matlearn/dataset_index.h"
+#include "matlearn/decoded_image.h"
 #include "matlearn/sample_loader.h"
 #include "matlearn/sample_reader.h"
 #include "synthetic_png.h"
@@ -72,15 +73,15 @@ void write_frame(const fs::path& variant, const std::string& stem, bool with_lab
     write_png(variant / "label" / (stem + ".png"), 1, [](int x, int y, int) -> uint8_t { return inside_object(x, y) ? 7 : 0; });
 }
 
-// chair_01/var000: 000, 001 (001 without a label); chair_01/var001: 000 and 001, whose ORM is
-// missing (not a sample); table/var000: 000; chair_01/_tmp_channels: ignored.
+// chair_01/var000: 000, 001; chair_01/var001: 000, 001; table/var000: 000; chair_01/_tmp_channels:
+// ignored. Tests remove maps from it to make the incomplete cases.
 fs::path make_dataset() {
   const fs::path root = fs::temp_directory_path() / "matpredict_dataset_test";
   fs::remove_all(root);
   write_frame(root / "chair_01" / "var000", "000", true);
-  write_frame(root / "chair_01" / "var000", "001", false);
+  write_frame(root / "chair_01" / "var000", "001", true);
   write_frame(root / "chair_01" / "var001", "000", true);
-  write_frame(root / "chair_01" / "var001", "001", true, false);
+  write_frame(root / "chair_01" / "var001", "001", true);
   write_frame(root / "table" / "var000", "000", true);
   write_frame(root / "chair_01" / "_tmp_channels", "000", true);
   std::ofstream(root / "split.yaml") << "name: tiny\nstrategy: object_disjoint\nseed: 42\n"
@@ -97,8 +98,21 @@ TEST_CASE("The dataset index follows the repository loader's rules", "[learn]") 
   std::vector<std::string> ids;
   for (const SampleId& s : index_dataset(root)) ids.push_back(s.str());
   CHECK(ids == std::vector<std::string>{"chair_01/var000/000", "chair_01/var000/001", "chair_01/var001/000",
-                                        "table/var000/000"});
+                                        "chair_01/var001/001", "table/var000/000"});
   CHECK_THROWS_WITH(index_dataset(root / "nowhere"), Catch::Contains("nowhere") && Catch::Contains("not a directory"));
+}
+
+TEST_CASE("A dataset missing a map, or a label some frames have, is refused naming the files", "[learn]") {
+  // The repository's loader skips such a frame, and trains on fewer than it was given.
+  const fs::path root = make_dataset();
+  const fs::path orm = root / "chair_01" / "var001" / "ORM" / "001.png";
+  fs::remove(orm);
+  CHECK_THROWS_WITH(index_dataset(root), Catch::Contains("1 map file is missing: " + orm.string()));
+  make_dataset();
+  const fs::path label = root / "chair_01" / "var000" / "label" / "001.png";
+  fs::remove(label);
+  CHECK_THROWS_WITH(index_dataset(root),
+                    Catch::Contains("1 of 5 frames have no label map") && Catch::Contains(label.string()));
 }
 
 TEST_CASE("Split files list samples in file order and every listed sample must exist", "[learn]") {
@@ -112,8 +126,13 @@ TEST_CASE("Split files list samples in file order and every listed sample must e
   CHECK(split_samples(split, "test", root).empty());
 
   SplitFile broken = split;
-  broken.val.push_back("chair_01/var001/001");  // its ORM is missing
-  CHECK_THROWS_WITH(split_samples(broken, "val", root), Catch::Contains("chair_01/var001/001"));
+  broken.val.push_back("chair_01/var001/001");
+  fs::remove(root / "chair_01" / "var001" / "ORM" / "001.png");
+  CHECK_THROWS_WITH(split_samples(broken, "val", root), Catch::Contains("chair_01/var001/ORM/001.png"));
+  // A frame listed twice, in one list or in two, is counted twice or scored after training.
+  std::ofstream(root / "twice.yaml") << "train:\n- chair_01/var000/000\nval:\n- chair_01/var000/000\ntest: []\n";
+  CHECK_THROWS_WITH(read_split_file(root / "twice.yaml"),
+                    Catch::Contains("twice.yaml: lists chair_01/var000/000 twice (in train and in val)"));
   CHECK_THROWS_WITH(split_samples(split, "holdout", root), Catch::Contains("holdout"));
   std::ofstream(root / "bad.yaml") << "name: bad\ntrain: chair_01/var000/000\n";
   CHECK_THROWS_WITH(read_split_file(root / "bad.yaml"), Catch::Contains("bad.yaml") && Catch::Contains("'train'"));
@@ -142,6 +161,7 @@ TEST_CASE("A sample decodes the maps the loader reads, at the model size", "[lea
   CHECK(s.albedo.at(8, 8, 0) == Approx(200.0 / 255.0));
 
   // Without a label file every pixel counts, as in the repository.
+  fs::remove(root / "chair_01" / "var000" / "label" / "001.png");
   const MaterialSample unlabelled = read_sample(root, SampleId::parse("chair_01/var000/001"), settings);
   CHECK_FALSE(unlabelled.has_label);
   CHECK(std::all_of(unlabelled.mask.begin(), unlabelled.mask.end(), [](uint8_t m) { return m == 1; }));
@@ -150,8 +170,42 @@ TEST_CASE("A sample decodes the maps the loader reads, at the model size", "[lea
   settings.linear_albedo = true;
   const MaterialSample linear = read_sample(root, SampleId::parse("chair_01/var000/000"), settings);
   CHECK(linear.albedo.at(8, 8, 0) == Approx(std::pow((200.0 / 255.0 + 0.055) / 1.055, 2.4)).epsilon(1e-5));
+  fs::remove(root / "chair_01" / "var001" / "ORM" / "001.png");
   CHECK_THROWS_WITH(read_sample(root, SampleId::parse("chair_01/var001/001"), settings), Catch::Contains("ORM"));
   CHECK(linear.normal.values.empty());  // not asked for
+}
+
+// A one-channel 16-bit label PNG of id 7 on the object, as render_object writes label maps.
+void write_label16(const fs::path& path) {
+  std::vector<uint16_t> ids(static_cast<size_t>(kSize * kSize));
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) ids[static_cast<size_t>(y * kSize + x)] = inside_object(x, y) ? 7 : 0;
+  OIIO::ImageSpec spec(kSize, kSize, 1, OIIO::TypeDesc::UINT16);
+  auto out = OIIO::ImageOutput::create(path.string());
+  REQUIRE(out);
+  REQUIRE(out->open(path.string(), spec));
+  REQUIRE(out->write_image(OIIO::TypeDesc::UINT16, ids.data()));
+  REQUIRE(out->close());
+}
+
+TEST_CASE("Label maps are read as the integers written, 8 or 16 bits, and checked against the classes", "[learn]") {
+  const fs::path root = make_dataset();
+  const fs::path label = root / "chair_01" / "var000" / "label" / "000.png";
+  write_label16(label);
+  const DecodedIds ids = decode_ids(label);
+  CHECK(ids.ids[8 * kSize + 8] == 7);  // scaled to 8 bits, 7 / 65535 would be 0
+  SampleSettings settings;
+  settings.size = kSize;
+  const MaterialSample s = read_sample(root, SampleId::parse("chair_01/var000/000"), settings);
+  CHECK(s.material_id[8 * kSize + 8] == 7);
+  CHECK(s.mask[8 * kSize + 8] == 1);
+  // A network of 5 classes (ids 0 to 4) cannot be trained on label 7.
+  settings.material_classes = 5;
+  CHECK_THROWS_WITH(read_sample(root, SampleId::parse("chair_01/var000/000"), settings),
+                    Catch::Contains(label.string()) && Catch::Contains("label id 7, beyond the network's 5"));
+  // Labels of more than one channel are no label map.
+  write_png(label, 3, [](int, int, int) -> uint8_t { return 7; });
+  CHECK_THROWS_WITH(decode_ids(label), Catch::Contains(label.string()));
 }
 
 TEST_CASE("A normal map is read on request and resized as unit vectors", "[learn]") {
@@ -210,7 +264,7 @@ TEST_CASE("Shrunk targets keep their value along the silhouette (W16)", "[learn]
 TEST_CASE("The paper's texture-target layout: screenshots beside one reference map per material", "[learn]") {
   const fs::path root = fs::temp_directory_path() / "matpredict_paper_layout_test";
   fs::remove_all(root);
-  // Two objects in wood, one in metal; metal has no roughness reference, so it is no sample.
+  // Two objects in wood, one in metal; metal has no roughness reference yet.
   for (const char* stem : {"000", "001"})
     write_png(root / "rendered_cropped" / "chair" / "wood" / (std::string(stem) + ".png"), 3,
               [](int x, int, int c) -> uint8_t { return static_cast<uint8_t>(10 * x + c); });
@@ -225,9 +279,15 @@ TEST_CASE("The paper's texture-target layout: screenshots beside one reference m
 
   CHECK(dataset_layout(root) == DatasetLayout::paper_textures);
   CHECK(dataset_layout(make_dataset()) == DatasetLayout::repository);
+  // A material without its roughness reference is refused, as is a split naming it.
+  CHECK_THROWS_WITH(index_dataset(root), Catch::Contains("ground_truth_roughness/metal.png"));
+  SplitFile split;
+  split.train = {"table/metal/000"};
+  CHECK_THROWS_WITH(split_samples(split, "train", root), Catch::Contains("ground_truth_roughness/metal.png"));
+  write_png(root / "ground_truth_roughness" / "metal.png", 1, [](int, int, int) -> uint8_t { return 51; });
   std::vector<std::string> ids;
   for (const SampleId& s : index_dataset(root)) ids.push_back(s.str());
-  CHECK(ids == std::vector<std::string>{"chair/wood/000", "chair/wood/001", "table/wood/000"});
+  CHECK(ids == std::vector<std::string>{"chair/wood/000", "chair/wood/001", "table/metal/000", "table/wood/000"});
 
   SampleSettings settings;
   settings.size = kSize;
@@ -242,10 +302,6 @@ TEST_CASE("The paper's texture-target layout: screenshots beside one reference m
   // Shrunk to 8 px the whole reference is resized: a plain average of the uniform roughness.
   settings.size = 8;
   CHECK(read_sample(root, SampleId::parse("table/wood/000"), settings).roughness.at(4, 4, 0) == Approx(0.6));
-  // A split file naming the incomplete material is an error naming the sample.
-  SplitFile split;
-  split.train = {"table/metal/000"};
-  CHECK_THROWS_WITH(split_samples(split, "train", root), Catch::Contains("table/metal/000"));
   // A normal map asked for and missing: an error naming the file.
   settings.read_normal = true;
   CHECK_THROWS_WITH(read_sample(root, SampleId::parse("chair/wood/000"), settings), Catch::Contains("ground_truth_normal"));
@@ -301,7 +357,7 @@ TEST_CASE("Loader batches decode the same data on 1 and 2 threads", "[learn]") {
       CHECK(a[i].material_id == c[i].material_id);
     }
   }
-  CHECK(one.batch(1, 1).size() == 1);  // 4 samples in batches of 3
+  CHECK(one.batch(1, 1).size() == 2);  // 5 samples in batches of 3
 }
 
 TEST_CASE("One image to predict: its mask from a label map, from alpha, or everything (W17)", "[learn]") {

@@ -108,6 +108,29 @@ CATCH_TEST_CASE("Evaluation scores the sigmoid maps against the truth, whole and
   CATCH_CHECK(panel->spec().height == 2 * training_dataset::kSize);
 }
 
+CATCH_TEST_CASE("A sample the object is in no pixel of is not scored, and named; none at all is an error", "[learn]") {
+  const Checkpoint file = read_checkpoint(half_grey_checkpoint());
+  const auto model = load_model(file);
+  const fs::path root = fs::temp_directory_path() / "matpredict_evaluation_empty";
+  fs::remove_all(root);
+  fs::copy(training_dataset::four_image_dataset(), root, fs::copy_options::recursive);
+  const auto empty_label = [&](const std::string& variant) {
+    write_synthetic_png(root / variant / "label" / "000.png", training_dataset::kSize, 1,
+                        [](int, int, int) -> uint8_t { return 0; });
+  };
+  empty_label("object_1/var000");
+  const std::vector<SampleId> samples = index_dataset(root);
+  EvaluationSettings settings;
+  settings.threads = 1;
+  const EvaluationResult result = evaluate_samples(*model, file.header, root, samples, settings);
+  CATCH_REQUIRE(result.empty_samples.size() == 1);
+  CATCH_CHECK(result.empty_samples[0].str() == "object_1/var000/000");
+  CATCH_CHECK(result.scores.size() == 12);  // the other three, 2 maps x (whole, family)
+  for (const char* variant : {"object_0/var000", "object_0/var001", "object_1/var001"}) empty_label(variant);
+  CATCH_CHECK_THROWS_WITH(evaluate_samples(*model, file.header, root, samples, settings),
+                          Catch::Contains("none of the 4 samples") && Catch::Contains("nothing to score"));
+}
+
 CATCH_TEST_CASE("Inference predicts every map of one image at the network's size", "[learn]") {
   const fs::path checkpoint = half_grey_checkpoint();
   const Checkpoint file = read_checkpoint(checkpoint);

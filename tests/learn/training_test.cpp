@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <random>
 #include <string>
 
@@ -230,6 +231,34 @@ CATCH_TEST_CASE("A resumed run continues exactly as the uninterrupted run", "[le
   int lines = 0;
   for (std::string row; std::getline(log, row);) ++lines;
   CATCH_CHECK(lines == 5);
+}
+
+CATCH_TEST_CASE("A loss that becomes NaN stops training, naming the epoch and batch, and keeps the last checkpoint",
+                "[learn]") {
+  TrainingConfig c = quick_config("matpredict_diverged_test");
+  c.epochs = 1;
+  {
+    Trainer first(c);
+    CATCH_REQUIRE(first.train());
+  }
+  const fs::path last = c.output_dir / "checkpoints" / "last.pt";
+  std::ifstream before_file(last, std::ios::binary);
+  const std::string before((std::istreambuf_iterator<char>(before_file)), std::istreambuf_iterator<char>());
+  c.epochs = 2;
+  Trainer second(c);
+  second.resume(last);
+  {
+    // What an overflowing step leaves behind: a weight that is no number.
+    torch::NoGradGuard no_grad;
+    second.model().parameters().front().view(-1)[0].fill_(std::nan(""));
+  }
+  CATCH_CHECK_THROWS_WITH(second.train(), Catch::Contains("the loss of epoch 2, batch 1 of") &&
+                                              Catch::Contains("training diverged") &&
+                                              Catch::Contains("learning rate"));
+  std::ifstream after_file(last, std::ios::binary);
+  const std::string after((std::istreambuf_iterator<char>(after_file)), std::istreambuf_iterator<char>());
+  CATCH_CHECK(after == before);  // no checkpoint of the diverged epoch
+  CATCH_CHECK(read_checkpoint(last).header.epochs_done == 1);
 }
 
 CATCH_TEST_CASE("Checkpoints keep the design and reject other files", "[learn]") {

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Ctrl-C during training, then the command the message prints, run as printed: it continues to
-# the end. Run again, it has nothing to do (exit 0); asked for fewer epochs than the checkpoint
+# Ctrl-C during training, then the command the message prints, run as printed from another
+# folder: it continues to the end. Run again, it has nothing to do (exit 0); asked for fewer epochs than the checkpoint
 # holds, it says so (exit 2) instead of claiming it wrote files. Interrupted before the first
 # epoch, it says no checkpoint was written.
 # Usage: resume_test.sh TRAIN_REGRESSOR EVALUATE SCRATCH (example_test_setup.sh)
@@ -28,11 +28,12 @@ interrupt_after "^epoch 1/4" "${run[@]}"
 [ "$code" -eq 130 ] || fail "interrupted: exit code $code, expected 130"
 command=$(sed -n 's/.*continue with: train_regressor //p' "$log")
 [ -n "$command" ] || fail "interrupted: the message names no command"
-# As printed: word-split the way a shell would the line the user copies.
+# As printed: word-split the way a shell would the line the user copies, and run from another
+# folder (the dataset root was given relative to this one).
 read -r -a words <<<"$command"
-"$train" "${words[@]}" >"$out" 2>"$log"
+(cd / && "$train" "${words[@]}") >"$out" 2>"$log"
 code=$?
-[ "$code" -eq 0 ] || fail "the printed command: exit code $code, expected 0"
+[ "$code" -eq 0 ] || fail "the printed command, run from /: exit code $code, expected 0"
 grep -q "^resuming after epoch [12] from" "$out" || fail "the printed command did not resume"
 grep -q "^epoch 4/4" "$out" || fail "the printed command did not train to epoch 4"
 [ "$(wc -l <"$scratch/run/log.csv")" -eq 5 ] || fail "log.csv does not hold 4 epochs"

@@ -33,11 +33,13 @@ struct SampleId {
 };
 
 // Every sample under `root` in the repository loader's order: object and variant folders sorted
-// by name, folders whose name starts with "_tmp" skipped, a variant counted when it holds
-// images/, albedo/ and ORM/, and in it a stem when images/<stem>.png, albedo/<stem>.png and
-// ORM/<stem>.png all exist (stems sorted). In the paper's layout, likewise under
-// rendered_cropped/, a material counting when both its reference maps exist. Throws
-// std::runtime_error naming root when it is not a directory.
+// by name, folders whose name starts with "_tmp" skipped, a variant being a folder that holds
+// images/, each PNG in it a frame (stems sorted). In the paper's layout, likewise under
+// rendered_cropped/, each screenshot a sample. Throws DatasetError (matlearn/dataset_error.h)
+// naming root when it is not a directory, and naming the files when a frame lacks its albedo or
+// ORM (a material its two reference maps), or some frames have a label map and others not
+// (require_sample_files in matlearn/sample_reader.h): where the repository's loader silently
+// trains on fewer frames, the dataset is refused.
 std::vector<SampleId> index_dataset(const std::filesystem::path& root);
 
 // A split file as the repository's generate_splits.py writes it (keys name, strategy, seed,
@@ -46,14 +48,17 @@ struct SplitFile {
   std::string name, strategy;
   int64_t seed = 0;
   std::vector<std::string> train, val, test;
+  std::filesystem::path path;  // the file it was read from, for messages; empty when made here
 };
 
-// Throws std::runtime_error naming the file and the problem (unreadable, not YAML, a list
-// missing or not a list of strings).
+// Throws DatasetError naming the file and the problem: unreadable, not YAML, a list missing or
+// not a list of sample ids, or a sample listed twice (in one list or in two: a frame counted
+// twice, or one trained on and scored).
 SplitFile read_split_file(const std::filesystem::path& path);
 
 // The samples of `split` ("train", "val" or "test") in file order, each checked against the
-// files under root: a listed id whose maps are missing is an error naming it.
+// files under root: a DatasetError names root when it is not a directory, and the files listed
+// samples lack (require_sample_files with the default settings).
 std::vector<SampleId> split_samples(const SplitFile& file, const std::string& split, const std::filesystem::path& root);
 
 }  // namespace matlearn

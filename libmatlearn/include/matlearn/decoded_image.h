@@ -1,6 +1,7 @@
 #pragma once
 // Image files decoded for the dataset's readers and checkers: every channel as floats, colour as
-// stored.
+// stored; label maps as the integers written.
+#include <cstdint>
 #include <filesystem>
 #include <vector>
 
@@ -19,15 +20,37 @@ struct Decoded {
 };
 
 // Every channel of an image file as floats, colour as stored (not premultiplied by alpha, as
-// OpenImageIO would by default); 8-bit values map to [0, 1]. Throws std::runtime_error naming
-// the file (missing, a device, declaring more pixels than memory holds, undecodable).
+// OpenImageIO would by default); 8-bit values map to [0, 1]; a float format's NaN and infinities
+// as stored, for checkers that count them. Throws DatasetError (matlearn/dataset_error.h) naming
+// the file: missing, a device, declaring more pixels than memory holds, undecodable.
 Decoded decode(const std::filesystem::path& path);
+
+// decode(), for a value that becomes a network's input or target: also throws DatasetError
+// naming the file, the pixel and the channel of the first NaN or infinity (EXR holds them).
+Decoded decode_finite(const std::filesystem::path& path);
+
+// A label map: one id per pixel, row by row.
+struct DecodedIds {
+  int width = 0, height = 0;
+  std::vector<int32_t> ids;
+};
+
+// The ids of a one-channel 8- or 16-bit integer image as written (the dataset writer's 8-bit
+// label PNG, render_object's 16-bit one): decode() would scale them to [0, 1], where 7 of 65535
+// rounds to 0 on 8 bits. Throws DatasetError naming the file for any other channel count or
+// sample format, and for decode()'s reasons.
+DecodedIds decode_ids(const std::filesystem::path& path);
 
 // The first `channels` channels from `first` on (a grey image repeated), as PIL's
 // convert("RGB") or convert("L").
 Image channels_of(const Decoded& d, int first, int channels);
 
-// Throws std::runtime_error naming `path` when d's size differs from the sample image's.
-void check_same_size(const Decoded& d, const Decoded& image, const std::filesystem::path& path);
+// Throws DatasetError naming `path` when its size (width x height) differs from the sample
+// image's.
+void check_same_size(int width, int height, const Decoded& image, const std::filesystem::path& path);
+
+// Throws DatasetError naming `path` when d has fewer than `channels` channels; `what` says what
+// they hold ("roughness in G, metallic in B").
+void check_channels(const Decoded& d, int channels, const char* what, const std::filesystem::path& path);
 
 }  // namespace matlearn

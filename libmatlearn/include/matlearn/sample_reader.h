@@ -6,6 +6,7 @@
 // decoded to linear values for a loss in linear space (W5).
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "matlearn/dataset_index.h"
@@ -17,6 +18,10 @@ struct SampleSettings {
   int size = 224;              // maps are resized to size x size
   bool linear_albedo = false;  // sRGB-decode the stored (display-encoded) albedo
   bool read_normal = false;    // read normal_obj/<stem>.png as well; then it must exist
+  bool read_metallic = false;  // the paper's layout: ground_truth_metallic/<material>.png must exist
+  // The classes of a network's segmentation head, 0 for none. With a head the label is a target:
+  // label/<stem>.png must exist and every id in it be below this.
+  int64_t material_classes = 0;
 };
 
 struct MaterialSample {
@@ -38,8 +43,23 @@ struct MaterialSample {
 // would premultiply PNG colour by alpha). A normal map is resized as unit vectors: decoded,
 // resized with the object mask as weights, renormalised and encoded again, so a resized normal
 // still has length 1 (0.5 where no object pixel reaches).
-// Throws std::runtime_error naming the file when a map cannot be read.
+// Label maps are read as the integers written (8- or 16-bit). Throws DatasetError
+// (matlearn/dataset_error.h) naming the file and the problem: a map missing or unreadable, of
+// another size than the image, with too few channels (ORM's roughness and metallic, a normal's
+// three), holding a NaN or an infinity, or a label id beyond the network's classes.
 MaterialSample read_sample(const std::filesystem::path& root, const SampleId& id, const SampleSettings& settings);
+
+// The files read_sample reads for `id` with `settings`, the optional label aside.
+std::vector<std::filesystem::path> sample_files(const std::filesystem::path& root, const SampleId& id,
+                                                const SampleSettings& settings);
+
+// Throws DatasetError, opening with `context` (what the samples are: a dataset folder, a split),
+// naming how many files the samples lack and the first few, when any of sample_files is not a
+// regular file; and when some samples have a label map and others not, since the label is each
+// frame's object mask: without it a frame's background would count as object. Checked before a
+// run, so a run never trains or scores on fewer frames than it was given.
+void require_sample_files(const std::filesystem::path& root, const std::vector<SampleId>& samples,
+                          const SampleSettings& settings, const std::string& context);
 
 // One image to run a network on, outside any dataset.
 struct InputImage {
@@ -50,7 +70,7 @@ struct InputImage {
 // The object mask comes from `mask_path` when it is not empty (any nonzero value is the object,
 // so a label map of ids 1..7 serves, where the repository's "> 0.5 after / 255" made it all
 // background: its W17), else from the image's alpha channel (> 0), else it is every pixel.
-// Throws std::runtime_error naming the file.
+// Throws DatasetError naming the file.
 InputImage read_input_image(const std::filesystem::path& image_path, const std::filesystem::path& mask_path, int size);
 
 }  // namespace matlearn

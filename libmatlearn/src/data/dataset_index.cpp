@@ -1,20 +1,22 @@
 #include "matlearn/dataset_index.h"
 
 #include <algorithm>
+#include <functional>
+#include <map>
 #include <stdexcept>
 
 #include <yaml-cpp/yaml.h>
+
+#include "matlearn/dataset_error.h"
+#include "matlearn/sample_reader.h"
 
 namespace matlearn {
 namespace {
 
 namespace fs = std::filesystem;
 
-// The maps a frame needs to count as a sample (the loader's rule).
-constexpr const char* kRequiredMaps[] = {"images", "albedo", "ORM"};
-// The paper's layout: the screenshots' folder, and the reference maps a material needs.
+// The paper's layout: the screenshots' folder.
 constexpr const char* kScreenshots = "rendered_cropped";
-constexpr const char* kRequiredReferences[] = {"ground_truth_basecolour", "ground_truth_roughness"};
 
 std::vector<fs::path> sorted_subdirectories(const fs::path& dir) {
   std::vector<fs::path> dirs;
@@ -22,23 +24,6 @@ std::vector<fs::path> sorted_subdirectories(const fs::path& dir) {
     if (entry.is_directory() && entry.path().filename().string().rfind("_tmp", 0) != 0) dirs.push_back(entry.path());
   std::sort(dirs.begin(), dirs.end());
   return dirs;
-}
-
-bool frame_complete(const fs::path& variant_dir, const std::string& stem) {
-  return std::all_of(std::begin(kRequiredMaps), std::end(kRequiredMaps),
-                     [&](const char* map) { return fs::is_regular_file(variant_dir / map / (stem + ".png")); });
-}
-
-bool material_complete(const fs::path& root, const std::string& material) {
-  return std::all_of(std::begin(kRequiredReferences), std::end(kRequiredReferences),
-                     [&](const char* map) { return fs::is_regular_file(root / map / (material + ".png")); });
-}
-
-bool sample_complete(const fs::path& root, DatasetLayout layout, const SampleId& id) {
-  if (layout == DatasetLayout::paper_textures)
-    return material_complete(root, id.variant) &&
-           fs::is_regular_file(root / kScreenshots / id.object / id.variant / (id.stem + ".png"));
-  return frame_complete(root / id.object / id.variant, id.stem);
 }
 
 std::vector<std::string> sorted_png_stems(const fs::path& dir) {
@@ -49,15 +34,57 @@ std::vector<std::string> sorted_png_stems(const fs::path& dir) {
   return stems;
 }
 
-std::vector<SampleId> index_paper_layout(const fs::path& root) {
+// Every PNG in the folders `frames_folder` names under each <object>/<variant>/ of `top`, as a
+// sample: the images/ of the repository's variants, the screenshots of the paper's materials.
+std::vector<SampleId> frames_under(const fs::path& top, const std::function<fs::path(const fs::path&)>& frames_folder) {
   std::vector<SampleId> samples;
-  for (const fs::path& object : sorted_subdirectories(root / kScreenshots))
-    for (const fs::path& material : sorted_subdirectories(object)) {
-      if (!material_complete(root, material.filename().string())) continue;
-      for (const std::string& stem : sorted_png_stems(material))
-        samples.push_back({object.filename().string(), material.filename().string(), stem});
+  for (const fs::path& object : sorted_subdirectories(top))
+    for (const fs::path& variant : sorted_subdirectories(object)) {
+      const fs::path folder = frames_folder(variant);
+      if (!fs::is_directory(folder)) continue;  // not a variant: it has no frames to miss
+      for (const std::string& stem : sorted_png_stems(folder))
+        samples.push_back({object.filename().string(), variant.filename().string(), stem});
     }
   return samples;
+}
+
+void require_dataset_root(const fs::path& root) {
+  if (!fs::is_directory(root)) throw DatasetError("dataset root " + root.string() + " is not a directory");
+}
+
+DatasetError split_file_error(const fs::path& path, const std::string& problem) {
+  return DatasetError("split file " + path.string() + ": " + problem);
+}
+
+// The ids of list `key`, each a well-formed sample id.
+std::vector<std::string> split_list(const YAML::Node& root, const char* key, const fs::path& path) {
+  const YAML::Node node = root[key];
+  if (!node || !node.IsSequence()) throw split_file_error(path, std::string("'") + key + "' is missing or not a list");
+  std::vector<std::string> ids;
+  for (const YAML::Node& item : node) {
+    if (!item.IsScalar()) throw split_file_error(path, std::string("an entry of '") + key + "' is not a string");
+    ids.push_back(item.as<std::string>());
+    try {
+      SampleId::parse(ids.back());
+    } catch (const std::invalid_argument& e) {
+      throw split_file_error(path, std::string("'") + key + "': " + e.what());
+    }
+  }
+  return ids;
+}
+
+// A sample in two places would be counted twice, or trained on and then scored as unseen.
+void require_listed_once(const SplitFile& file) {
+  std::map<std::string, const char*> list_of;
+  for (const auto& [key, ids] : {std::pair{"train", &file.train}, {"val", &file.val}, {"test", &file.test}})
+    for (const std::string& id : *ids) {
+      const auto [it, added] = list_of.emplace(id, key);
+      if (!added)
+        throw split_file_error(file.path, "lists " + id + " twice (" +
+                                              (it->second == key ? std::string("in ") + key
+                                                                 : std::string("in ") + it->second + " and in " + key) +
+                                              "); each sample belongs in one list, once");
+    }
 }
 
 }  // namespace
@@ -75,19 +102,12 @@ DatasetLayout dataset_layout(const fs::path& root) {
 }
 
 std::vector<SampleId> index_dataset(const fs::path& root) {
-  if (!fs::is_directory(root)) throw std::runtime_error("dataset root " + root.string() + " is not a directory");
-  if (dataset_layout(root) == DatasetLayout::paper_textures) return index_paper_layout(root);
-  std::vector<SampleId> samples;
-  for (const fs::path& object : sorted_subdirectories(root)) {
-    for (const fs::path& variant : sorted_subdirectories(object)) {
-      if (!std::all_of(std::begin(kRequiredMaps), std::end(kRequiredMaps),
-                       [&](const char* map) { return fs::is_directory(variant / map); }))
-        continue;
-      for (const std::string& stem : sorted_png_stems(variant / "images"))
-        if (frame_complete(variant, stem))
-          samples.push_back({object.filename().string(), variant.filename().string(), stem});
-    }
-  }
+  require_dataset_root(root);
+  const std::vector<SampleId> samples =
+      dataset_layout(root) == DatasetLayout::paper_textures
+          ? frames_under(root / kScreenshots, [](const fs::path& material) { return material; })
+          : frames_under(root, [](const fs::path& variant) { return variant / "images"; });
+  require_sample_files(root, samples, SampleSettings{}, root.string());
   return samples;
 }
 
@@ -96,32 +116,22 @@ SplitFile read_split_file(const fs::path& path) {
   try {
     root = YAML::LoadFile(path.string());
   } catch (const YAML::Exception& e) {
-    throw std::runtime_error("split file " + path.string() + ": " + e.what());
+    throw split_file_error(path, e.what());
   }
-  if (!root.IsMap()) throw std::runtime_error("split file " + path.string() + ": not a YAML mapping");
+  if (!root.IsMap()) throw split_file_error(path, "not a YAML mapping");
   SplitFile file;
-  const auto list = [&](const char* key) {
-    const YAML::Node node = root[key];
-    if (!node || !node.IsSequence())
-      throw std::runtime_error("split file " + path.string() + ": '" + key + "' is missing or not a list");
-    std::vector<std::string> ids;
-    for (const YAML::Node& item : node) {
-      if (!item.IsScalar())
-        throw std::runtime_error("split file " + path.string() + ": an entry of '" + key + "' is not a string");
-      ids.push_back(item.as<std::string>());
-    }
-    return ids;
-  };
+  file.path = path;
   try {
     if (root["name"]) file.name = root["name"].as<std::string>();
     if (root["strategy"]) file.strategy = root["strategy"].as<std::string>();
     if (root["seed"]) file.seed = root["seed"].as<int64_t>();
   } catch (const YAML::Exception& e) {
-    throw std::runtime_error("split file " + path.string() + ": " + e.what());
+    throw split_file_error(path, e.what());
   }
-  file.train = list("train");
-  file.val = list("val");
-  file.test = list("test");
+  file.train = split_list(root, "train", path);
+  file.val = split_list(root, "val", path);
+  file.test = split_list(root, "test", path);
+  require_listed_once(file);
   return file;
 }
 
@@ -131,16 +141,12 @@ std::vector<SampleId> split_samples(const SplitFile& file, const std::string& sp
                                         : split == "test" ? &file.test
                                                           : nullptr;
   if (!ids) throw std::invalid_argument("split '" + split + "' is not train, val or test");
+  require_dataset_root(root);
   std::vector<SampleId> samples;
   samples.reserve(ids->size());
-  const DatasetLayout layout = dataset_layout(root);
-  for (const std::string& id : *ids) {
-    const SampleId sample = SampleId::parse(id);
-    if (!sample_complete(root, layout, sample))
-      throw std::runtime_error("split '" + split + "' of " + (file.name.empty() ? "the split file" : file.name) +
-                               " lists " + id + ", whose maps are not all under " + root.string());
-    samples.push_back(sample);
-  }
+  for (const std::string& id : *ids) samples.push_back(SampleId::parse(id));
+  const std::string source = !file.path.empty() ? file.path.string() : file.name.empty() ? "the split" : file.name;
+  require_sample_files(root, samples, SampleSettings{}, "the " + split + " list of " + source);
   return samples;
 }
 

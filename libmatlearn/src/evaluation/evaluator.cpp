@@ -1,6 +1,7 @@
 #include "matlearn/evaluation/evaluator.h"
 
 #include "matgeom/threads.h"
+#include "matlearn/dataset_error.h"
 #include "matlearn/sample_loader.h"
 #include "matlearn/training/batch.h"
 #include "matlearn/training/loss.h"
@@ -28,6 +29,7 @@ EvaluationResult evaluate_samples(RegressorImpl& model, const CheckpointHeader& 
   loader_settings.batch_size = settings.batch_size;
   loader_settings.shuffle = false;
   loader_settings.threads = threads;
+  require_sample_files(root, samples, loader_settings.sample, "the samples to score under " + root.string());
   const SampleLoader loader(root, samples, loader_settings);
   const InputNormalization normalization = info(architecture_named(header.network).architecture).input_normalization;
   const OutputLayout& layout = header.layout;
@@ -43,6 +45,10 @@ EvaluationResult evaluate_samples(RegressorImpl& model, const CheckpointHeader& 
     for (size_t i = 0; i < batch_samples.size(); ++i) {
       const MaterialSample& s = batch_samples[i];
       const SampleId& id = loader.samples()[done + i];
+      if (count(s.mask) == 0) {
+        result.empty_samples.push_back(id);
+        continue;
+      }
       SamplePredictions predictions{id, s.input, s.mask, {}, {}, {}};
       for (size_t g = 0; g < layout.groups.size(); ++g) {
         predictions.maps.push_back(map_name(layout.groups[g].map));
@@ -73,6 +79,10 @@ EvaluationResult evaluate_samples(RegressorImpl& model, const CheckpointHeader& 
     done += batch_samples.size();
     if (progress) progress(done, loader.sample_count());
   }
+  if (result.scores.empty())
+    throw DatasetError("none of the " + std::to_string(samples.size()) + " samples under " + root.string() +
+                       " has an object pixel at " + std::to_string(header.image_size) + " x " +
+                       std::to_string(header.image_size) + " px: nothing to score");
   return result;
 }
 

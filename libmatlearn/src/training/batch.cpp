@@ -45,6 +45,8 @@ SampleSettings sample_settings(const OutputLayout& layout, int image_size, bool 
   settings.size = image_size;
   settings.linear_albedo = linear_albedo;
   settings.read_normal = layout.predicts(MapKind::normal);
+  settings.read_metallic = layout.predicts(MapKind::metallic);
+  settings.material_classes = layout.material_classes;
   return settings;
 }
 

@@ -186,7 +186,19 @@ std::shared_ptr<RegressorImpl> load_model(const Checkpoint& checkpoint) {
                              std::to_string(h.layout.output_channels()) + " outputs (" +
                              torch_error_text(e) + ")");
   }
+  if (const std::optional<std::string> tensor = first_non_finite_tensor(*model))
+    throw std::runtime_error(checkpoint.path.string() + ": its weight " + *tensor +
+                             " holds a NaN or an infinity (the training that wrote it diverged); use an earlier "
+                             "checkpoint or train again with a lower learning rate");
   return model;
+}
+
+std::optional<std::string> first_non_finite_tensor(const torch::nn::Module& module) {
+  for (const auto& named : {module.named_parameters(), module.named_buffers()})
+    for (const auto& tensor : named)
+      if (tensor.value().is_floating_point() && !torch::isfinite(tensor.value()).all().item<bool>())
+        return tensor.key();
+  return std::nullopt;
 }
 
 void load_optimizer(const Checkpoint& checkpoint, torch::optim::Optimizer& optimizer) {

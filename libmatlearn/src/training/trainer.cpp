@@ -1,7 +1,9 @@
 #include "matlearn/training/trainer.h"
 
 #include <chrono>
+#include <cmath>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -62,6 +64,18 @@ void validate_config(const TrainingConfig& c) {
   if (c.output_dir.empty()) throw std::invalid_argument("no output folder");
 }
 
+// That `what` (a loss, a weight) stopped being a number, and the likely cause.
+TrainingDiverged diverged(const TrainingConfig& c, double rate, const std::string& what) {
+  std::ostringstream cause;
+  cause.precision(3);
+  cause << what << ": training diverged, most likely because the learning rate " << rate;
+  if (c.optimizer == OptimizerKind::adamw && c.weight_decay > 0.0)
+    cause << " (with AdamW's weight decay " << c.weight_decay
+          << ", which scales every weight by 1 - rate x decay each step)";
+  cause << " is too high for this network and data: lower it and train again";
+  return TrainingDiverged(cause.str());
+}
+
 std::string csv_row(const EpochReport& r) {
   std::ostringstream row;
   row.precision(9);
@@ -95,6 +109,11 @@ Trainer::Trainer(TrainingConfig config) : config_(std::move(config)) {
   }
   optimizer_ = make_optimizer(config_, *model_);
   schedule_ = start_schedule(config_.learning_rate);
+  // Every map the network needs, before the first step: an epoch never stops on a missing file.
+  std::vector<SampleId> samples = config_.train_samples;
+  samples.insert(samples.end(), config_.validation_samples.begin(), config_.validation_samples.end());
+  require_sample_files(config_.dataset_root, samples, loader_settings(config_, false).sample,
+                       "the training and validation samples of " + config_.dataset_root.string());
 }
 
 void Trainer::resume(const std::filesystem::path& path) {
@@ -143,6 +162,12 @@ double Trainer::validation_loss() {
   return weighted / static_cast<double>(loader.sample_count());
 }
 
+void Trainer::require_finite_weights(int epoch) const {
+  if (const std::optional<std::string> tensor = first_non_finite_tensor(*model_))
+    throw diverged(config_, schedule_.rate,
+                   "after epoch " + std::to_string(epoch) + " the weight " + *tensor + " holds a NaN or an infinity");
+}
+
 void Trainer::append_log(const EpochReport& report) {
   log_rows_.push_back(csv_row(report));
   std::filesystem::create_directories(config_.output_dir);
@@ -171,10 +196,15 @@ bool Trainer::train(const TrainingCallbacks& callbacks) {
       torch::manual_seed(step_seed(config_.seed, epoch, step));
       optimizer_->zero_grad();
       const LossTerms terms = training_loss(model_->forward(batch.input), batch, config_.layout, config_.loss);
+      const double loss = terms.total.item<double>();
+      // Checked before the step, which would spread the NaN into every weight.
+      if (!std::isfinite(loss))
+        throw diverged(config_, schedule_.rate,
+                       "the loss of epoch " + std::to_string(epoch) + ", batch " + std::to_string(step + 1) + " of " +
+                           std::to_string(steps) + " is " + std::to_string(loss));
       terms.total.backward();
       optimizer_->step();
       const double n = static_cast<double>(batch.input.size(0));
-      const double loss = terms.total.item<double>();
       report.train_loss += loss * n;
       for (size_t g = 0; g < terms.group_terms.size(); ++g) report.train_group_terms[g] += terms.group_terms[g] * n;
       report.train_material_term += terms.material_term * n;
@@ -186,7 +216,12 @@ bool Trainer::train(const TrainingCallbacks& callbacks) {
     report.train_material_term /= samples_seen;
     report.validated = !config_.validation_samples.empty() &&
                        (epoch % config_.validate_every == 0 || epoch == config_.epochs);
+    require_finite_weights(epoch);
     if (report.validated) report.validation_loss = validation_loss();
+    if (!std::isfinite(report.validation_loss))
+      throw diverged(config_, schedule_.rate,
+                     "the validation loss of epoch " + std::to_string(epoch) + " is " +
+                         std::to_string(report.validation_loss));
     // Plateau follows the validation loss, or the training loss when there is no validation.
     schedule_ = finish_epoch(config_.schedule, config_.learning_rate, schedule_,
                              report.validated ? report.validation_loss : report.train_loss);

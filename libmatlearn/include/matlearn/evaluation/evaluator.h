@@ -47,6 +47,10 @@ struct EvaluationResult {
   std::vector<ScoredMap> scores;
   // The first sample (in the given order) showing each material family.
   std::map<int32_t, SamplePredictions> samples_by_material;
+  // Samples whose object covers no pixel at the network's size (an empty label map, or an
+  // object too small to survive the resize): the metrics of an empty region are undefined, so
+  // they are not scored, and a report must say so.
+  std::vector<SampleId> empty_samples;
 };
 
 // A family's part of an object must have at least this many pixels to be scored on its own
@@ -55,8 +59,11 @@ constexpr int kMinimumMaterialPixels = 49;
 
 // Runs `model` (built from `header`) in evaluation mode over `samples` under `root`. The maps
 // are the sigmoid of the regression channels, as in training. Samples without a label file are
-// scored over the whole image. Uses matlearn's tensor memory cache (training/tensor_memory_cache.h).
-// progress(done, total) follows each batch.
+// scored over the whole image; samples whose object covers no pixel are listed in
+// empty_samples instead. Uses matlearn's tensor memory cache (training/tensor_memory_cache.h).
+// progress(done, total) follows each batch. Throws DatasetError (matlearn/dataset_error.h)
+// naming the files when the samples lack a map the network needs (require_sample_files) or a
+// map cannot be read, and when no sample has an object pixel.
 EvaluationResult evaluate_samples(RegressorImpl& model, const CheckpointHeader& header, const std::filesystem::path& root,
                                   const std::vector<SampleId>& samples, const EvaluationSettings& settings,
                                   const std::function<void(size_t, size_t)>& progress = {});

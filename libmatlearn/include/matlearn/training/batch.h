@@ -21,7 +21,8 @@ struct Batch {
 constexpr int64_t kIgnoredLabel = -100;
 
 // How to read samples for a network of this layout: maps at image_size, the albedo linear or
-// as stored, and the normal map when the layout predicts one.
+// as stored, the normal and metallic maps when the layout predicts them, and the label when it
+// has a segmentation head, its ids below the head's classes.
 SampleSettings sample_settings(const OutputLayout& layout, int image_size, bool linear_albedo);
 
 // The sample's map for the group, a grey map repeated to the group's channel count.

@@ -6,6 +6,7 @@
 // and carry a CRC-32 of everything they hold, so a damaged one is refused instead of scored.
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <torch/torch.h>
@@ -46,8 +47,13 @@ struct Checkpoint {
 // checksum does not match its contents, or when its header describes no network this build has.
 Checkpoint read_checkpoint(const std::filesystem::path& path);
 // A freshly built network of the header's design with the checkpoint's weights; throws
-// std::runtime_error naming the file when the weights do not fit that design.
+// std::runtime_error naming the file when the weights do not fit that design or hold a NaN or an
+// infinity (a diverged training's, which every prediction would carry).
 std::shared_ptr<RegressorImpl> load_model(const Checkpoint& checkpoint);
+
+// The name of the first parameter or buffer (BatchNorm's statistics) of `module` that holds a
+// NaN or an infinity, if any.
+std::optional<std::string> first_non_finite_tensor(const torch::nn::Module& module);
 // Restores the optimiser state into an optimiser built for load_model's parameters.
 void load_optimizer(const Checkpoint& checkpoint, torch::optim::Optimizer& optimizer);
 

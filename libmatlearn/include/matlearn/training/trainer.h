@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -67,17 +68,27 @@ struct TrainingCallbacks {
   const std::atomic<bool>* cancel = nullptr;  // checked between steps; stops without a checkpoint
 };
 
+// Training stopped because its loss or its weights stopped being finite numbers. No checkpoint
+// of that epoch was written: checkpoints/last.pt, if any, still holds the last finished epoch.
+struct TrainingDiverged : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 class Trainer {
  public:
   // Builds the network (seeded), loads encoder weights if given, and the optimiser; makes
   // matlearn's tensor memory cache libtorch's CPU allocator (training/tensor_memory_cache.h).
-  // Throws std::invalid_argument for a bad configuration.
+  // Throws std::invalid_argument for a bad configuration, DatasetError naming the files when
+  // the samples lack a map the network needs (require_sample_files).
   explicit Trainer(TrainingConfig config);
   // Continues from a checkpoint that train() wrote with the same design.
   void resume(const std::filesystem::path& checkpoint);
   // Trains the remaining epochs. Writes into output_dir: checkpoints/last.pt after every epoch,
   // checkpoints/best.pt when the validation loss improves, and log.csv (one row per epoch; a
   // resumed run keeps the rows of the epochs its checkpoint holds). Returns false if cancelled.
+  // Throws TrainingDiverged, naming the epoch (and batch), when a training loss, the weights
+  // after an epoch or a validation loss hold a NaN or an infinity, and DatasetError when a
+  // sample cannot be read.
   bool train(const TrainingCallbacks& callbacks = {});
 
   RegressorImpl& model() { return *model_; }
@@ -86,6 +97,9 @@ class Trainer {
 
  private:
   double validation_loss();
+  // Throws TrainingDiverged when a weight after epoch `epoch` is not finite: a step whose loss
+  // was finite can still overflow its gradients.
+  void require_finite_weights(int epoch) const;
   void append_log(const EpochReport& report);
   std::filesystem::path log_path() const { return config_.output_dir / "log.csv"; }
 
