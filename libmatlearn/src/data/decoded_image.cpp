@@ -2,10 +2,12 @@
 
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <OpenImageIO/imageio.h>
 
+#include "matgeom/image_header.h"
 #include "matgeom/input_file.h"
 #include "matgeom/memory_limit.h"
 #include "matlearn/dataset_error.h"
@@ -23,6 +25,8 @@ std::unique_ptr<OIIO::ImageInput> open_image(const std::filesystem::path& path, 
   std::unique_ptr<OIIO::ImageInput> in;
   try {
     matgeom::require_input_file(path.string());
+    if (const std::optional<std::string> problem = matgeom::declared_size_problem(path))
+      throw DatasetError(path.string() + ": " + *problem);
     in = OIIO::ImageInput::open(path.string(), &config);
     if (!in) throw DatasetError("cannot read " + path.string() + ": " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
