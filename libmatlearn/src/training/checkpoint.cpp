@@ -147,7 +147,8 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
   } catch (const std::exception& e) {
     throw not_ours(path, e.what());
   }
-  const std::string format = header.is_object() ? header.value("format", "") : "";
+  const auto stated = header.is_object() ? header.find("format") : header.end();
+  const std::string format = stated != header.end() && stated->is_string() ? stated->get<std::string>() : "";
   if (format == "matpredict-checkpoint-1")
     throw not_ours(path, "written by an earlier matpredict, without a checksum: train it again");
   if (format != kFormat) throw not_ours(path, "unknown format \"" + format + "\"");
@@ -168,6 +169,11 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
                              "short or changed on disk); use another checkpoint or train again");
   try {
     checkpoint.header = header_from_json(header);
+  } catch (const json::exception& e) {
+    // nlohmann's text after its "[json.exception.type_error.302] " tag: "type must be string, but is number".
+    const std::string text = e.what();
+    const size_t tag_end = text.find("] ");
+    throw not_ours(path, "its header is damaged: " + (tag_end == std::string::npos ? text : text.substr(tag_end + 2)));
   } catch (const std::exception& e) {
     throw not_ours(path, e.what());
   }
