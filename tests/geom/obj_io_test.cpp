@@ -56,6 +56,15 @@ void check_color(const glm::dvec3& actual, const glm::dvec3& expected) {
   for (int c = 0; c < 3; ++c) CHECK(actual[c] == Approx(expected[c]).margin(1e-6));
 }
 
+// Equal up to the float MTL numbers are read as.
+void check_same_transform(const TextureTransform& actual, const TextureTransform& expected) {
+  for (int c = 0; c < 2; ++c) {
+    CHECK(actual.offset[c] == Approx(expected.offset[c]).margin(1e-6));
+    CHECK(actual.scale[c] == Approx(expected.scale[c]).margin(1e-6));
+  }
+  CHECK(actual.rotation == expected.rotation);
+}
+
 // ---- The two-material scene
 
 // Four corners of a quad and a triangle with relative indices that reuses one quad corner with
@@ -319,6 +328,61 @@ TEST_CASE("OBJ reader decodes map_Kd, packs map_Pr into G and reads map_Bump and
   CHECK(shares.normal_strength == Approx(0.5));
 }
 
+namespace {
+
+// Where a map looks its image up at `uv`, as the renderer does (matgeom/texture_transform.h).
+void check_lookup(const TextureTransform& transform, glm::vec2 uv, glm::vec2 expected) {
+  const glm::vec2 looked_up = uv_affine(transform).apply(uv);
+  INFO("uv (" << uv.x << ", " << uv.y << ") looked up at (" << looked_up.x << ", " << looked_up.y << "), expected ("
+              << expected.x << ", " << expected.y << ")");
+  CHECK(glm::length(looked_up - expected) < 1e-5f);
+}
+
+}  // namespace
+
+TEST_CASE("OBJ reader places every map by -o and -s as Blender's Mapping node does: uv' = s uv + o",
+          "[geom]") {
+  TempDir dir;
+  write_bytes(dir.file("t.png"), encode_png(1, 1, 3, {10, 20, 30}));
+  write_text(dir.file("placed.obj"), "mtllib placed.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n"
+                                     "usemtl placed\nf 1/1 2/2 3/3\nusemtl plain\nf 3/3 2/2 1/1\n");
+  // Options in either order, w ignored, v and w filled in (-s 4 is -s 4 1 1, -o 0.5 is -o 0.5 0 0).
+  write_text(dir.file("placed.mtl"),
+             "newmtl placed\nmap_Kd -s 2 3 1 -o 0.25 0.5 0 t.png\nmap_Ke -o 0.5 t.png\nmap_d -s -1 1 7 t.png\n"
+             "map_Pr -s 4 t.png\nmap_Pm -o 0 0 0 -s 1 1 1 t.png\nmap_Bump -bm 0.5 -s 0.5 0.25 -o 0.1 0.2 0.3 t.png\n"
+             "newmtl plain\nmap_Kd t.png\nnorm -o -1 -2 -3 -s 3 3 3 t.png\n");
+  const ObjectAsset asset = read_obj(dir.file("placed.obj"));
+  REQUIRE(asset.images.size() == 2);  // t.png, and t.png packed as roughness and metallic
+  const MaterialDesc& placed = asset.materials[0];
+  // s (2, 3), o (0.25, 0.5): (0.1, 0.2) -> (0.2 + 0.25, 0.6 + 0.5).
+  check_lookup(placed[P::BaseColor].transform, {0.1f, 0.2f}, {0.45f, 1.1f});
+  check_lookup(placed[P::BaseColor].transform, {0.0f, 0.0f}, {0.25f, 0.5f});
+  check_lookup(placed[P::BaseColor].transform, {1.0f, 1.0f}, {2.25f, 3.5f});
+  check_lookup(placed[P::Emission].transform, {0.1f, 0.2f}, {0.6f, 0.2f});
+  check_lookup(placed[P::Emission].transform, {1.0f, 1.0f}, {1.5f, 1.0f});
+  check_lookup(placed[P::Alpha].transform, {0.1f, 0.2f}, {-0.1f, 0.2f});  // mirrored in u
+  check_lookup(placed[P::Alpha].transform, {1.0f, 1.0f}, {-1.0f, 1.0f});
+  // The packed image's two inputs keep their own placements.
+  CHECK(placed[P::Roughness].image == placed[P::Metallic].image);
+  check_lookup(placed[P::Roughness].transform, {0.1f, 0.2f}, {0.4f, 0.2f});
+  check_lookup(placed[P::Roughness].transform, {1.0f, 1.0f}, {4.0f, 1.0f});
+  CHECK(placed[P::Metallic].transform.is_identity());
+  // s (0.5, 0.25), o (0.1, 0.2): (0.1, 0.2) -> (0.05 + 0.1, 0.05 + 0.2).
+  check_lookup(placed.normal_transform, {0.1f, 0.2f}, {0.15f, 0.25f});
+  check_lookup(placed.normal_transform, {1.0f, 1.0f}, {0.6f, 0.45f});
+  CHECK(placed.normal_strength == 0.5);
+  const MaterialDesc& plain = asset.materials[1];
+  CHECK(plain[P::BaseColor].transform.is_identity());
+  check_lookup(plain.normal_transform, {0.1f, 0.2f}, {-0.7f, -1.4f});
+  check_lookup(plain.normal_transform, {1.0f, 1.0f}, {2.0f, 1.0f});
+
+  SECTION("a scale tinyobjloader's float cannot hold is refused naming the map") {
+    write_text(dir.file("placed.mtl"), "newmtl placed\nmap_Kd -s 1e-50 1 1 t.png\nnewmtl plain\n");
+    CHECK_THAT(read_error(dir.file("placed.obj")),
+               Contains(dir.file("placed.mtl") + ": material \"placed\" map_Kd: -o 0 0 -s 0 1 cannot place a texture"));
+  }
+}
+
 TEST_CASE("OBJ reader makes parts from material slots or from groups", "[geom]") {
   TempDir dir;
   write_text(dir.file("groups.obj"),
@@ -382,6 +446,9 @@ ObjectAsset round_trip_asset() {
   red.set_image(P::BaseColor, 0);
   red.set(P::BaseColor, glm::dvec3(1.0));
   red.set_metallic_roughness_image(1);
+  // Placements in glTF's terms, written as -o and -s; metallic and roughness placed apart.
+  red[P::BaseColor].transform = TextureTransform{{0.25, -0.5}, 0.0, {2.0, 3.0}};
+  red[P::Roughness].transform = TextureTransform{{-0.75, 0.125}, 0.0, {-1.5, 0.5}};
   red.set(P::Roughness, 1.0);
   red.set(P::Metallic, 1.0);
   red.set(P::Specular, 0.25);
@@ -392,6 +459,7 @@ ObjectAsset round_trip_asset() {
   blue.set(P::Specular, 0.5);
   blue.normal_image = 2;
   blue.normal_strength = 0.75;
+  blue.normal_transform = TextureTransform{{0.0, 0.0}, 0.0, {4.0, 4.0}};
   // The inputs beyond the classic statements: Ni, d, Ke (beyond 1: colour x strength), Tf, Pc,
   // Pcr, Ps.
   blue.set(P::Ior, 1.33);
@@ -424,6 +492,13 @@ TEST_CASE("OBJ written by write_obj reads back as the same asset", "[geom]") {
                                           "round trip_image1_roughness.png",
                                           "round trip_image2.png"});
 
+  // Placements as -o u (1 - sy - oy) 0 -s sx sy 1, worked out by hand from round_trip_asset's.
+  const std::string mtl = read_bytes(dir.file("round trip.mtl"));
+  CHECK_THAT(mtl, Contains("\nmap_Kd -o 0.25 -1.5 0 -s 2 3 1 round trip_image0.png\n"));
+  CHECK_THAT(mtl, Contains("\nmap_Pr -o -0.75 0.375 0 -s -1.5 0.5 1 round trip_image1_roughness.png\n"));
+  CHECK_THAT(mtl, Contains("\nmap_Pm round trip_image1_metallic.png\n"));
+  CHECK_THAT(mtl, Contains("\nmap_Bump -bm 0.75 -o 0 -3 0 -s 4 4 1 round trip_image2.png\n"));
+
   const ObjectAsset read = read_obj(path);
   const TriangleMesh& mesh = read.mesh;
   CHECK(mesh.positions == original.mesh.positions);
@@ -455,6 +530,9 @@ TEST_CASE("OBJ written by write_obj reads back as the same asset", "[geom]") {
     CHECK(actual[P::BaseColor].image == expected[P::BaseColor].image);
     CHECK(actual[P::Roughness].image == expected[P::Roughness].image);
     CHECK(actual.normal_image == expected.normal_image);
+    for (const P p : {P::BaseColor, P::Roughness, P::Metallic})
+      check_same_transform(actual[p].transform, expected[p].transform);
+    check_same_transform(actual.normal_transform, expected.normal_transform);
   }
   REQUIRE(read.images.size() == 3);
   CHECK(read.images[0].data == original.images[0].data);
@@ -484,6 +562,13 @@ TEST_CASE("write_obj makes names OBJ-safe and unique and refuses what it cannot 
   SECTION("fewer materials than parts") {
     asset.materials.pop_back();
     CHECK_THROWS_AS(write_obj(asset, dir.file("short.obj")), std::invalid_argument);
+  }
+  SECTION("a texture placement -o and -s cannot say, or read_obj would refuse") {
+    asset.images = round_trip_asset().images;
+    asset.materials[0].set_image(P::BaseColor, 0, 0, TextureTransform{{0.0, 0.0}, 0.5, {1.0, 1.0}});
+    CHECK_THROWS_WITH(write_obj(asset, dir.file("rotated.obj")), Contains("rotates its base_color texture"));
+    asset.materials[0].set_image(P::BaseColor, 0, 0, TextureTransform{{0.0, 0.0}, 0.0, {1.0, 0.0}});
+    CHECK_THROWS_WITH(write_obj(asset, dir.file("flat.obj")), Contains("a scale of 0"));
   }
   SECTION("an image index out of range") {
     asset.materials[1].normal_image = 3;
@@ -682,8 +767,9 @@ TEST_CASE("MTL numbers are checked where they are written, against the range the
            std::pair{"map_Bump -bm -1 t.png", "map_Bump -bm: \"-1\" is outside [0, ...)"},
            std::pair{"map_Kd -bm t.png", "map_Kd -bm: \"t.png\" is not a finite number"},
            std::pair{"map_Kd -o nan t.png", "map_Kd -o: \"nan\" is not a finite number"},
-           std::pair{"map_Kd -s 2 2 1 t.png", "map_Kd -s \"2\": texture scales are not applied"},
-           std::pair{"map_Kd -o 0 0.5 t.png", "map_Kd -o \"0.5\": texture offsets are not applied"},
+           std::pair{"map_Kd -s 2 0 t.png", "map_Kd -s: \"0\" scales the texture to nothing (v must not be 0)"},
+           std::pair{"norm -s -0 t.png", "norm -s: \"-0\" scales the texture to nothing (u must not be 0)"},
+           std::pair{"map_Kd -o 0 1e39 t.png", "map_Kd -o: \"1e39\" is not a finite number"},
            std::pair{"map_Kd -mm", "map_Kd -mm needs 1 or 2 numbers"},
            std::pair{"map_Kd -clamp maybe t.png", "map_Kd -clamp takes one of on, off; not \"maybe\""},
            std::pair{"map_Kd -texres 0 t.png", "map_Kd -texres: \"0\" is outside [1, 2147483647]"},

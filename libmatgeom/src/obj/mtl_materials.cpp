@@ -11,6 +11,7 @@
 #include <tiny_obj_loader.h>
 
 #include "file_error.h"
+#include "obj/mtl_placement.h"
 #include "obj/mtl_textures.h"
 
 // Materials: MTL to the Principled BSDF as Blender's OBJ importer builds it
@@ -19,9 +20,8 @@
 // (checked by importing a file into Blender 3.4.1); the PBR extension (Pr, Pm, map_Pr, map_Pm) is
 // read as Blender 3.5 added it: its values, when given, replace the ones derived from Ns and Ka.
 // Ignored: Tr (Blender ignores it), map_Ns, refl, disp, anisotropy, map_Ks, and the texture
-// option -type. Blender ignores -clamp, so textures repeat. The options -o and -s, for which
-// Blender adds a Mapping node, are refused unless they leave the texture in place
-// (mtl_text_screening.cpp). tinyobjloader reads Kt as Tf; Blender may not.
+// option -type. Blender ignores -clamp, so textures repeat. The options -o and -s place each map as
+// Blender's Mapping node does (mtl_placement.h). tinyobjloader reads Kt as Tf; Blender may not.
 
 namespace matgeom::obj {
 namespace {
@@ -148,20 +148,20 @@ class MaterialConverter {
   void set_textures(const tinyobj::material_t& material, size_t index, const std::string& what,
                     MaterialDesc& desc) const {
     if (!material.diffuse_texname.empty()) {
-      desc.set_image(MaterialParameter::BaseColor,
-                     textures_.color_texture(source(material.diffuse_texname, index, what + " map_Kd")));
+      const TextureSource kd = source(material.diffuse_texname, index, what + " map_Kd");
+      desc.set_image(MaterialParameter::BaseColor, textures_.color_texture(kd), 0, placement(material.diffuse_texopt, kd));
       desc.set(MaterialParameter::BaseColor, 1.0);
     }
     // map_Ke: the emission colour, at strength 1.
     if (!material.emissive_texname.empty()) {
-      desc.set_image(MaterialParameter::Emission,
-                     textures_.color_texture(source(material.emissive_texname, index, what + " map_Ke")));
+      const TextureSource ke = source(material.emissive_texname, index, what + " map_Ke");
+      desc.set_image(MaterialParameter::Emission, textures_.color_texture(ke), 0, placement(material.emissive_texopt, ke));
       desc.set(MaterialParameter::Emission, 1.0).set(MaterialParameter::EmissionStrength, 1.0);
     }
     // map_d: Blender links the image's Alpha output (1 for an image without alpha).
     if (!material.alpha_texname.empty()) {
-      desc.set_image(MaterialParameter::Alpha,
-                     textures_.color_texture(source(material.alpha_texname, index, what + " map_d")), 3);
+      const TextureSource d = source(material.alpha_texname, index, what + " map_d");
+      desc.set_image(MaterialParameter::Alpha, textures_.color_texture(d), 3, placement(material.alpha_texopt, d));
       desc.set(MaterialParameter::Alpha, 1.0);
     }
     set_metallic_roughness_texture(material, index, what, desc);
@@ -177,10 +177,12 @@ class MaterialConverter {
     const TextureSource metallic = source(material.metallic_texname, index, what + " map_Pm");
     const int packed = textures_.metallic_roughness_texture(has_roughness ? &roughness : nullptr,
                                                             has_metallic ? &metallic : nullptr);
-    for (const auto& [mapped, p] : {std::pair{has_roughness, MaterialParameter::Roughness},
-                                    std::pair{has_metallic, MaterialParameter::Metallic}}) {
-      if (mapped) desc.set(p, 1.0).set_image(p, packed, material_parameter(p).packed_channel);
-    }
+    // One image, each map still placed by its own -o and -s.
+    const auto link = [&](MaterialParameter p, const tinyobj::texture_option_t& options, const TextureSource& map) {
+      desc.set(p, 1.0).set_image(p, packed, material_parameter(p).packed_channel, placement(options, map));
+    };
+    if (has_roughness) link(MaterialParameter::Roughness, material.roughness_texopt, roughness);
+    if (has_metallic) link(MaterialParameter::Metallic, material.metallic_texopt, metallic);
   }
 
   // Blender connects map_Bump (or bump) through a Normal Map node: it is a tangent-space normal
@@ -198,6 +200,21 @@ class MaterialConverter {
     desc.normal_image = textures_.color_texture(normal);
     const tinyobj::texture_option_t& options = bump ? material.bump_texopt : material.normal_texopt;
     desc.normal_strength = options.bump_multiplier;
+    desc.normal_transform = placement(options, normal);
+  }
+
+  // -o and -s as the texture's transform. The screening refused a non-finite number and a scale
+  // of 0 as written; tinyobjloader's own arithmetic can still make one ("0e999" is 0 x inf to it,
+  // and a float cannot hold 1e-50).
+  TextureTransform placement(const tinyobj::texture_option_t& options, const TextureSource& map) const {
+    const MtlPlacement placed{{options.origin_offset[0], options.origin_offset[1]}, {options.scale[0], options.scale[1]}};
+    const bool finite = std::isfinite(placed.origin.x) && std::isfinite(placed.origin.y) &&
+                        std::isfinite(placed.scale.x) && std::isfinite(placed.scale.y);
+    if (!finite || placed.scale.x == 0.0 || placed.scale.y == 0.0) {
+      fail(file_.path, concat(map.what, ": -o ", placed.origin.x, " ", placed.origin.y, " -s ", placed.scale.x, " ",
+                              placed.scale.y, " cannot place a texture (a scale of 0 or a non-finite number)"));
+    }
+    return texture_transform(placed);
   }
 
   // Texture paths are relative to the .mtl's directory (Blender's first choice; its fallbacks

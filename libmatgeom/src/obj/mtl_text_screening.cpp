@@ -167,22 +167,22 @@ std::vector<std::string_view> take_numbers(MapWords& words, size_t most) {
 }
 
 // -o u [v [w]], -s u [v [w]], -t u [v [w]]: texture offset, scale and turbulence. Blender ignores
-// -t; -o and -s place the texture through a Mapping node, which this reader does not build, so
-// only their defaults (what leaves the texture where the UVs put it) are read and others refused.
+// -t; -o and -s place the texture (mtl_placement.h), any finite numbers but a scale of 0 in u or v,
+// which would shrink the whole image onto one line of texels.
 std::string checked_placement(const LineChecker& checker, std::string_view where, std::string_view option,
                               MapWords& words) {
   const std::vector<std::string_view> numbers = take_numbers(words, 3);
   const std::string what = concat(where, " ", option);
   if (numbers.empty()) checker.fail_here(what + " needs 1 to 3 numbers");
-  const double identity = option == "-s" ? 1.0 : 0.0;
+  const std::string_view fill = option == "-s" ? "1" : "0";
   std::string text(option);
   for (size_t c = 0; c < 3; ++c) {
-    const double value = c < numbers.size() ? checker.number(what, numbers[c], -kFloatMax, kFloatMax) : identity;
-    if (option != "-t" && value != identity) {
-      checker.fail_here(concat(what, " ", excerpt(numbers[c]), ": texture ", option == "-s" ? "scales" : "offsets",
-                               " are not applied (only ", identity, " is read); bake the placement into the UVs"));
-    }
-    text += c < numbers.size() ? concat(" ", numbers[c]) : concat(" ", identity);
+    const std::string_view number = c < numbers.size() ? numbers[c] : fill;
+    const double value = checker.number(what, number, -kFloatMax, kFloatMax);
+    if (option == "-s" && c < 2 && value == 0.0)
+      checker.fail_here(concat(what, ": ", excerpt(number), " scales the texture to nothing (", c == 0 ? "u" : "v",
+                               " must not be 0)"));
+    text.append(" ").append(number);
   }
   return text;
 }

@@ -4,12 +4,15 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
+#include <limits>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
 #include <glm/glm.hpp>
 
 #include "file_error.h"
+#include "obj/mtl_placement.h"
 
 namespace matgeom::obj {
 namespace {
@@ -39,6 +42,32 @@ void check_image(const ObjectAsset& asset, int image, const MaterialDesc& materi
     throw std::invalid_argument(concat("write_obj: image ", image, " (", pixels.name,
                                        ") has inconsistent size or channels"));
   }
+}
+
+// The maps mtl_text writes must be placed as -o and -s can say (mtl_placement.h), and as read_obj
+// reads them back: without rotation, by numbers a float holds, at a scale other than 0.
+void check_placement(const TextureTransform& transform, const MaterialDesc& material, const char* map) {
+  const std::optional<MtlPlacement> placed = mtl_placement(transform);
+  if (!placed) {
+    throw std::invalid_argument(concat("write_obj: material '", material.name, "' rotates its ", map,
+                                       " texture; MTL's -o and -s cannot rotate one"));
+  }
+  const auto in_float = [](double v) { return std::abs(v) <= std::numeric_limits<float>::max(); };
+  const bool readable = in_float(placed->origin.x) && in_float(placed->origin.y) && in_float(placed->scale.x) &&
+                        in_float(placed->scale.y) && static_cast<float>(placed->scale.x) != 0.0f &&
+                        static_cast<float>(placed->scale.y) != 0.0f;
+  if (!readable) {
+    throw std::invalid_argument(concat("write_obj: material '", material.name, "' places its ", map,
+                                       " texture by a scale of 0 or a number beyond a float"));
+  }
+}
+
+// "-o u v 0 -s u v 1 " for a texture placed otherwise than as it lies, else nothing.
+std::string placement_options(const TextureTransform& transform) {
+  if (transform.is_identity()) return "";
+  const MtlPlacement placed = *mtl_placement(transform);
+  return "-o " + number(placed.origin.x) + " " + number(placed.origin.y) + " 0 -s " + number(placed.scale.x) + " " +
+         number(placed.scale.y) + " 1 ";
 }
 
 // One channel of every pixel as a grey image; grey and grey-alpha images give their grey.
@@ -112,6 +141,11 @@ void check_writable(const ObjectAsset& asset) {
       }
     }
     check_image(asset, material.normal_image, material);
+    using P = MaterialParameter;
+    for (const P p : {P::BaseColor, P::Roughness, P::Metallic}) {
+      if (material[p].image >= 0) check_placement(material[p].transform, material, material_parameter(p).name);
+    }
+    if (material.normal_image >= 0) check_placement(material.normal_transform, material, "normal");
   }
 }
 
@@ -172,12 +206,13 @@ std::string mtl_text(const std::vector<NamedMaterial>& materials) {
     }
     if (desc.scalar(P::Sheen) != 0.0) text += "Ps " + number(desc.scalar(P::Sheen)) + "\n";
     const MaterialMaps& maps = material.maps;
-    if (!maps.base_color.empty()) text += "map_Kd " + maps.base_color + "\n";
-    if (!maps.roughness.empty()) text += "map_Pr " + maps.roughness + "\n";
-    if (!maps.metallic.empty()) text += "map_Pm " + maps.metallic + "\n";
-    if (!maps.normal.empty()) {
-      text += "map_Bump -bm " + number(desc.normal_strength) + " " + maps.normal + "\n";
-    }
+    const auto map = [&](const std::string& keyword, const TextureTransform& transform, const std::string& file) {
+      text += keyword + " " + placement_options(transform) + file + "\n";
+    };
+    if (!maps.base_color.empty()) map("map_Kd", desc[P::BaseColor].transform, maps.base_color);
+    if (!maps.roughness.empty()) map("map_Pr", desc[P::Roughness].transform, maps.roughness);
+    if (!maps.metallic.empty()) map("map_Pm", desc[P::Metallic].transform, maps.metallic);
+    if (!maps.normal.empty()) map("map_Bump -bm " + number(desc.normal_strength), desc.normal_transform, maps.normal);
   }
   return text;
 }

@@ -68,7 +68,8 @@ struct NamedMaterial {
   MaterialMaps maps;
 };
 
-// The inverse of MaterialConverter. read_obj, like Blender, lets a map replace its factor, so a
+// The inverse of MaterialConverter, each map placed by -o and -s (check_writable refused what they
+// cannot say). read_obj, like Blender, lets a map replace its factor, so a
 // factor other than 1 beside a map does not survive a round trip (it is still written, for
 // readers that multiply). MaterialDesc's wrap, specular tint, IOR, a specular image and the label
 // id are not written: Blender's importer reads no MTL statement for them.
