@@ -71,7 +71,7 @@ matrender::BuiltScene builtin_in_library_material(const std::string& object, con
                                                   int material_resolution) {
   matrender::SceneDescription scene;
   matrender::MaterialDescription material;
-  material.library = matrender::LibraryMaterialRequest{matgeom::parse_library_material(spec), material_resolution, {}};
+  material.library = matrender::LibraryMaterialRequest{matmaterial::parse_library_material(spec), material_resolution, {}};
   scene.materials.emplace("material", material);
   matrender::ObjectDescription description;
   description.source = matrender::BuiltinObject{object, 0};

@@ -13,13 +13,13 @@
 #include <vector>
 
 #include "bench_scenes.h"
+#include "matbase/image/image_writing.h"
 #include "matgeom/bounding_sphere.h"
-#include "matgeom/builtin_objects.h"
+#include "matgeom/builtin/builtin_objects.h"
 #include "matgeom/camera_grid.h"
-#include "matgeom/material_library.h"
-#include "matgeom/uv_scale.h"
+#include "matgeom/uv/uv_scale.h"
+#include "matmaterial/library/material_library.h"
 #include "matrender/asset.h"
-#include "matgeom/image_writing.h"
 #include "matrender/paper_setup.h"
 #include "matrender/render.h"
 
@@ -36,7 +36,7 @@ matrender::Camera framed_camera(const matgeom::TriangleMesh& mesh, int size, dou
 
 struct Cell {
   std::string object;
-  std::optional<matgeom::LibraryMaterialSpec> material;
+  std::optional<matmaterial::LibraryMaterialSpec> material;
   std::string caption;
 };
 
@@ -64,7 +64,7 @@ int main(int argc, char** argv) {
       ->excludes("--library");
   app.add_option("--material-resolution", material_resolution, "texels along each side of a library material's maps")
       ->capture_default_str()
-      ->check(CLI::Range(matgeom::kMinLibraryResolution, matgeom::kMaxLibraryResolution));
+      ->check(CLI::Range(matmaterial::kMinLibraryResolution, matmaterial::kMaxLibraryResolution));
   CLI11_PARSE(app, argc, argv);
 
   std::vector<Cell> cells;
@@ -74,22 +74,22 @@ int main(int argc, char** argv) {
       fmt::print(stderr, "contact_sheet: --library: no built-in object \"{}\"\n", *library_object);
       return 2;
     }
-    for (const matgeom::LibraryStyleInfo& style : matgeom::library_styles()) {
-      const matgeom::LibraryMaterialSpec spec{style.material_class, style.name,
+    for (const matmaterial::LibraryStyleInfo& style : matmaterial::library_styles()) {
+      const matmaterial::LibraryMaterialSpec spec{style.material_class, style.name,
                                               seed + static_cast<uint32_t>(cells.size())};
-      cells.push_back({*library_object, spec, matgeom::library_material_name(spec)});
+      cells.push_back({*library_object, spec, matmaterial::library_material_name(spec)});
     }
   } else if (library_class) {
-    matgeom::LibraryMaterialSpec spec;
+    matmaterial::LibraryMaterialSpec spec;
     try {
-      spec = matgeom::parse_library_material(*library_class);
+      spec = matmaterial::parse_library_material(*library_class);
     } catch (const std::invalid_argument& e) {
       fmt::print(stderr, "contact_sheet: --class: {}\n", e.what());
       return 2;
     }
     for (size_t k = 0; k < objects.size(); ++k) {
       spec.seed = seed + static_cast<uint32_t>(k);
-      cells.push_back({objects[k], spec, objects[k] + " in " + matgeom::library_material_name(spec)});
+      cells.push_back({objects[k], spec, objects[k] + " in " + matmaterial::library_material_name(spec)});
     }
   } else {
     for (const std::string& object : objects) cells.push_back({object, std::nullopt, object});
@@ -103,7 +103,7 @@ int main(int argc, char** argv) {
       matgeom::ObjectAsset asset = matgeom::make_builtin_object(cells[k].object, seed);
       if (cells[k].material)
         matgeom::assign_material_to_all_parts(
-            asset, matgeom::generate_library_material(*cells[k].material, {material_resolution, 0}));
+            asset, matmaterial::generate_library_material(*cells[k].material, {material_resolution, 0}));
       matrender::Scene scene;
       matrender::add_asset(scene, asset);
       matrender::add_rig(scene, matrender::paper_rig(asset.mesh));
@@ -120,7 +120,7 @@ int main(int argc, char** argv) {
         std::copy_n(&frame.color[3 * static_cast<size_t>(y) * static_cast<size_t>(size)], 3 * size,
                     &sheet[3 * (static_cast<size_t>(y0 + y) * static_cast<size_t>(width) + static_cast<size_t>(x0))]);
     }
-    matgeom::write_display_png(output, width, height, sheet.data(), nullptr, exposure);
+    matbase::write_display_png(output, width, height, sheet.data(), nullptr, exposure);
     fmt::print("wrote {} ({} x {})\n", output, width, height);
   } catch (const std::exception& e) {
     fmt::print(stderr, "contact_sheet: {}\n", e.what());

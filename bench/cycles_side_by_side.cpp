@@ -89,7 +89,7 @@ shaders_ref::CyclesScene make_scene(const std::string& name, size_t triangles, i
   scene.mesh = bench::displaced_sphere(triangles);
   scene.material = bench::bench_material();
   scene.material[matrender::MaterialParameter::BaseColor] = {
-      glm::vec3(1.0f), matrender::Texture::load(checker, matgeom::ColorSpace::SRGB), 0};
+      glm::vec3(1.0f), matrender::Texture::load(checker, matmaterial::ColorSpace::SRGB), 0};
   scene.camera = matrender::paper_view(scene.mesh, resolution, resolution);
   if (name == "glass") {
     scene.material.set(matrender::MaterialParameter::Transmission, 1.0f);
@@ -112,7 +112,7 @@ matrender::Scene our_scene(const shaders_ref::CyclesScene& description) {
   for (const matrender::Light& lamp : description.lamps) scene.add_light(lamp);
   if (description.environment)
     scene.set_background(matrender::EnvironmentMap{
-        matrender::Texture::load(description.environment->exr_path, matgeom::ColorSpace::NonColor),
+        matrender::Texture::load(description.environment->exr_path, matmaterial::ColorSpace::NonColor),
         static_cast<float>(description.environment->strength), static_cast<float>(description.environment->rotation_z)});
   else
     scene.set_background(description.background);

@@ -58,10 +58,10 @@
 #include "make_dataset/dataset_config.h"
 #include "make_dataset/dataset_plan.h"
 #include "make_dataset/object_renderer.h"
-#include "matgeom/gltf_writer.h"
-#include "matgeom/image_writing.h"
-#include "matgeom/memory_limit.h"
-#include "matgeom/threads.h"
+#include "matbase/image/image_writing.h"
+#include "matbase/memory_limit.h"
+#include "matbase/threads.h"
+#include "matgeom/io/gltf/gltf_writer.h"
 #include "matlearn/dataset_writer.h"
 #include "shaders_ref/cycles_reference.h"
 
@@ -244,7 +244,7 @@ void render_reference(const Run& run, make_dataset::ObjectRenderer& renderer, Fr
   fmt::print("{} view {} reference, {} spp: {:.2f} s\n", frame.object, frame.view, run.reference_samples,
              seconds_since(start));
   if (!run.images.empty())
-    matgeom::write_display_png(fmt::format("{}/{}_view{}_ours.png", run.images, frame.object, frame.view),
+    matbase::write_display_png(fmt::format("{}/{}_view{}_ours.png", run.images, frame.object, frame.view),
                                frame.truth->width, frame.truth->height, frame.truth->color.data(), nullptr,
                                frame.truth->exposure_stops);
 }
@@ -312,7 +312,7 @@ void measure_cycles(const Run& run, const CyclesOptions& cycles, const make_data
         frame.object, frame.view, run.reference_samples, renders[0].seconds, renders[1].seconds,
         cycles_mean / ours_mean, 100.0 * bench::rmse(cycles_truth, truth.color) / ours_mean);
     if (!run.images.empty())
-      matgeom::write_display_png(fmt::format("{}/{}_view{}_cycles.png", run.images, frame.object, frame.view),
+      matbase::write_display_png(fmt::format("{}/{}_view{}_cycles.png", run.images, frame.object, frame.view),
                                  truth.width, truth.height, cycles_truth.data(), nullptr, truth.exposure_stops);
     for (size_t t = 0; t < cycles.thresholds.size(); ++t) {
       const shaders_ref::CyclesRender& render = renders[t + 2];
@@ -416,7 +416,7 @@ void print_points(const std::vector<Mode>& modes, const std::vector<ModeFigures>
                                              100.0 * worst(f.image_errors), average(f.ao_errors), worst(f.ao_errors));
     fmt::print("| {} | {:.2f} | {:.0f} | {:.0f} {} | {:.0f} | {:.1f} | {} |\n", modes[m].name, per_frame,
                3600.0 / per_frame, f.samples / static_cast<double>(f.frames), errors, paper * per_frame / 3600.0,
-               paper * per_frame / 3600.0 / 100.0, matgeom::byte_size_text(paper * bytes));
+               paper * per_frame / 3600.0 / 100.0, matbase::byte_size_text(paper * bytes));
   }
   for (size_t t = 0; t < cycles_figures.size() && cycles_figures[t].frames > 0; ++t) {
     const ModeFigures& f = cycles_figures[t];
@@ -570,7 +570,7 @@ int main(int argc, char** argv) {
     const make_dataset::DatasetConfig reference = make_dataset::load_config(config_file, reference_overrides);
     if (cycles.enabled && !shaders_ref::cycles_available(cycles.blender))
       throw std::runtime_error("--cycles: " + cycles.blender + " --version does not report Blender 3.4");
-    const int workers = matgeom::worker_threads(threads);
+    const int workers = matbase::worker_threads(threads);
     fmt::print("{}: {} frames of {}x{} at {} spp, AO error bound {}; {} threads; modes:", config_file, plan.frames.size(),
                config.render.width, config.render.height, config.render.samples, config.render.ambient_occlusion_error,
                workers);

@@ -11,12 +11,12 @@
 #include <string>
 #include <vector>
 
+#include "matbase/threads.h"
 #include "matgeom/bounding_sphere.h"
-#include "matgeom/builtin_objects.h"
+#include "matgeom/builtin/builtin_objects.h"
 #include "matgeom/camera_grid.h"
-#include "matgeom/material_library.h"
-#include "matgeom/threads.h"
-#include "matgeom/uv_scale.h"
+#include "matgeom/uv/uv_scale.h"
+#include "matmaterial/library/material_library.h"
 #include "matrender/asset.h"
 #include "matrender/paper_setup.h"
 #include "matrender/render.h"
@@ -66,22 +66,22 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   app.add_option("--render-resolution", render_resolution, "map size of the rendered materials")
       ->capture_default_str()
-      ->check(CLI::Range(matgeom::kMinLibraryResolution, matgeom::kMaxLibraryResolution));
+      ->check(CLI::Range(matmaterial::kMinLibraryResolution, matmaterial::kMaxLibraryResolution));
   CLI11_PARSE(app, argc, argv);
   for (const int r : resolutions)
-    if (r < matgeom::kMinLibraryResolution || r > matgeom::kMaxLibraryResolution) {
+    if (r < matmaterial::kMinLibraryResolution || r > matmaterial::kMaxLibraryResolution) {
       fmt::print(stderr, "material_library_bench: --resolutions: {} is outside [{}, {}]\n", r,
-                 matgeom::kMinLibraryResolution, matgeom::kMaxLibraryResolution);
+                 matmaterial::kMinLibraryResolution, matmaterial::kMaxLibraryResolution);
       return 2;
     }
   try {
-    const int workers = matgeom::worker_threads(threads);
+    const int workers = matbase::worker_threads(threads);
     fmt::print("{} threads; render: vase {}x{} at {} spp, fastest of {}, maps at {}\n\n", workers, size, size, spp,
                repeats, render_resolution);
 
     matgeom::ObjectAsset plain = matgeom::make_builtin_object("vase", 0);
     plain.images.clear();
-    for (matgeom::MaterialDesc& slot : plain.materials) slot = matgeom::MaterialDesc(slot.name);  // Blender's default
+    for (matmaterial::MaterialDesc& slot : plain.materials) slot = matmaterial::MaterialDesc(slot.name);  // Blender's default
     const double plain_seconds = render_seconds(plain, size, spp, repeats, threads);
 
     std::string header = fmt::format("{:<22}", "style");
@@ -89,18 +89,18 @@ int main(int argc, char** argv) {
     fmt::print("{} | render s | vs plain\n", header);
     fmt::print("{:<22} {} | {:8.3f} | {:8.2f}\n", "plain diffuse", std::string(resolutions.size() * 11, ' '),
                plain_seconds, 1.0);
-    for (const matgeom::LibraryStyleInfo& style : matgeom::library_styles()) {
-      const matgeom::LibraryMaterialSpec spec{style.material_class, style.name, 0};
+    for (const matmaterial::LibraryStyleInfo& style : matmaterial::library_styles()) {
+      const matmaterial::LibraryMaterialSpec spec{style.material_class, style.name, 0};
       std::string row =
-          fmt::format("{:<22}", std::string(matgeom::material_class(style.material_class).name) + "/" + style.name);
+          fmt::format("{:<22}", std::string(matmaterial::material_class(style.material_class).name) + "/" + style.name);
       for (const int r : resolutions) {
         const Clock::time_point start = Clock::now();
-        const matgeom::FolderMaterial generated = matgeom::generate_library_material(spec, {r, threads});
+        const matmaterial::FolderMaterial generated = matmaterial::generate_library_material(spec, {r, threads});
         row += fmt::format(" | {:8.3f}", seconds_since(start));
       }
       matgeom::ObjectAsset vase = matgeom::make_builtin_object("vase", 0);
       matgeom::assign_material_to_all_parts(vase,
-                                            matgeom::generate_library_material(spec, {render_resolution, threads}));
+                                            matmaterial::generate_library_material(spec, {render_resolution, threads}));
       const double seconds = render_seconds(vase, size, spp, repeats, threads);
       fmt::print("{} | {:8.3f} | {:8.2f}\n", row, seconds, seconds / plain_seconds);
     }

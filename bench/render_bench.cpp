@@ -18,7 +18,7 @@
 
 #include "accel/embree_scene.h"
 #include "bench_scenes.h"
-#include "matgeom/builtin_objects.h"
+#include "matgeom/builtin/builtin_objects.h"
 #include "matrender/asset.h"
 #include "matrender/paper_setup.h"
 #include "matrender/render.h"

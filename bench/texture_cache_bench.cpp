@@ -18,7 +18,7 @@
 #include <OpenImageIO/imageio.h>
 #include <fmt/core.h>
 
-#include "matgeom/memory_limit.h"
+#include "matbase/memory_limit.h"
 #include "matrender/camera.h"
 #include "matrender/render.h"
 #include "matrender/scene.h"
@@ -91,7 +91,7 @@ Run render_wall(const std::vector<std::string>& maps, uint64_t limit_bytes, int 
   for (size_t k = 0; k < maps.size(); ++k) {
     matrender::Material m;
     m[matrender::MaterialParameter::BaseColor] = {glm::vec3(1.0f),
-                                                  matrender::Texture::load(maps[k], matgeom::ColorSpace::SRGB), 0};
+                                                  matrender::Texture::load(maps[k], matmaterial::ColorSpace::SRGB), 0};
     const float x = 1.1f * (static_cast<float>(k % side) - 0.5f * (side - 1));
     const float z = 1.1f * (static_cast<float>(k / side) - 0.5f * (side - 1));
     scene.add_mesh(plane_at(x, z), {scene.add_material(m)});
@@ -129,7 +129,7 @@ int main(int argc, char** argv) {
   try {
     const std::vector<std::string> paths = ensure_maps(folder, maps, size);
     fmt::print("{} maps of {}x{} (8-bit RGB, kept as RGBA bytes: {} each at level 0), {}x{} at {} spp\n", maps, size,
-               size, matgeom::byte_size_text(4.0 * size * size), resolution, resolution, spp);
+               size, matbase::byte_size_text(4.0 * size * size), resolution, resolution, spp);
     // Bounded runs first, so that the process's peak resident memory after each says what it took.
     fmt::print("| limit | load s | render s | texels held at most | levels dropped | made again | process peak RSS so far |\n");
     fmt::print("|---|---:|---:|---:|---:|---:|---:|\n");
@@ -141,11 +141,11 @@ int main(int argc, char** argv) {
       rusage usage{};
       getrusage(RUSAGE_SELF, &usage);
       fmt::print("| {} | {:.2f} | {:.2f} | {} | {} | {} | {} |\n",
-                 mib == 0 ? "none (default " + matgeom::byte_size_text(static_cast<double>(run.cache.limit_bytes)) + ")"
-                          : matgeom::byte_size_text(static_cast<double>(mib << 20)),
-                 run.load_seconds, run.render_seconds, matgeom::byte_size_text(static_cast<double>(run.cache.peak_bytes)),
+                 mib == 0 ? "none (default " + matbase::byte_size_text(static_cast<double>(run.cache.limit_bytes)) + ")"
+                          : matbase::byte_size_text(static_cast<double>(mib << 20)),
+                 run.load_seconds, run.render_seconds, matbase::byte_size_text(static_cast<double>(run.cache.peak_bytes)),
                  run.cache.evictions, run.cache.reloads,
-                 matgeom::byte_size_text(static_cast<double>(usage.ru_maxrss) * 1024.0));
+                 matbase::byte_size_text(static_cast<double>(usage.ru_maxrss) * 1024.0));
       std::fflush(stdout);
     }
     bool same = true;

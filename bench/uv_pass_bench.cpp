@@ -11,8 +11,8 @@
 #include <fmt/core.h>
 
 #include "bench_scenes.h"
-#include "matgeom/builtin_objects.h"
-#include "matgeom/uv_pass.h"
+#include "matgeom/builtin/builtin_objects.h"
+#include "matgeom/uv/uv_pass.h"
 
 namespace {
 

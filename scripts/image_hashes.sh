@@ -13,19 +13,23 @@ make_dataset="$build/apps/make_dataset/make_dataset"
 small=(--resolution 64x64 --spp 16 --threads 2)
 
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
-"$render" --threads 2 --output default >/dev/null
+log="$PWD/log.txt"
+run() {  # a command, its output kept in the log and shown when it fails
+  "$@" >>"$log" 2>&1 || { tail -n 20 "$log" >&2; echo "image_hashes: failed: $*" >&2; exit 1; }
+}
+run "$render" --threads 2 --output default
 for scene in "$root"/apps/render_object/examples/*.json; do
   name=$(basename "$scene" .json)
-  "$render" --scene "$scene" "${small[@]}" --aovs all --output "examples/$name" >/dev/null
+  run "$render" --scene "$scene" "${small[@]}" --aovs all --output "examples/$name"
 done
-"$render" --scene "$root/apps/render_object/examples/vase_in_library_materials.json" "${small[@]}" \
-  --cycles-parity --output cycles_parity >/dev/null
+run "$render" --scene "$root/apps/render_object/examples/vase_in_library_materials.json" "${small[@]}" \
+  --cycles-parity --output cycles_parity
 for object in $("$render" --list-objects); do
-  "$render" --object "$object" "${small[@]}" --output "objects/$object" >/dev/null
+  run "$render" --object "$object" "${small[@]}" --output "objects/$object"
 done
 for class in $("$render" --list-materials | awk -F'`' '/^\| [0-9]+ \|/ && $2 != "background" {print $2}'); do
-  "$render" --object vase --material "$class" --material-resolution 256 "${small[@]}" \
-    --output "materials/$class" >/dev/null
+  run "$render" --object vase --material "$class" --material-resolution 256 "${small[@]}" \
+    --output "materials/$class"
 done
-"$make_dataset" --threads 2 --output dataset >/dev/null
+run "$make_dataset" --threads 2 --output dataset
 find . -type f \( -name '*.png' -o -name '*.exr' \) -print0 | sort -z | xargs -0 sha256sum

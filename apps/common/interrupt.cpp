@@ -2,7 +2,7 @@
 
 #include <signal.h>
 
-#include "matgeom/atomic_file.h"
+#include "matbase/file/atomic_file.h"
 
 namespace app_support {
 namespace {
@@ -17,7 +17,7 @@ std::atomic<int> interrupting_signal{SIGINT};
 // removing the temporaries being written first, so that even then nothing half-written is left.
 void on_signal(int signal) {
   if (interrupted.load()) {
-    matgeom::remove_temporaries_in_flight();
+    matbase::remove_temporaries_in_flight();
     ::signal(signal, SIG_DFL);
     ::raise(signal);
     return;

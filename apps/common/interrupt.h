@@ -2,7 +2,7 @@
 // Ctrl-C or a scheduler's SIGTERM during long work: the first SIGINT or SIGTERM sets a flag the
 // work checks (the renderer at every packet of samples, training between steps), so that the app
 // can exit without writing half a result; a second one ends the process at once, after removing
-// the temporaries being written (matgeom::remove_temporaries_in_flight).
+// the temporaries being written (matbase::remove_temporaries_in_flight).
 #include <atomic>
 
 namespace app_support {

@@ -2,15 +2,15 @@
 
 #include <fmt/format.h>
 
-#include "matgeom/threads.h"
+#include "matbase/threads.h"
 
 namespace app_support {
 
 int announced_worker_threads(const std::string& program, const std::string& option, int requested) {
-  const int threads = matgeom::worker_threads(requested);
+  const int threads = matbase::worker_threads(requested);
   if (requested > threads)
     fmt::print(stderr, "{}: note: {} {} is more than this machine's {} hardware threads; using {}\n", program, option,
-               requested, matgeom::hardware_threads(), threads);
+               requested, matbase::hardware_threads(), threads);
   return threads;
 }
 

@@ -4,7 +4,7 @@
 
 namespace app_support {
 
-// matgeom::worker_threads(requested), with a note on stderr ("<program>: note: <option> 1000 is
+// matbase::worker_threads(requested), with a note on stderr ("<program>: note: <option> 1000 is
 // more than this machine's 2 hardware threads; using 2") when the request was capped.
 int announced_worker_threads(const std::string& program, const std::string& option, int requested);
 

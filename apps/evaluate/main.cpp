@@ -11,17 +11,17 @@
 #include "common/number_options.h"
 #include "common/progress_bar.h"
 #include "common/thread_count.h"
-#include "matgeom/atomic_file.h"
+#include "matbase/file/atomic_file.h"
 #include "matlearn/dataset_error.h"
 #include "matlearn/dataset_index.h"
 #include "matlearn/evaluation/evaluator.h"
 #include "matlearn/evaluation/inference.h"
 #include "matlearn/evaluation/panels.h"
 #include "matlearn/evaluation/report.h"
-#include "matgeom/material_classes.h"
 #include "matlearn/sample_loader.h"
 #include "matlearn/sample_reader.h"
 #include "matlearn/training/checkpoint.h"
+#include "matmaterial/material_classes.h"
 
 namespace {
 
@@ -84,8 +84,8 @@ int predict(const Options& o, const matlearn::CheckpointHeader& header, matlearn
   }
   const matlearn::PredictedMaps predicted = matlearn::predict_maps(model, header, input.rgb);
   std::string written;
-  matgeom::OutputFolder folder(o.output_dir);
-  matgeom::AtomicFileSet files(o.output_dir / "panel.png");
+  matbase::OutputFolder folder(o.output_dir);
+  matbase::AtomicFileSet files(o.output_dir / "panel.png");
   for (size_t m = 0; m < predicted.maps.size(); ++m) {
     matlearn::write_map_png(o.output_dir / (predicted.names[m] + ".png"), predicted.maps[m], input.mask, &files);
     written += predicted.names[m] + ".png, ";
@@ -162,11 +162,11 @@ int run(const Options& o) {
       unscored.empty() ? "" : "\n" + unscored, convention);
   const std::vector<matlearn::ReportTable> tables = matlearn::report_tables(result.scores);
   // The tables and panels appear together or not at all; the tables last, as readers open them.
-  matgeom::OutputFolder folder(o.output_dir), panels(o.output_dir / "panels");
-  matgeom::AtomicFileSet files(o.output_dir / "metrics.json");
+  matbase::OutputFolder folder(o.output_dir), panels(o.output_dir / "panels");
+  matbase::AtomicFileSet files(o.output_dir / "metrics.json");
   for (const auto& [material, sample] : result.samples_by_material)
     matlearn::write_panel(o.output_dir / "panels" /
-                              (file_name(material == matlearn::kWholeObject ? "object" : matgeom::label_name(material)) +
+                              (file_name(material == matlearn::kWholeObject ? "object" : matmaterial::label_name(material)) +
                                ".png"),
                           sample, &files);
   matlearn::write_report(o.output_dir, tables, preamble, &files);

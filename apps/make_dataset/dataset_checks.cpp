@@ -11,14 +11,14 @@
 
 #include "common/output_folder.h"
 #include "dataset_folders.h"
+#include "matbase/image/image_header.h"
+#include "matbase/memory_limit.h"
 #include "matgeom/bounding_sphere.h"
-#include "matgeom/builtin_objects.h"
-#include "matgeom/image_header.h"
-#include "matgeom/material_classes.h"
-#include "matgeom/material_folder.h"
-#include "matgeom/memory_limit.h"
-#include "matgeom/mesh_io.h"
+#include "matgeom/builtin/builtin_objects.h"
+#include "matgeom/io/mesh_io.h"
 #include "matlearn/dataset_writer.h"
+#include "matmaterial/folder/material_folder.h"
+#include "matmaterial/material_classes.h"
 #include "object_renderer.h"
 
 namespace make_dataset {
@@ -91,7 +91,7 @@ void check_before_writing(const DatasetConfig& config) {
     throw InputError("output: " + *problem + "; give --output a folder you can write to");
   // A frame's buffers, and the maps the writer encodes from them (about as much again).
   const int w = config.render.width, h = config.render.height;
-  if (const auto problem = matgeom::memory_problem(
+  if (const auto problem = matbase::memory_problem(
           2.0 * matrender::FrameBuffers::bytes_for(w, h, dataset_aovs()),
           fmt::format("the buffers and maps of a {} x {} frame", w, h)))
     throw InputError(config.source + ": render.resolution: " + *problem);
@@ -124,18 +124,18 @@ void check_before_writing(const DatasetConfig& config) {
         if (!folder) continue;
         // Its maps are decoded when a variant first uses them, after records are written.
         for (const std::filesystem::directory_entry& file : std::filesystem::directory_iterator(*folder))
-          if (const std::optional<std::string> problem = matgeom::declared_size_problem(file.path()))
+          if (const std::optional<std::string> problem = matbase::declared_size_problem(file.path()))
             throw InputError(config.source + ": " + object_key(o) + ".materials." + slot.key + ": " +
                              file.path().string() + ": " + *problem);
-        if (matgeom::material_class_of_folder(candidate.name)) continue;
+        if (matmaterial::material_class_of_folder(candidate.name)) continue;
         // A folder whose name names no class may still say it in its metadata.
-        std::optional<matgeom::MaterialClass> found;
+        std::optional<matmaterial::MaterialClass> found;
         try {
-          found = matgeom::read_material_folder(*folder).material_class;
+          found = matmaterial::read_material_folder(*folder).material_class;
         } catch (const std::exception& e) {
           throw InputError(config.source + ": " + object_key(o) + ".materials." + slot.key + ": " + e.what());
         }
-        if (!found || *found == matgeom::MaterialClass::Background)
+        if (!found || *found == matmaterial::MaterialClass::Background)
           throw InputError(config.source + ": " + object_key(o) + ".materials." + slot.key + ": material folder \"" +
                            candidate.spelled +
                            "\" has no material class, so its pixels would be labelled background; name the folder "

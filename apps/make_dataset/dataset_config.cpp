@@ -13,9 +13,9 @@
 #include "common/number_options.h"
 #include "common/yaml_checks.h"
 #include "dataset_folders.h"
-#include "matgeom/builtin_objects.h"
-#include "matgeom/image_writing.h"
-#include "matgeom/input_file.h"
+#include "matbase/file/input_file.h"
+#include "matbase/image/image_writing.h"
+#include "matgeom/builtin/builtin_objects.h"
 #include "matlearn/dataset_writer.h"
 
 namespace make_dataset {
@@ -238,10 +238,10 @@ MaterialCandidate read_candidate(const Value& v, const fs::path& base) {
   if (v.is_text()) {
     candidate.spelled = v.text();
     try {
-      const matgeom::LibraryMaterialSpec spec = matgeom::parse_library_material(candidate.spelled);
+      const matmaterial::LibraryMaterialSpec spec = matmaterial::parse_library_material(candidate.spelled);
       candidate.source = spec;
-      const matgeom::LibraryStyleInfo& style = matgeom::resolved_style(spec);
-      candidate.name = fmt::format("{}_{}_{}", matgeom::material_class(spec.material_class).name, style.name, spec.seed);
+      const matmaterial::LibraryStyleInfo& style = matmaterial::resolved_style(spec);
+      candidate.name = fmt::format("{}_{}_{}", matmaterial::material_class(spec.material_class).name, style.name, spec.seed);
     } catch (const std::invalid_argument& e) {
       v.fail(e.what());
     }
@@ -328,7 +328,7 @@ ObjectConfig read_object(const Value& v, const Value& defaults, const fs::path& 
     const std::string file = v.child("mesh").text();
     const fs::path path = fs::path(file).is_absolute() ? fs::path(file) : base / file;
     try {
-      matgeom::require_input_file(path.string());
+      matbase::require_input_file(path.string());
     } catch (const std::exception& e) {
       v.child("mesh").fail(e.what());
     }
@@ -417,9 +417,9 @@ void read_render(const Value& v, RenderConfig& render) {
     const std::string text = exposure.text();
     if (text == "auto")
       render.exposure_stops = std::nullopt;
-    else if (app_support::number_problem(text, -matgeom::kMaxExposureStops, matgeom::kMaxExposureStops, false))
-      exposure.fail(fmt::format("expected auto or a number of stops from {} to {}, got {}", -matgeom::kMaxExposureStops,
-                                matgeom::kMaxExposureStops, text));
+    else if (app_support::number_problem(text, -matbase::kMaxExposureStops, matbase::kMaxExposureStops, false))
+      exposure.fail(fmt::format("expected auto or a number of stops from {} to {}, got {}", -matbase::kMaxExposureStops,
+                                matbase::kMaxExposureStops, text));
     else
       render.exposure_stops = *app_support::finite_number(text);
   }
@@ -439,7 +439,7 @@ void read_render(const Value& v, RenderConfig& render) {
   }
   if (v.child("material_resolution").present())
     render.material_resolution = static_cast<int>(
-        v.child("material_resolution").whole(matgeom::kMinLibraryResolution, matgeom::kMaxLibraryResolution));
+        v.child("material_resolution").whole(matmaterial::kMinLibraryResolution, matmaterial::kMaxLibraryResolution));
 }
 
 void read_splits(const Value& v, DatasetConfig& config) {
@@ -538,7 +538,7 @@ InputError yaml_error(const std::string& source, const YAML::Exception& e) {
 DatasetConfig load_config(const std::string& file, const std::vector<Override>& overrides) {
   if (file.empty()) return parse_config(embedded_default_yaml(), "the embedded default", fs::current_path(), overrides);
   try {
-    matgeom::require_input_file(file);
+    matbase::require_input_file(file);
   } catch (const std::exception& e) {
     throw InputError(e.what());
   }

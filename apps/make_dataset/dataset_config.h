@@ -14,9 +14,9 @@
 #include <variant>
 #include <vector>
 
-#include "matgeom/material_library.h"
 #include "matgeom/material_variants.h"
 #include "matlearn/dataset_splits.h"
+#include "matmaterial/library/material_library.h"
 #include "matrender/paper_setup.h"
 #include "matrender/scene_description.h"
 
@@ -27,7 +27,7 @@ using matrender::InputError;
 // A candidate material of a slot: a library material or a MatSynth-style material folder.
 struct MaterialCandidate {
   std::string spelled;  // as the configuration gives it ("wood/raw:3", "materials/oak_01")
-  std::variant<matgeom::LibraryMaterialSpec, std::string> source;  // the folder path, resolved
+  std::variant<matmaterial::LibraryMaterialSpec, std::string> source;  // the folder path, resolved
   std::string name;  // its name in the dataset: "wood_raw_3" (library), the folder's name
 };
 

@@ -7,7 +7,7 @@
 
 #include "common/number_options.h"
 #include "dataset_folders.h"
-#include "matgeom/atomic_file.h"
+#include "matbase/file/atomic_file.h"
 #include "matlearn/dataset_splits.h"
 #include "matlearn/dataset_writer.h"
 
@@ -103,8 +103,8 @@ std::vector<std::string> variant_material_names(const ObjectConfig& object, cons
 std::vector<matlearn::SplitFile> write_dataset_records(const DatasetConfig& config, const DatasetPlan& plan) {
   const fs::path root(config.output);
   fs::create_directories(root / kConfigFolder);
-  matgeom::remove_stale_temporaries(root / kSegmentationMapFile, false);
-  for (const char* split : kSplitFiles) matgeom::remove_stale_temporaries(root / kConfigFolder / split, false);
+  matbase::remove_stale_temporaries(root / kSegmentationMapFile, false);
+  for (const char* split : kSplitFiles) matbase::remove_stale_temporaries(root / kConfigFolder / split, false);
   matlearn::write_segmentation_map_yaml(root);
   std::vector<matlearn::SampleId> samples;
   std::vector<std::vector<std::string>> materials;

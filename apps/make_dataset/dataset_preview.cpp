@@ -12,11 +12,11 @@
 #include <nlohmann/json.hpp>
 
 #include "dataset_folders.h"
-#include "matgeom/atomic_file.h"
-#include "matgeom/image_writing.h"
-#include "matgeom/material_classes.h"
+#include "matbase/file/atomic_file.h"
+#include "matbase/image/image_writing.h"
 #include "matlearn/dataset_writer.h"
 #include "matlearn/decoded_image.h"
+#include "matmaterial/material_classes.h"
 
 namespace make_dataset {
 namespace {
@@ -150,7 +150,7 @@ std::vector<std::vector<Rgb>> draw_frame(const fs::path& variant, const std::str
       }
       if (!label) columns[8][p] = broken_tile(x, y);
       else {
-        const std::array<uint8_t, 3> colour = matgeom::label_colour(static_cast<int>(std::lround(label->at(x, y, 0) * 255.0f)));
+        const std::array<uint8_t, 3> colour = matmaterial::label_colour(static_cast<int>(std::lround(label->at(x, y, 0) * 255.0f)));
         columns[8][p] = object ? Rgb{colour[0] / 255.0f, colour[1] / 255.0f, colour[2] / 255.0f} : background;
       }
       if (!counts) columns[9][p] = background;
@@ -301,7 +301,7 @@ VariantSheet write_sheet(const fs::path& variant, const fs::path& out, const Pre
     }
   }
   // The maps are display-encoded or data already: written as they are drawn.
-  matgeom::write_data_png((out / sheet.file).string(), sheet_w, sheet_h, 3, pixels.data(), 255.0, 0.0, false);
+  matbase::write_data_png((out / sheet.file).string(), sheet_w, sheet_h, 3, pixels.data(), 255.0, 0.0, false);
   return sheet;
 }
 
@@ -398,7 +398,7 @@ PreviewSummary write_preview(const fs::path& root, const PreviewOptions& options
   const fs::path out = root / kPreviewFolder;
   // Every sheet and the page are made in a hidden folder beside preview/, which replaces it only
   // when all are written: after an error the old preview stays whole, with nothing new in it.
-  const fs::path staged = matgeom::temporary_path(out);
+  const fs::path staged = matbase::temporary_path(out);
   fs::remove_all(staged);
   PreviewSummary summary;
   try {
@@ -408,7 +408,7 @@ PreviewSummary write_preview(const fs::path& root, const PreviewOptions& options
       sheets.push_back(write_sheet(variant, staged, options));
       summary.damaged.insert(summary.damaged.end(), sheets.back().damaged.begin(), sheets.back().damaged.end());
     }
-    matgeom::write_file_atomically(staged / "index.html", index_html(root, sheets));
+    matbase::write_file_atomically(staged / "index.html", index_html(root, sheets));
     replace_folder(out, staged);
     summary.sheets = sheets.size();
   } catch (...) {

@@ -6,9 +6,9 @@
 #include <memory>
 
 #include "dataset_checks.h"
-#include "matgeom/atomic_file.h"
-#include "matgeom/cancellation.h"
-#include "matgeom/input_file.h"
+#include "matbase/cancellation.h"
+#include "matbase/file/atomic_file.h"
+#include "matbase/file/input_file.h"
 #include "matlearn/dataset_writer.h"
 #include "matlearn/decoded_image.h"
 #include "object_renderer.h"
@@ -37,19 +37,19 @@ void write_variant_records(const DatasetConfig& config, const DatasetPlan& plan,
   metadata.samples = config.render.samples;
   metadata.provenance_json = renderer.provenance_json(plan, variant);
   for (const char* record : {"metadata.json", "transforms.json", "material_segmentation_map.json"})
-    matgeom::remove_stale_temporaries(folder / record, false);
+    matbase::remove_stale_temporaries(folder / record, false);
   const fs::path metadata_file = folder / "metadata.json";
   const std::string text = matlearn::variant_metadata_text(metadata);
   std::string before;
   const bool existed = fs::exists(metadata_file);
   if (existed)
-    if (const std::optional<std::string> problem = matgeom::read_whole_file(metadata_file, before))
+    if (const std::optional<std::string> problem = matbase::read_whole_file(metadata_file, before))
       throw std::runtime_error(*problem);
   if (existed && before != text)
     throw InputError(metadata_file.string() +
                      ": this variant was made with other settings (its metadata differs from this run's); "
                      "render into another --output, or delete the folder to render it again");
-  matgeom::write_file_atomically(metadata_file, text);
+  matbase::write_file_atomically(metadata_file, text);
   std::vector<matlearn::FramePose> poses;
   for (size_t view = 0; view < plan.views; ++view)
     poses.push_back(renderer.view_pose(view, view_stem(plan, view)));
@@ -95,7 +95,7 @@ RunSummary run_dataset(const DatasetConfig& config, const DatasetPlan& plan, con
     if (frame.variant != current_variant) {
       try {
         renderer->select_variant(plan.variants[frame.object][frame.variant], options.cancel);
-      } catch (const matgeom::Cancelled&) {
+      } catch (const matbase::Cancelled&) {
         summary.cancelled = true;
         break;
       }
@@ -118,7 +118,7 @@ RunSummary run_dataset(const DatasetConfig& config, const DatasetPlan& plan, con
       // Only this shard writes the frame: whatever temporaries of it are there were left by a
       // run of this shard that was killed outright.
       for (const matlearn::DatasetMapInfo& info : matlearn::dataset_maps())
-        matgeom::remove_stale_temporaries(folder / info.folder / (stem + info.extension), true);
+        matbase::remove_stale_temporaries(folder / info.folder / (stem + info.extension), true);
       const Clock::time_point frame_start = Clock::now();
       matlearn::FrameMaps maps;
       if (!renderer->render(frame.view, frame_seed(config.seed, frame), options.threads, options.cancel, maps)) {

@@ -20,7 +20,7 @@
 #include "dataset_preview.h"
 #include "dataset_run.h"
 #include "verify_dataset.h"
-#include "matgeom/memory_limit.h"
+#include "matbase/memory_limit.h"
 #include "matlearn/dataset_writer.h"
 
 using make_dataset::InputError;
@@ -214,7 +214,7 @@ int make(const Options& options) {
   std::string folders;
   for (const matlearn::DatasetMapInfo& map : matlearn::dataset_maps()) folders += std::string(map.folder) + "/, ";
   fmt::print("wrote {} ({}): per object and variant {}transforms.json, metadata.json; config/ holds the split files\n",
-             config.output, matgeom::byte_size_text(static_cast<double>(make_dataset::folder_bytes(config.output))),
+             config.output, matbase::byte_size_text(static_cast<double>(make_dataset::folder_bytes(config.output))),
              folders);
   // Written, as rendered, but a frame without the object trains to a loss of 0: not a success.
   if (!summary.empty_frames.empty())

@@ -33,7 +33,7 @@ class ObjectRenderer {
 
   // Puts the object in the variant's materials (loading those not used before); throws
   // InputError for a material that cannot be loaded or has no material class, and
-  // matgeom::Cancelled soon after `cancel` (when given) is set.
+  // matbase::Cancelled soon after `cancel` (when given) is set.
   void select_variant(const matgeom::MaterialVariant& variant, const std::atomic<bool>* cancel = nullptr);
 
   // The materials of the selected variant, slot by slot.

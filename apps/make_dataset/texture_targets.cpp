@@ -4,25 +4,25 @@
 #include <set>
 
 #include "dataset_folders.h"
-#include "matgeom/material_library.h"
-#include "matgeom/srgb.h"
-#include "matgeom/unorm.h"
+#include "matbase/image/srgb.h"
+#include "matbase/image/unorm.h"
+#include "matmaterial/library/material_library.h"
 
 namespace make_dataset {
 namespace {
 
-using matgeom::MaterialParameter;
+using matmaterial::MaterialParameter;
 constexpr int kSwatch = 64;
 
 // The parameter's value at every texel, three channels: an image's texels times the factor, or
 // the constant; colours are sRGB-encoded, scalars linear.
-matgeom::ImagePixels reference(const matgeom::FolderMaterial& folder, MaterialParameter parameter, bool colour) {
-  const matgeom::MaterialInput& input = folder.material[parameter];
-  const matgeom::ImagePixels* image =
+matbase::ImagePixels reference(const matmaterial::FolderMaterial& folder, MaterialParameter parameter, bool colour) {
+  const matmaterial::MaterialInput& input = folder.material[parameter];
+  const matbase::ImagePixels* image =
       input.image >= 0 && static_cast<size_t>(input.image) < folder.images.size() ? &folder.images[static_cast<size_t>(input.image)]
                                                                                   : nullptr;
-  matgeom::ImagePixels out;
-  out.name = matgeom::material_parameter(parameter).name;
+  matbase::ImagePixels out;
+  out.name = matmaterial::material_parameter(parameter).name;
   out.width = image ? image->width : kSwatch;
   out.height = image ? image->height : kSwatch;
   out.channels = 3;
@@ -33,10 +33,10 @@ matgeom::ImagePixels reference(const matgeom::FolderMaterial& folder, MaterialPa
       const double factor = input.value[colour ? c : 0];
       double linear = factor;
       if (image) {
-        const double stored = matgeom::texel_channel(*image, t, colour ? c : input.channel) / 255.0;
-        linear = factor * (colour ? matgeom::srgb_to_linear(stored) : stored);
+        const double stored = matbase::texel_channel(*image, t, colour ? c : input.channel) / 255.0;
+        linear = factor * (colour ? matbase::srgb_to_linear(stored) : stored);
       }
-      out.data[3 * t + static_cast<size_t>(c)] = matgeom::unorm8(colour ? matgeom::linear_to_srgb(linear) : linear);
+      out.data[3 * t + static_cast<size_t>(c)] = matbase::unorm8(colour ? matbase::linear_to_srgb(linear) : linear);
     }
   return out;
 }
@@ -47,17 +47,17 @@ std::filesystem::path texture_target_root(const DatasetConfig& config) {
   return std::filesystem::path(config.output) / kPaperTexturesFolder;
 }
 
-matlearn::MaterialReferences material_references(const matgeom::FolderMaterial& folder) {
+matlearn::MaterialReferences material_references(const matmaterial::FolderMaterial& folder) {
   matlearn::MaterialReferences references;
   references.base_color = reference(folder, MaterialParameter::BaseColor, true);
   references.roughness = reference(folder, MaterialParameter::Roughness, false);
   references.metallic = reference(folder, MaterialParameter::Metallic, false);
   const int normal = folder.material.normal_image;
   if (normal >= 0 && static_cast<size_t>(normal) < folder.images.size()) {
-    const matgeom::ImagePixels& image = folder.images[static_cast<size_t>(normal)];
-    matgeom::ImagePixels map{"normal", image.width, image.height, 3, {}};
+    const matbase::ImagePixels& image = folder.images[static_cast<size_t>(normal)];
+    matbase::ImagePixels map{"normal", image.width, image.height, 3, {}};
     for (size_t t = 0; t < static_cast<size_t>(image.width) * static_cast<size_t>(image.height); ++t)
-      for (int c = 0; c < 3; ++c) map.data.push_back(matgeom::texel_channel(image, t, c));
+      for (int c = 0; c < 3; ++c) map.data.push_back(matbase::texel_channel(image, t, c));
     references.normal = std::move(map);
   }
   return references;
@@ -69,12 +69,12 @@ void write_material_references(const DatasetConfig& config) {
     for (const SlotConfig& slot : config.objects[o].slots)
       for (const MaterialCandidate& candidate : slot.candidates) {
         if (!written.insert(candidate.name).second) continue;
-        matgeom::FolderMaterial material;
+        matmaterial::FolderMaterial material;
         try {
-          if (const auto* spec = std::get_if<matgeom::LibraryMaterialSpec>(&candidate.source))
-            material = matgeom::generate_library_material(*spec, {config.render.material_resolution, 0});
+          if (const auto* spec = std::get_if<matmaterial::LibraryMaterialSpec>(&candidate.source))
+            material = matmaterial::generate_library_material(*spec, {config.render.material_resolution, 0});
           else
-            material = matgeom::read_material_folder(std::get<std::string>(candidate.source));
+            material = matmaterial::read_material_folder(std::get<std::string>(candidate.source));
         } catch (const std::exception& e) {
           throw InputError(config.source + ": objects." + std::to_string(o) + ".materials." + slot.key + ": " + e.what());
         }

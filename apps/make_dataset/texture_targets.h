@@ -6,8 +6,8 @@
 #include <filesystem>
 
 #include "dataset_config.h"
-#include "matgeom/material_folder.h"
 #include "matlearn/texture_target_writer.h"
+#include "matmaterial/folder/material_folder.h"
 
 namespace make_dataset {
 
@@ -15,7 +15,7 @@ std::filesystem::path texture_target_root(const DatasetConfig& config);
 
 // A material's flat maps as the paper stores them: each parameter's image times its factor, or a
 // 64 x 64 swatch of its constant.
-matlearn::MaterialReferences material_references(const matgeom::FolderMaterial& material);
+matlearn::MaterialReferences material_references(const matmaterial::FolderMaterial& material);
 
 // Writes the reference maps of every candidate material of the configuration (generating or
 // reading each once). Throws InputError for a folder that cannot be read.

@@ -16,11 +16,11 @@
 #include "common/number_options.h"
 #include "dataset_config.h"
 #include "dataset_folders.h"
-#include "matgeom/image_header.h"
-#include "matgeom/material_classes.h"
+#include "matbase/image/image_header.h"
 #include "matlearn/dataset_index.h"
-#include "matlearn/decoded_image.h"
 #include "matlearn/dataset_writer.h"
+#include "matlearn/decoded_image.h"
+#include "matmaterial/material_classes.h"
 
 namespace make_dataset {
 namespace {
@@ -62,10 +62,10 @@ std::set<int> used_labels(const fs::path& folder, const nlohmann::json& metadata
     }
     const int id = material["label_id"].get<int>();
     const auto family = material.find("material_family");
-    if (family != material.end() && family->is_string() && family->get<std::string>() != matgeom::label_name(id))
+    if (family != material.end() && family->is_string() && family->get<std::string>() != matmaterial::label_name(id))
       problems.push_back(fmt::format("{}: used_materials.{} is of family \"{}\" but has label {} ({})",
                                      (folder / "metadata.json").string(), slot, family->get<std::string>(), id,
-                                     matgeom::label_name(id)));
+                                     matmaterial::label_name(id)));
     labels.insert(id);
   }
   return labels;
@@ -74,7 +74,7 @@ std::set<int> used_labels(const fs::path& folder, const nlohmann::json& metadata
 // The class table's names by label id, which the labels are read with.
 std::map<int, std::string> class_table() {
   std::map<int, std::string> table;
-  for (const matgeom::MaterialClassInfo& info : matgeom::kMaterialClasses) table[matgeom::label_id(info.id)] = info.name;
+  for (const matmaterial::MaterialClassInfo& info : matmaterial::kMaterialClasses) table[matmaterial::label_id(info.id)] = info.name;
   return table;
 }
 
@@ -261,7 +261,7 @@ void verify_sample_counts(const fs::path& file, const matlearn::Decoded& counts,
 // What is wrong with the size a map's header declares, against transforms.json's and what the
 // file can hold; nothing when it matches or the header cannot be read (decoding then says why).
 std::optional<std::string> declared_size_mismatch(const fs::path& file, int width, int height) {
-  if (const std::optional<std::string> problem = matgeom::declared_size_problem(file))
+  if (const std::optional<std::string> problem = matbase::declared_size_problem(file))
     return file.string() + ": " + *problem;
   const auto input = OIIO::ImageInput::open(file.string());
   if (!input) {
@@ -337,11 +337,11 @@ void verify_frame(const fs::path& folder, const std::string& stem, const Variant
                                              "looking away?)");
   for (const int id : found) {
     if (id == 0) continue;
-    if (!matgeom::material_class_of_label(id))
+    if (!matmaterial::material_class_of_label(id))
       problems.push_back(fmt::format("{}: label {} is no class of the table", label_file.string(), id));
     else if (!labels.count(id))
       problems.push_back(fmt::format("{}: label {} ({}) is not among the variant's used_materials", label_file.string(),
-                                     id, matgeom::label_name(id)));
+                                     id, matmaterial::label_name(id)));
   }
   if (mask_disagreements > 0)
     problems.push_back(fmt::format("{}: at {} pixels the label's object mask differs from the coverage in depth/ or "

@@ -14,12 +14,12 @@
 #include "common/exit_codes.h"
 #include "common/interrupt.h"
 #include "common/output_folder.h"
-#include "matgeom/builtin_objects.h"
-#include "matgeom/cancellation.h"
-#include "matgeom/material_classes.h"
-#include "matgeom/material_library.h"
-#include "matgeom/material_parameters.h"
-#include "matgeom/memory_limit.h"
+#include "matbase/cancellation.h"
+#include "matbase/memory_limit.h"
+#include "matgeom/builtin/builtin_objects.h"
+#include "matmaterial/library/material_library.h"
+#include "matmaterial/material_classes.h"
+#include "matmaterial/material_parameters.h"
 #include "matrender/image_io.h"
 #include "matrender/render.h"
 #include "matrender/texture_cache.h"
@@ -75,8 +75,8 @@ void report_textures() {
   const matrender::TextureCacheStats cache = matrender::texture_cache_stats();
   if (cache.peak_bytes == 0) return;
   fmt::print("textures: at most {} of texels in memory (limit {}), {} mip levels dropped, {} made again\n",
-             matgeom::byte_size_text(static_cast<double>(cache.peak_bytes)),
-             matgeom::byte_size_text(static_cast<double>(cache.limit_bytes)), cache.evictions, cache.reloads);
+             matbase::byte_size_text(static_cast<double>(cache.peak_bytes)),
+             matbase::byte_size_text(static_cast<double>(cache.limit_bytes)), cache.evictions, cache.reloads);
 }
 
 int render_and_write(const Options& options) {
@@ -88,7 +88,7 @@ int render_and_write(const Options& options) {
   BuiltScene built;
   try {
     built = matrender::build_scene(description, cancel);
-  } catch (const matgeom::Cancelled&) {
+  } catch (const matbase::Cancelled&) {
     return report_error("interrupted; nothing written", app_support::interrupted_exit_code());
   }
 
@@ -142,12 +142,12 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (options.list_parameters) {
-      fmt::print("{}", matgeom::material_parameters_markdown());
+      fmt::print("{}", matmaterial::material_parameters_markdown());
       return 0;
     }
     if (options.list_materials) {
-      fmt::print("{}\n{}\n{}", matgeom::material_classes_markdown(), matgeom::library_styles_markdown(),
-                 matgeom::library_ranges_markdown());
+      fmt::print("{}\n{}\n{}", matmaterial::material_classes_markdown(), matmaterial::library_styles_markdown(),
+                 matmaterial::library_ranges_markdown());
       return 0;
     }
     return render_and_write(options);

@@ -11,7 +11,7 @@
 
 #include "common/number_options.h"
 #include "common/thread_count.h"
-#include "matgeom/builtin_objects.h"
+#include "matgeom/builtin/builtin_objects.h"
 #include "matrender/camera.h"
 #include "matrender/image_io.h"
 #include "matrender/paper_setup.h"
@@ -126,7 +126,7 @@ void add_scene_options(CLI::App& app, Options& o) {
              "--material",
              [&o](const std::string& text) {
                try {
-                 o.material = matgeom::parse_library_material(text);
+                 o.material = matmaterial::parse_library_material(text);
                } catch (const std::invalid_argument& e) {
                  throw CLI::ValidationError("--material", e.what());
                }
@@ -137,7 +137,7 @@ void add_scene_options(CLI::App& app, Options& o) {
           ->group(group);
   app.add_option("--material-resolution", o.material_resolution,
                  "texels along each side of the --material's maps (the scene file's \"resolution\")")
-      ->check(CLI::Range(matgeom::kMinLibraryResolution, matgeom::kMaxLibraryResolution))
+      ->check(CLI::Range(matmaterial::kMinLibraryResolution, matmaterial::kMaxLibraryResolution))
       ->default_val(o.material_resolution)
       ->type_name("N")
       ->group(group);
@@ -288,8 +288,8 @@ void add_render_options(CLI::App& app, Options& o) {
   app.add_option_function<double>(
          "--exposure",
          [&o](const double& stops) {
-           require(std::abs(stops) <= matgeom::kMaxExposureStops, "--exposure",
-                   fmt::format("a number of stops in [{}, {}]", -matgeom::kMaxExposureStops, matgeom::kMaxExposureStops));
+           require(std::abs(stops) <= matbase::kMaxExposureStops, "--exposure",
+                   fmt::format("a number of stops in [{}, {}]", -matbase::kMaxExposureStops, matbase::kMaxExposureStops));
            o.exposure = stops;
          },
          "display PNG exposure in stops")

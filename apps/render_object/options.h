@@ -26,7 +26,7 @@ struct Options {
   bool list_parameters = false;
   bool list_materials = false;
   std::optional<std::string> material_dir;  // every object in this material folder
-  std::optional<matgeom::LibraryMaterialSpec> material;  // every object in this library material
+  std::optional<matmaterial::LibraryMaterialSpec> material;  // every object in this library material
   int material_resolution = matrender::LibraryMaterialRequest::kDefaultLibraryResolution;
   std::optional<std::string> environment;  // replaces the scene's background
   std::optional<double> environment_strength;

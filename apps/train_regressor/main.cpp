@@ -13,7 +13,7 @@
 #include "common/progress_bar.h"
 #include "common/thread_count.h"
 #include "example_dataset.h"
-#include "matgeom/atomic_file.h"
+#include "matbase/file/atomic_file.h"
 #include "matlearn/dataset_error.h"
 #include "matlearn/models/regressor.h"
 #include "matlearn/training/trainer.h"
@@ -107,7 +107,7 @@ int train(Options options, bool example) {
     fmt::print("resuming after epoch {} from {}\n", trainer.epochs_done(), from.string());
   }
   std::filesystem::create_directories(config.output_dir);
-  matgeom::write_file_atomically(config.output_dir / "config.yaml", settings_yaml(settings));
+  matbase::write_file_atomically(config.output_dir / "config.yaml", settings_yaml(settings));
   fmt::print("training {} ({} parameters) on {} samples, validating on {}; {} epochs of batch {} at {} px\n",
              config.network, matlearn::parameter_count(trainer.model()), config.train_samples.size(),
              config.validation_samples.size(), config.epochs, config.batch_size, config.image_size);

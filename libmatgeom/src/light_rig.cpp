@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "matbase/image/srgb.h"
 #include "matgeom/camera_grid.h"
-#include "matgeom/srgb.h"
 
 namespace matgeom {
 namespace {
@@ -97,7 +97,7 @@ double area_lamp_irradiance(const RigLight& light, const glm::dvec3& point, cons
   const std::array<glm::dvec3, 4> corners{to_lamp - half_x - half_y, to_lamp + half_x - half_y,
                                           to_lamp + half_x + half_y, to_lamp - half_x + half_y};
   const double radiance =
-      light.power * rec709_luminance(light.color) / (4.0 * light.size_x * light.size_y);
+      light.power * matbase::rec709_luminance(light.color) / (4.0 * light.size_x * light.size_y);
   return radiance * polygon_irradiance_per_radiance(corners, normal);
 }
 
@@ -126,7 +126,7 @@ double spot_lamp_irradiance(const RigLight& light, const glm::dvec3& point, cons
     const double s = into_cone / smooth_width;
     falloff *= s * s * (3.0 - 2.0 * s);
   }
-  const double intensity = light.power * rec709_luminance(light.color) / (4.0 * kPi);
+  const double intensity = light.power * matbase::rec709_luminance(light.color) / (4.0 * kPi);
   return intensity * falloff * cos_surface / distance_squared;
 }
 

@@ -9,23 +9,23 @@
 namespace matrender {
 namespace {
 
-Wrap to_wrap(matgeom::TextureWrap wrap) {
-  return wrap == matgeom::TextureWrap::Clamp ? Wrap::Clamp : Wrap::Repeat;
+Wrap to_wrap(matmaterial::TextureWrap wrap) {
+  return wrap == matmaterial::TextureWrap::Clamp ? Wrap::Clamp : Wrap::Repeat;
 }
 
 // The asset's images as textures, each decoded once per colour space and wrap it is used with.
 class AssetTextures {
  public:
-  explicit AssetTextures(const std::vector<matgeom::ImagePixels>& images) : images_(images) {}
+  explicit AssetTextures(const std::vector<matbase::ImagePixels>& images) : images_(images) {}
 
-  TexturePtr texture(int index, ColorSpace space, matgeom::TextureWrap wrap, const std::string& material) {
+  TexturePtr texture(int index, ColorSpace space, matmaterial::TextureWrap wrap, const std::string& material) {
     if (index < 0) return nullptr;
     if (static_cast<size_t>(index) >= images_.size())
       throw std::invalid_argument("material " + material + ": image index " + std::to_string(index) +
                                   " out of range");
     TexturePtr& decoded = decoded_[std::make_tuple(index, space, wrap)];
     if (!decoded) {
-      const matgeom::ImagePixels& image = images_[static_cast<size_t>(index)];
+      const matbase::ImagePixels& image = images_[static_cast<size_t>(index)];
       decoded = Texture::from_pixels8(image.width, image.height, image.channels, image.data.data(), space,
                                       to_wrap(wrap), image.name);
     }
@@ -33,35 +33,35 @@ class AssetTextures {
   }
 
  private:
-  const std::vector<matgeom::ImagePixels>& images_;
-  std::map<std::tuple<int, ColorSpace, matgeom::TextureWrap>, TexturePtr> decoded_;
+  const std::vector<matbase::ImagePixels>& images_;
+  std::map<std::tuple<int, ColorSpace, matmaterial::TextureWrap>, TexturePtr> decoded_;
 };
 
 // Every input of the parameter table carries over: its constant, and its image decoded in the
 // table's colour space; the normal map is Non-Color.
-Material material_with_textures(const matgeom::MaterialDesc& desc, AssetTextures& textures) {
+Material material_with_textures(const matmaterial::MaterialDesc& desc, AssetTextures& textures) {
   Material m;
   m.name = desc.name;
   m.label_id = desc.label_id;
-  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) {
-    const matgeom::MaterialInput& input = desc[info.id];
+  for (const matmaterial::MaterialParameterInfo& info : matmaterial::kMaterialParameters) {
+    const matmaterial::MaterialInput& input = desc[info.id];
     ParameterValue& value = m[info.id];
     value.value = glm::vec3(input.value);
     value.texture = textures.texture(input.image, info.texture_space, desc.wrap, desc.name);
     value.channel = input.channel;
-    value.uv_transform = matgeom::uv_affine(input.transform);
+    value.uv_transform = matmaterial::uv_affine(input.transform);
     if (value.texture && !info.texturable)
       throw std::invalid_argument("material " + desc.name + ": " + info.name + " cannot come from an image");
   }
   m.normal_map = textures.texture(desc.normal_image, ColorSpace::NonColor, desc.wrap, desc.name);
   m.normal_strength = static_cast<float>(desc.normal_strength);
-  m.normal_map_uv_transform = matgeom::uv_affine(desc.normal_transform);
+  m.normal_map_uv_transform = matmaterial::uv_affine(desc.normal_transform);
   return m;
 }
 
 }  // namespace
 
-Material material_from_desc(const matgeom::MaterialDesc& desc, const std::vector<matgeom::ImagePixels>& images) {
+Material material_from_desc(const matmaterial::MaterialDesc& desc, const std::vector<matbase::ImagePixels>& images) {
   AssetTextures textures(images);
   return material_with_textures(desc, textures);
 }

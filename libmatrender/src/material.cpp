@@ -3,7 +3,7 @@
 namespace matrender {
 
 Material::Material() {
-  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) {
+  for (const matmaterial::MaterialParameterInfo& info : matmaterial::kMaterialParameters) {
     ParameterValue& p = (*this)[info.id];
     p.value = glm::vec3(static_cast<float>(info.default_value));
     p.channel = info.packed_channel;
@@ -26,7 +26,7 @@ bool Material::textured() const {
 namespace {
 
 // Looked up at transform(k uv): the linear part, and with it the footprint's stretch, scales by k.
-matgeom::UvAffine repeated(matgeom::UvAffine transform, float repeats) {
+matmaterial::UvAffine repeated(matmaterial::UvAffine transform, float repeats) {
   transform.linear *= repeats;
   transform.stretch *= repeats;
   return transform;

@@ -38,12 +38,12 @@ json column_major(const glm::dmat4& m) {
 // so that the script sets exactly what libmatrender shades with.
 json node_inputs(const matrender::Material& m) {
   json nodes = json::object();
-  for (const matgeom::BlenderNode node : {matgeom::BlenderNode::PrincipledBsdf, matgeom::BlenderNode::VelvetBsdf})
-    nodes[matgeom::blender_node_name(node)] = json::object();
-  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) {
+  for (const matmaterial::BlenderNode node : {matmaterial::BlenderNode::PrincipledBsdf, matmaterial::BlenderNode::VelvetBsdf})
+    nodes[matmaterial::blender_node_name(node)] = json::object();
+  for (const matmaterial::MaterialParameterInfo& info : matmaterial::kMaterialParameters) {
     const glm::vec3 value = m.parameters[static_cast<size_t>(info.id)].value;
-    nodes[matgeom::blender_node_name(info.node)][info.blender_input] =
-        info.kind == matgeom::ParameterKind::Color ? json{value.r, value.g, value.b} : json(value.x);
+    nodes[matmaterial::blender_node_name(info.node)][info.blender_input] =
+        info.kind == matmaterial::ParameterKind::Color ? json{value.r, value.g, value.b} : json(value.x);
   }
   return nodes;
 }
@@ -85,17 +85,17 @@ json describe_mesh_object(const CyclesScene& scene) {
   for (const glm::uvec3& t : scene.mesh.triangles) triangles.push_back({t.x, t.y, t.z});
   const matrender::Material& m = scene.material;
   // One texture is passed: a base colour image file under a white factor, on the mesh's UVs.
-  const matrender::ParameterValue& base = m[matgeom::MaterialParameter::BaseColor];
+  const matrender::ParameterValue& base = m[matmaterial::MaterialParameter::BaseColor];
   json base_color_image = nullptr;
   if (base.texture) {
-    if (base.value != glm::vec3(1.0f) || !(base.uv_transform == matgeom::UvAffine{}) ||
+    if (base.value != glm::vec3(1.0f) || !(base.uv_transform == matmaterial::UvAffine{}) ||
         !std::filesystem::exists(base.texture->name()) || scene.mesh.uvs.size() != scene.mesh.positions.size())
       throw std::invalid_argument("render_with_cycles: a base colour texture must be an image file under a white "
                                   "factor, untransformed, on a mesh with one UV per vertex");
     base_color_image = base.texture->name();
   }
   matrender::Material untextured = m;
-  untextured[matgeom::MaterialParameter::BaseColor].texture = nullptr;
+  untextured[matmaterial::MaterialParameter::BaseColor].texture = nullptr;
   if (untextured.textured() || m.normal_map)
     throw std::invalid_argument("render_with_cycles: textures other than the base colour are not passed to Blender");
   json uvs = json::array();

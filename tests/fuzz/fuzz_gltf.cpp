@@ -1,5 +1,5 @@
 #include "fuzz_file.h"
-#include "matgeom/gltf_reader.h"
+#include "matgeom/io/gltf/gltf_reader.h"
 
 // ".gltf": the reader takes the GLB container by its magic and JSON otherwise.
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

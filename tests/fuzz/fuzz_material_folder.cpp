@@ -10,16 +10,16 @@
 #include <stdexcept>
 #include <string>
 
-#include "matgeom/material_folder.h"
-#include "matgeom/png_encoding.h"
+#include "matbase/image/png_encoding.h"
+#include "matmaterial/folder/material_folder.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static const std::filesystem::path folder =
       std::filesystem::temp_directory_path() / ("matpredict_fuzz_folder_" + std::to_string(::getpid())) / "wood_1";
   static const bool made = [] {
     std::filesystem::create_directories(folder);
-    const matgeom::ImagePixels base{"base", 2, 2, 3, {10, 20, 30, 40, 50, 60, 70, 80, 90, 100, 110, 120}};
-    std::ofstream(folder / "basecolor.png", std::ios::binary) << matgeom::encode_png(base, "basecolor.png");
+    const matbase::ImagePixels base{"base", 2, 2, 3, {10, 20, 30, 40, 50, 60, 70, 80, 90, 100, 110, 120}};
+    std::ofstream(folder / "basecolor.png", std::ios::binary) << matbase::encode_png(base, "basecolor.png");
     return true;
   }();
   (void)made;
@@ -30,7 +30,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   std::ofstream(folder / name, std::ios::binary).write(reinterpret_cast<const char*>(data + 1),
                                                        static_cast<std::streamsize>(size - 1));
   try {
-    matgeom::read_material_folder(folder.string());
+    matmaterial::read_material_folder(folder.string());
   } catch (const std::runtime_error&) {
     // a clear rejection: the expected outcome for most inputs
   }

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "fuzz_file.h"
-#include "matgeom/obj_io.h"
-#include "matgeom/png_encoding.h"
+#include "matbase/image/png_encoding.h"
+#include "matgeom/io/obj/obj_io.h"
 
 namespace {
 
@@ -18,9 +18,9 @@ std::string obj_naming(const std::string& mtl) {
   const std::filesystem::path obj = std::filesystem::path(library).replace_extension(".obj");
   std::ofstream(obj) << "mtllib " << library.filename().string()
                      << "\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl m\nf 1/1 2/2 3/3\n";
-  const matgeom::ImagePixels texture{"texture", 2, 2, 3, {10, 20, 30, 40, 50, 60, 70, 80, 90, 100, 110, 120}};
+  const matbase::ImagePixels texture{"texture", 2, 2, 3, {10, 20, 30, 40, 50, 60, 70, 80, 90, 100, 110, 120}};
   std::ofstream(library.parent_path() / "matpredict_fuzz_texture.png", std::ios::binary)
-      << matgeom::encode_png(texture, "matpredict_fuzz_texture.png");
+      << matbase::encode_png(texture, "matpredict_fuzz_texture.png");
   return obj.string();
 }
 

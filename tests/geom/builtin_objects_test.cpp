@@ -1,5 +1,5 @@
-#include "matgeom/builtin_objects.h"
-#include "matgeom/material_classes.h"
+#include "matgeom/builtin/builtin_objects.h"
+#include "matmaterial/material_classes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +12,7 @@
 
 using matgeom::ObjectAsset;
 using matgeom::TriangleMesh;
-using P = matgeom::MaterialParameter;
+using P = matmaterial::MaterialParameter;
 
 namespace {
 
@@ -110,7 +110,7 @@ TEST_CASE("every built-in object is closed, outward, UV-mapped and of its real s
     CHECK(asset.materials[k].name == mesh.part_names[k]);
     // A class of the table, never the background.
     CHECK(asset.materials[k].label_id >= 1);
-    CHECK(matgeom::material_class_of_label(asset.materials[k].label_id).has_value());
+    CHECK(matmaterial::material_class_of_label(asset.materials[k].label_id).has_value());
     const bool used = mesh.triangle_parts.empty() ? k == 0
                                                   : std::count(mesh.triangle_parts.begin(), mesh.triangle_parts.end(),
                                                                static_cast<uint32_t>(k)) > 0;
@@ -244,24 +244,24 @@ TEST_CASE("the vase is a closed, outward-facing, textured surface", "[geom]") {
     CHECK(band_triangles > 0);
     CHECK(band_triangles < static_cast<long>(mesh.triangle_count() / 4));
     REQUIRE(asset.materials.size() == 2);
-    const matgeom::MaterialDesc& body = asset.materials[0];
+    const matmaterial::MaterialDesc& body = asset.materials[0];
     CHECK(body.scalar(P::Metallic) == 0.0);
     CHECK(body.normal_strength == 1.0);
     REQUIRE(asset.images.size() == 3);
-    for (const matgeom::ImagePixels& image : asset.images) {
+    for (const matbase::ImagePixels& image : asset.images) {
       CHECK(image.width == 256);
       CHECK(image.height == 256);
       CHECK(image.channels == 3);
       CHECK(image.data.size() == 256u * 256u * 3u);
     }
-    const matgeom::ImagePixels& metallic_roughness =
+    const matbase::ImagePixels& metallic_roughness =
         asset.images.at(static_cast<size_t>(body[P::Roughness].image));
     for (size_t i = 0; i < metallic_roughness.data.size(); i += 3) {
       CHECK(metallic_roughness.data[i + 1] >= 51);   // roughness 0.2
       CHECK(metallic_roughness.data[i + 1] <= 128);  // roughness 0.5
       CHECK(metallic_roughness.data[i + 2] == 0);    // metallic
     }
-    const matgeom::ImagePixels& normal_map =
+    const matbase::ImagePixels& normal_map =
         asset.images.at(static_cast<size_t>(body.normal_image));
     double mean_x = 0.0, mean_y = 0.0;
     for (size_t i = 0; i < normal_map.data.size(); i += 3) {

@@ -1,11 +1,11 @@
-#include "matgeom/conformal_flattening.h"
+#include "matgeom/uv/conformal_flattening.h"
 
 #include <cmath>
 #include <stdexcept>
 
 #include <catch2/catch.hpp>
 
-#include "matgeom/uv_distortion.h"
+#include "matgeom/uv/uv_distortion.h"
 
 // LSCM on surfaces whose best flattening is known: developable patches (a cylinder or cone cut
 // open unrolls isometrically, so a conformal map must have no distortion at all) and a

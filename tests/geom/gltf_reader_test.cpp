@@ -1,4 +1,4 @@
-#include "matgeom/gltf_reader.h"
+#include "matgeom/io/gltf/gltf_reader.h"
 
 #include <unistd.h>
 
@@ -16,15 +16,15 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
-#include "temp_dir.h"
-#include "test_files.h"
+#include "support/temp_dir.h"
+#include "support/test_files.h"
 
 // These tests write real glTF files byte by byte (JSON, binary buffers, PNG images, the GLB
 // container) and check what the reader makes of them against values computed here.
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
-using P = matgeom::MaterialParameter;
+using P = matmaterial::MaterialParameter;
 
 namespace {
 
@@ -342,7 +342,7 @@ TEST_CASE("glTF two-material quad: transforms, axes, uvs, parts, materials, imag
   }
 
   REQUIRE(asset.materials.size() == 2);
-  const matgeom::MaterialDesc& red = asset.materials[0];
+  const matmaterial::MaterialDesc& red = asset.materials[0];
   CHECK(red.name == "red_metal");
   CHECK(red.color(P::BaseColor).r == Approx(0.8));
   CHECK(red.color(P::BaseColor).g == Approx(0.1));
@@ -351,7 +351,7 @@ TEST_CASE("glTF two-material quad: transforms, axes, uvs, parts, materials, imag
   CHECK(red.scalar(P::Roughness) == Approx(0.3));
   CHECK(red[P::Roughness].image == -1);
   CHECK(red.normal_strength == Approx(0.7));
-  CHECK(red.wrap == matgeom::TextureWrap::Clamp);
+  CHECK(red.wrap == matmaterial::TextureWrap::Clamp);
   // Without the clearcoat extension Blender's defaults stay: no coat, coat roughness 0.03.
   CHECK(red.scalar(P::Clearcoat) == 0.0);
   CHECK(red.scalar(P::ClearcoatRoughness) == Approx(0.03));
@@ -367,14 +367,14 @@ TEST_CASE("glTF two-material quad: transforms, axes, uvs, parts, materials, imag
   // Without the sheen extension no velvet is added.
   CHECK(red.color(P::VelvetColor) == glm::dvec3(0.0));
   CHECK(red[P::VelvetColor].image == -1);
-  const matgeom::MaterialDesc& blue = asset.materials[1];
+  const matmaterial::MaterialDesc& blue = asset.materials[1];
   CHECK(blue.name == "blue");
   CHECK(blue.color(P::BaseColor).b == Approx(0.9));
   CHECK(blue.scalar(P::Metallic) == 0.0);
   CHECK(blue.scalar(P::Roughness) == Approx(0.6));
   CHECK(blue[P::BaseColor].image == -1);
   CHECK(blue.normal_image == -1);
-  CHECK(blue.wrap == matgeom::TextureWrap::Repeat);
+  CHECK(blue.wrap == matmaterial::TextureWrap::Repeat);
   // Blender's importer: Clearcoat = factor x texture R, Clearcoat Roughness = its factor, 0 when absent.
   CHECK(blue.scalar(P::Clearcoat) == Approx(0.6));
   CHECK(blue[P::Clearcoat].channel == 0);
@@ -399,12 +399,12 @@ TEST_CASE("glTF two-material quad: transforms, axes, uvs, parts, materials, imag
 
   REQUIRE(asset.images.size() == 2);
   REQUIRE(red[P::BaseColor].image >= 0);
-  const matgeom::ImagePixels& base = asset.images[static_cast<size_t>(red[P::BaseColor].image)];
+  const matbase::ImagePixels& base = asset.images[static_cast<size_t>(red[P::BaseColor].image)];
   CHECK(base.width == 2);
   CHECK(base.height == 2);
   CHECK(base.channels == 3);
   CHECK(base.data == std::vector<uint8_t>(kBaseColorPixels.begin(), kBaseColorPixels.end()));
-  const matgeom::ImagePixels& wide = asset.images[static_cast<size_t>(red.normal_image)];
+  const matbase::ImagePixels& wide = asset.images[static_cast<size_t>(red.normal_image)];
   CHECK(wide.width == 2);
   CHECK(wide.height == 1);
   CHECK(wide.data == std::vector<uint8_t>{0, 255, 128, 4, 1, 254});

@@ -1,4 +1,4 @@
-#include "matgeom/gltf_writer.h"
+#include "matgeom/io/gltf/gltf_writer.h"
 
 #include <filesystem>
 #include <fstream>
@@ -8,16 +8,16 @@
 
 #include <catch2/catch.hpp>
 
-#include "matgeom/gltf_reader.h"
+#include "matgeom/io/gltf/gltf_reader.h"
 #include "matgeom/mesh_parts.h"
 #include "matgeom/tangents.h"
-#include "temp_dir.h"
+#include "support/temp_dir.h"
 
 // write_gltf against read_gltf (itself tested against hand-assembled files): what is written
 // reads back as the same asset, in both containers.
 
 using namespace matgeom;
-using P = MaterialParameter;
+using P = matmaterial::MaterialParameter;
 
 namespace {
 
@@ -42,12 +42,12 @@ ObjectAsset two_part_asset() {
   compute_tangents(mesh);
   mesh.part_names = {"wood", "brass handle"};
 
-  ImagePixels rgb{"rgb.png", 3, 2, 3, {}}, rgba{"rgba.png", 2, 2, 4, {}};
+  matbase::ImagePixels rgb{"rgb.png", 3, 2, 3, {}}, rgba{"rgba.png", 2, 2, 4, {}};
   for (int k = 0; k < 18; ++k) rgb.data.push_back(static_cast<uint8_t>(k * 14));
   for (int k = 0; k < 16; ++k) rgba.data.push_back(static_cast<uint8_t>(255 - k * 13));
   asset.images = {rgb, rgba};
 
-  MaterialDesc wood;
+  matmaterial::MaterialDesc wood;
   wood.name = "wood";
   wood.set(P::BaseColor, glm::dvec3(0.5, 0.25, 0.125));
   wood.set_image(P::BaseColor, 0);
@@ -66,7 +66,7 @@ ObjectAsset two_part_asset() {
   // Glass where image 0's red says (KHR_materials_transmission).
   wood.set(P::Transmission, 0.5);
   wood.set_image(P::Transmission, 0, 0);
-  MaterialDesc brass;
+  matmaterial::MaterialDesc brass;
   brass.name = "brass handle";
   brass.set(P::BaseColor, glm::dvec3(1.0, 0.75, 0.25));
   brass.set(P::Metallic, 1.0);
@@ -83,7 +83,7 @@ ObjectAsset two_part_asset() {
   brass.set_image(P::VelvetColor, 0, 0, {{0.25, 0.0}, 0.5, {2.0, 2.0}});
   brass.set(P::VelvetSigma, 0.375);
   brass.set_image(P::VelvetSigma, 1, 3);
-  brass.wrap = TextureWrap::Clamp;
+  brass.wrap = matmaterial::TextureWrap::Clamp;
   asset.materials = {wood, brass};
   return asset;
 }
@@ -112,8 +112,8 @@ void check_same_asset(const ObjectAsset& written, const ObjectAsset& read) {
 
   REQUIRE(read.materials.size() == written.materials.size());
   for (size_t k = 0; k < read.materials.size(); ++k) {
-    const MaterialDesc& a = written.materials[k];
-    const MaterialDesc& b = read.materials[k];
+    const matmaterial::MaterialDesc& a = written.materials[k];
+    const matmaterial::MaterialDesc& b = read.materials[k];
     CHECK(b.name == a.name);
     CHECK(b.color(P::BaseColor) == a.color(P::BaseColor));
     CHECK(b.scalar(P::Metallic) == a.scalar(P::Metallic));
@@ -149,8 +149,8 @@ void check_same_asset(const ObjectAsset& written, const ObjectAsset& read) {
                                            std::pair{a.normal_image, b.normal_image}}) {
       REQUIRE((image_a < 0) == (image_b < 0));
       if (image_a < 0) continue;
-      const ImagePixels& pa = written.images[static_cast<size_t>(image_a)];
-      const ImagePixels& pb = read.images[static_cast<size_t>(image_b)];
+      const matbase::ImagePixels& pa = written.images[static_cast<size_t>(image_a)];
+      const matbase::ImagePixels& pb = read.images[static_cast<size_t>(image_b)];
       CHECK(pb.width == pa.width);
       CHECK(pb.height == pa.height);
       CHECK(pb.channels == pa.channels);
@@ -208,10 +208,10 @@ TEST_CASE("write_gltf rejects what glTF cannot hold and leaves nothing behind", 
 namespace {
 
 // The value material input `p` of `desc` reads at texel (x, y) of its image, 0..255.
-int input_texel(const ObjectAsset& asset, const MaterialDesc& desc, P p, int x, int y) {
-  const MaterialInput& input = desc[p];
-  const ImagePixels& image = asset.images.at(static_cast<size_t>(input.image));
-  return texel_channel(image, static_cast<size_t>(y) * static_cast<size_t>(image.width) + static_cast<size_t>(x),
+int input_texel(const ObjectAsset& asset, const matmaterial::MaterialDesc& desc, P p, int x, int y) {
+  const matmaterial::MaterialInput& input = desc[p];
+  const matbase::ImagePixels& image = asset.images.at(static_cast<size_t>(input.image));
+  return matbase::texel_channel(image, static_cast<size_t>(y) * static_cast<size_t>(image.width) + static_cast<size_t>(x),
                        input.channel);
 }
 
@@ -221,12 +221,12 @@ TEST_CASE("write_gltf packs roughness and metallic from any images and channels 
   const TempDir dir;
   ObjectAsset asset = two_part_asset();
   // Roughness from a grey 2x2 image, metallic from the alpha of the 2x2 RGBA image (image 1).
-  asset.images.push_back(ImagePixels{"rough.png", 2, 2, 1, {10, 60, 110, 160}});
-  MaterialDesc& brass = asset.materials[1];
+  asset.images.push_back(matbase::ImagePixels{"rough.png", 2, 2, 1, {10, 60, 110, 160}});
+  matmaterial::MaterialDesc& brass = asset.materials[1];
   brass.set_image(P::Roughness, 2, 0).set_image(P::Metallic, 1, 3);
   write_gltf(asset, dir.file("packed.glb"));
   const ObjectAsset read = read_gltf(dir.file("packed.glb"));
-  const MaterialDesc& back = read.materials[1];
+  const matmaterial::MaterialDesc& back = read.materials[1];
   REQUIRE(back[P::Roughness].image >= 0);
   CHECK(back[P::Roughness].image == back[P::Metallic].image);
   CHECK(back.scalar(P::Roughness) == brass.scalar(P::Roughness));
@@ -242,7 +242,7 @@ TEST_CASE("write_gltf packs roughness and metallic from any images and channels 
   brass.set_image(P::Metallic, -1);
   write_gltf(asset, dir.file("roughness_only.glb"));
   const ObjectAsset roughness_only = read_gltf(dir.file("roughness_only.glb"));
-  const MaterialDesc& r = roughness_only.materials[1];
+  const matmaterial::MaterialDesc& r = roughness_only.materials[1];
   CHECK(input_texel(roughness_only, r, P::Roughness, 1, 1) == 160);
   CHECK(input_texel(roughness_only, r, P::Metallic, 1, 1) == 255);
   CHECK(r.scalar(P::Metallic) == brass.scalar(P::Metallic));

@@ -1,4 +1,4 @@
-#include "matgeom/obj_io.h"
+#include "matgeom/io/obj/obj_io.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,15 +13,15 @@
 
 #include <catch2/catch.hpp>
 
-#include "temp_dir.h"
-#include "test_files.h"
+#include "support/temp_dir.h"
+#include "support/test_files.h"
 
 // read_obj against OBJ, MTL and PNG files written here as text and bytes, with expected values
 // worked out by hand (OBJ (x, y, z) is Blender (x, -z, y)); write_obj against read_obj.
 
 using namespace matgeom;
 using Catch::Matchers::Contains;
-using P = MaterialParameter;
+using P = matmaterial::MaterialParameter;
 
 namespace {
 
@@ -57,7 +57,7 @@ void check_color(const glm::dvec3& actual, const glm::dvec3& expected) {
 }
 
 // Equal up to the float MTL numbers are read as.
-void check_same_transform(const TextureTransform& actual, const TextureTransform& expected) {
+void check_same_transform(const matmaterial::TextureTransform& actual, const matmaterial::TextureTransform& expected) {
   for (int c = 0; c < 2; ++c) {
     CHECK(actual.offset[c] == Approx(expected.offset[c]).margin(1e-6));
     CHECK(actual.scale[c] == Approx(expected.scale[c]).margin(1e-6));
@@ -141,23 +141,23 @@ TEST_CASE("OBJ reader: quad, triangle, two materials, a group without one, split
   CHECK(mesh.part_names == std::vector<std::string>{"red", "blue", "default"});
   CHECK(mesh.triangle_parts == std::vector<uint32_t>{2, 0, 0, 1});
   REQUIRE(asset.materials.size() == 3);
-  const MaterialDesc& red = asset.materials[0];
+  const matmaterial::MaterialDesc& red = asset.materials[0];
   CHECK(red.name == "red");
   check_color(red.color(P::BaseColor), {0.8, 0.1, 0.1});
   CHECK(red.scalar(P::Roughness) == Approx(0.25));
   CHECK(red.scalar(P::Metallic) == Approx(0.75));
   CHECK(red.scalar(P::Specular) == 0.0);  // no Ks and no highlights (illum 2): Blender's Specular 0
-  const MaterialDesc& blue = asset.materials[1];
+  const matmaterial::MaterialDesc& blue = asset.materials[1];
   check_color(blue.color(P::BaseColor), {0.1, 0.2, 0.9});
   CHECK(blue.scalar(P::Roughness) == Approx(0.5));  // 1 - sqrt(250 / 1000)
   CHECK(blue.scalar(P::Metallic) == 0.0);
   CHECK(blue.scalar(P::Specular) == Approx(0.5));  // mean of Ks
-  const MaterialDesc& none = asset.materials[2];
+  const matmaterial::MaterialDesc& none = asset.materials[2];
   CHECK(none.name == "default");
   check_color(none.color(P::BaseColor), glm::dvec3(0.8));
   CHECK(none.scalar(P::Roughness) == 0.5);
   CHECK(none.scalar(P::Metallic) == 0.0);
-  for (const MaterialDesc& material : asset.materials) {
+  for (const matmaterial::MaterialDesc& material : asset.materials) {
     CHECK(material[P::BaseColor].image == -1);
     CHECK(material[P::Roughness].image == -1);
     CHECK(material.normal_image == -1);
@@ -211,7 +211,7 @@ TEST_CASE("OBJ reader maps MTL statements as Blender's importer does", "[geom]")
   const ObjectAsset asset = read_obj(dir.file("cases.obj"));
   REQUIRE(asset.materials.size() == cases.size());
   for (size_t k = 0; k < cases.size(); ++k) {
-    const MaterialDesc& material = asset.materials[k];
+    const matmaterial::MaterialDesc& material = asset.materials[k];
     INFO("material " << cases[k].name);
     CHECK(material.name == cases[k].name);
     check_color(material.color(P::BaseColor), cases[k].base_color);
@@ -239,7 +239,7 @@ TEST_CASE("OBJ reader maps Ni, d, Ke, Tf, Pc, Pcr and Ps as Blender 3.4's import
   // Ke beyond 1 (Blender: that colour at strength 1): the same radiance as colour x strength.
   check_color(asset.materials[2].color(P::Emission), {1.0, 0.5, 0.25});
   CHECK(asset.materials[2].scalar(P::EmissionStrength) == 4.0);
-  const MaterialDesc& lacquer = asset.materials[0];
+  const matmaterial::MaterialDesc& lacquer = asset.materials[0];
   CHECK(lacquer.scalar(P::Specular) == 1.0);
   CHECK(lacquer.scalar(P::Roughness) == Approx(0.5));
   CHECK(lacquer.scalar(P::Ior) == Approx(1.33));
@@ -250,7 +250,7 @@ TEST_CASE("OBJ reader maps Ni, d, Ke, Tf, Pc, Pcr and Ps as Blender 3.4's import
   CHECK(lacquer.scalar(P::ClearcoatRoughness) == Approx(0.2));
   CHECK(lacquer.scalar(P::Sheen) == Approx(0.7));
   CHECK(lacquer.scalar(P::Transmission) == 0.0);
-  const MaterialDesc& glass = asset.materials[1];
+  const matmaterial::MaterialDesc& glass = asset.materials[1];
   CHECK(glass.scalar(P::Metallic) == 1.0);
   CHECK(glass.scalar(P::Specular) == 0.0);
   CHECK(glass.scalar(P::Roughness) == 1.0);
@@ -272,7 +272,7 @@ TEST_CASE("OBJ reader reads map_Ke as the emission and map_d's alpha as the opac
   write_text(dir.file("maps.mtl"), "newmtl maps\nKe 0.5 0.5 0.5\nmap_Ke glow.png\nmap_d glow.png\n");
   const ObjectAsset asset = read_obj(dir.file("maps.obj"));
   REQUIRE(asset.images.size() == 1);  // decoded once for both
-  const MaterialDesc& maps = asset.materials[0];
+  const matmaterial::MaterialDesc& maps = asset.materials[0];
   CHECK(maps[P::Emission].image == 0);
   check_color(maps.color(P::Emission), glm::dvec3(1.0));  // the map replaces Ke
   CHECK(maps.scalar(P::EmissionStrength) == 1.0);
@@ -299,19 +299,19 @@ TEST_CASE("OBJ reader decodes map_Kd, packs map_Pr into G and reads map_Bump and
   const ObjectAsset asset = read_obj(dir.file("textured.obj"));
 
   REQUIRE(asset.images.size() == 3);  // colors.png and the normal map are decoded once
-  const ImagePixels& base = asset.images[0];
+  const matbase::ImagePixels& base = asset.images[0];
   CHECK(base.name == "colors.png");
   CHECK(base.width == 2);
   CHECK(base.height == 2);
   CHECK(base.channels == 4);
   CHECK(base.data == as_rgba(3, colors));
   // Roughness in G, metallic B = 255 so that the factor Pm stands; R unused.
-  const ImagePixels& packed = asset.images[1];
+  const matbase::ImagePixels& packed = asset.images[1];
   CHECK(packed.channels == 3);
   CHECK(packed.data == std::vector<uint8_t>{0, 0, 255, 0, 64, 255, 0, 128, 255, 0, 255, 255});
   CHECK(asset.images[2].data == as_rgba(3, normal));
 
-  const MaterialDesc& textured = asset.materials[0];
+  const matmaterial::MaterialDesc& textured = asset.materials[0];
   // A map replaces its value in Blender: the base colour and roughness factors are 1.
   CHECK(textured[P::BaseColor].image == 0);
   check_color(textured.color(P::BaseColor), glm::dvec3(1.0));
@@ -320,8 +320,8 @@ TEST_CASE("OBJ reader decodes map_Kd, packs map_Pr into G and reads map_Bump and
   CHECK(textured.scalar(P::Metallic) == Approx(0.4));
   CHECK(textured.normal_image == 2);
   CHECK(textured.normal_strength == Approx(0.7));
-  CHECK(textured.wrap == TextureWrap::Repeat);
-  const MaterialDesc& shares = asset.materials[1];
+  CHECK(textured.wrap == matmaterial::TextureWrap::Repeat);
+  const matmaterial::MaterialDesc& shares = asset.materials[1];
   CHECK(shares[P::BaseColor].image == 0);  // the quotes are dropped, as Blender drops them
   CHECK(shares[P::Roughness].image == -1);
   CHECK(shares.normal_image == 2);
@@ -330,9 +330,9 @@ TEST_CASE("OBJ reader decodes map_Kd, packs map_Pr into G and reads map_Bump and
 
 namespace {
 
-// Where a map looks its image up at `uv`, as the renderer does (matgeom/texture_transform.h).
-void check_lookup(const TextureTransform& transform, glm::vec2 uv, glm::vec2 expected) {
-  const glm::vec2 looked_up = uv_affine(transform).apply(uv);
+// Where a map looks its image up at `uv`, as the renderer does (matmaterial/texture_transform.h).
+void check_lookup(const matmaterial::TextureTransform& transform, glm::vec2 uv, glm::vec2 expected) {
+  const glm::vec2 looked_up = matmaterial::uv_affine(transform).apply(uv);
   INFO("uv (" << uv.x << ", " << uv.y << ") looked up at (" << looked_up.x << ", " << looked_up.y << "), expected ("
               << expected.x << ", " << expected.y << ")");
   CHECK(glm::length(looked_up - expected) < 1e-5f);
@@ -353,7 +353,7 @@ TEST_CASE("OBJ reader places every map by -o and -s as Blender's Mapping node do
              "newmtl plain\nmap_Kd t.png\nnorm -o -1 -2 -3 -s 3 3 3 t.png\n");
   const ObjectAsset asset = read_obj(dir.file("placed.obj"));
   REQUIRE(asset.images.size() == 2);  // t.png, and t.png packed as roughness and metallic
-  const MaterialDesc& placed = asset.materials[0];
+  const matmaterial::MaterialDesc& placed = asset.materials[0];
   // s (2, 3), o (0.25, 0.5): (0.1, 0.2) -> (0.2 + 0.25, 0.6 + 0.5).
   check_lookup(placed[P::BaseColor].transform, {0.1f, 0.2f}, {0.45f, 1.1f});
   check_lookup(placed[P::BaseColor].transform, {0.0f, 0.0f}, {0.25f, 0.5f});
@@ -371,7 +371,7 @@ TEST_CASE("OBJ reader places every map by -o and -s as Blender's Mapping node do
   check_lookup(placed.normal_transform, {0.1f, 0.2f}, {0.15f, 0.25f});
   check_lookup(placed.normal_transform, {1.0f, 1.0f}, {0.6f, 0.45f});
   CHECK(placed.normal_strength == 0.5);
-  const MaterialDesc& plain = asset.materials[1];
+  const matmaterial::MaterialDesc& plain = asset.materials[1];
   CHECK(plain[P::BaseColor].transform.is_identity());
   check_lookup(plain.normal_transform, {0.1f, 0.2f}, {-0.7f, -1.4f});
   check_lookup(plain.normal_transform, {1.0f, 1.0f}, {2.0f, 1.0f});
@@ -437,29 +437,29 @@ ObjectAsset round_trip_asset() {
   mesh.triangle_parts = {0, 0, 1};
   mesh.part_names = {"red_paint", "blue"};
 
-  ImagePixels base{"base.png", 2, 1, 4, {1, 2, 3, 4, 250, 251, 252, 253}};
-  ImagePixels metallic_roughness{"mr.png", 2, 1, 3, {0, 100, 200, 0, 50, 25}};
-  ImagePixels normal{"normal.png", 1, 1, 4, {128, 128, 255, 255}};
+  matbase::ImagePixels base{"base.png", 2, 1, 4, {1, 2, 3, 4, 250, 251, 252, 253}};
+  matbase::ImagePixels metallic_roughness{"mr.png", 2, 1, 3, {0, 100, 200, 0, 50, 25}};
+  matbase::ImagePixels normal{"normal.png", 1, 1, 4, {128, 128, 255, 255}};
   asset.images = {base, metallic_roughness, normal};
 
-  MaterialDesc red = MaterialDesc("red_paint");
+  matmaterial::MaterialDesc red = matmaterial::MaterialDesc("red_paint");
   red.set_image(P::BaseColor, 0);
   red.set(P::BaseColor, glm::dvec3(1.0));
   red.set_metallic_roughness_image(1);
   // Placements in glTF's terms, written as -o and -s; metallic and roughness placed apart.
-  red[P::BaseColor].transform = TextureTransform{{0.25, -0.5}, 0.0, {2.0, 3.0}};
-  red[P::Roughness].transform = TextureTransform{{-0.75, 0.125}, 0.0, {-1.5, 0.5}};
+  red[P::BaseColor].transform = matmaterial::TextureTransform{{0.25, -0.5}, 0.0, {2.0, 3.0}};
+  red[P::Roughness].transform = matmaterial::TextureTransform{{-0.75, 0.125}, 0.0, {-1.5, 0.5}};
   red.set(P::Roughness, 1.0);
   red.set(P::Metallic, 1.0);
   red.set(P::Specular, 0.25);
-  MaterialDesc blue = MaterialDesc("blue");
+  matmaterial::MaterialDesc blue = matmaterial::MaterialDesc("blue");
   blue.set(P::BaseColor, glm::dvec3(0.1, 0.2, 0.9));
   blue.set(P::Roughness, 0.8);
   blue.set(P::Metallic, 0.2);
   blue.set(P::Specular, 0.5);
   blue.normal_image = 2;
   blue.normal_strength = 0.75;
-  blue.normal_transform = TextureTransform{{0.0, 0.0}, 0.0, {4.0, 4.0}};
+  blue.normal_transform = matmaterial::TextureTransform{{0.0, 0.0}, 0.0, {4.0, 4.0}};
   // The inputs beyond the classic statements: Ni, d, Ke (beyond 1: colour x strength), Tf, Pc,
   // Pcr, Ps.
   blue.set(P::Ior, 1.33);
@@ -511,8 +511,8 @@ TEST_CASE("OBJ written by write_obj reads back as the same asset", "[geom]") {
 
   REQUIRE(read.materials.size() == 2);
   for (size_t k = 0; k < 2; ++k) {
-    const MaterialDesc& expected = original.materials[k];
-    const MaterialDesc& actual = read.materials[k];
+    const matmaterial::MaterialDesc& expected = original.materials[k];
+    const matmaterial::MaterialDesc& actual = read.materials[k];
     INFO("material " << expected.name);
     CHECK(actual.name == expected.name);
     check_color(actual.color(P::BaseColor), expected.color(P::BaseColor));
@@ -545,8 +545,8 @@ TEST_CASE("write_obj makes names OBJ-safe and unique and refuses what it cannot 
   TempDir dir;
   ObjectAsset asset = round_trip_asset();
   asset.images.clear();
-  asset.materials[0] = MaterialDesc("two words\nand a line");
-  asset.materials[1] = MaterialDesc("two_words_and_a_line");
+  asset.materials[0] = matmaterial::MaterialDesc("two words\nand a line");
+  asset.materials[1] = matmaterial::MaterialDesc("two_words_and_a_line");
   asset.mesh.part_names = {"", "group one"};
   write_obj(asset, dir.file("names.obj"));
   const std::string obj = read_bytes(dir.file("names.obj"));
@@ -565,9 +565,9 @@ TEST_CASE("write_obj makes names OBJ-safe and unique and refuses what it cannot 
   }
   SECTION("a texture placement -o and -s cannot say, or read_obj would refuse") {
     asset.images = round_trip_asset().images;
-    asset.materials[0].set_image(P::BaseColor, 0, 0, TextureTransform{{0.0, 0.0}, 0.5, {1.0, 1.0}});
+    asset.materials[0].set_image(P::BaseColor, 0, 0, matmaterial::TextureTransform{{0.0, 0.0}, 0.5, {1.0, 1.0}});
     CHECK_THROWS_WITH(write_obj(asset, dir.file("rotated.obj")), Contains("rotates its base_color texture"));
-    asset.materials[0].set_image(P::BaseColor, 0, 0, TextureTransform{{0.0, 0.0}, 0.0, {1.0, 0.0}});
+    asset.materials[0].set_image(P::BaseColor, 0, 0, matmaterial::TextureTransform{{0.0, 0.0}, 0.0, {1.0, 0.0}});
     CHECK_THROWS_WITH(write_obj(asset, dir.file("flat.obj")), Contains("a scale of 0"));
   }
   SECTION("an image index out of range") {

@@ -1,4 +1,4 @@
-#include "matgeom/ply_io.h"
+#include "matgeom/io/ply/ply_io.h"
 
 #include <cstdint>
 #include <cstring>
@@ -13,8 +13,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "temp_dir.h"
-#include "test_files.h"
+#include "support/temp_dir.h"
+#include "support/test_files.h"
 
 // These tests write PLY files byte by byte (ASCII text, binary values in either byte order
 // assembled here) and check what the reader makes of them against meshes written down here.

@@ -1,4 +1,4 @@
-#include "matgeom/uv_pass.h"
+#include "matgeom/uv/uv_pass.h"
 
 #include <algorithm>
 #include <array>
@@ -10,11 +10,11 @@
 
 #include <catch2/catch.hpp>
 
-#include "matgeom/builtin_objects.h"
-#include "matgeom/chart_segmentation.h"
+#include "matgeom/builtin/builtin_objects.h"
 #include "matgeom/tangents.h"
-#include "matgeom/uv_distortion.h"
-#include "matgeom/uv_packing.h"
+#include "matgeom/uv/chart_segmentation.h"
+#include "matgeom/uv/uv_distortion.h"
+#include "matgeom/uv/uv_packing.h"
 
 // The UV pass: chart segmentation on shapes with known charts, the packer's guarantees on
 // random rectangles, and the whole pass on objects from 5 cm to 3 m: texel density on target,

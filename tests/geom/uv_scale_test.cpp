@@ -1,10 +1,10 @@
-// metres_per_uv_unit and texture repeats (matgeom/uv_scale.h): a 2 m square mapped onto the unit
+// metres_per_uv_unit and texture repeats (matgeom/uv/uv_scale.h): a 2 m square mapped onto the unit
 // UV square spans 2 m per UV unit; maps 0.5 m long repeat four times over it.
-#include "matgeom/uv_scale.h"
+#include "matgeom/uv/uv_scale.h"
 
 #include <catch2/catch.hpp>
 
-#include "matgeom/texture_transform.h"
+#include "matmaterial/texture_transform.h"
 
 using namespace matgeom;
 
@@ -41,24 +41,24 @@ TEST_CASE("A part's metres per UV unit is the square root of its area ratio", "[
 }
 
 TEST_CASE("with_texture_repeats scales the transforms of the images a material reads, only", "[geom]") {
-  MaterialDesc material;
-  material.set_image(MaterialParameter::BaseColor, 0);
-  material[MaterialParameter::BaseColor].transform.scale = {2.0, 3.0};
+  matmaterial::MaterialDesc material;
+  material.set_image(matmaterial::MaterialParameter::BaseColor, 0);
+  material[matmaterial::MaterialParameter::BaseColor].transform.scale = {2.0, 3.0};
   material.normal_image = 1;
-  const MaterialDesc repeated = with_texture_repeats(material, 4.0);
-  CHECK(repeated[MaterialParameter::BaseColor].transform.scale == glm::dvec2(8.0, 12.0));
+  const matmaterial::MaterialDesc repeated = with_texture_repeats(material, 4.0);
+  CHECK(repeated[matmaterial::MaterialParameter::BaseColor].transform.scale == glm::dvec2(8.0, 12.0));
   CHECK(repeated.normal_transform.scale == glm::dvec2(4.0));
-  CHECK(repeated[MaterialParameter::Roughness].transform.is_identity());  // a constant: nothing to repeat
+  CHECK(repeated[matmaterial::MaterialParameter::Roughness].transform.is_identity());  // a constant: nothing to repeat
 }
 
 TEST_CASE("Repeated maps stay anchored at the origin of our UVs, wherever glTF's lies", "[geom]") {
   // Not a whole number of repeats: a shift by whole tiles would hide under the wrap.
   const double k = 1.46;
-  const auto lookup = [](const TextureTransform& t, glm::vec2 uv) { return uv_affine(t).apply(uv); };
-  MaterialDesc material;
+  const auto lookup = [](const matmaterial::TextureTransform& t, glm::vec2 uv) { return matmaterial::uv_affine(t).apply(uv); };
+  matmaterial::MaterialDesc material;
   material.normal_image = 0;
   // Unplaced: the image repeats k times from (0, 0), so (u, v) reads the image at (k u, k v).
-  const TextureTransform plain = with_texture_repeats(material, k).normal_transform;
+  const matmaterial::TextureTransform plain = with_texture_repeats(material, k).normal_transform;
   for (const glm::vec2 uv : {glm::vec2(0.0f), glm::vec2(1.0f, 0.0f), glm::vec2(0.0f, 1.0f), glm::vec2(0.3f, 0.8f)}) {
     const glm::vec2 read = lookup(plain, uv);
     CHECK(read.x == Approx(k * uv.x).margin(1e-5));
@@ -66,8 +66,8 @@ TEST_CASE("Repeated maps stay anchored at the origin of our UVs, wherever glTF's
   }
   // Placed (moved, turned, stretched): the repeated placement reads at (k u, k v) what the
   // original read there.
-  material.normal_transform = TextureTransform{{0.25, -0.5}, 0.75, {2.0, 3.0}};
-  const TextureTransform placed = with_texture_repeats(material, k).normal_transform;
+  material.normal_transform = matmaterial::TextureTransform{{0.25, -0.5}, 0.75, {2.0, 3.0}};
+  const matmaterial::TextureTransform placed = with_texture_repeats(material, k).normal_transform;
   for (const glm::vec2 uv : {glm::vec2(0.0f), glm::vec2(1.0f, 0.0f), glm::vec2(0.3f, 0.8f), glm::vec2(-1.5f, 2.25f)}) {
     const glm::vec2 expected = lookup(material.normal_transform, static_cast<float>(k) * uv);
     const glm::vec2 read = lookup(placed, uv);
@@ -79,15 +79,15 @@ TEST_CASE("Repeated maps stay anchored at the origin of our UVs, wherever glTF's
 TEST_CASE("assign_material_to_all_parts repeats a folder material's maps to size on every part", "[geom]") {
   ObjectAsset asset;
   asset.mesh = two_squares(2.0f, 1.0f);
-  asset.materials = {MaterialDesc("square"), MaterialDesc("collapsed")};
-  FolderMaterial folder;
-  folder.material.set_image(MaterialParameter::Roughness, 0);
-  folder.images.push_back(ImagePixels{"r", 1, 1, 1, {128}});
+  asset.materials = {matmaterial::MaterialDesc("square"), matmaterial::MaterialDesc("collapsed")};
+  matmaterial::FolderMaterial folder;
+  folder.material.set_image(matmaterial::MaterialParameter::Roughness, 0);
+  folder.images.push_back(matbase::ImagePixels{"r", 1, 1, 1, {128}});
   folder.tile_size_m = 0.25;
   assign_material_to_all_parts(asset, folder);
   REQUIRE(asset.images.size() == 1);
   CHECK(asset.materials[0].name == "square");
-  CHECK(asset.materials[0][MaterialParameter::Roughness].transform.scale == glm::dvec2(8.0));  // 2 m / 0.25 m
+  CHECK(asset.materials[0][matmaterial::MaterialParameter::Roughness].transform.scale == glm::dvec2(8.0));  // 2 m / 0.25 m
   CHECK(asset.materials[1].name == "collapsed");
-  CHECK(asset.materials[1][MaterialParameter::Roughness].transform.scale == glm::dvec2(1.0));  // no UV area
+  CHECK(asset.materials[1][matmaterial::MaterialParameter::Roughness].transform.scale == glm::dvec2(1.0));  // no UV area
 }

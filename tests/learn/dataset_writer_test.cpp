@@ -18,8 +18,8 @@
 #include <nlohmann/json.hpp>
 
 #include "matlearn/dataset_splits.h"
-#include "matlearn/decoded_image.h"
 #include "matlearn/dataset_writer.h"
+#include "matlearn/decoded_image.h"
 #include "matlearn/python_random.h"
 #include "matlearn/sample_reader.h"
 

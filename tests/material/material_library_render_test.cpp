@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "../render/test_scenes.h"
-#include "matgeom/material_library.h"
-#include "matgeom/srgb.h"
+#include "matbase/image/srgb.h"
 #include "matgeom/tangents.h"
+#include "matmaterial/library/material_library.h"
 #include "matrender/asset.h"
 #include "matrender/render.h"
 #include "matrender/scene.h"
@@ -33,7 +33,7 @@ glm::dvec2 uv_under_pixel(int px, int py) {
 
 // The lowest and highest decoded value of channel `channel` among the texels within two texels
 // of (u, v): what bilinear filtering over the pixel's footprint can return there.
-std::pair<double, double> texel_bounds(const matgeom::ImagePixels& image, matgeom::ColorSpace space, glm::dvec2 uv,
+std::pair<double, double> texel_bounds(const matbase::ImagePixels& image, matmaterial::ColorSpace space, glm::dvec2 uv,
                                        int channel) {
   const int cx = static_cast<int>(std::floor(uv.x * image.width)), cy = static_cast<int>(std::floor((1.0 - uv.y) * image.height));
   double low = 1e9, high = -1e9;
@@ -41,8 +41,8 @@ std::pair<double, double> texel_bounds(const matgeom::ImagePixels& image, matgeo
     for (int dx = -2; dx <= 2; ++dx) {
       const int x = ((cx + dx) % image.width + image.width) % image.width;
       const int y = ((cy + dy) % image.height + image.height) % image.height;
-      const double code = matgeom::texel_channel(image, static_cast<size_t>(y * image.width + x), channel) / 255.0;
-      const double value = space == matgeom::ColorSpace::SRGB ? matgeom::srgb_to_linear(code) : code;
+      const double code = matbase::texel_channel(image, static_cast<size_t>(y * image.width + x), channel) / 255.0;
+      const double value = space == matmaterial::ColorSpace::SRGB ? matbase::srgb_to_linear(code) : code;
       low = std::min(low, value);
       high = std::max(high, value);
     }
@@ -57,10 +57,10 @@ TEST_CASE("Every library style renders finite pixels, labelled with its class, i
   matgeom::compute_tangents(plane);
   const Camera camera = Camera::look_at({0, 0, kEyeHeight}, {0, 0, 0}, {0, 1, 0}, 2.0 * std::atan(kTanHalfFov),
                                         kImageSize, kImageSize);
-  for (const matgeom::LibraryStyleInfo& style : matgeom::library_styles()) {
-    const matgeom::LibraryMaterialSpec spec{style.material_class, style.name, 2};
-    INFO(matgeom::library_material_name(spec));
-    const matgeom::FolderMaterial generated = matgeom::generate_library_material(spec, {kMapSize, 0});
+  for (const matmaterial::LibraryStyleInfo& style : matmaterial::library_styles()) {
+    const matmaterial::LibraryMaterialSpec spec{style.material_class, style.name, 2};
+    INFO(matmaterial::library_material_name(spec));
+    const matmaterial::FolderMaterial generated = matmaterial::generate_library_material(spec, {kMapSize, 0});
     Scene scene;
     scene.add_mesh(plane, {scene.add_material(material_from_desc(generated.material, generated.images))});
     scene.add_light(PointLight{glm::dvec3(0.5, 0.5, 2.0), 100.0, glm::dvec3(1.0)});
@@ -80,11 +80,11 @@ TEST_CASE("Every library style renders finite pixels, labelled with its class, i
           continue;
         }
         ++covered;
-        CHECK(frame.label[i] == matgeom::label_id(style.material_class));
+        CHECK(frame.label[i] == matmaterial::label_id(style.material_class));
         const glm::dvec2 uv = uv_under_pixel(px, py);
-        for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) {
-          const matgeom::MaterialInput& input = generated.material[info.id];
-          const int channels = info.kind == matgeom::ParameterKind::Color ? 3 : 1;
+        for (const matmaterial::MaterialParameterInfo& info : matmaterial::kMaterialParameters) {
+          const matmaterial::MaterialInput& input = generated.material[info.id];
+          const int channels = info.kind == matmaterial::ParameterKind::Color ? 3 : 1;
           for (int c = 0; c < channels; ++c) {
             const double aov = frame.parameter(info.id)[channels * i + static_cast<size_t>(c)];
             double low = input.value[c], high = input.value[c];
@@ -103,7 +103,7 @@ TEST_CASE("Every library style renders finite pixels, labelled with its class, i
         }
       }
     CHECK(outside == 0);
-    const bool perforated = generated.material[matgeom::MaterialParameter::Alpha].image >= 0;
+    const bool perforated = generated.material[matmaterial::MaterialParameter::Alpha].image >= 0;
     if (perforated) {
       CHECK(uncovered > 0);
       CHECK(covered > 0);

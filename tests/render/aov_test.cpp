@@ -60,10 +60,10 @@ TEST_CASE("AOVs of a two-part plane equal the materials at the hit", "[render]")
         CHECK(frame.part_id[i] == (is_left ? 0 : 1));
         CHECK(frame.label[i] == m.label_id);
         // Every parameter of the table has its AOV.
-        for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) {
+        for (const matmaterial::MaterialParameterInfo& info : matmaterial::kMaterialParameters) {
           CAPTURE(info.name);
           const std::vector<float>& aov = frame.parameter(info.id);
-          if (info.kind == matgeom::ParameterKind::Color) {
+          if (info.kind == matmaterial::ParameterKind::Color) {
             for (int c = 0; c < 3; ++c) CHECK(aov[3 * i + c] == Approx(m.color(info.id)[c]));
           } else {
             CHECK(aov[i] == Approx(m.scalar(info.id)));

@@ -11,18 +11,18 @@
 
 #include <catch2/catch.hpp>
 
-#include "matgeom/gltf_reader.h"
-#include "matgeom/gltf_writer.h"
-#include "matgeom/material_parameters.h"
+#include "matgeom/io/gltf/gltf_reader.h"
+#include "matgeom/io/gltf/gltf_writer.h"
 #include "matgeom/mesh.h"
 #include "matgeom/tangents.h"
-#include "matgeom/texture_transform.h"
+#include "matmaterial/material_parameters.h"
+#include "matmaterial/texture_transform.h"
 #include "shaders_ref/cycles_reference.h"
 
 namespace {
 
-using matgeom::MaterialDesc;
-using P = matgeom::MaterialParameter;
+using matmaterial::MaterialDesc;
+using P = matmaterial::MaterialParameter;
 
 // A quad of two triangles, one per part, with UVs.
 matgeom::ObjectAsset two_material_quad() {
@@ -34,7 +34,7 @@ matgeom::ObjectAsset two_material_quad() {
   mesh.triangle_parts = {0, 1};
   mesh.part_names = {"lacquer", "textured"};
   matgeom::compute_vertex_normals(mesh);
-  matgeom::ImagePixels rgb{"rgb.png", 2, 2, 3, {}};
+  matbase::ImagePixels rgb{"rgb.png", 2, 2, 3, {}};
   for (int k = 0; k < 12; ++k) rgb.data.push_back(static_cast<uint8_t>(20 * k));
   asset.images = {rgb};
 
@@ -55,7 +55,7 @@ matgeom::ObjectAsset two_material_quad() {
   // Every input glTF can texture, from the one image, each textureInfo placed on the UVs its own
   // way (KHR_texture_transform; the identity for the base colour).
   const auto placed = [](double k) {
-    return matgeom::TextureTransform{{0.1 * k, -0.2 + 0.05 * k}, 0.3 * k - 0.5, {1.0 + 0.5 * k, 2.0 - 0.25 * k}};
+    return matmaterial::TextureTransform{{0.1 * k, -0.2 + 0.05 * k}, 0.3 * k - 0.5, {1.0 + 0.5 * k, 2.0 - 0.25 * k}};
   };
   MaterialDesc textured("textured");
   textured.set_image(P::BaseColor, 0);
@@ -88,13 +88,13 @@ glm::dvec2 blender_mapped(const shaders_ref::BlenderUvMapping& m, glm::dvec2 uv)
 
 // The image behind `input` lies on the UVs where our transform puts it: the same point for
 // UVs across and beyond the unit square.
-void check_placement(const shaders_ref::BlenderInput& input, const matgeom::TextureTransform& transform) {
+void check_placement(const shaders_ref::BlenderInput& input, const matmaterial::TextureTransform& transform) {
   if (transform.is_identity()) {
     CHECK_FALSE(input.mapping.has_value());
     return;
   }
   REQUIRE(input.mapping.has_value());
-  const matgeom::UvAffine ours = matgeom::uv_affine(transform);
+  const matmaterial::UvAffine ours = matmaterial::uv_affine(transform);
   for (const glm::dvec2 uv : {glm::dvec2(0.0), glm::dvec2(1.0, 0.0), glm::dvec2(0.3, 0.8), glm::dvec2(-1.5, 2.25)}) {
     const glm::dvec2 blender = blender_mapped(*input.mapping, uv);
     const glm::vec2 mine = ours.apply(glm::vec2(uv));
@@ -121,21 +121,21 @@ TEST_CASE("Blender's glTF importer makes of our glTF files what read_gltf makes"
     const shaders_ref::BlenderNodes& nodes = blender.at(material.name);
     // Both materials have a velvet: the importer must have added one to each.
     REQUIRE(material.color(P::VelvetColor) != glm::dvec3(0.0));
-    for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) {
+    for (const matmaterial::MaterialParameterInfo& info : matmaterial::kMaterialParameters) {
       CAPTURE(material.name, info.name);
-      const char* node = matgeom::blender_node_name(info.node);
+      const char* node = matmaterial::blender_node_name(info.node);
       REQUIRE(nodes.count(node) == 1);
       const auto& inputs = nodes.at(node);
       REQUIRE(inputs.count(info.blender_input) == 1);
       const shaders_ref::BlenderInput& input = inputs.at(info.blender_input);
-      const matgeom::MaterialInput& mine = material[info.id];
+      const matmaterial::MaterialInput& mine = material[info.id];
       CHECK(input.linked == (mine.image >= 0));
       if (input.linked) {
         // Blender has one Alpha link, from the base colour's image.
         check_placement(input, mine.transform);
         continue;
       }
-      REQUIRE(input.value.size() == (info.kind == matgeom::ParameterKind::Color ? 3u : 1u));
+      REQUIRE(input.value.size() == (info.kind == matmaterial::ParameterKind::Color ? 3u : 1u));
       // Blender stores single-precision floats.
       for (size_t c = 0; c < input.value.size(); ++c) CHECK(input.value[c] == Approx(mine.value[c]).margin(1e-6));
     }

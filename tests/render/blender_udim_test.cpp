@@ -14,7 +14,7 @@ TEST_CASE("UDIM lookups land where Cycles' do: truncated UVs, and magenta for a 
   const std::vector<shaders_ref::UdimProbe> probes = shaders_ref::probe_udim_with_blender(folder.string());
   REQUIRE(probes.size() == 3);
   const matrender::TexturePtr set =
-      matrender::Texture::load((folder / "probe.<UDIM>.png").string(), matgeom::ColorSpace::NonColor);
+      matrender::Texture::load((folder / "probe.<UDIM>.png").string(), matmaterial::ColorSpace::NonColor);
   for (const shaders_ref::UdimProbe& probe : probes) {
     const glm::vec4 ours = set->sample(probe.uv);
     CAPTURE(probe.name, probe.cycles_rgb.x, probe.cycles_rgb.y, probe.cycles_rgb.z, ours.x, ours.y, ours.z);

@@ -353,7 +353,7 @@ std::string write_sky_exr(const std::string& folder) {
     }
   std::filesystem::create_directories(folder);
   const std::string path = folder + "/sky.exr";
-  matgeom::write_exr(path, kWidth, kHeight, {"R", "G", "B"}, rgb.data());
+  matbase::write_exr(path, kWidth, kHeight, {"R", "G", "B"}, rgb.data());
   return path;
 }
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <unistd.h>
 
-#include "matgeom/mesh_io.h"
+#include "matgeom/io/mesh_io.h"
 #include "matrender/asset.h"
 #include "matrender/camera.h"
 #include "matrender/render.h"
@@ -87,7 +87,7 @@ matgeom::ObjectAsset through_obj_file(const matgeom::TriangleMesh& mesh, const s
   matgeom::ObjectAsset asset;
   asset.mesh = mesh;
   asset.mesh.part_names = {"surface"};
-  asset.materials = {matgeom::MaterialDesc("surface")};
+  asset.materials = {matmaterial::MaterialDesc("surface")};
   const std::string path = (dir / (name + ".obj")).string();
   matgeom::write_object(asset, path);
   matgeom::ObjectAsset read = matgeom::read_object(path);

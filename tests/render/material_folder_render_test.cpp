@@ -11,12 +11,12 @@
 #include <string>
 #include <vector>
 
-#include "matgeom/material_folder.h"
-#include "matgeom/mesh_io.h"
-#include "matgeom/png_encoding.h"
-#include "matgeom/srgb.h"
+#include "matbase/image/png_encoding.h"
+#include "matbase/image/srgb.h"
+#include "matgeom/io/mesh_io.h"
 #include "matgeom/tangents.h"
-#include "matgeom/uv_scale.h"
+#include "matgeom/uv/uv_scale.h"
+#include "matmaterial/folder/material_folder.h"
 #include "matrender/asset.h"
 #include "matrender/material.h"
 #include "matrender/scene_builder.h"
@@ -35,8 +35,8 @@ std::filesystem::path fresh_folder(const std::string& name) {
   return path;
 }
 
-matgeom::ImagePixels uniform_image(int size, uint8_t r, uint8_t g, uint8_t b) {
-  matgeom::ImagePixels image{"uniform", size, size, 4, std::vector<uint8_t>(static_cast<size_t>(size * size) * 4u)};
+matbase::ImagePixels uniform_image(int size, uint8_t r, uint8_t g, uint8_t b) {
+  matbase::ImagePixels image{"uniform", size, size, 4, std::vector<uint8_t>(static_cast<size_t>(size * size) * 4u)};
   for (size_t k = 0; k < image.data.size(); k += 4) {
     image.data[k] = r;
     image.data[k + 1] = g;
@@ -46,14 +46,14 @@ matgeom::ImagePixels uniform_image(int size, uint8_t r, uint8_t g, uint8_t b) {
   return image;
 }
 
-void write_png(const std::filesystem::path& path, const matgeom::ImagePixels& image) {
-  std::ofstream(path, std::ios::binary) << matgeom::encode_png(image, path.string());
+void write_png(const std::filesystem::path& path, const matbase::ImagePixels& image) {
+  std::ofstream(path, std::ios::binary) << matbase::encode_png(image, path.string());
 }
 
 // Mean colour of a plane lit from +v (light_toward_plus_v) or from -v, its material read from a
 // folder holding only a normal map, tilted toward +v in OpenGL's terms.
 double lit_mean(const std::filesystem::path& folder, bool light_toward_plus_v) {
-  const matgeom::FolderMaterial read = matgeom::read_material_folder(folder.string());
+  const matmaterial::FolderMaterial read = matmaterial::read_material_folder(folder.string());
   Material material = material_from_desc(read.material, read.images);
   matgeom::TriangleMesh plane = test_scenes::horizontal_square(2.0);
   plane.normals.assign(plane.positions.size(), glm::vec3(0.0f, 0.0f, 1.0f));
@@ -96,11 +96,11 @@ TEST_CASE("A scene file's material folder shades with its maps and is labelled w
   for (size_t i = 0; i < frame.label.size(); ++i) {
     if (frame.alpha[i] < 1.0f) continue;  // the silhouette blends with the background
     ++hits;
-    CHECK(frame.label[i] == matgeom::label_id(matgeom::MaterialClass::Fabric));
+    CHECK(frame.label[i] == matmaterial::label_id(matmaterial::MaterialClass::Fabric));
     const std::vector<float>& base = frame.parameter(MaterialParameter::BaseColor);
-    CHECK(base[3 * i] == Approx(matgeom::srgb_to_linear(128.0 / 255.0)).epsilon(1e-4));
-    CHECK(base[3 * i + 1] == Approx(matgeom::srgb_to_linear(64.0 / 255.0)).epsilon(1e-4));
-    CHECK(base[3 * i + 2] == Approx(matgeom::srgb_to_linear(200.0 / 255.0)).epsilon(1e-4));
+    CHECK(base[3 * i] == Approx(matbase::srgb_to_linear(128.0 / 255.0)).epsilon(1e-4));
+    CHECK(base[3 * i + 1] == Approx(matbase::srgb_to_linear(64.0 / 255.0)).epsilon(1e-4));
+    CHECK(base[3 * i + 2] == Approx(matbase::srgb_to_linear(200.0 / 255.0)).epsilon(1e-4));
     CHECK(frame.parameter(MaterialParameter::Roughness)[i] == Approx(64.0 / 255.0).epsilon(1e-4));
     CHECK(frame.parameter(MaterialParameter::Metallic)[i] == 0.0f);
     CHECK(frame.parameter(MaterialParameter::Sheen)[i] == Approx(0.5f));
@@ -146,7 +146,7 @@ TEST_CASE("A folder's physical size sets how often its maps repeat on a part", "
   const std::filesystem::path root = fresh_folder("folder_tiles");
   const std::filesystem::path folder = root / "stripes";
   std::filesystem::create_directories(folder);
-  matgeom::ImagePixels halves = uniform_image(8, 20, 20, 20);
+  matbase::ImagePixels halves = uniform_image(8, 20, 20, 20);
   for (int y = 0; y < 8; ++y)
     for (int x = 4; x < 8; ++x)
       for (int c = 0; c < 3; ++c) halves.data[static_cast<size_t>(y * 8 + x) * 4u + static_cast<size_t>(c)] = 230;
@@ -158,7 +158,7 @@ TEST_CASE("A folder's physical size sets how often its maps repeat on a part", "
   const std::filesystem::path mesh_file = root / "plane.ply";
   matgeom::ObjectAsset asset;
   asset.mesh = plane;
-  asset.materials = {matgeom::MaterialDesc("plane")};
+  asset.materials = {matmaterial::MaterialDesc("plane")};
   matgeom::write_object(asset, mesh_file.string());
   std::ofstream(root / "scene.json") << R"({
     "camera": { "position": [0, 0, 3], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov_deg": 4.65, "width": 64, "height": 8 },
@@ -194,11 +194,11 @@ TEST_CASE("A material repeated for export reads its maps where the renderer's re
   // must put each map at the same place, or the exported object shows its pattern shifted (by
   // k - 1 tiles in v, as the hammered metal's dents were). Non-integer repeats, so that a shift
   // cannot hide as whole tiles.
-  const std::vector<matgeom::ImagePixels> images = {uniform_image(2, 128, 128, 255), uniform_image(2, 200, 100, 50)};
-  for (const matgeom::TextureTransform& placement :
-       {matgeom::TextureTransform{}, matgeom::TextureTransform{{0.25, -0.5}, 0.75, {2.0, 3.0}}}) {
+  const std::vector<matbase::ImagePixels> images = {uniform_image(2, 128, 128, 255), uniform_image(2, 200, 100, 50)};
+  for (const matmaterial::TextureTransform& placement :
+       {matmaterial::TextureTransform{}, matmaterial::TextureTransform{{0.25, -0.5}, 0.75, {2.0, 3.0}}}) {
     for (const double k : {1.46093, 4.0, 0.3}) {
-      matgeom::MaterialDesc desc("tiled");
+      matmaterial::MaterialDesc desc("tiled");
       desc.normal_image = 0;
       desc.normal_transform = placement;
       desc.set_image(MaterialParameter::BaseColor, 1);

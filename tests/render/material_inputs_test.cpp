@@ -4,7 +4,7 @@
 
 #include <array>
 
-#include "matgeom/srgb.h"
+#include "matbase/image/srgb.h"
 #include "matrender/asset.h"
 #include "matrender/scene.h"
 #include "scene/scene_data.h"
@@ -45,12 +45,12 @@ PrincipledInputs shaded_inputs(const Material& material) { return shaded_point(m
 
 TEST_CASE("Each texturable parameter is read from its texture and makes the material textured", "[render]") {
   const glm::vec4 texel(0.25f, 0.5f, 0.75f, 0.125f);
-  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) {
+  for (const matmaterial::MaterialParameterInfo& info : matmaterial::kMaterialParameters) {
     if (!info.texturable) continue;
     CAPTURE(info.name);
     Material material;
     CHECK(constant_inputs(material));
-    const glm::vec3 factor = info.kind == matgeom::ParameterKind::Color ? glm::vec3(0.5f, 1.0f, 0.8f) : glm::vec3(0.8f);
+    const glm::vec3 factor = info.kind == matmaterial::ParameterKind::Color ? glm::vec3(0.5f, 1.0f, 0.8f) : glm::vec3(0.8f);
     material[info.id].value = factor;
     material[info.id].texture = constant_texture(texel);
     material[info.id].channel = 3;
@@ -58,45 +58,45 @@ TEST_CASE("Each texturable parameter is read from its texture and makes the mate
     CHECK_FALSE(constant_inputs(material));
 
     const PrincipledInputs inputs = shaded_inputs(material);
-    if (info.kind == matgeom::ParameterKind::Color) {
+    if (info.kind == matmaterial::ParameterKind::Color) {
       CHECK(inputs.color(info.id) == factor * glm::vec3(texel));
     } else {
       CHECK(inputs.scalar(info.id) == 0.8f * texel.a);
     }
     // Every other parameter keeps its constant.
-    for (const matgeom::MaterialParameterInfo& other : matgeom::kMaterialParameters)
+    for (const matmaterial::MaterialParameterInfo& other : matmaterial::kMaterialParameters)
       if (other.id != info.id) CHECK(inputs.color(other.id) == Material().color(other.id));
   }
 }
 
 TEST_CASE("An asset's image on any texturable parameter reaches the shading, in the table's colour space", "[render]") {
   const std::array<uint8_t, 4> texel = {64, 128, 192, 32};
-  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) {
+  for (const matmaterial::MaterialParameterInfo& info : matmaterial::kMaterialParameters) {
     if (!info.texturable) continue;
     CAPTURE(info.name);
     matgeom::ObjectAsset asset;
     asset.mesh = test_scenes::horizontal_square(1.0);
     asset.images.push_back({"texel", 1, 1, 4, {texel.begin(), texel.end()}});
-    matgeom::MaterialDesc desc;
+    matmaterial::MaterialDesc desc;
     desc.set(info.id, 0.5).set_image(info.id, 0, 3);
     asset.materials = {desc};
     Scene scene;
     add_asset(scene, asset);
     const PrincipledInputs inputs = shaded_point(scene, glm::vec3(0.0f, 0.0f, 1.0f)).inputs;
-    if (info.kind == matgeom::ParameterKind::Color) {
+    if (info.kind == matmaterial::ParameterKind::Color) {
       // An sRGB image with alpha comes premultiplied by it (Blender's Straight alpha mode, the
       // material's alpha taken from elsewhere); a data image as stored.
       const float alpha = texel[3] / 255.0f;
       for (int c = 0; c < 3; ++c) {
         const float encoded = texel[static_cast<size_t>(c)] / 255.0f;
         const float expected =
-            info.texture_space == ColorSpace::SRGB ? matgeom::srgb_to_linear(encoded * alpha) : encoded;
+            info.texture_space == ColorSpace::SRGB ? matbase::srgb_to_linear(encoded * alpha) : encoded;
         CHECK(inputs.color(info.id)[c] == Approx(0.5f * expected).epsilon(1e-5));
       }
     } else {
       CHECK(inputs.scalar(info.id) == Approx(0.5f * texel[3] / 255.0f).epsilon(1e-5));
     }
-    for (const matgeom::MaterialParameterInfo& other : matgeom::kMaterialParameters)
+    for (const matmaterial::MaterialParameterInfo& other : matmaterial::kMaterialParameters)
       if (other.id != info.id) CHECK(inputs.color(other.id) == Material().color(other.id));
   }
 }
@@ -115,7 +115,7 @@ TEST_CASE("Parameters sharing one packed image read their own channels of it", "
 
 TEST_CASE("A new material has Blender's defaults from the table", "[render]") {
   const Material material;
-  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) {
+  for (const matmaterial::MaterialParameterInfo& info : matmaterial::kMaterialParameters) {
     CAPTURE(info.name);
     CHECK(material.color(info.id) == glm::vec3(static_cast<float>(info.default_value)));
     CHECK_FALSE(material[info.id].texture);
@@ -141,8 +141,8 @@ TEST_CASE("An asset's texture transform moves its image on the UVs, per input, p
   matgeom::ObjectAsset asset;
   asset.mesh = test_scenes::horizontal_square(1.0);
   asset.images.push_back({"ramp", 4, 1, 1, {ramp.begin(), ramp.end()}});
-  matgeom::MaterialDesc desc;
-  const matgeom::TextureTransform shifted{{0.25, 0.0}, 0.0, {1.0, 1.0}};
+  matmaterial::MaterialDesc desc;
+  const matmaterial::TextureTransform shifted{{0.25, 0.0}, 0.0, {1.0, 1.0}};
   desc.set(MaterialParameter::Roughness, 1.0).set_image(MaterialParameter::Roughness, 0, 0, shifted);
   desc.set(MaterialParameter::Metallic, 1.0).set_image(MaterialParameter::Metallic, 0, 0);
   asset.materials = {desc};

@@ -11,7 +11,7 @@
 #include "film/camera_rays.h"
 #include "film/reachable_pixels.h"
 #include "film/pixel_filter.h"
-#include "matgeom/builtin_objects.h"
+#include "matgeom/builtin/builtin_objects.h"
 #include "matrender/asset.h"
 #include "matrender/camera.h"
 #include "matrender/render.h"
@@ -84,7 +84,7 @@ void check_same_frames(const FrameBuffers& a, const FrameBuffers& b) {
   check_same_floats(a.normal_tangent, b.normal_tangent, "tangent-space normal");
   check_same_floats(a.ambient_occlusion, b.ambient_occlusion, "ambient occlusion");
   check_same_floats(a.color_variance, b.color_variance, "colour variance");
-  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters)
+  for (const matmaterial::MaterialParameterInfo& info : matmaterial::kMaterialParameters)
     if (a.aovs & parameter_aov(info.id)) check_same_floats(a.parameter(info.id), b.parameter(info.id), "a parameter");
   CHECK(a.label == b.label);
   CHECK(a.part_id == b.part_id);

@@ -11,7 +11,7 @@
 #include <OpenImageIO/imageio.h>
 #include <unistd.h>
 
-#include "matgeom/srgb.h"
+#include "matbase/image/srgb.h"
 #include "matrender/image_io.h"
 #include "matrender/texture.h"
 
@@ -80,7 +80,7 @@ TEST_CASE("Display PNGs store straight alpha: a partly covered pixel keeps the s
   const fs::path dir = temp_dir();
   // A surface of linear 0.5 covering a quarter of the pixel, premultiplied as rendered.
   const std::vector<float> premultiplied = {0.125f, 0.125f, 0.0f}, coverage = {0.25f};
-  matgeom::write_display_png((dir / "d.png").string(), 1, 1, premultiplied.data(), coverage.data());
+  matbase::write_display_png((dir / "d.png").string(), 1, 1, premultiplied.data(), coverage.data());
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
   auto in = OIIO::ImageInput::open((dir / "d.png").string(), &config);
@@ -152,9 +152,9 @@ TEST_CASE("write_frame writes EXR values exactly and leaves no temporary files",
   // Colour, then an EXR and a PNG per material parameter (named as in the table) and per
   // other AOV (three normals, ambient occlusion, colour variance, depth, label, part id, sample
   // count), and the alpha PNG.
-  CHECK(written.size() == 2 + 2 * matgeom::kMaterialParameterCount + 2 * 9 + 1);
+  CHECK(written.size() == 2 + 2 * matmaterial::kMaterialParameterCount + 2 * 9 + 1);
   for (const auto& path : written) CHECK(fs::exists(path));
-  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters)
+  for (const matmaterial::MaterialParameterInfo& info : matmaterial::kMaterialParameters)
     for (const char* extension : {".exr", ".png"})
       CHECK(fs::exists(dir / "out" / (std::string("v_") + info.name + extension)));
   for (const auto& entry : fs::directory_iterator(dir / "out"))
@@ -190,7 +190,7 @@ TEST_CASE("sRGB images with alpha filter premultiplied, as Blender's Straight al
   const glm::vec2 uv(0.25f + 0.125f, 0.5f);
   const glm::vec4 premultiplied = image->sample(uv);
   CHECK(premultiplied.x == 0.0f);
-  CHECK(premultiplied.y == Approx(matgeom::srgb_to_linear(0.25f)).epsilon(1e-5));
+  CHECK(premultiplied.y == Approx(matbase::srgb_to_linear(0.25f)).epsilon(1e-5));
   CHECK(premultiplied.w == Approx(0.25f));
   const glm::vec4 unassociated = image->sample(uv, true);
   CHECK(unassociated.x == 0.0f);

@@ -2,83 +2,18 @@
 // An object ready to render: its mesh (one part per material slot), the slots' Principled
 // materials and the 8-bit images they reference. Produced by the mesh readers and the built-in
 // objects; libmatrender turns it into scene materials (matrender/asset.h).
-#include <array>
-#include <cstdint>
-#include <string>
-#include <utility>
 #include <vector>
 
-#include <glm/glm.hpp>
-
-#include "matgeom/material_parameters.h"
+#include "matbase/image/image_pixels.h"
 #include "matgeom/mesh.h"
-#include "matgeom/texture_transform.h"
+#include "matmaterial/material_description.h"
 
 namespace matgeom {
 
-// Decoded 8-bit image, rows top to bottom, channels interleaved (1..4).
-struct ImagePixels {
-  std::string name;  // file name or "<file>#image<k>" for embedded images
-  int width = 0;
-  int height = 0;
-  int channels = 0;
-  std::vector<uint8_t> data;
-};
-
-// Positive size, 1 to 4 channels, and exactly width x height x channels bytes.
-bool is_well_formed(const ImagePixels& image);
-
-// The value channel `channel` (0 R, 1 G, 2 B, 3 A) of texel `texel` reads as, the way the renderer
-// expands images to RGBA: a grey image (1 channel, or 2 with alpha) gives its grey for R, G and
-// B; an image without alpha reads 255 for A.
-uint8_t texel_channel(const ImagePixels& image, size_t texel, int channel);
-
-enum class TextureWrap { Repeat, Clamp };
-
-// One Principled parameter of a material slot: a constant, or the constant times an image of the
-// asset (a factor, as glTF and Blender's importers multiply them): its RGB for a colour, one
-// channel for a scalar.
-struct MaterialInput {
-  glm::dvec3 value{0.0};  // a scalar is held in every channel
-  int image = -1;         // index into ObjectAsset::images, -1 = constant
-  int channel = 0;        // scalars: the image channel read (0 R, 1 G, 2 B, 3 A)
-  TextureTransform transform;  // where the image lies on the UVs (glTF's KHR_texture_transform)
-};
-
-// A material slot: one input per row of the parameter table (matgeom/material_parameters.h),
-// read in the colour space the table gives, plus a tangent-space normal map. The readers map
-// their formats onto it as Blender's importers do (docs/conventions.md).
-struct MaterialDesc {
-  // Every input at Blender's default (the table's), no images: the surface Blender gives geometry
-  // without a material.
-  MaterialDesc();
-  explicit MaterialDesc(std::string slot_name) : MaterialDesc() { name = std::move(slot_name); }
-
-  std::string name;
-  std::array<MaterialInput, kMaterialParameterCount> inputs;
-  int normal_image = -1;  // tangent space, OpenGL convention, Non-Color
-  double normal_strength = 1.0;
-  TextureTransform normal_transform;
-  TextureWrap wrap = TextureWrap::Repeat;
-  int label_id = 0;  // material family id written to the label AOV
-
-  MaterialInput& operator[](MaterialParameter p) { return inputs[static_cast<size_t>(p)]; }
-  const MaterialInput& operator[](MaterialParameter p) const { return inputs[static_cast<size_t>(p)]; }
-  // A constant (or the factor of an image): set(MaterialParameter::Roughness, 0.3).
-  MaterialDesc& set(MaterialParameter p, double value);
-  MaterialDesc& set(MaterialParameter p, const glm::dvec3& value);
-  // The parameter comes from image `image` (times its value); a scalar reads `channel`.
-  MaterialDesc& set_image(MaterialParameter p, int image, int channel = 0, const TextureTransform& transform = {});
-  // Roughness and metallic from glTF's packed image: its G and B (the table's packed channels).
-  MaterialDesc& set_metallic_roughness_image(int image, const TextureTransform& transform = {});
-  glm::dvec3 color(MaterialParameter p) const { return (*this)[p].value; }
-  double scalar(MaterialParameter p) const { return (*this)[p].value.x; }
-};
-
 struct ObjectAsset {
   TriangleMesh mesh;                     // part k uses materials[k]
-  std::vector<MaterialDesc> materials;
-  std::vector<ImagePixels> images;
+  std::vector<matmaterial::MaterialDesc> materials;
+  std::vector<matbase::ImagePixels> images;
 };
 
 }  // namespace matgeom

@@ -14,7 +14,7 @@ namespace matgeom::builtin {
 
 ObjectAsset make_bed(uint32_t seed) {
   ObjectBuilder b(seed);
-  UniformSource& r = b.random();
+  matbase::UniformSource& r = b.random();
   // European mattress sizes: 0.9, 1.4, 1.6 or 1.8 m wide, 2.0 m long, 18-25 cm thick.
   static const double kMattressWidths[] = {0.9, 1.4, 1.6, 1.8};
   const double mattress_width = kMattressWidths[r.choice(4)], mattress_length = 2.0;

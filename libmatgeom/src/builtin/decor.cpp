@@ -155,7 +155,7 @@ void add_on_floor_centred(ObjectBuilder& builder, const Pieces& pieces) {
 
 ObjectAsset make_pillow(uint32_t seed) {
   ObjectBuilder b(seed);
-  UniformSource& r = b.random();
+  matbase::UniformSource& r = b.random();
   // A square scatter cushion of 40-60 cm filled to 12-18 cm, or an oblong lumbar cushion of about
   // 30 x 50 cm, flatter.
   const bool lumbar = r.next() < 0.25;
@@ -178,7 +178,7 @@ ObjectAsset make_pillow(uint32_t seed) {
 
 ObjectAsset make_lamp(uint32_t seed) {
   ObjectBuilder b(seed);
-  UniformSource& r = b.random();
+  matbase::UniformSource& r = b.random();
   // Either a ceramic urn body with a short metal neck, or a slim metal stem on a round plinth.
   const bool urn = r.next() < 0.4;
   const Finish plinth_finish = std::array<Finish, 3>{Finish::BrushedMetal, Finish::Wood, Finish::Concrete}[r.choice(3)];
@@ -269,7 +269,7 @@ ObjectAsset make_lamp(uint32_t seed) {
 
 ObjectAsset make_book(uint32_t seed) {
   ObjectBuilder b(seed);
-  UniformSource& r = b.random();
+  matbase::UniformSource& r = b.random();
   // Trimmed page sizes (width x height) of common formats: mass-market and trade paperbacks,
   // demy and royal hardbacks, a large-format art book.
   static const std::array<glm::dvec2, 5> kFormats = {
@@ -315,7 +315,7 @@ ObjectAsset make_book(uint32_t seed) {
 
 ObjectAsset make_picture_frame(uint32_t seed) {
   ObjectBuilder b(seed);
-  UniformSource& r = b.random();
+  matbase::UniformSource& r = b.random();
   // Photo sizes 13 x 18, 15 x 20, 18 x 24 and 20 x 25 cm, portrait or, for the larger ones (so
   // the frame stands at least 15 cm tall), landscape.
   static const std::array<glm::dvec2, 4> kPhotos = {{{0.13, 0.18}, {0.15, 0.2}, {0.18, 0.24}, {0.2, 0.25}}};

@@ -8,16 +8,16 @@
 #include "builtin/furniture_solids.h"
 #include "builtin/materials.h"
 #include "builtin/object_builder.h"
-#include "uniform_source.h"
+#include "matbase/uniform_source.h"
 
 namespace matgeom::builtin {
 
-inline Finish wooden(UniformSource& random) { return random.next() < 0.65 ? Finish::Wood : Finish::PaintedWood; }
-inline Finish upholstery(UniformSource& random) { return random.next() < 0.7 ? Finish::Fabric : Finish::Leather; }
+inline Finish wooden(matbase::UniformSource& random) { return random.next() < 0.65 ? Finish::Wood : Finish::PaintedWood; }
+inline Finish upholstery(matbase::UniformSource& random) { return random.next() < 0.7 ? Finish::Fabric : Finish::Leather; }
 
 enum class LegStyle { Square, Tapered, Turned, Tube };
 
-inline LegStyle random_leg_style(UniformSource& random) { return static_cast<LegStyle>(random.choice(4)); }
+inline LegStyle random_leg_style(matbase::UniformSource& random) { return static_cast<LegStyle>(random.choice(4)); }
 
 // A turned leg, as on a lathe: a plain cylindrical block at the top where the rails join, a bead,
 // a baluster narrowing to a slim ankle and a small foot. Shape as (radius, height) fractions.

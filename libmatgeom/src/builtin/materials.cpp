@@ -1,13 +1,13 @@
 #include "builtin/materials.h"
 
-#include "matgeom/material_library.h"
+#include "matmaterial/library/material_library.h"
 
 namespace matgeom::builtin {
 namespace {
 
-using MC = MaterialClass;
+using MC = matmaterial::MaterialClass;
 
-LibraryMaterialSpec library_spec(Finish finish, UniformSource& random) {
+matmaterial::LibraryMaterialSpec library_spec(Finish finish, matbase::UniformSource& random) {
   const uint32_t seed = random.bits();
   switch (finish) {
     case Finish::Wood:
@@ -35,7 +35,7 @@ LibraryMaterialSpec library_spec(Finish finish, UniformSource& random) {
 }
 
 // Appends `image` of `generated` to the asset, if it is one, and returns its new index.
-int moved_image(ObjectAsset& asset, FolderMaterial& generated, int image) {
+int moved_image(ObjectAsset& asset, matmaterial::FolderMaterial& generated, int image) {
   if (image < 0) return -1;
   asset.images.push_back(std::move(generated.images[static_cast<size_t>(image)]));
   return static_cast<int>(asset.images.size() - 1);
@@ -43,13 +43,13 @@ int moved_image(ObjectAsset& asset, FolderMaterial& generated, int image) {
 
 }  // namespace
 
-BuiltinMaterial make_material(ObjectAsset& asset, const std::string& slot, Finish finish, UniformSource& random) {
-  FolderMaterial generated =
-      generate_library_material(library_spec(finish, random), {kBuiltinTextureSize, 1});
+BuiltinMaterial make_material(ObjectAsset& asset, const std::string& slot, Finish finish, matbase::UniformSource& random) {
+  matmaterial::FolderMaterial generated =
+      matmaterial::generate_library_material(library_spec(finish, random), {kBuiltinTextureSize, 1});
   // The images the material reads: the height map shades nothing.
   BuiltinMaterial result{generated.material, *generated.tile_size_m};
   result.material.name = slot;
-  for (MaterialInput& input : result.material.inputs) input.image = moved_image(asset, generated, input.image);
+  for (matmaterial::MaterialInput& input : result.material.inputs) input.image = moved_image(asset, generated, input.image);
   result.material.normal_image = moved_image(asset, generated, result.material.normal_image);
   return result;
 }

@@ -1,11 +1,11 @@
 #pragma once
 // The built-in objects' materials: a finish (wood, fabric, ...) is a material of the procedural
-// library (matgeom/material_library.h), its style and seed drawn from the object's random
+// library (matmaterial/library/material_library.h), its style and seed drawn from the object's random
 // numbers where the finish leaves them open.
 #include <string>
 
+#include "matbase/uniform_source.h"
 #include "matgeom/object_asset.h"
-#include "uniform_source.h"
 
 namespace matgeom::builtin {
 
@@ -27,11 +27,11 @@ constexpr int kBuiltinTextureSize = 256;
 constexpr int kBuiltinTileResolution = 1024;
 
 struct BuiltinMaterial {
-  MaterialDesc material;  // named after its slot; its images appended to the asset's
+  matmaterial::MaterialDesc material;  // named after its slot; its images appended to the asset's
   double tile_size_m = 1.0;  // how long one repeat of its maps is (the UV pass's UVs scale them)
 };
 
 // Appends the material's images to asset.images and returns the material, named `slot`.
-BuiltinMaterial make_material(ObjectAsset& asset, const std::string& slot, Finish finish, UniformSource& random);
+BuiltinMaterial make_material(ObjectAsset& asset, const std::string& slot, Finish finish, matbase::UniformSource& random);
 
 }  // namespace matgeom::builtin

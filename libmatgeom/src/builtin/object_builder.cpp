@@ -4,8 +4,8 @@
 
 #include "builtin/shapes.h"
 #include "matgeom/tangents.h"
-#include "matgeom/uv_pass.h"
-#include "matgeom/uv_scale.h"
+#include "matgeom/uv/uv_pass.h"
+#include "matgeom/uv/uv_scale.h"
 
 namespace matgeom::builtin {
 
@@ -18,13 +18,13 @@ uint32_t ObjectBuilder::add_part(const std::string& name, Finish finish) {
   return static_cast<uint32_t>(asset_.mesh.part_names.size() - 1);
 }
 
-uint32_t ObjectBuilder::add_part(const std::string& name, const MaterialDesc& material) {
+uint32_t ObjectBuilder::add_part(const std::string& name, const matmaterial::MaterialDesc& material) {
   asset_.mesh.part_names.push_back(name);
   asset_.materials.push_back(material);
   return static_cast<uint32_t>(asset_.mesh.part_names.size() - 1);
 }
 
-int ObjectBuilder::add_image(ImagePixels image) {
+int ObjectBuilder::add_image(matbase::ImagePixels image) {
   asset_.images.push_back(std::move(image));
   return static_cast<int>(asset_.images.size() - 1);
 }

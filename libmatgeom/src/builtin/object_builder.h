@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "builtin/materials.h"
-#include "uniform_source.h"
+#include "matbase/uniform_source.h"
 #include "matgeom/object_asset.h"
 
 namespace matgeom::builtin {
@@ -18,14 +18,14 @@ class ObjectBuilder {
   explicit ObjectBuilder(uint32_t seed) : random_(seed) {}
 
   // Shape parameters and materials draw from this, so a seed fixes the object.
-  UniformSource& random() { return random_; }
+  matbase::UniformSource& random() { return random_; }
 
   // A new part (material slot) named `name` with a material of `finish`; returns its id.
   uint32_t add_part(const std::string& name, Finish finish);
   // A new part with a material of its own (images it names come from add_image); returns its id.
-  uint32_t add_part(const std::string& name, const MaterialDesc& material);
+  uint32_t add_part(const std::string& name, const matmaterial::MaterialDesc& material);
   // An image for materials to name; returns its index.
-  int add_image(ImagePixels image);
+  int add_image(matbase::ImagePixels image);
 
   // Appends a closed piece of geometry (positions and normals) to part `part`.
   void add(uint32_t part, const TriangleMesh& piece);
@@ -43,7 +43,7 @@ class ObjectBuilder {
   // The finishes' library maps at their physical size on the object's UVs.
   void repeat_maps_to_size();
 
-  UniformSource random_;
+  matbase::UniformSource random_;
   ObjectAsset asset_;
   std::vector<std::optional<double>> tile_sizes_;  // by part: its library maps' physical size
   size_t uv_mapped_pieces_ = 0;

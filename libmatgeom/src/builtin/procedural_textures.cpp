@@ -1,7 +1,7 @@
 #include "builtin/procedural_textures.h"
 
-#include "matgeom/srgb.h"
-#include "matgeom/unorm.h"
+#include "matbase/image/srgb.h"
+#include "matbase/image/unorm.h"
 
 #include <algorithm>
 #include <cmath>
@@ -54,13 +54,8 @@ double fractal_noise(double x, double y, int base_period, uint32_t salt) {
   return fractal_noise(x, y, base_period, base_period, salt);
 }
 
-
-glm::dvec3 srgb_to_linear(const glm::dvec3& c) {
-  return {matgeom::srgb_to_linear(c.r), matgeom::srgb_to_linear(c.g), matgeom::srgb_to_linear(c.b)};
-}
-
-ImagePixels rgb_image(std::string name, int size, const std::function<glm::dvec3(double, double)>& texel) {
-  ImagePixels image;
+matbase::ImagePixels rgb_image(std::string name, int size, const std::function<glm::dvec3(double, double)>& texel) {
+  matbase::ImagePixels image;
   image.name = std::move(name);
   image.width = image.height = size;
   image.channels = 3;
@@ -68,12 +63,12 @@ ImagePixels rgb_image(std::string name, int size, const std::function<glm::dvec3
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x) {
       const glm::dvec3 rgb = texel((x + 0.5) / size, 1.0 - (y + 0.5) / size);
-      for (int c = 0; c < 3; ++c) image.data.push_back(unorm8(rgb[c]));
+      for (int c = 0; c < 3; ++c) image.data.push_back(matbase::unorm8(rgb[c]));
     }
   return image;
 }
 
-ImagePixels normal_map_image(std::string name, int size, const std::function<double(double, double)>& height,
+matbase::ImagePixels normal_map_image(std::string name, int size, const std::function<double(double, double)>& height,
                              double bump) {
   std::vector<double> h(static_cast<size_t>(size) * static_cast<size_t>(size));
   const auto at = [&](int x, int y) -> double& {

@@ -7,13 +7,13 @@
 
 #include <glm/glm.hpp>
 
-#include "library/periodic_noise.h"
 #include "matgeom/object_asset.h"
+#include "matmaterial/library/periodic_noise.h"
 
 namespace matgeom::builtin {
 
-using library::hash32;
-using library::hash_to_unit;
+using matmaterial::library::hash32;
+using matmaterial::library::hash_to_unit;
 
 // Value noise in [0, 1) on a lattice of period_x x period_y cells across the unit square,
 // periodic in both axes, smoothstep-interpolated.
@@ -26,15 +26,14 @@ double fractal_noise(double x, double y, int base_period, uint32_t salt);
 double fractal_noise(double x, double y, int base_period_x, int base_period_y, uint32_t salt);
 
 double smoothstep(double t);
-glm::dvec3 srgb_to_linear(const glm::dvec3& c);
 
 // A size x size RGB image; texel(u, v) returns values in [0, 1] (sRGB-encoded for colour maps);
 // rows run top to bottom, so row y holds v = 1 - (y + 0.5) / size.
-ImagePixels rgb_image(std::string name, int size, const std::function<glm::dvec3(double, double)>& texel);
+matbase::ImagePixels rgb_image(std::string name, int size, const std::function<glm::dvec3(double, double)>& texel);
 
 // Tangent-space normal map (OpenGL convention, +Y = +v) of the periodic height field height(u, v)
 // by central differences; `bump` scales the height difference per texel into slope.
-ImagePixels normal_map_image(std::string name, int size, const std::function<double(double, double)>& height,
+matbase::ImagePixels normal_map_image(std::string name, int size, const std::function<double(double, double)>& height,
                              double bump);
 
 }  // namespace matgeom::builtin

@@ -14,7 +14,7 @@ namespace matgeom::builtin {
 
 ObjectAsset make_chair(uint32_t seed) {
   ObjectBuilder b(seed);
-  UniformSource& r = b.random();
+  matbase::UniformSource& r = b.random();
   // Dining chair (sizes as furniture catalogues give them): seat 0.44-0.47 m high, 0.42-0.48 m
   // wide, 0.40-0.46 m deep; back 0.80-0.95 m high, its posts leaning back 3-8 cm at the top.
   const double seat_height = r.between(0.44, 0.47), seat_width = r.between(0.42, 0.48);
@@ -107,7 +107,7 @@ ObjectAsset make_chair(uint32_t seed) {
 
 ObjectAsset make_stool(uint32_t seed) {
   ObjectBuilder b(seed);
-  UniformSource& r = b.random();
+  matbase::UniformSource& r = b.random();
   // Seat heights by use: 0.45 m at a table, 0.65 m at a 0.9 m kitchen counter, 0.75 m at a
   // 1.05 m bar (the seat 0.25-0.3 m below the counter leaves room for the thighs).
   static const double kSeatHeights[] = {0.45, 0.65, 0.75};
@@ -167,7 +167,7 @@ ObjectAsset make_stool(uint32_t seed) {
 
 ObjectAsset make_sofa(uint32_t seed) {
   ObjectBuilder b(seed);
-  UniformSource& r = b.random();
+  matbase::UniformSource& r = b.random();
   // Sofa (catalogue norms): 1.6-2.25 m wide with two or three seats, 0.85-0.95 m deep, seat
   // 0.42-0.46 m high on 12-16 cm cushions, arms 0.58-0.66 m, back 0.75-0.85 m.
   const double width = r.between(1.6, 2.25), depth = r.between(0.85, 0.95);

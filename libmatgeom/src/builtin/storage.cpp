@@ -14,7 +14,7 @@ namespace matgeom::builtin {
 
 ObjectAsset make_cabinet(uint32_t seed) {
   ObjectBuilder b(seed);
-  UniformSource& r = b.random();
+  matbase::UniformSource& r = b.random();
   // A row of fronts across the cabinet: `across` doors or drawers, `height` metres tall (0: a
   // share of what the fixed rows leave).
   struct Row {
@@ -113,7 +113,7 @@ ObjectAsset make_cabinet(uint32_t seed) {
 
 ObjectAsset make_shelf(uint32_t seed) {
   ObjectBuilder b(seed);
-  UniformSource& r = b.random();
+  matbase::UniformSource& r = b.random();
   // Bookcases are 0.9-1.9 m high, 0.7-1.0 m wide and 0.25-0.35 m deep (paperbacks are 0.11 m
   // deep, large art books 0.3 m), their shelves 0.28-0.38 m apart: a 0.24 m book and a hand.
   const double height = r.between(0.9, 1.9), width = r.between(0.7, 1.0), depth = r.between(0.25, 0.35);

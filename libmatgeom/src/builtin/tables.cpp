@@ -14,7 +14,7 @@ namespace matgeom::builtin {
 
 ObjectAsset make_table(uint32_t seed) {
   ObjectBuilder b(seed);
-  UniformSource& r = b.random();
+  matbase::UniformSource& r = b.random();
   // Dining tables stand 0.72-0.76 m: about 0.3 m above a 0.45 m chair seat.
   const double height = r.between(0.72, 0.76), thickness = r.between(0.025, 0.04);
   const double underside = height - thickness;
@@ -83,7 +83,7 @@ ObjectAsset make_table(uint32_t seed) {
 
 ObjectAsset make_desk(uint32_t seed) {
   ObjectBuilder b(seed);
-  UniformSource& r = b.random();
+  matbase::UniformSource& r = b.random();
   // Desks are 0.73-0.76 m high (EN 527-1 gives 0.74 m for fixed-height desks), 1.1-1.6 m wide
   // and 0.6-0.75 m deep; the top is 25-35 mm thick.
   const double height = r.between(0.73, 0.76), width = r.between(1.1, 1.6), depth = r.between(0.6, 0.75);

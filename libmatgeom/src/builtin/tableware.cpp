@@ -27,7 +27,7 @@ TriangleMesh handle(double radius, double thickness, const glm::dvec3& centre, d
 
 ObjectAsset make_mug(uint32_t seed) {
   ObjectBuilder b(seed);
-  UniformSource& r = b.random();
+  matbase::UniformSource& r = b.random();
   const double height = r.between(0.085, 0.11), radius = r.between(0.037, 0.045);
   const double taper = r.between(-0.05, 0.08);  // radius change per metre of height
   const auto outer = [=](double z) { return radius + taper * z; };
@@ -42,7 +42,7 @@ ObjectAsset make_mug(uint32_t seed) {
 
 ObjectAsset make_bowl(uint32_t seed) {
   ObjectBuilder b(seed);
-  UniformSource& r = b.random();
+  matbase::UniformSource& r = b.random();
   const double height = r.between(0.055, 0.09), rim = r.between(0.07, 0.1), foot = r.between(0.03, 0.042);
   // The wall flares out fast from the foot and turns vertical at the rim.
   const auto outer = [=](double z) {
@@ -56,7 +56,7 @@ ObjectAsset make_bowl(uint32_t seed) {
 
 ObjectAsset make_bottle(uint32_t seed) {
   ObjectBuilder b(seed);
-  UniformSource& r = b.random();
+  matbase::UniformSource& r = b.random();
   const double radius = r.between(0.03, 0.04), body_height = r.between(0.14, 0.19);
   const double shoulder = r.between(0.04, 0.06), neck_radius = r.between(0.011, 0.015), neck = r.between(0.025, 0.04);
   const double top = body_height + shoulder + neck;
@@ -82,7 +82,7 @@ ObjectAsset make_bottle(uint32_t seed) {
 
 ObjectAsset make_plant_pot(uint32_t seed) {
   ObjectBuilder b(seed);
-  UniformSource& r = b.random();
+  matbase::UniformSource& r = b.random();
   const double height = r.between(0.12, 0.22), base = r.between(0.05, 0.08);
   const double flare = r.between(0.15, 0.3);  // radius gained per metre of height
   const auto outer = [=](double z) { return base + flare * z; };
@@ -106,7 +106,7 @@ ObjectAsset make_plant_pot(uint32_t seed) {
 
 ObjectAsset make_basket(uint32_t seed) {
   ObjectBuilder b(seed);
-  UniformSource& r = b.random();
+  matbase::UniformSource& r = b.random();
   const double height = r.between(0.12, 0.2), rim = r.between(0.14, 0.2), bottom = rim * r.between(0.7, 0.85);
   const auto outer = [=](double z) { return bottom + (rim - bottom) * std::sqrt(z / height); };
   const uint32_t weave = b.add_part("weave", Finish::Wicker);

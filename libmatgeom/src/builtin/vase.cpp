@@ -7,9 +7,9 @@
 #include "builtin/objects.h"
 #include "builtin/procedural_textures.h"
 #include "builtin/shapes.h"
-#include "uniform_source.h"
-#include "matgeom/material_classes.h"
-#include "matgeom/srgb.h"
+#include "matbase/image/srgb.h"
+#include "matbase/uniform_source.h"
+#include "matmaterial/material_classes.h"
 
 // The vase keeps UVs of its own rather than the UV pass's: u around, v along the profile, so
 // that its glaze pools in rings and its band follows the wall.
@@ -39,7 +39,7 @@ struct VaseShape {
   double rim_height() const { return height - 0.5 * wall; }
 };
 
-VaseShape random_vase_shape(UniformSource& random) {
+VaseShape random_vase_shape(matbase::UniformSource& random) {
   VaseShape shape;
   shape.height = random.between(0.27, 0.33);
   shape.foot_radius = random.between(0.045, 0.06);
@@ -229,7 +229,7 @@ struct GlazePalette {
   glm::dvec3 band;  // the glaze band's colour
 };
 
-GlazePalette random_palette(UniformSource& random) {
+GlazePalette random_palette(matbase::UniformSource& random) {
   static const GlazePalette palettes[] = {
       {{0.78, 0.85, 0.76}, {0.45, 0.60, 0.50}, {0.20, 0.32, 0.55}},  // celadon, cobalt band
       {{0.93, 0.90, 0.82}, {0.70, 0.62, 0.50}, {0.55, 0.25, 0.12}},  // cream, iron-red band
@@ -248,7 +248,7 @@ double glaze_pooling(double u, double v, uint32_t salt) {
   return 0.5 + 0.5 * std::sin(2.0 * kPi * (3.0 * v + wobble));
 }
 
-ImagePixels glaze_base_color(const GlazePalette& palette, uint32_t salt) {
+matbase::ImagePixels glaze_base_color(const GlazePalette& palette, uint32_t salt) {
   return rgb_image("vase#base_color", kTextureSize, [&](double u, double v) {
     const double pooling = glaze_pooling(u, v, salt);
     const double mottling = fractal_noise(u, v, 8, salt + 1u);
@@ -263,7 +263,7 @@ ImagePixels glaze_base_color(const GlazePalette& palette, uint32_t salt) {
 
 // glTF channel layout, as Blender's importer reads it: G = roughness, B = metallic (R, ambient
 // occlusion in glTF, is unused and left white). Pooled glaze is glossier.
-ImagePixels glaze_metallic_roughness(uint32_t salt) {
+matbase::ImagePixels glaze_metallic_roughness(uint32_t salt) {
   return rgb_image("vase#metallic_roughness", kTextureSize, [&](double u, double v) {
     const double pooling = glaze_pooling(u, v, salt);
     const double variation = fractal_noise(u, v, 8, salt + 2u);
@@ -273,7 +273,7 @@ ImagePixels glaze_metallic_roughness(uint32_t salt) {
 }
 
 // Tangent-space normal map of small glaze bumps: about 5 degrees of tilt at the steepest.
-ImagePixels glaze_normal_map(uint32_t salt) {
+matbase::ImagePixels glaze_normal_map(uint32_t salt) {
   return normal_map_image("vase#normal", kTextureSize, [&](double u, double v) { return fractal_noise(u, v, 16, salt + 3u); },
                           4.0);
 }
@@ -282,7 +282,7 @@ ImagePixels glaze_normal_map(uint32_t salt) {
 
 ObjectAsset make_vase(uint32_t seed) {
   ObjectBuilder builder(seed);
-  UniformSource& random = builder.random();
+  matbase::UniformSource& random = builder.random();
   const VaseShape shape = random_vase_shape(random);
   const GlazePalette palette = random_palette(random);
   const uint32_t texture_salt = random.bits();
@@ -291,24 +291,24 @@ ObjectAsset make_vase(uint32_t seed) {
   const int glaze_metallic_roughness_image = builder.add_image(glaze_metallic_roughness(texture_salt));
   const int glaze_normals = builder.add_image(glaze_normal_map(texture_salt));
 
-  using P = MaterialParameter;
-  MaterialDesc body("body");
+  using P = matmaterial::MaterialParameter;
+  matmaterial::MaterialDesc body("body");
   body.set(P::BaseColor, 1.0).set_image(P::BaseColor, glaze_color);  // factor x texture, as in glTF
   body.set(P::Roughness, 1.0);  // factor x texture.G in [0.2, 0.5]
   body.set(P::Metallic, 0.0);   // factor x texture.B, both 0
   body.set_metallic_roughness_image(glaze_metallic_roughness_image);
   body.normal_image = glaze_normals;
   body.normal_strength = 1.0;
-  body.label_id = label_id(MaterialClass::Ceramic);
+  body.label_id = matmaterial::label_id(matmaterial::MaterialClass::Ceramic);
   const uint32_t body_part = builder.add_part("body", body);
 
-  MaterialDesc band("glaze_band");
-  band.set(P::BaseColor, glm::dvec3(matgeom::srgb_to_linear(palette.band.r), matgeom::srgb_to_linear(palette.band.g),
-                                    matgeom::srgb_to_linear(palette.band.b)));
+  matmaterial::MaterialDesc band("glaze_band");
+  band.set(P::BaseColor, glm::dvec3(matbase::srgb_to_linear(palette.band.r), matbase::srgb_to_linear(palette.band.g),
+                                    matbase::srgb_to_linear(palette.band.b)));
   band.set(P::Metallic, 0.0).set(P::Roughness, 0.12);
   band.normal_image = glaze_normals;
   band.normal_strength = 0.5;
-  band.label_id = label_id(MaterialClass::Ceramic);
+  band.label_id = matmaterial::label_id(matmaterial::MaterialClass::Ceramic);
   const uint32_t band_part = builder.add_part("glaze_band", band);
 
   const Profile profile = vase_profile(shape);

@@ -61,7 +61,7 @@ struct FrameMaps {
 };
 
 // Writes the frame's eight files into `variant_folder`'s map folders (made if missing), each
-// under a temporary name renamed when all are written, images/ last (matgeom::AtomicFileSet):
+// under a temporary name renamed when all are written, images/ last (matbase::AtomicFileSet):
 // after a crash a frame is there whole or not at all. Throws std::invalid_argument for arrays
 // of the wrong size, a label beyond 255 or a sample count outside [1, 65535], std::runtime_error naming the file a write failed on.
 void write_frame_maps(const std::filesystem::path& variant_folder, const std::string& stem, const FrameMaps& maps);

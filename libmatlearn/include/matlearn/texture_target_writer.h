@@ -9,7 +9,7 @@
 #include <optional>
 #include <string>
 
-#include "matgeom/object_asset.h"
+#include "matbase/image/image_pixels.h"
 #include "matlearn/dataset_writer.h"
 
 namespace matlearn {
@@ -17,11 +17,11 @@ namespace matlearn {
 // A material's flat maps: its base colour (sRGB-encoded RGB), roughness and metallic (linear,
 // grey in three channels, as the paper's PNGs), and its tangent-space normal map if it has one.
 struct MaterialReferences {
-  matgeom::ImagePixels base_color, roughness, metallic;
-  std::optional<matgeom::ImagePixels> normal;
+  matbase::ImagePixels base_color, roughness, metallic;
+  std::optional<matbase::ImagePixels> normal;
 };
 
-// Throws std::invalid_argument for an image that is not well formed (matgeom::is_well_formed).
+// Throws std::invalid_argument for an image that is not well formed (matbase::is_well_formed).
 void write_texture_target_references(const std::filesystem::path& root, const std::string& material,
                                      const MaterialReferences& references);
 

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "matgeom/atomic_file.h"
-#include "matgeom/image_writing.h"
+#include "matbase/file/atomic_file.h"
+#include "matbase/image/image_writing.h"
 #include "matlearn/decoded_image.h"
 
 namespace matlearn {
@@ -120,41 +120,41 @@ void write_frame_maps(const fs::path& variant_folder, const std::string& stem, c
       throw std::invalid_argument("frame maps: sample count " + std::to_string(count) +
                                   " does not fit the 16-bit sample count map (1 to 65535)");
   for (const DatasetMapInfo& info : kMaps) fs::create_directories(variant_folder / info.folder);
-  matgeom::AtomicFileSet set(map_file(variant_folder, kMaps.back(), stem));
+  matbase::AtomicFileSet set(map_file(variant_folder, kMaps.back(), stem));
   auto path = [&](DatasetMap map) { return map_file(variant_folder, kMaps[static_cast<size_t>(map)], stem).string(); };
 
   // The albedo is the mean over hits; the display writer un-premultiplies, so premultiply it.
   std::vector<float> albedo(3 * n);
   for (size_t i = 0; i < 3 * n; ++i) albedo[i] = maps.base_color[i] * maps.coverage[i / 3];
-  matgeom::write_display_png(path(DatasetMap::Albedo), w, h, albedo.data(), maps.coverage.data(), 0.0, &set);
+  matbase::write_display_png(path(DatasetMap::Albedo), w, h, albedo.data(), maps.coverage.data(), 0.0, &set);
 
   const std::vector<float> orm = covered_rgba(maps, [&](size_t p, float* out) {
     out[0] = maps.ambient_occlusion[p];
     out[1] = maps.roughness[p];
     out[2] = maps.metallic[p];
   });
-  matgeom::write_data_png(path(DatasetMap::Orm), w, h, 4, orm.data(), 255.0, 0.0, false, &set);
+  matbase::write_data_png(path(DatasetMap::Orm), w, h, 4, orm.data(), 255.0, 0.0, false, &set);
 
   std::vector<float> depth(4 * n);
   for (size_t p = 0; p < n; ++p) {
     depth[4 * p] = depth[4 * p + 1] = depth[4 * p + 2] = maps.coverage[p] > 0.0f ? maps.depth[p] : 0.0f;
     depth[4 * p + 3] = maps.coverage[p];
   }
-  matgeom::write_exr(path(DatasetMap::Depth), w, h, {"R", "G", "B", "A"}, depth.data(), &set);
+  matbase::write_exr(path(DatasetMap::Depth), w, h, {"R", "G", "B", "A"}, depth.data(), &set);
 
   const std::vector<float> normal_mat = encoded_normals(maps, maps.normal_tangent);
-  matgeom::write_data_png(path(DatasetMap::NormalMaterial), w, h, 4, normal_mat.data(), 255.0, 0.0, false, &set);
+  matbase::write_data_png(path(DatasetMap::NormalMaterial), w, h, 4, normal_mat.data(), 255.0, 0.0, false, &set);
   const std::vector<float> normal_obj = encoded_normals(maps, maps.normal_world);
-  matgeom::write_data_png(path(DatasetMap::NormalObject), w, h, 4, normal_obj.data(), 255.0, 0.0, false, &set);
+  matbase::write_data_png(path(DatasetMap::NormalObject), w, h, 4, normal_obj.data(), 255.0, 0.0, false, &set);
 
   std::vector<float> label(n);
   for (size_t p = 0; p < n; ++p) label[p] = maps.coverage[p] > 0.0f ? static_cast<float>(maps.label[p]) : 0.0f;
-  matgeom::write_data_png(path(DatasetMap::Label), w, h, 1, label.data(), 1.0, 0.0, false, &set);
+  matbase::write_data_png(path(DatasetMap::Label), w, h, 1, label.data(), 1.0, 0.0, false, &set);
 
   const std::vector<float> sample_count(maps.sample_count.begin(), maps.sample_count.end());
-  matgeom::write_data_png(path(DatasetMap::SampleCount), w, h, 1, sample_count.data(), 1.0, 0.0, true, &set);
+  matbase::write_data_png(path(DatasetMap::SampleCount), w, h, 1, sample_count.data(), 1.0, 0.0, true, &set);
 
-  matgeom::write_display_png(path(DatasetMap::Images), w, h, maps.color.data(), maps.coverage.data(),
+  matbase::write_display_png(path(DatasetMap::Images), w, h, maps.color.data(), maps.coverage.data(),
                              maps.exposure_stops, &set);
   set.commit();
 }

@@ -6,9 +6,9 @@
 #include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
 
-#include "matgeom/atomic_file.h"
-#include "matgeom/material_classes.h"
+#include "matbase/file/atomic_file.h"
 #include "matlearn/dataset_writer.h"
+#include "matmaterial/material_classes.h"
 
 namespace matlearn {
 namespace {
@@ -21,7 +21,7 @@ using nlohmann::ordered_json;
 constexpr double kPlaceholderRotation = -0.0174533;
 
 void write_json(const fs::path& path, const ordered_json& json) {
-  matgeom::write_file_atomically(path, json.dump(2) + "\n");
+  matbase::write_file_atomically(path, json.dump(2) + "\n");
 }
 
 }  // namespace
@@ -69,8 +69,8 @@ std::string variant_metadata_text(const VariantMetadata& metadata) {
   ordered_json variant_map = ordered_json::object(), used = ordered_json::object();
   std::map<std::string, const SlotMaterial*> by_slot;  // the repository sorts used_materials by key
   for (const SlotMaterial& slot : metadata.materials) {
-    const std::optional<matgeom::MaterialClass> family = matgeom::material_class_of_label(slot.label_id);
-    if (!family || *family == matgeom::MaterialClass::Background)
+    const std::optional<matmaterial::MaterialClass> family = matmaterial::material_class_of_label(slot.label_id);
+    if (!family || *family == matmaterial::MaterialClass::Background)
       throw std::invalid_argument("slot \"" + slot.slot + "\": material \"" + slot.material + "\" has label " +
                                   std::to_string(slot.label_id) + ", which is no material class");
     variant_map[slot.slot] = slot.material;
@@ -78,7 +78,7 @@ std::string variant_metadata_text(const VariantMetadata& metadata) {
   }
   for (const auto& [key, slot] : by_slot)
     used[key] = {{"material", slot->material},
-                 {"material_family", matgeom::material_class(*matgeom::material_class_of_label(slot->label_id)).name},
+                 {"material_family", matmaterial::material_class(*matmaterial::material_class_of_label(slot->label_id)).name},
                  {"label_id", slot->label_id}};
   ordered_json structure = ordered_json::array();
   for (const DatasetMapInfo& info : dataset_maps()) structure.push_back(info.folder);
@@ -96,14 +96,14 @@ std::string variant_metadata_text(const VariantMetadata& metadata) {
 }
 
 void write_variant_metadata(const fs::path& variant_folder, const VariantMetadata& metadata) {
-  matgeom::write_file_atomically(variant_folder / "metadata.json", variant_metadata_text(metadata));
+  matbase::write_file_atomically(variant_folder / "metadata.json", variant_metadata_text(metadata));
 }
 
 void write_segmentation_map_json(const fs::path& variant_folder) {
   ordered_json id_to_family = ordered_json::object(), family_to_id = ordered_json::object();
-  for (const matgeom::MaterialClassInfo& info : matgeom::kMaterialClasses) {
-    id_to_family[std::to_string(matgeom::label_id(info.id))] = info.name;
-    family_to_id[info.name] = matgeom::label_id(info.id);
+  for (const matmaterial::MaterialClassInfo& info : matmaterial::kMaterialClasses) {
+    id_to_family[std::to_string(matmaterial::label_id(info.id))] = info.name;
+    family_to_id[info.name] = matmaterial::label_id(info.id);
   }
   write_json(variant_folder / "material_segmentation_map.json",
              {{"id_to_material_family", id_to_family}, {"material_family_to_id", family_to_id}});
@@ -112,10 +112,10 @@ void write_segmentation_map_json(const fs::path& variant_folder) {
 void write_segmentation_map_yaml(const fs::path& root) {
   YAML::Emitter out;
   out << YAML::BeginMap << YAML::Key << "material_segmentation_map" << YAML::Value << YAML::BeginMap;
-  for (const matgeom::MaterialClassInfo& info : matgeom::kMaterialClasses)
-    out << YAML::Key << info.name << YAML::Value << matgeom::label_id(info.id);
+  for (const matmaterial::MaterialClassInfo& info : matmaterial::kMaterialClasses)
+    out << YAML::Key << info.name << YAML::Value << matmaterial::label_id(info.id);
   out << YAML::EndMap << YAML::EndMap;
-  matgeom::write_file_atomically(root / "material_segmentation_map.yaml", std::string(out.c_str()) + "\n");
+  matbase::write_file_atomically(root / "material_segmentation_map.yaml", std::string(out.c_str()) + "\n");
 }
 
 }  // namespace matlearn

@@ -9,7 +9,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "matgeom/atomic_file.h"
+#include "matbase/file/atomic_file.h"
 #include "matlearn/python_random.h"
 
 namespace matlearn {
@@ -184,7 +184,7 @@ void write_split_file(const std::filesystem::path& path, const SplitFile& split,
   }
   out << YAML::EndMap;
   if (!out.good()) throw std::runtime_error(path.string() + ": cannot write the split: " + out.GetLastError());
-  matgeom::write_file_atomically(path, std::string(out.c_str()) + "\n");
+  matbase::write_file_atomically(path, std::string(out.c_str()) + "\n");
 }
 
 }  // namespace matlearn

@@ -7,9 +7,9 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include "matgeom/image_header.h"
-#include "matgeom/input_file.h"
-#include "matgeom/memory_limit.h"
+#include "matbase/file/input_file.h"
+#include "matbase/image/image_header.h"
+#include "matbase/memory_limit.h"
 #include "matlearn/dataset_error.h"
 
 namespace matlearn {
@@ -24,15 +24,15 @@ std::unique_ptr<OIIO::ImageInput> open_image(const std::filesystem::path& path, 
   config.attribute("oiio:UnassociatedAlpha", 1);
   std::unique_ptr<OIIO::ImageInput> in;
   try {
-    matgeom::require_input_file(path.string());
-    if (const std::optional<std::string> problem = matgeom::declared_size_problem(path))
+    matbase::require_input_file(path.string());
+    if (const std::optional<std::string> problem = matbase::declared_size_problem(path))
       throw DatasetError(path.string() + ": " + *problem);
     in = OIIO::ImageInput::open(path.string(), &config);
     if (!in) throw DatasetError("cannot read " + path.string() + ": " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
     const double values = static_cast<double>(spec.width) * static_cast<double>(spec.height) *
                           static_cast<double>(spec.nchannels);
-    matgeom::require_memory(values * bytes_per_value,
+    matbase::require_memory(values * bytes_per_value,
                             "decoding its " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
                                 " pixels",
                             path.string());

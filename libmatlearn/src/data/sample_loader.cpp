@@ -11,7 +11,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-#include "matgeom/threads.h"
+#include "matbase/threads.h"
 
 namespace matlearn {
 namespace {
@@ -72,7 +72,7 @@ std::vector<MaterialSample> SampleLoader::batch(int epoch, size_t batch) const {
   const size_t first = batch * static_cast<size_t>(settings_.batch_size);
   const size_t count = std::min(static_cast<size_t>(settings_.batch_size), order.size() - first);
   std::vector<MaterialSample> out(count);
-  tbb::task_arena arena(matgeom::worker_threads(settings_.threads));
+  tbb::task_arena arena(matbase::worker_threads(settings_.threads));
   arena.execute([&] {
     tbb::parallel_for(size_t{0}, count, [&](size_t i) {
       out[i] = read_sample(root_, samples_[order[first + i]], settings_.sample);

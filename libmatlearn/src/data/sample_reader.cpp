@@ -6,7 +6,7 @@
 
 #include "data/resample.h"
 #include "data/texture_target_sample.h"
-#include "matgeom/srgb.h"
+#include "matbase/image/srgb.h"
 #include "matlearn/dataset_error.h"
 #include "matlearn/decoded_image.h"
 
@@ -100,7 +100,7 @@ MaterialSample read_sample(const fs::path& root, const SampleId& id, const Sampl
   sample.input = resize_bilinear(channels_of(image, 0, 3), s, s);
   Image albedo_rgb = channels_of(albedo, 0, 3);
   if (settings.linear_albedo)
-    for (float& v : albedo_rgb.values) v = matgeom::srgb_to_linear(v);
+    for (float& v : albedo_rgb.values) v = matbase::srgb_to_linear(v);
   sample.albedo = resize_bilinear_weighted(albedo_rgb, weights, s, s);
   sample.roughness = resize_bilinear_weighted(channels_of(orm, 1, 1), weights, s, s);
   sample.metallic = resize_bilinear_weighted(channels_of(orm, 2, 1), weights, s, s);

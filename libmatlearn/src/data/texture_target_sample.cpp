@@ -6,7 +6,7 @@
 
 #include "matlearn/decoded_image.h"
 #include "data/resample.h"
-#include "matgeom/srgb.h"
+#include "matbase/image/srgb.h"
 
 namespace matlearn {
 namespace {
@@ -28,7 +28,7 @@ Image reference_map(const fs::path& path, ReferenceKind kind, int size) {
   const Decoded decoded = decode_finite(path);
   Image map = channels_of(decoded, 0, kind == ReferenceKind::grey ? 1 : 3);
   if (kind == ReferenceKind::linear_colour)
-    for (float& v : map.values) v = matgeom::srgb_to_linear(v);
+    for (float& v : map.values) v = matbase::srgb_to_linear(v);
   const Image resized = kind == ReferenceKind::unit_vectors
                             ? resize_unit_vectors(map, std::vector<float>(map.pixel_count(), 1.0f), size, size)
                             : resize_bilinear(map, size, size);

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "matgeom/atomic_file.h"
-#include "matgeom/image_writing.h"
-#include "matgeom/png_encoding.h"
+#include "matbase/file/atomic_file.h"
+#include "matbase/image/image_writing.h"
+#include "matbase/image/png_encoding.h"
 #include "matlearn/decoded_image.h"
 
 namespace matlearn {
@@ -14,11 +14,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-void write_reference(const fs::path& path, const matgeom::ImagePixels& image) {
-  if (!matgeom::is_well_formed(image))
+void write_reference(const fs::path& path, const matbase::ImagePixels& image) {
+  if (!matbase::is_well_formed(image))
     throw std::invalid_argument(path.string() + ": the reference image's size and bytes disagree");
   fs::create_directories(path.parent_path());
-  matgeom::write_file_atomically(path, matgeom::encode_png(image, path.string()));
+  matbase::write_file_atomically(path, matbase::encode_png(image, path.string()));
 }
 
 }  // namespace
@@ -64,7 +64,7 @@ void write_texture_target_screenshot(const fs::path& root, const std::string& ob
     }
   const fs::path path = texture_target_screenshot_path(root, object, material, stem);
   fs::create_directories(path.parent_path());
-  matgeom::write_display_png(path.string(), side, side, rgb.data(), nullptr);
+  matbase::write_display_png(path.string(), side, side, rgb.data(), nullptr);
 }
 
 bool texture_target_screenshot_is_complete(const fs::path& path) {

@@ -1,6 +1,6 @@
 #include "matlearn/evaluation/evaluator.h"
 
-#include "matgeom/threads.h"
+#include "matbase/threads.h"
 #include "matlearn/dataset_error.h"
 #include "matlearn/sample_loader.h"
 #include "matlearn/training/batch.h"
@@ -21,7 +21,7 @@ int count(const Mask& mask) {
 EvaluationResult evaluate_samples(RegressorImpl& model, const CheckpointHeader& header, const std::filesystem::path& root,
                                   const std::vector<SampleId>& samples, const EvaluationSettings& settings,
                                   const std::function<void(size_t, size_t)>& progress) {
-  const int threads = matgeom::worker_threads(settings.threads);
+  const int threads = matbase::worker_threads(settings.threads);
   use_tensor_memory_cache();
   torch::set_num_threads(threads);
   LoaderSettings loader_settings;

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <vector>
 
-#include "matgeom/atomic_file.h"
-#include "matgeom/png_encoding.h"
-#include "matgeom/unorm.h"
+#include "matbase/file/atomic_file.h"
+#include "matbase/image/png_encoding.h"
+#include "matbase/image/unorm.h"
 
 namespace matlearn {
 namespace {
@@ -28,22 +28,22 @@ class Canvas {
           const float v = shown ? image.at(x, y, std::min(c, image.channels - 1)) * scale : 0.0f;
           pixels_[(static_cast<size_t>(tile_y * tile_height_ + y) * static_cast<size_t>(width_) +
                    static_cast<size_t>(tile_x * tile_width_ + x)) * 3 + static_cast<size_t>(c)] =
-              matgeom::unorm8(v);
+              matbase::unorm8(v);
         }
       }
   }
 
   // Encoded in memory and written by the checked helper: a full disk is an error, not a
   // truncated panel (OpenImageIO's PNG writer reports no failed write).
-  void write(const std::filesystem::path& path, matgeom::AtomicFileSet* set) const {
+  void write(const std::filesystem::path& path, matbase::AtomicFileSet* set) const {
     if (!path.parent_path().empty()) std::filesystem::create_directories(path.parent_path());
-    matgeom::ImagePixels image;
+    matbase::ImagePixels image;
     image.name = path.string();
     image.width = width_;
     image.height = static_cast<int>(pixels_.size() / 3 / static_cast<size_t>(width_));
     image.channels = 3;
     image.data = pixels_;
-    matgeom::write_file_atomically(path, matgeom::encode_png(image, path.string()), set);
+    matbase::write_file_atomically(path, matbase::encode_png(image, path.string()), set);
   }
 
  private:
@@ -53,7 +53,7 @@ class Canvas {
 
 }  // namespace
 
-void write_panel(const std::filesystem::path& path, const SamplePredictions& sample, matgeom::AtomicFileSet* set) {
+void write_panel(const std::filesystem::path& path, const SamplePredictions& sample, matbase::AtomicFileSet* set) {
   const int rows = std::max<int>(1, static_cast<int>(sample.maps.size()));
   Canvas canvas(4, rows, sample.input.width, sample.input.height);
   canvas.put(0, 0, sample.input, 1.0f);
@@ -71,7 +71,7 @@ void write_panel(const std::filesystem::path& path, const SamplePredictions& sam
 }
 
 void write_prediction_strip(const std::filesystem::path& path, const Image& input, const Mask& mask,
-                            const PredictedMaps& predicted, matgeom::AtomicFileSet* set) {
+                            const PredictedMaps& predicted, matbase::AtomicFileSet* set) {
   Canvas canvas(1 + static_cast<int>(predicted.maps.size()), 1, input.width, input.height);
   canvas.put(0, 0, input, 1.0f);
   for (size_t m = 0; m < predicted.maps.size(); ++m) canvas.put(1 + static_cast<int>(m), 0, predicted.maps[m], 1.0f, mask);
@@ -79,7 +79,7 @@ void write_prediction_strip(const std::filesystem::path& path, const Image& inpu
 }
 
 void write_map_png(const std::filesystem::path& path, const Image& map, const Mask& mask,
-                   matgeom::AtomicFileSet* set) {
+                   matbase::AtomicFileSet* set) {
   Canvas canvas(1, 1, map.width, map.height);
   canvas.put(0, 0, map, 1.0f, mask);
   canvas.write(path, set);

@@ -10,8 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "matgeom/atomic_file.h"
-#include "matgeom/material_classes.h"
+#include "matbase/file/atomic_file.h"
+#include "matmaterial/material_classes.h"
 
 namespace matlearn {
 namespace {
@@ -53,7 +53,7 @@ std::vector<ReportTable> report_tables(const std::vector<ScoredMap>& scores) {
   return {table_of("by material", scores,
                    [](const ScoredMap& s, std::string& g) {
                      if (s.material == kWholeObject) return false;
-                     g = matgeom::label_name(s.material);
+                     g = matmaterial::label_name(s.material);
                      return true;
                    }),
           table_of("by object", scores,
@@ -70,7 +70,7 @@ std::vector<ReportTable> report_tables(const std::vector<ScoredMap>& scores) {
 }
 
 void write_report(const std::filesystem::path& folder, const std::vector<ReportTable>& tables,
-                  const std::string& preamble, matgeom::AtomicFileSet* set) {
+                  const std::string& preamble, matbase::AtomicFileSet* set) {
   std::filesystem::create_directories(folder);
   std::ostringstream md, csv;
   md << preamble << "\n";
@@ -103,8 +103,8 @@ void write_report(const std::filesystem::path& folder, const std::vector<ReportT
     }
     json["tables"].push_back({{"title", table.title}, {"rows", rows}});
   }
-  matgeom::AtomicFileSet own(folder / "metrics.json");
-  matgeom::AtomicFileSet& files = set ? *set : own;
+  matbase::AtomicFileSet own(folder / "metrics.json");
+  matbase::AtomicFileSet& files = set ? *set : own;
   files.stage(folder / "metrics.md", md.str());
   files.stage(folder / "metrics.csv", csv.str());
   files.stage(folder / "metrics.json", json.dump(2) + "\n");

@@ -7,8 +7,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "matgeom/atomic_file.h"
-#include "matgeom/input_file.h"
+#include "matbase/file/atomic_file.h"
+#include "matbase/file/input_file.h"
 #include "models/torch_error.h"
 
 namespace matlearn {
@@ -30,7 +30,7 @@ std::string shape_of(const torch::Tensor& t) {
 }  // namespace
 
 void load_state_dict(torch::nn::Module& module, const std::filesystem::path& path) {
-  matgeom::require_input_file(path.string());
+  matbase::require_input_file(path.string());
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error("cannot open " + path.string());
   const std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -72,7 +72,7 @@ void save_state_dict(const torch::nn::Module& module, const std::filesystem::pat
   c10::Dict<std::string, torch::Tensor> dict;
   for (const auto& [name, tensor] : named_state(module)) dict.insert(name, tensor.detach().contiguous());
   const std::vector<char> bytes = torch::pickle_save(dict);
-  matgeom::write_file_atomically(path, std::string_view(bytes.data(), bytes.size()));
+  matbase::write_file_atomically(path, std::string_view(bytes.data(), bytes.size()));
 }
 
 }  // namespace matlearn

@@ -7,8 +7,8 @@
 #include <nlohmann/json.hpp>
 #include <zlib.h>
 
-#include "matgeom/atomic_file.h"
-#include "matgeom/input_file.h"
+#include "matbase/file/atomic_file.h"
+#include "matbase/file/input_file.h"
 #include "models/torch_error.h"
 
 namespace matlearn {
@@ -125,11 +125,11 @@ void save_checkpoint(const std::filesystem::path& path, const CheckpointHeader& 
   // zip in its destructor, so a full disk there ended the process (std::terminate on a c10::Error).
   std::ostringstream bytes;
   archive.save_to(bytes);
-  matgeom::write_file_atomically(path, bytes.str());
+  matbase::write_file_atomically(path, bytes.str());
 }
 
 Checkpoint read_checkpoint(const std::filesystem::path& path) {
-  if (const std::optional<std::string> problem = matgeom::input_file_problem(path.string()))
+  if (const std::optional<std::string> problem = matbase::input_file_problem(path.string()))
     throw std::runtime_error(path.string() + (*problem == "no such file" ? ": no such checkpoint file" : ": " + *problem));
   torch::serialize::InputArchive archive;
   try {

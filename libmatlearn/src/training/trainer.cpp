@@ -7,8 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "matgeom/atomic_file.h"
-#include "matgeom/threads.h"
+#include "matbase/file/atomic_file.h"
+#include "matbase/threads.h"
 #include "matlearn/models/state_dict.h"
 #include "matlearn/sample_loader.h"
 #include "matlearn/training/batch.h"
@@ -37,7 +37,7 @@ LoaderSettings loader_settings(const TrainingConfig& c, bool shuffle) {
   s.batch_size = c.batch_size;
   s.shuffle = shuffle;
   s.seed = c.seed;
-  s.threads = matgeom::worker_threads(c.threads);
+  s.threads = matbase::worker_threads(c.threads);
   return s;
 }
 
@@ -98,7 +98,7 @@ std::string csv_header(const OutputLayout& layout) {
 Trainer::Trainer(TrainingConfig config) : config_(std::move(config)) {
   validate_config(config_);
   use_tensor_memory_cache();
-  torch::set_num_threads(matgeom::worker_threads(config_.threads));
+  torch::set_num_threads(matbase::worker_threads(config_.threads));
   torch::manual_seed(config_.seed);
   model_ = make_regressor(architecture_named(config_.network).architecture, config_.layout.output_channels(),
                           config_.width_divisor);
@@ -173,7 +173,7 @@ void Trainer::append_log(const EpochReport& report) {
   std::filesystem::create_directories(config_.output_dir);
   std::string text = csv_header(config_.layout) + '\n';
   for (const std::string& row : log_rows_) text += row + '\n';
-  matgeom::write_file_atomically(log_path(), text);
+  matbase::write_file_atomically(log_path(), text);
 }
 
 bool Trainer::train(const TrainingCallbacks& callbacks) {

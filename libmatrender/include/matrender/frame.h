@@ -17,11 +17,11 @@
 #include <string_view>
 #include <vector>
 
-#include "matgeom/material_parameters.h"
+#include "matmaterial/material_parameters.h"
 
 namespace matrender {
 
-using matgeom::MaterialParameter;
+using matmaterial::MaterialParameter;
 
 // AOV bits: the geometric ones here, then one per material parameter (parameter_aov).
 enum Aov : uint32_t {
@@ -46,7 +46,7 @@ enum Aov : uint32_t {
   AovColorVariance = 1u << 9,
 };
 constexpr uint32_t kFirstParameterAovBit = 10;
-static_assert(kFirstParameterAovBit + matgeom::kMaterialParameterCount <= 32, "AOV bits fit in 32");
+static_assert(kFirstParameterAovBit + matmaterial::kMaterialParameterCount <= 32, "AOV bits fit in 32");
 
 // The AOV of a material parameter: its value at the first hit, named as in the table.
 constexpr uint32_t parameter_aov(MaterialParameter p) { return 1u << (kFirstParameterAovBit + static_cast<uint32_t>(p)); }
@@ -57,7 +57,7 @@ constexpr uint32_t kGeometricAovs =
 // Every AOV.
 constexpr uint32_t all_aovs() {
   uint32_t mask = kGeometricAovs | AovAmbientOcclusion | AovSampleCount | AovColorVariance;
-  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) mask |= parameter_aov(info.id);
+  for (const matmaterial::MaterialParameterInfo& info : matmaterial::kMaterialParameters) mask |= parameter_aov(info.id);
   return mask;
 }
 
@@ -65,7 +65,7 @@ constexpr uint32_t all_aovs() {
 // marks default_aov.
 constexpr uint32_t default_aovs() {
   uint32_t mask = kGeometricAovs;
-  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters)
+  for (const matmaterial::MaterialParameterInfo& info : matmaterial::kMaterialParameters)
     if (info.default_aov) mask |= parameter_aov(info.id);
   return mask;
 }
@@ -87,7 +87,7 @@ struct FrameBuffers {
   std::vector<float> color;          // RGB, scene-linear
   std::vector<float> alpha;          // coverage
   // By MaterialParameter: RGB for a colour (linear), one channel for a scalar.
-  std::array<std::vector<float>, matgeom::kMaterialParameterCount> parameters;
+  std::array<std::vector<float>, matmaterial::kMaterialParameterCount> parameters;
   std::vector<float> normal_world;   // XYZ in [-1, 1]
   std::vector<float> normal_camera;  // XYZ, camera frame (+X right, +Y up, +Z toward viewer)
   std::vector<float> normal_tangent;  // XYZ, the normal map's tangent space (+Z along the surface normal)

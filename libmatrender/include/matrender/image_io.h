@@ -1,10 +1,10 @@
 #pragma once
 // Writing a rendered frame: every buffer as linear EXR plus a PNG to look at, through matgeom's
-// image writers (matgeom/image_writing.h), which write a temporary and rename it.
+// image writers (matbase/image/image_writing.h), which write a temporary and rename it.
 #include <string>
 #include <vector>
 
-#include "matgeom/image_writing.h"
+#include "matbase/image/image_writing.h"
 #include "matrender/frame.h"
 
 namespace matrender {

@@ -1,18 +1,18 @@
 #pragma once
-// A material: the Principled BSDF's parameters (matgeom/material_parameters.h, the one table of
+// A material: the Principled BSDF's parameters (matmaterial/material_parameters.h, the one table of
 // them) with Blender 3.4 Cycles semantics (docs/conventions.md), each a constant or a texture.
 #include <array>
 #include <string>
 
 #include <glm/glm.hpp>
 
-#include "matgeom/material_parameters.h"
-#include "matgeom/texture_transform.h"
+#include "matmaterial/material_parameters.h"
+#include "matmaterial/texture_transform.h"
 #include "matrender/texture.h"
 
 namespace matrender {
 
-using matgeom::MaterialParameter;
+using matmaterial::MaterialParameter;
 
 // One parameter: a constant, or a constant factor times a texture (Blender's importer multiplies
 // glTF factors and textures the same way). A constant costs no lookup.
@@ -20,7 +20,7 @@ struct ParameterValue {
   glm::vec3 value{0.0f};  // a colour; a scalar is held in every channel
   TexturePtr texture;     // when set: value * texture RGB (colour) or value * texture[channel] (scalar)
   int channel = 0;        // scalars: which texture channel (0 = R, 1 = G, 2 = B, 3 = A)
-  matgeom::UvAffine uv_transform;  // the texture is looked up at uv_transform.apply(uv)
+  matmaterial::UvAffine uv_transform;  // the texture is looked up at uv_transform.apply(uv)
 };
 
 enum class DiffuseModel {
@@ -42,10 +42,10 @@ struct Material {
   int label_id = 0;  // material family id written to the label AOV
   DiffuseModel diffuse_model = DiffuseModel::Principled;
   SpecularDistribution distribution = SpecularDistribution::GGX;
-  std::array<ParameterValue, matgeom::kMaterialParameterCount> parameters;
+  std::array<ParameterValue, matmaterial::kMaterialParameterCount> parameters;
   TexturePtr normal_map;  // tangent space, OpenGL convention (+Y = +v), Non-Color
   float normal_strength = 1.0f;
-  matgeom::UvAffine normal_map_uv_transform;
+  matmaterial::UvAffine normal_map_uv_transform;
 
   ParameterValue& operator[](MaterialParameter p) { return parameters[static_cast<size_t>(p)]; }
   const ParameterValue& operator[](MaterialParameter p) const { return parameters[static_cast<size_t>(p)]; }
@@ -61,7 +61,7 @@ struct Material {
 
 // The material with every texture it reads (parameters and normal map) repeated `repeats` times
 // per UV unit, on top of its own transforms: what a material folder's physical tile size asks of
-// a part whose UV unit is `repeats` tiles long (matgeom/uv_scale.h).
+// a part whose UV unit is `repeats` tiles long (matgeom/uv/uv_scale.h).
 Material with_texture_repeats(const Material& material, float repeats);
 
 }  // namespace matrender

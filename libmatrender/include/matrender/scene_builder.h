@@ -29,7 +29,7 @@ struct BuiltScene {
 };
 
 // Throws InputError naming the described item when an input fails to load or does not fit
-// (unreadable mesh or texture, unknown part name), and matgeom::Cancelled soon after `cancel`
+// (unreadable mesh or texture, unknown part name), and matbase::Cancelled soon after `cancel`
 // (when given) is set while materials load (SceneMaterials::cancel_on).
 BuiltScene build_scene(const SceneDescription& description, const std::atomic<bool>* cancel = nullptr);
 

@@ -15,7 +15,7 @@
 #include <glm/glm.hpp>
 
 #include "matgeom/camera_grid.h"
-#include "matgeom/material_library.h"
+#include "matmaterial/library/material_library.h"
 #include "matrender/camera.h"
 #include "matrender/light.h"
 #include "matrender/material.h"
@@ -50,16 +50,16 @@ struct TextureFile {
   Origin origin;
 };
 
-// A material folder (matgeom/material_folder.h: MatSynth's layout) to read; the path is already
+// A material folder (matmaterial/folder/material_folder.h: MatSynth's layout) to read; the path is already
 // resolved against the scene file's folder.
 struct MaterialFolderFile {
   std::string path;
   Origin origin;
 };
 
-// A material of the procedural library (matgeom/material_library.h), generated when first used.
+// A material of the procedural library (matmaterial/library/material_library.h), generated when first used.
 struct LibraryMaterialRequest {
-  matgeom::LibraryMaterialSpec spec;
+  matmaterial::LibraryMaterialSpec spec;
   int resolution = kDefaultLibraryResolution;
   Origin origin;
   static constexpr int kDefaultLibraryResolution = 1024;
@@ -69,8 +69,8 @@ struct MaterialDescription {
   // Every constant (factors, channels, strengths, label, model); the texture pointers stay empty
   // until the files below are loaded.
   Material constants;
-  // The texture file of each parameter that has one, by matgeom::MaterialParameter.
-  std::array<std::optional<TextureFile>, matgeom::kMaterialParameterCount> textures;
+  // The texture file of each parameter that has one, by matmaterial::MaterialParameter.
+  std::array<std::optional<TextureFile>, matmaterial::kMaterialParameterCount> textures;
   std::optional<TextureFile> normal_map;
   // When one is set, the material is the folder's, read when first used, or the library's,
   // generated then: the fields above are unused, except a label_id the description gives, which
@@ -88,7 +88,7 @@ struct BuiltinObject {
   uint32_t seed = 0;
 };
 
-// When an object's mesh gets new UVs from the paper's UV pass (matgeom/uv_pass.h) before it is
+// When an object's mesh gets new UVs from the paper's UV pass (matgeom/uv/uv_pass.h) before it is
 // placed: never, only when the mesh has no UVs of its own, or always.
 enum class UvPassMode { Never, WhenMissing, Always };
 

@@ -23,7 +23,7 @@ class SceneMaterials {
 
   bool has(const std::string& name) const { return described_.count(name) != 0; }
 
-  // Loading stops with matgeom::Cancelled once `cancel` is set: before each texture and folder,
+  // Loading stops with matbase::Cancelled once `cancel` is set: before each texture and folder,
   // and within a row of a library material's maps. A run's, not the scene's: set by the app.
   void cancel_on(const std::atomic<bool>* cancel) { cancel_ = cancel; }
 

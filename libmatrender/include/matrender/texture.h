@@ -22,11 +22,11 @@
 
 #include <glm/glm.hpp>
 
-#include "matgeom/material_parameters.h"
+#include "matmaterial/material_parameters.h"
 
 namespace matrender {
 
-using matgeom::ColorSpace;
+using matmaterial::ColorSpace;
 enum class Wrap { Repeat, Clamp };
 
 struct TexelLevel;

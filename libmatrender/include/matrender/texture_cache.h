@@ -23,7 +23,7 @@ struct TextureCacheStats {
   uint64_t reloads = 0;         // levels made again after being dropped
 };
 
-// Half of the memory this process can have (matgeom::memory_limit_bytes): dozens of 4k maps
+// Half of the memory this process can have (matbase::memory_limit_bytes): dozens of 4k maps
 // with their mip levels fit on a 16 GiB machine without anything being dropped.
 uint64_t default_texture_memory_limit();
 // 0 restores the default. A lower limit drops what no longer fits at once.

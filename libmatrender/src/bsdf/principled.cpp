@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "bsdf/microfacet_ggx.h"
-#include "matgeom/srgb.h"
+#include "matbase/image/srgb.h"
 #include "util/channel_average.h"
 
 namespace matrender {
@@ -32,9 +32,9 @@ void add_glass_lobes(const PrincipledParameters& p, const glm::vec3& wo, bool fr
 
 PrincipledInputs::PrincipledInputs() {
   // Every SurfacePoint starts with one: computed once, copied after.
-  static const std::array<glm::vec3, matgeom::kMaterialParameterCount> defaults = [] {
-    std::array<glm::vec3, matgeom::kMaterialParameterCount> table{};
-    for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters)
+  static const std::array<glm::vec3, matmaterial::kMaterialParameterCount> defaults = [] {
+    std::array<glm::vec3, matmaterial::kMaterialParameterCount> table{};
+    for (const matmaterial::MaterialParameterInfo& info : matmaterial::kMaterialParameters)
       table[static_cast<size_t>(info.id)] = glm::vec3(static_cast<float>(info.default_value));
     return table;
   }();
@@ -67,7 +67,7 @@ PrincipledParameters::PrincipledParameters(const PrincipledInputs& inputs, Clear
   multiscatter = inputs.distribution == SpecularDistribution::MultiscatterGGX && roughness > 0.075f;
 
   // The base colour's hue: tint = base / lum (white for black), for the specular and sheen tints.
-  const float lum = matgeom::rec709_luminance(base);  // Cycles' linear_rgb_to_gray for scene-linear
+  const float lum = matbase::rec709_luminance(base);  // Cycles' linear_rgb_to_gray for scene-linear
   const glm::vec3 tint = lum > 0.0f ? base / lum : glm::vec3(1.0f);
 
   const float sheen = glm::clamp(inputs.scalar(MaterialParameter::Sheen), 0.0f, 1.0f);

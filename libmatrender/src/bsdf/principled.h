@@ -28,7 +28,7 @@ struct PrincipledInputs {
   // The material's constants, textures left out.
   explicit PrincipledInputs(const Material& material);
 
-  std::array<glm::vec3, matgeom::kMaterialParameterCount> values;  // by MaterialParameter; scalars in x
+  std::array<glm::vec3, matmaterial::kMaterialParameterCount> values;  // by MaterialParameter; scalars in x
   DiffuseModel diffuse_model = DiffuseModel::Principled;
   SpecularDistribution distribution = SpecularDistribution::GGX;
 

@@ -12,8 +12,8 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-#include "matgeom/srgb.h"
-#include "matgeom/threads.h"
+#include "matbase/image/srgb.h"
+#include "matbase/threads.h"
 #include "util/finite.h"
 
 namespace matrender {
@@ -150,7 +150,7 @@ void denoise(FrameBuffers& frame, const DenoiseSettings& settings) {
   for (size_t p = 0; p < n; ++p) {
     if (!g.filtered[p]) continue;
     irradiance[p] = glm::vec3(frame.color[3 * p], frame.color[3 * p + 1], frame.color[3 * p + 2]) / g.demodulation[p];
-    const float scale = matgeom::rec709_luminance(g.demodulation[p]);
+    const float scale = matbase::rec709_luminance(g.demodulation[p]);
     variance[p] = frame.color_variance[p] / (scale * scale);
   }
 
@@ -159,7 +159,7 @@ void denoise(FrameBuffers& frame, const DenoiseSettings& settings) {
   // variance spatially while a pixel's history is short (section 4.3).
   variance = averaged_variance(g, variance, 3, [](int, int) { return 1.0f; });
 
-  tbb::task_arena arena(matgeom::worker_threads(settings.threads));
+  tbb::task_arena arena(matbase::worker_threads(settings.threads));
   for (int iteration = 0; iteration < settings.iterations; ++iteration) {
     const int step = 1 << iteration;
     const std::vector<float> blurred = blurred_variance(g, variance);
@@ -173,7 +173,7 @@ void denoise(FrameBuffers& frame, const DenoiseSettings& settings) {
               next_variance[p] = variance[p];
               continue;
             }
-            const float luminance_p = matgeom::rec709_luminance(irradiance[p]);
+            const float luminance_p = matbase::rec709_luminance(irradiance[p]);
             glm::vec3 sum(0.0f);
             float weights = 0.0f, variance_sum = 0.0f;
             for (int j = -2; j <= 2; ++j)
@@ -195,7 +195,7 @@ void denoise(FrameBuffers& frame, const DenoiseSettings& settings) {
                 // noise apart from all but equal neighbours without dividing by 0.
                 const float luminance_scale = settings.sigma_luminance * std::sqrt(std::min(blurred[p], blurred[q])) + 1e-6f;
                 const float w_luminance =
-                    std::exp(-std::abs(luminance_p - matgeom::rec709_luminance(irradiance[q])) / luminance_scale);
+                    std::exp(-std::abs(luminance_p - matbase::rec709_luminance(irradiance[q])) / luminance_scale);
                 const float w = kTaps[static_cast<size_t>(i + 2)] * kTaps[static_cast<size_t>(j + 2)] * w_depth * w_normal *
                                 w_luminance;
                 sum += w * irradiance[q];

@@ -5,8 +5,8 @@
 namespace matrender {
 namespace {
 
-constexpr int channels_of(const matgeom::MaterialParameterInfo& info) {
-  return info.kind == matgeom::ParameterKind::Color ? 3 : 1;
+constexpr int channels_of(const matmaterial::MaterialParameterInfo& info) {
+  return info.kind == matmaterial::ParameterKind::Color ? 3 : 1;
 }
 
 constexpr uint32_t kAlways = 0;  // the AOV bit of the colour, which every frame has
@@ -17,7 +17,7 @@ template <class Visit>
 void visit_buffers(FrameBuffers& frame, Visit&& visit) {
   visit(frame.color, kAlways, 3, 0.0f);
   visit(frame.alpha, AovAlpha, 1, 0.0f);
-  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters)
+  for (const matmaterial::MaterialParameterInfo& info : matmaterial::kMaterialParameters)
     visit(frame.parameter(info.id), parameter_aov(info.id), static_cast<std::size_t>(channels_of(info)), 0.0f);
   visit(frame.normal_world, AovNormalWorld, 3, 0.0f);
   visit(frame.normal_camera, AovNormalCamera, 3, 0.0f);
@@ -35,7 +35,7 @@ void visit_buffers(FrameBuffers& frame, Visit&& visit) {
 const std::vector<AovName>& aov_names() {
   static const std::vector<AovName> names = [] {
     std::vector<AovName> list;
-    for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters)
+    for (const matmaterial::MaterialParameterInfo& info : matmaterial::kMaterialParameters)
       list.push_back({info.name, parameter_aov(info.id)});
     list.insert(list.end(), {{"normal_world", AovNormalWorld},
                              {"normal_camera", AovNormalCamera},

@@ -24,9 +24,9 @@
 #include "integrator/ambient_occlusion.h"
 #include "integrator/path_tracer.h"
 #include "lights/light_sampler.h"
-#include "matgeom/memory_limit.h"
-#include "matgeom/srgb.h"
-#include "matgeom/threads.h"
+#include "matbase/image/srgb.h"
+#include "matbase/memory_limit.h"
+#include "matbase/threads.h"
 #include "matrender/denoise.h"
 #include "matrender/scene_limits.h"
 #include "sampling/pixel_sampler.h"
@@ -91,7 +91,7 @@ void validate(const Camera& camera, const RenderSettings& settings) {
   if (settings.min_samples < 0) throw std::invalid_argument("render: min samples must be >= 0 (0: automatic)");
   const double pixels = static_cast<double>(camera.width) * static_cast<double>(camera.height);
   const bool adaptive = settings.noise_threshold > 0.0;
-  matgeom::require_memory(FrameBuffers::bytes_for(camera.width, camera.height, rendered_aovs(settings)) +
+  matbase::require_memory(FrameBuffers::bytes_for(camera.width, camera.height, rendered_aovs(settings)) +
                               (adaptive ? pixels * (sizeof(PixelAccumulator) + 1) : 0.0),
                           std::string(adaptive ? "the colour and AOV buffers and adaptive sampling's sums" : "the colour and AOV buffers") +
                               " of a " + std::to_string(camera.width) + " x " + std::to_string(camera.height) + " image",
@@ -195,8 +195,8 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
   };
   // Without AOVs beyond alpha and the sample count a pixel only counts its hits.
   const bool surface_aovs = (aovs & ~static_cast<uint32_t>(AovAlpha | AovSampleCount | AovColorVariance)) != 0;
-  std::vector<const matgeom::MaterialParameterInfo*> parameter_aovs;
-  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters)
+  std::vector<const matmaterial::MaterialParameterInfo*> parameter_aovs;
+  for (const matmaterial::MaterialParameterInfo& info : matmaterial::kMaterialParameters)
     if (aovs & parameter_aov(info.id)) parameter_aovs.push_back(&info);
   const bool ambient_occlusion = (aovs & AovAmbientOcclusion) != 0;
   const bool color_variance = (aovs & AovColorVariance) != 0;
@@ -236,7 +236,7 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
     }
     acc.color += glm::dvec3(radiance);
     if (color_variance) {
-      const double l = matgeom::rec709_luminance(radiance);
+      const double l = matbase::rec709_luminance(radiance);
       acc.luminance_squares += l * l;
     }
     if (adaptive && in_second_half(sample, seeds)) acc.second_estimate += glm::dvec3(radiance);
@@ -253,7 +253,7 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
     const PixelSeeds seeds(pixel_index, settings.seed);
     const bool finite = is_finite(*uniform_background);
     const glm::dvec3 radiance(*uniform_background);
-    const double luminance = matgeom::rec709_luminance(*uniform_background);
+    const double luminance = matbase::rec709_luminance(*uniform_background);
     for (uint32_t first = begin; first < end; first += kPacketSamples) {
       if (cancel_requested()) return;
       const uint32_t count = std::min<uint32_t>(kPacketSamples, end - first);
@@ -319,11 +319,11 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
         if (!path.hit) continue;
         ++acc.hits;
         if (!surface_aovs) continue;
-        for (const matgeom::MaterialParameterInfo* info : parameter_aovs) {
+        for (const matmaterial::MaterialParameterInfo* info : parameter_aovs) {
           const glm::vec3 value =
               glm::clamp(sp.inputs.color(info->id), static_cast<float>(info->min), static_cast<float>(info->max));
           std::vector<float>& sum = frame.parameter(info->id);
-          if (info->kind == matgeom::ParameterKind::Color) {
+          if (info->kind == matmaterial::ParameterKind::Color) {
             for (int c = 0; c < 3; ++c) sum[3 * i + c] += value[c];
           } else {
             sum[i] += value.x;  // a scalar reads x
@@ -370,7 +370,7 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
     if (!frame.alpha.empty()) frame.alpha[i] = static_cast<float>(acc.coverage * inv_samples);
     if (!frame.color_variance.empty() && acc.samples > 1) {
       // The unbiased sample variance over n, the variance of the mean.
-      const double mean = matgeom::rec709_luminance(color);
+      const double mean = matbase::rec709_luminance(color);
       const double spread = std::max(0.0, acc.luminance_squares * inv_samples - mean * mean);
       frame.color_variance[i] = static_cast<float>(spread / (static_cast<double>(acc.samples) - 1.0));
     }
@@ -379,9 +379,9 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
     const float normal_len = glm::length(acc.normal);
     const glm::vec3 normal = normal_len > 0.0f ? acc.normal / normal_len : glm::vec3(0.0f);
     const glm::vec3 normal_camera = world_to_camera * normal;
-    for (const matgeom::MaterialParameterInfo* info : parameter_aovs) {
+    for (const matmaterial::MaterialParameterInfo* info : parameter_aovs) {
       std::vector<float>& buffer = frame.parameter(info->id);
-      const int channels = info->kind == matgeom::ParameterKind::Color ? 3 : 1;
+      const int channels = info->kind == matmaterial::ParameterKind::Color ? 3 : 1;
       for (int c = 0; c < channels; ++c) buffer[channels * i + c] *= inv_hits;
     }
     if (!frame.normal_tangent.empty()) {
@@ -408,7 +408,7 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
     if (!frame.part_id.empty()) frame.part_id[i] = acc.part;
   };
 
-  tbb::task_arena arena(matgeom::worker_threads(settings.threads));
+  tbb::task_arena arena(matbase::worker_threads(settings.threads));
   // Runs `visit_pixel(x, y, i, counts)` over the image, a tile per task. Tiles are handed out
   // one at a time (simple_partitioner): most of a frame's cost sits in the few tiles the object
   // covers, since pixels that cannot see it take no rays, and TBB's default chunks of tiles left

@@ -42,7 +42,7 @@ void look_up_textures(const Material& material, glm::vec2 uv, float footprint, P
   const Texture* alpha_source = alpha.channel == 3 ? alpha.texture.get() : nullptr;
   const ParameterValue* looked_up = nullptr;
   glm::vec4 texel(0.0f);
-  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) {
+  for (const matmaterial::MaterialParameterInfo& info : matmaterial::kMaterialParameters) {
     const ParameterValue& p = material[info.id];
     if (!p.texture) continue;
     if (!looked_up || p.texture != looked_up->texture || !(p.uv_transform == looked_up->uv_transform)) {
@@ -50,7 +50,7 @@ void look_up_textures(const Material& material, glm::vec2 uv, float footprint, P
                                 footprint * p.uv_transform.stretch);
       looked_up = &p;
     }
-    inputs.set(info.id, info.kind == matgeom::ParameterKind::Color ? p.value * glm::vec3(texel)
+    inputs.set(info.id, info.kind == matmaterial::ParameterKind::Color ? p.value * glm::vec3(texel)
                                                                  : glm::vec3(p.value.x * texel[p.channel]));
   }
 }

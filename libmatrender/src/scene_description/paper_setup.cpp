@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "matgeom/image_writing.h"
+#include "matbase/image/image_writing.h"
 #include "matrender/rig_lights.h"
 
 namespace matrender {
@@ -28,7 +28,7 @@ double grey_card_exposure(const matgeom::LightRig& rig, const matgeom::CameraGri
   illuminance /= static_cast<double>(cameras.size());
   if (!(illuminance > 0.0)) return 0.0;
   const double stops = std::log2(matgeom::kLuxPerWattPerSquareMetre * M_PI / illuminance) - kGreyCardHeadroomStops;
-  return std::clamp(stops, -matgeom::kMaxExposureStops, matgeom::kMaxExposureStops);
+  return std::clamp(stops, -matbase::kMaxExposureStops, matbase::kMaxExposureStops);
 }
 
 void add_rig(Scene& scene, const matgeom::LightRig& rig) {

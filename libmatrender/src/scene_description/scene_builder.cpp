@@ -7,11 +7,11 @@
 
 #include <fmt/format.h>
 
-#include "matgeom/builtin_objects.h"
+#include "matgeom/builtin/builtin_objects.h"
 #include "matgeom/camera_grid.h"
+#include "matgeom/io/mesh_io.h"
 #include "matgeom/mesh.h"
-#include "matgeom/mesh_io.h"
-#include "matgeom/uv_pass.h"
+#include "matgeom/uv/uv_pass.h"
 #include "matrender/asset.h"
 #include "matrender/paper_setup.h"
 #include "matrender/scene_limits.h"

@@ -17,13 +17,13 @@
 #include <nlohmann/json.hpp>
 
 #include "lights/light_checks.h"
-#include "matgeom/builtin_objects.h"
+#include "matbase/file/input_file.h"
+#include "matbase/text.h"
+#include "matgeom/builtin/builtin_objects.h"
 #include "matgeom/camera_grid.h"
-#include "matgeom/input_file.h"
-#include "matgeom/material_classes.h"
-#include "matgeom/material_parameters.h"
-#include "matgeom/mesh_io.h"
-#include "matgeom/text.h"
+#include "matgeom/io/mesh_io.h"
+#include "matmaterial/material_classes.h"
+#include "matmaterial/material_parameters.h"
 #include "matrender/image_io.h"
 
 namespace matrender {
@@ -442,8 +442,8 @@ TextureFile read_texture_file(const Node& node, const fs::path& folder, ColorSpa
 }
 
 // {"offset": [u, v], "rotation_deg": r, "scale": [u, v]}: glTF's KHR_texture_transform (in
-// glTF's UVs, v down; matgeom/texture_transform.h), each key optional.
-matgeom::UvAffine read_texture_transform(const Node& node) {
+// glTF's UVs, v down; matmaterial/texture_transform.h), each key optional.
+matmaterial::UvAffine read_texture_transform(const Node& node) {
   node.expect_keys({"offset", "rotation_deg", "scale"});
   constexpr double kLargest = 1e6;  // a texture repeated a million times is already noise
   const auto bounded = [](const Node& n) {
@@ -455,19 +455,19 @@ matgeom::UvAffine read_texture_transform(const Node& node) {
     n->expect_array(2, "[u, v]");
     return glm::dvec2(bounded(n->item(0)), bounded(n->item(1)));
   };
-  matgeom::TextureTransform transform;
+  matmaterial::TextureTransform transform;
   transform.offset = pair("offset", transform.offset);
   transform.scale = pair("scale", transform.scale);
   if (auto n = node.find("rotation_deg")) transform.rotation = glm::radians(bounded(*n));
-  return matgeom::uv_affine(transform);
+  return matmaterial::uv_affine(transform);
 }
 
 // A value of `info` within its range: [r, g, b] for a colour, a number for a scalar. `or_else`
 // completes the message when something else would also do.
-glm::vec3 read_parameter_constant(const Node& node, const matgeom::MaterialParameterInfo& info,
+glm::vec3 read_parameter_constant(const Node& node, const matmaterial::MaterialParameterInfo& info,
                                   const std::string& or_else = "") {
   const std::string range = fmt::format("[{}, {}]", info.min, info.max);
-  if (info.kind == matgeom::ParameterKind::Scalar)
+  if (info.kind == matmaterial::ParameterKind::Scalar)
     return glm::vec3(static_cast<float>(node.number_where([&](double v) { return v >= info.min && v <= info.max; },
                                                           "a number in " + range + or_else)));
   const auto in_range = [&](const Node& n) {
@@ -479,9 +479,9 @@ glm::vec3 read_parameter_constant(const Node& node, const matgeom::MaterialParam
 
 // A constant, or (where the table allows it) a texture times an optional factor: a colour takes
 // the texture's RGB, a scalar one channel of it (R unless "channel" says otherwise).
-void read_parameter(const Node& node, const matgeom::MaterialParameterInfo& info, const fs::path& folder,
+void read_parameter(const Node& node, const matmaterial::MaterialParameterInfo& info, const fs::path& folder,
                     ParameterValue& value, std::optional<TextureFile>& texture) {
-  const bool color = info.kind == matgeom::ParameterKind::Color;
+  const bool color = info.kind == matmaterial::ParameterKind::Color;
   if (!node.is_object() || !info.texturable) {
     value.value = read_parameter_constant(node, info, info.texturable ? " or {\"texture\": ...}" : "");
     return;
@@ -494,14 +494,14 @@ void read_parameter(const Node& node, const matgeom::MaterialParameterInfo& info
   value.channel = node.has("channel") ? static_cast<int>(node.required("channel").choice({"R", "G", "B", "A"})) : 0;
 }
 
-// A material class's name ("wood", matgeom/material_classes.h) or any integer a 16-bit label
+// A material class's name ("wood", matmaterial/material_classes.h) or any integer a 16-bit label
 // PNG holds.
 int read_label_id(const Node& node) {
   if (!node.is_string()) return node.integer_in(0, 65535);
   const std::string name = node.string();
-  if (const std::optional<matgeom::MaterialClass> c = matgeom::material_class_named(name)) return matgeom::label_id(*c);
+  if (const std::optional<matmaterial::MaterialClass> c = matmaterial::material_class_named(name)) return matmaterial::label_id(*c);
   std::vector<std::string> names;
-  for (const matgeom::MaterialClassInfo& info : matgeom::kMaterialClasses) names.push_back(info.name);
+  for (const matmaterial::MaterialClassInfo& info : matmaterial::kMaterialClasses) names.push_back(info.name);
   node.fail("unknown material class \"" + name + "\" (known: " + quoted_list(names) + ")");
 }
 
@@ -528,11 +528,11 @@ MaterialDescription read_library_material(const Node& node, const std::string& n
   material.constants.name = name;
   LibraryMaterialRequest request;
   const Node class_node = node.required("class");
-  const std::optional<matgeom::MaterialClass> material_class = matgeom::material_class_named(class_node.string());
-  if (!material_class || *material_class == matgeom::MaterialClass::Background) {
+  const std::optional<matmaterial::MaterialClass> material_class = matmaterial::material_class_named(class_node.string());
+  if (!material_class || *material_class == matmaterial::MaterialClass::Background) {
     std::vector<std::string> names;
-    for (const matgeom::MaterialClassInfo& info : matgeom::kMaterialClasses)
-      if (info.id != matgeom::MaterialClass::Background) names.push_back(info.name);
+    for (const matmaterial::MaterialClassInfo& info : matmaterial::kMaterialClasses)
+      if (info.id != matmaterial::MaterialClass::Background) names.push_back(info.name);
     class_node.fail("unknown material class \"" + class_node.string() + "\" (known: " + quoted_list(names) + ")");
   }
   request.spec.material_class = *material_class;
@@ -540,13 +540,13 @@ MaterialDescription read_library_material(const Node& node, const std::string& n
   if (auto n = node.find("style")) {
     request.spec.style = n->string();
     try {
-      matgeom::resolved_style(request.spec);
+      matmaterial::resolved_style(request.spec);
     } catch (const std::invalid_argument& e) {
       n->fail(e.what());
     }
   }
   if (auto n = node.find("resolution"))
-    request.resolution = n->integer_in(matgeom::kMinLibraryResolution, matgeom::kMaxLibraryResolution);
+    request.resolution = n->integer_in(matmaterial::kMinLibraryResolution, matmaterial::kMaxLibraryResolution);
   request.origin = node.origin();
   material.library = request;
   if (auto n = node.find("label_id")) material.label_id = read_label_id(*n);
@@ -557,12 +557,12 @@ MaterialDescription read_material(const Node& node, const std::string& name, con
   if (node.has("matsynth")) return read_folder_material(node, name, folder);
   if (node.has("class")) return read_library_material(node, name);
   std::vector<const char*> keys = {"normal_map", "label_id", "diffuse_model", "distribution"};
-  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters) keys.push_back(info.name);
+  for (const matmaterial::MaterialParameterInfo& info : matmaterial::kMaterialParameters) keys.push_back(info.name);
   node.expect_keys(keys);
   MaterialDescription material;
   Material& m = material.constants;
   m.name = name;
-  for (const matgeom::MaterialParameterInfo& info : matgeom::kMaterialParameters)
+  for (const matmaterial::MaterialParameterInfo& info : matmaterial::kMaterialParameters)
     if (auto n = node.find(info.name))
       read_parameter(*n, info, folder, m[info.id], material.textures[static_cast<size_t>(info.id)]);
   if (auto n = node.find("normal_map")) {
@@ -657,7 +657,7 @@ ObjectDescription read_object(const Node& node, const fs::path& folder,
     node.expect_keys({"mesh", "transform", "material", "materials", "shadow_terminator_geometry_offset"});
     const std::string path = read_existing_file(node.required("mesh"), folder);
     const std::vector<std::string>& extensions = matgeom::object_file_extensions();
-    if (std::find(extensions.begin(), extensions.end(), matgeom::lowercase_extension(path)) == extensions.end())
+    if (std::find(extensions.begin(), extensions.end(), matbase::lowercase_extension(path)) == extensions.end())
       node.required("mesh").fail("expected a .glb, .gltf, .ply or .obj file");
     object.source = MeshFile{path};
   } else {
@@ -707,8 +707,8 @@ void read_render(const Node& node, SceneDescription& scene) {
   if (auto n = node.find("max_transmission_bounces")) s.max_transmission_bounces = n->integer_at_least(0);
   if (auto n = node.find("max_transparent_bounces")) s.max_transparent_bounces = n->integer_at_least(0);
   if (auto n = node.find("exposure"))
-    scene.exposure_stops = n->number_where([](double v) { return std::abs(v) <= matgeom::kMaxExposureStops; },
-                                           fmt::format("a number of stops in [{}, {}]", -matgeom::kMaxExposureStops, matgeom::kMaxExposureStops));
+    scene.exposure_stops = n->number_where([](double v) { return std::abs(v) <= matbase::kMaxExposureStops; },
+                                           fmt::format("a number of stops in [{}, {}]", -matbase::kMaxExposureStops, matbase::kMaxExposureStops));
   if (auto n = node.find("transparent_background")) s.transparent_background = n->boolean();
   if (auto n = node.find("cycles_parity")) s.cycles_parity = n->boolean();
   if (auto n = node.find("mipmaps")) s.mipmaps = n->boolean();
@@ -719,7 +719,7 @@ void read_render(const Node& node, SceneDescription& scene) {
 }
 
 json parse_json_file(const std::string& path) {
-  if (const std::optional<std::string> problem = matgeom::input_file_problem(path)) throw InputError(path + ": " + *problem);
+  if (const std::optional<std::string> problem = matbase::input_file_problem(path)) throw InputError(path + ": " + *problem);
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open: " + std::strerror(errno));
   // nlohmann keeps the last of two equal keys in an object; a scene file that says a value twice

@@ -2,10 +2,10 @@
 
 #include <exception>
 
-#include "matgeom/cancellation.h"
-#include "matgeom/material_folder.h"
-#include "matgeom/material_library.h"
-#include "matgeom/uv_scale.h"
+#include "matbase/cancellation.h"
+#include "matgeom/uv/uv_scale.h"
+#include "matmaterial/folder/material_folder.h"
+#include "matmaterial/library/material_library.h"
 #include "matrender/asset.h"
 
 namespace matrender {
@@ -37,7 +37,7 @@ TexturePtr SceneMaterials::texture(const std::optional<TextureFile>& file) {
   if (!file) return nullptr;
   TexturePtr& loaded = textures_[std::make_tuple(file->path, file->color_space, file->wrap)];
   if (!loaded) {
-    matgeom::throw_if_cancelled(cancel_);
+    matbase::throw_if_cancelled(cancel_);
     try {
       loaded = Texture::load(file->path, file->color_space, file->wrap);
     } catch (const std::exception& e) {
@@ -52,10 +52,10 @@ Material SceneMaterials::folder_material(const std::string& name, const Material
   const MaterialFolderFile& file = *description.folder;
   auto read = folder_materials_.find(file.path);
   if (read == folder_materials_.end()) {
-    matgeom::FolderMaterial folder;
-    matgeom::throw_if_cancelled(cancel_);
+    matmaterial::FolderMaterial folder;
+    matbase::throw_if_cancelled(cancel_);
     try {
-      folder = matgeom::read_material_folder(file.path);
+      folder = matmaterial::read_material_folder(file.path);
     } catch (const std::exception& e) {
       throw file.origin.error("", e.what());
     }
@@ -73,13 +73,13 @@ Material SceneMaterials::folder_material(const std::string& name, const Material
 // A library material asked for by several scene materials is generated once.
 Material SceneMaterials::library_material(const std::string& name, const MaterialDescription& description) {
   const LibraryMaterialRequest& request = *description.library;
-  const std::string key = matgeom::library_material_name(request.spec) + "@" + std::to_string(request.resolution);
+  const std::string key = matmaterial::library_material_name(request.spec) + "@" + std::to_string(request.resolution);
   auto made = library_materials_.find(key);
   if (made == library_materials_.end()) {
-    matgeom::FolderMaterial generated;
+    matmaterial::FolderMaterial generated;
     try {
-      generated = matgeom::generate_library_material(request.spec, {request.resolution, 0, cancel_});
-    } catch (const matgeom::Cancelled&) {
+      generated = matmaterial::generate_library_material(request.spec, {request.resolution, 0, cancel_});
+    } catch (const matbase::Cancelled&) {
       throw;
     } catch (const std::exception& e) {
       throw request.origin.error("", e.what());

@@ -5,7 +5,7 @@
 #include <memory>
 #include <vector>
 
-#include "matgeom/memory_limit.h"
+#include "matbase/memory_limit.h"
 #include "matrender/texture_cache.h"
 
 namespace matrender {
@@ -165,7 +165,7 @@ void release_pinned_texels() {
 }
 
 uint64_t default_texture_memory_limit() {
-  static const uint64_t limit = matgeom::memory_limit_bytes() / 2;
+  static const uint64_t limit = matbase::memory_limit_bytes() / 2;
   return limit;
 }
 

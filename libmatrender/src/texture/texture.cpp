@@ -13,10 +13,10 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include "matgeom/image_header.h"
-#include "matgeom/input_file.h"
-#include "matgeom/memory_limit.h"
-#include "matgeom/srgb.h"
+#include "matbase/file/input_file.h"
+#include "matbase/image/image_header.h"
+#include "matbase/image/srgb.h"
+#include "matbase/memory_limit.h"
 #include "texture/texel_cache.h"
 #include "texture/texel_level.h"
 
@@ -42,14 +42,14 @@ glm::vec4 to_rgba(const float* p, int channels) {
 void require_texture_memory(const std::string& name, int width, int height, double staging_bytes_per_texel,
                             double texel_bytes = sizeof(glm::vec4)) {
   const double texels = static_cast<double>(width) * static_cast<double>(height);
-  matgeom::require_memory(texels * (texel_bytes + staging_bytes_per_texel),
+  matbase::require_memory(texels * (texel_bytes + staging_bytes_per_texel),
                           "its " + std::to_string(width) + " x " + std::to_string(height) + " texels", name);
 }
 
 // Refuses a file whose header declares more pixels than its bytes can hold, before the decoder
-// allocates for them (matgeom/image_header.h).
+// allocates for them (matbase/image/image_header.h).
 void require_plausible_header(const std::string& path) {
-  if (const std::optional<std::string> problem = matgeom::declared_size_problem(path))
+  if (const std::optional<std::string> problem = matbase::declared_size_problem(path))
     throw std::runtime_error(path + ": " + *problem);
 }
 
@@ -168,7 +168,7 @@ Texture::Decoded Texture::decode_bytes(int width, int height, int channels, cons
 }
 
 Texture::Decoded Texture::decode_file(const std::string& path, ColorSpace space) {
-  matgeom::require_input_file(path);
+  matbase::require_input_file(path);
   require_plausible_header(path);
   // Straight colour as stored (Cycles' default alpha mode); OpenImageIO would premultiply.
   OIIO::ImageSpec config;
@@ -204,7 +204,7 @@ Texture::Decoded Texture::decode_file(const std::string& path, ColorSpace space)
     // Float images tagged sRGB are decoded once at load time (Cycles converts float images
     // through OCIO when loading).
     for (size_t i = 0; i < pixels.size(); ++i)
-      if (channels < 4 || i % 4 != 3) pixels[i] = matgeom::srgb_to_linear(pixels[i]);
+      if (channels < 4 || i % 4 != 3) pixels[i] = matbase::srgb_to_linear(pixels[i]);
   }
   return decode_floats(spec.width, spec.height, channels, pixels.data(), path);
 }
@@ -261,7 +261,7 @@ std::shared_ptr<const Texture> Texture::load(const std::string& path, ColorSpace
 }
 
 ColorSpace blender_default_color_space(const std::string& path) {
-  matgeom::require_input_file(path);
+  matbase::require_input_file(path);
   auto input = OIIO::ImageInput::open(path);
   if (!input) throw std::runtime_error(path + ": cannot read image: " + OIIO::geterror());
   const OIIO::TypeDesc::BASETYPE type = static_cast<OIIO::TypeDesc::BASETYPE>(input->spec().format.basetype);
@@ -394,9 +394,9 @@ glm::vec4 Texture::sample(glm::vec2 uv, bool unassociate, float footprint) const
     value.z /= value.w;
   }
   if (convert_srgb_after_filtering_) {
-    value.x = matgeom::srgb_to_linear(value.x);
-    value.y = matgeom::srgb_to_linear(value.y);
-    value.z = matgeom::srgb_to_linear(value.z);
+    value.x = matbase::srgb_to_linear(value.x);
+    value.y = matbase::srgb_to_linear(value.y);
+    value.z = matbase::srgb_to_linear(value.z);
   }
   return value;
 }

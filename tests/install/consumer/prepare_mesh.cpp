@@ -4,10 +4,10 @@
 #include <cstdio>
 #include <string>
 
-#include <matgeom/builtin_objects.h>
-#include <matgeom/mesh_io.h>
+#include <matgeom/builtin/builtin_objects.h>
+#include <matgeom/io/mesh_io.h>
 #include <matgeom/mesh_parts.h>
-#include <matgeom/uv_pass.h>
+#include <matgeom/uv/uv_pass.h>
 
 int main(int argc, char** argv) {
   if (argc != 2) {

@@ -4,7 +4,7 @@
 // appear with the set's other files.
 #include <filesystem>
 
-#include "matgeom/atomic_file.h"
+#include "matbase/file/atomic_file.h"
 #include "matlearn/evaluation/evaluator.h"
 #include "matlearn/evaluation/inference.h"
 
@@ -13,14 +13,14 @@ namespace matlearn {
 // The sample's input beside, per map, truth | prediction | absolute error on the object (x4,
 // clamped, black off it): one row per map.
 void write_panel(const std::filesystem::path& path, const SamplePredictions& sample,
-                 matgeom::AtomicFileSet* set = nullptr);
+                 matbase::AtomicFileSet* set = nullptr);
 
 // The input, then each predicted map, in one row; map pixels off the mask are black.
 void write_prediction_strip(const std::filesystem::path& path, const Image& input, const Mask& mask,
-                            const PredictedMaps& predicted, matgeom::AtomicFileSet* set = nullptr);
+                            const PredictedMaps& predicted, matbase::AtomicFileSet* set = nullptr);
 
 // One map as a PNG (RGB, or grey for one channel), black off the mask.
 void write_map_png(const std::filesystem::path& path, const Image& map, const Mask& mask,
-                   matgeom::AtomicFileSet* set = nullptr);
+                   matbase::AtomicFileSet* set = nullptr);
 
 }  // namespace matlearn

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "matgeom/atomic_file.h"
+#include "matbase/file/atomic_file.h"
 #include "matlearn/evaluation/evaluator.h"
 
 namespace matlearn {
@@ -30,6 +30,6 @@ std::vector<ReportTable> report_tables(const std::vector<ScoredMap>& scores);
 // `set` when one is given, to appear with its other files); `preamble` (markdown) opens
 // metrics.md and goes into the JSON as "about".
 void write_report(const std::filesystem::path& folder, const std::vector<ReportTable>& tables,
-                  const std::string& preamble, matgeom::AtomicFileSet* set = nullptr);
+                  const std::string& preamble, matbase::AtomicFileSet* set = nullptr);
 
 }  // namespace matlearn

@@ -1,0 +1,16 @@
+#pragma once
+// MTL materials to MaterialDesc: the Principled BSDF Blender's OBJ importer builds from each
+// material the parts use, with its textures.
+#include <vector>
+
+#include "matgeom/object_asset.h"
+#include "io/obj/obj_loading.h"
+#include "io/obj/obj_parts.h"
+
+namespace matgeom::obj {
+
+// Every part's MaterialDesc, each file material converted once.
+std::vector<matmaterial::MaterialDesc> part_materials(const ObjFile& file, const PartTable& parts,
+                                         std::vector<matbase::ImagePixels>& images);
+
+}  // namespace matgeom::obj

@@ -1,0 +1,169 @@
+#include "io/obj/obj_text_screening.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+#include "matbase/file/file_error.h"
+#include "io/obj/statement_text.h"
+
+namespace matgeom::obj {
+namespace {
+
+// tinyobjloader's ear clipping takes time quadratic in a polygon's corners (about 0.2 s for
+// 8000 on a star-shaped polygon), so a hostile file could stall the reader for minutes with one
+// face; real polygons stay far below this.
+constexpr size_t kMaxPolygonCorners = 10000;
+
+[[noreturn]] void fail_at(const std::string& path, size_t line, const std::string& problem) {
+  matbase::fail(path, matbase::concat("line ", line, ": ", problem));
+}
+
+// The vertex statements so far: OBJ's indices count from the first (1) or back from the last
+// (-1) of those that come before the face.
+struct VertexCounts {
+  int64_t positions = 0;
+  int64_t uvs = 0;
+  int64_t normals = 0;
+};
+
+// The numbers each vertex statement takes: "v x y z [w]" (or "v x y z r g b", tinyobjloader's
+// colour extension), "vt u [v [w]]", "vn x y z". tinyobjloader fills a missing one with 0.
+const char* vertex_numbers_needed(std::string_view keyword, size_t count) {
+  if (keyword == "v") return count == 3 || count == 4 || count == 6 ? nullptr : "x y z (and w, or r g b)";
+  if (keyword == "vt") return count >= 1 && count <= 3 ? nullptr : "u and optionally v and w";
+  return count == 3 ? nullptr : "x y z";
+}
+
+void check_vertex_statement(const std::string& path, size_t line_number, std::string_view keyword,
+                            std::string_view line) {
+  const std::vector<std::string_view> numbers = statement_arguments(line);
+  for (const std::string_view word : numbers) {
+    if (!finite_number(word))
+      fail_at(path, line_number, matbase::concat(matbase::excerpt(word), " in a '", keyword, "' line is not a finite number"));
+  }
+  if (const char* needed = vertex_numbers_needed(keyword, numbers.size()))
+    fail_at(path, line_number,
+            matbase::concat("a '", keyword, "' line takes ", needed, "; this one has ", numbers.size(), " numbers"));
+}
+
+bool is_integer_text(std::string_view word) {
+  if (!word.empty() && (word.front() == '+' || word.front() == '-')) word.remove_prefix(1);
+  return !word.empty() && std::all_of(word.begin(), word.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// Where a corner is, for messages: its line, its statement ("face") and the corner as written,
+// named after the problem ("<path>: face index out of range: ... (line 4, corner "1/9")", the
+// form messages took when tinyobjloader's indices were checked after it).
+struct CornerPlace {
+  const std::string& path;
+  size_t line;
+  const char* statement;
+  std::string_view corner;
+
+  [[noreturn]] void fail_here(const std::string& problem) const {
+    matbase::fail(path, matbase::concat(problem, " (line ", line, ", corner ", matbase::excerpt(corner), ")"));
+  }
+};
+
+// One index of a corner as written, against the `count` vertices of its kind before the line.
+void check_index(const CornerPlace& place, std::string_view index, int64_t count, const char* kind) {
+  if (!is_integer_text(index)) place.fail_here(matbase::concat(place.statement, " index ", matbase::excerpt(index), " is not a whole number"));
+  const std::optional<int64_t> value = integer_number(index);  // none beyond 64 bits
+  if (value == 0) place.fail_here(matbase::concat(place.statement, " index 0: indices count from 1, or back from -1"));
+  if (!value || *value > count || *value < -count) {
+    place.fail_here(matbase::concat(place.statement, " index out of range: ", kind, " ", matbase::cut_short(index), " but the file has ",
+                           count, " before this line"));
+  }
+}
+
+// A corner of a face, line or point: v, v/vt, v//vn or v/vt/vn.
+void check_corner(const CornerPlace& place, const VertexCounts& counts) {
+  std::vector<std::string_view> parts;
+  for (size_t begin = 0;;) {
+    const size_t slash = place.corner.find('/', begin);
+    parts.push_back(place.corner.substr(begin, slash == std::string_view::npos ? std::string_view::npos : slash - begin));
+    if (slash == std::string_view::npos) break;
+    begin = slash + 1;
+  }
+  if (parts.size() > 3 || parts.front().empty() || parts.back().empty())
+    place.fail_here(matbase::concat("a ", place.statement, " corner is v, v/vt, v//vn or v/vt/vn"));
+  check_index(place, parts[0], counts.positions, "position");
+  if (parts.size() >= 2 && !parts[1].empty()) check_index(place, parts[1], counts.uvs, "texture coordinate");
+  if (parts.size() == 3) check_index(place, parts[2], counts.normals, "normal");
+}
+
+// What each statement of corners makes, for messages.
+const char* element_name(std::string_view keyword) { return keyword == "f" ? "face" : keyword == "l" ? "line" : "point"; }
+
+void check_element_statement(const std::string& path, size_t line_number, std::string_view keyword,
+                             std::string_view line, const VertexCounts& counts) {
+  const std::vector<std::string_view> corners = statement_arguments(line);
+  const size_t needed = keyword == "f" ? 3 : 1;
+  if (corners.size() < needed)
+    fail_at(path, line_number,
+            matbase::concat("a '", keyword, "' line needs ", needed, " or more corners; this one has ", corners.size()));
+  if (keyword == "f" && corners.size() > kMaxPolygonCorners)
+    fail_at(path, line_number,
+            matbase::concat("a face has ", corners.size(), " corners; more than ", kMaxPolygonCorners, " are refused"));
+  for (const std::string_view corner : corners) check_corner({path, line_number, element_name(keyword), corner}, counts);
+}
+
+// Where a comment starts in a line ('#' at the start of a word), or the line's size.
+size_t comment_start(std::string_view line) {
+  for (size_t i = line.find('#'); i != std::string_view::npos; i = line.find('#', i + 1)) {
+    if (i == 0 || line[i - 1] == ' ' || line[i - 1] == '\t') return i;
+  }
+  return line.size();
+}
+
+void blank(std::string& text, size_t begin, size_t end) {
+  std::fill(text.begin() + static_cast<std::ptrdiff_t>(begin), text.begin() + static_cast<std::ptrdiff_t>(end), ' ');
+}
+
+}  // namespace
+
+void screen_obj_text(const std::string& path, std::string& text) {
+  size_t line_number = 0;
+  VertexCounts counts;
+  for_each_line(text, [&](size_t begin, size_t end) {
+    ++line_number;
+    const std::string_view line = std::string_view(text.data() + begin, end - begin).substr(0, text.find('\0', begin) - begin);
+    const std::string_view keyword = line_keyword(line);
+    if (keyword == "v" || keyword == "vt" || keyword == "vn") {
+      check_vertex_statement(path, line_number, keyword, line);
+      ++(keyword == "v" ? counts.positions : keyword == "vt" ? counts.uvs : counts.normals);
+    } else if (keyword == "f" || keyword == "l" || keyword == "p") {
+      check_element_statement(path, line_number, keyword, line, counts);
+      blank(text, begin + comment_start(line), end);
+    } else if (keyword == "t" || keyword == "vw") {
+      blank(text, begin, end);
+    }
+  });
+}
+
+size_t first_use_line(const std::string& text, std::string_view material) {
+  size_t line_number = 0;
+  size_t found = 0;
+  for_each_line(text, [&](size_t begin, size_t end) {
+    ++line_number;
+    const std::string_view line(text.data() + begin, end - begin);
+    const size_t keyword = line.find_first_not_of(" \t");
+    if (found != 0 || keyword == std::string_view::npos || line.compare(keyword, 6, "usemtl") != 0) return;
+    const std::vector<std::string_view> words = split_words(parsed_part(line.substr(keyword + 6)));
+    if ((words.empty() ? std::string_view() : words.front()) == material) found = line_number;
+  });
+  return found;
+}
+
+bool names_material_library(const std::string& text) {
+  bool named = false;
+  for_each_line(text, [&](size_t begin, size_t end) {
+    named = named || line_keyword(std::string_view(text.data() + begin, end - begin)) == "mtllib";
+  });
+  return named;
+}
+
+}  // namespace matgeom::obj
