@@ -4,6 +4,7 @@
 #include <fstream>
 #include <string>
 
+#include "matbase/pi.h"
 #include "matgeom/tangents.h"
 #include "matrender/paper_setup.h"
 
@@ -14,9 +15,9 @@ matgeom::TriangleMesh displaced_sphere(size_t triangles) {
   const int segments = 2 * rings;
   matgeom::TriangleMesh m;
   for (int i = 0; i <= rings; ++i) {
-    const double theta = M_PI * i / rings;
+    const double theta = matbase::kPi * i / rings;
     for (int j = 0; j <= segments; ++j) {
-      const double phi = 2.0 * M_PI * j / segments;
+      const double phi = 2.0 * matbase::kPi * j / segments;
       const double bump = 1.0 + 0.08 * std::sin(7.0 * theta) * std::sin(5.0 * phi) + 0.03 * std::sin(23.0 * theta + 11.0 * phi);
       const double r = 0.3 * bump;
       m.positions.emplace_back(r * std::sin(theta) * std::cos(phi), r * std::sin(theta) * std::sin(phi),

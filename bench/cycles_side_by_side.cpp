@@ -24,6 +24,7 @@
 
 #include "bench_scenes.h"
 #include "image_error.h"
+#include "matbase/pi.h"
 #include "matrender/paper_setup.h"
 #include "matrender/render.h"
 #include "matrender/rig_lights.h"
@@ -65,7 +66,7 @@ std::string write_checker(const std::string& folder) {
 std::string write_sky(const std::string& folder) {
   constexpr int kWidth = 512, kHeight = 256;
   std::vector<float> pixels(static_cast<size_t>(kWidth) * kHeight * 3);
-  const double pi = 3.14159265358979323846;
+  const double pi = matbase::kPi;
   const glm::dvec3 sun = glm::normalize(glm::dvec3(std::cos(0.7), 0.3, std::sin(0.7)));
   for (int y = 0; y < kHeight; ++y)
     for (int x = 0; x < kWidth; ++x) {

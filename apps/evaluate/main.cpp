@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "matbase/input_error.h"
 #include "common/exit_codes.h"
 #include "common/number_options.h"
 #include "common/progress_bar.h"
@@ -24,10 +25,6 @@
 #include "matmaterial/material_classes.h"
 
 namespace {
-
-struct InputError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 struct Options {
   std::filesystem::path checkpoint = "train_output/checkpoints/best.pt";
@@ -80,7 +77,7 @@ int predict(const Options& o, const matlearn::CheckpointHeader& header, matlearn
   try {
     input = matlearn::read_input_image(o.image, o.mask, header.image_size);
   } catch (const std::runtime_error& e) {
-    throw InputError(e.what());
+    throw matbase::InputError(e.what());
   }
   const matlearn::PredictedMaps predicted = matlearn::predict_maps(model, header, input.rgb);
   std::string written;
@@ -111,19 +108,19 @@ int run(const Options& o) {
     header = file.header;
     model = matlearn::load_model(file);
   } catch (const std::runtime_error& e) {
-    throw InputError(e.what());
+    throw matbase::InputError(e.what());
   }
-  if (header.layout.regression_channels() == 0) throw InputError(checkpoint.string() + " predicts no maps");
+  if (header.layout.regression_channels() == 0) throw matbase::InputError(checkpoint.string() + " predicts no maps");
   if (!o.image.empty()) return predict(o, header, *model);
-  if (o.dataset_root.empty()) throw InputError("give --dataset-root to score a split, or --image to predict one image");
+  if (o.dataset_root.empty()) throw matbase::InputError("give --dataset-root to score a split, or --image to predict one image");
   std::vector<matlearn::SampleId> samples;
   try {
     samples = samples_to_score(o);
   } catch (const std::runtime_error& e) {
-    if (dynamic_cast<const InputError*>(&e)) throw;
-    throw InputError(e.what());
+    if (dynamic_cast<const matbase::InputError*>(&e)) throw;
+    throw matbase::InputError(e.what());
   }
-  if (samples.empty()) throw InputError("the " + o.split + " split of " + o.dataset_root.string() + " is empty");
+  if (samples.empty()) throw matbase::InputError("the " + o.split + " split of " + o.dataset_root.string() + " is empty");
   fmt::print("scoring {} ({} epochs) on {} {} samples, {} metrics\n", header.network, header.epochs_done,
              samples.size(), o.split, o.paper_compat ? "paper-compatible" : "correct");
   std::fflush(stdout);
@@ -224,7 +221,7 @@ int main(int argc, char** argv) {
   }
   try {
     return run(o);
-  } catch (const InputError& e) {
+  } catch (const matbase::InputError& e) {
     return app_support::report_error("evaluate", e.what(), app_support::kInputError);
   } catch (const matlearn::DatasetError& e) {
     return app_support::report_error("evaluate", e.what(), app_support::kInputError);

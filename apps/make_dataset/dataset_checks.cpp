@@ -13,6 +13,7 @@
 #include "dataset_folders.h"
 #include "matbase/image/image_header.h"
 #include "matbase/memory_limit.h"
+#include "matbase/pi.h"
 #include "matgeom/bounding_sphere.h"
 #include "matgeom/builtin/builtin_objects.h"
 #include "matgeom/io/mesh_io.h"
@@ -44,11 +45,11 @@ std::vector<std::vector<uint32_t>> parts_of_slots(const DatasetConfig& config, s
       const auto it = std::find(part_names.begin(), part_names.end(), name);
       const std::string key = config.source + ": " + object_key(index) + ".slots." + object.slots[s].key;
       if (it == part_names.end() || static_cast<size_t>(it - part_names.begin()) >= part_count)
-        throw InputError(key + ": the object has no part named \"" + name + "\" (its parts: " +
+        throw matbase::InputError(key + ": the object has no part named \"" + name + "\" (its parts: " +
                          quoted(part_names) + ")");
       const auto part = static_cast<size_t>(it - part_names.begin());
       if (slot_of_part[part] >= 0)
-        throw InputError(key + ": part \"" + name + "\" is in slot \"" +
+        throw matbase::InputError(key + ": part \"" + name + "\" is in slot \"" +
                          object.slots[static_cast<size_t>(slot_of_part[part])].key + "\" already");
       slot_of_part[part] = static_cast<int>(s);
       parts[s].push_back(static_cast<uint32_t>(part));
@@ -59,7 +60,7 @@ std::vector<std::vector<uint32_t>> parts_of_slots(const DatasetConfig& config, s
         if (slot_of_part[part] < 0) slot_of_part[part] = static_cast<int>(s), parts[s].push_back(static_cast<uint32_t>(part));
   for (size_t part = 0; part < part_count; ++part)
     if (slot_of_part[part] < 0)
-      throw InputError(config.source + ": " + object_key(index) + ".slots: part \"" +
+      throw matbase::InputError(config.source + ": " + object_key(index) + ".slots: part \"" +
                        (part < part_names.size() ? part_names[part] : std::to_string(part)) +
                        "\" is in no slot, so it would have no material and no label; list it in a slot, or leave "
                        "one slot's part list out so it takes every part not listed");
@@ -67,7 +68,7 @@ std::vector<std::vector<uint32_t>> parts_of_slots(const DatasetConfig& config, s
 }
 
 
-// Throws InputError when the cameras would see object `o` (its surface `mesh`) smaller than a
+// Throws matbase::InputError when the cameras would see object `o` (its surface `mesh`) smaller than a
 // pixel in every frame, as a fixed radius of 5 km does: frames without the object train to a loss
 // of 0. The radius rule and the sphere's angular size are the renderer's (object_renderer.h).
 void check_object_in_view(const DatasetConfig& config, size_t o, const matgeom::TriangleMesh& mesh) {
@@ -77,24 +78,24 @@ void check_object_in_view(const DatasetConfig& config, size_t o, const matgeom::
   const double radius = camera_grid_radius(config.camera, mesh, bounds, centre,
                                            static_cast<double>(config.render.width) / height);
   const double farthest = radius + glm::length(bounds.center - centre);
-  const double half_fov = 0.5 * config.camera.vertical_fov_deg * M_PI / 180.0;
+  const double half_fov = 0.5 * config.camera.vertical_fov_deg * matbase::kPi / 180.0;
   // The sphere's projected radius in pixels at the frame's centre, seen from its farthest camera.
   const double pixels = bounds.radius / farthest / std::tan(half_fov) * 0.5 * height;
   if (pixels < 0.5)
-    throw InputError(fmt::format("{}: camera.radius: the cameras are {:.4g} m from {}, which is {:.3g} m across: it "
+    throw matbase::InputError(fmt::format("{}: camera.radius: the cameras are {:.4g} m from {}, which is {:.3g} m across: it "
                                  "would cover less than a pixel of every frame",
                                  config.source, radius, object_key(o), 2.0 * bounds.radius));
 }
 
 void check_before_writing(const DatasetConfig& config) {
   if (const std::optional<std::string> problem = app_support::output_folder_problem(config.output))
-    throw InputError("output: " + *problem + "; give --output a folder you can write to");
+    throw matbase::InputError("output: " + *problem + "; give --output a folder you can write to");
   // A frame's buffers, and the maps the writer encodes from them (about as much again).
   const int w = config.render.width, h = config.render.height;
   if (const auto problem = matbase::memory_problem(
           2.0 * matrender::FrameBuffers::bytes_for(w, h, dataset_aovs()),
           fmt::format("the buffers and maps of a {} x {} frame", w, h)))
-    throw InputError(config.source + ": render.resolution: " + *problem);
+    throw matbase::InputError(config.source + ": render.resolution: " + *problem);
   for (size_t o = 0; o < config.objects.size(); ++o) {
     const ObjectConfig& object = config.objects[o];
     matgeom::ObjectAsset asset;
@@ -104,18 +105,18 @@ void check_before_writing(const DatasetConfig& config) {
       else
         asset = matgeom::read_object(std::get<matrender::MeshFile>(object.source).path);
     } catch (const std::exception& e) {
-      throw InputError(config.source + ": " + object_key(o) + ": " + e.what());
+      throw matbase::InputError(config.source + ": " + object_key(o) + ": " + e.what());
     }
     // Every candidate is a textured material, and without UVs a texture shows one texel.
     if (object.uv_pass == matrender::UvPassMode::Never && asset.mesh.uvs.empty())
-      throw InputError(config.source + ": " + object_key(o) +
+      throw matbase::InputError(config.source + ": " + object_key(o) +
                        ".uv_pass: never, but the mesh has no texture coordinates, so each material would show one "
                        "texel of its maps; use when_missing (the default) to give it the paper's UV pass");
     check_object_in_view(config, o, asset.mesh);
     const size_t part_count = std::max({static_cast<size_t>(asset.mesh.part_count()), asset.materials.size(), size_t{1}});
     parts_of_slots(config, o, asset.mesh.part_names, part_count);
     if (config.paper_texture_layout && object.slots.size() != 1)
-      throw InputError(config.source + ": paper_texture_layout: object \"" + object.name + "\" has " +
+      throw matbase::InputError(config.source + ": paper_texture_layout: object \"" + object.name + "\" has " +
                        std::to_string(object.slots.size()) +
                        " slots, but the paper's layout files a screenshot under one material: give it one slot");
     for (const SlotConfig& slot : object.slots)
@@ -125,7 +126,7 @@ void check_before_writing(const DatasetConfig& config) {
         // Its maps are decoded when a variant first uses them, after records are written.
         for (const std::filesystem::directory_entry& file : std::filesystem::directory_iterator(*folder))
           if (const std::optional<std::string> problem = matbase::declared_size_problem(file.path()))
-            throw InputError(config.source + ": " + object_key(o) + ".materials." + slot.key + ": " +
+            throw matbase::InputError(config.source + ": " + object_key(o) + ".materials." + slot.key + ": " +
                              file.path().string() + ": " + *problem);
         if (matmaterial::material_class_of_folder(candidate.name)) continue;
         // A folder whose name names no class may still say it in its metadata.
@@ -133,10 +134,10 @@ void check_before_writing(const DatasetConfig& config) {
         try {
           found = matmaterial::read_material_folder(*folder).material_class;
         } catch (const std::exception& e) {
-          throw InputError(config.source + ": " + object_key(o) + ".materials." + slot.key + ": " + e.what());
+          throw matbase::InputError(config.source + ": " + object_key(o) + ".materials." + slot.key + ": " + e.what());
         }
         if (!found || *found == matmaterial::MaterialClass::Background)
-          throw InputError(config.source + ": " + object_key(o) + ".materials." + slot.key + ": material folder \"" +
+          throw matbase::InputError(config.source + ": " + object_key(o) + ".materials." + slot.key + ": material folder \"" +
                            candidate.spelled +
                            "\" has no material class, so its pixels would be labelled background; name the folder "
                            "after its class (\"wood_oak\") or give its metadata.json a category");
@@ -192,7 +193,7 @@ void check_output_matches_plan(const DatasetConfig& config, const DatasetPlan& p
     std::string shown;
     for (size_t k = 0; k < std::min<size_t>(strangers.size(), 5); ++k) shown += (k ? ", " : "") + strangers[k];
     if (strangers.size() > 5) shown += fmt::format(" and {} more", strangers.size() - 5);
-    throw InputError(config.output + ": holds " + shown +
+    throw matbase::InputError(config.output + ": holds " + shown +
                      ", which this configuration does not make; their frames would be in none of its split files. "
                      "Render into another --output, or remove them");
   }
@@ -201,7 +202,7 @@ void check_output_matches_plan(const DatasetConfig& config, const DatasetPlan& p
   for (const fs::path& variant : made)
     if (const std::optional<std::string> recorded = recorded_configuration(variant);
         recorded && *recorded != config.canonical_yaml)
-      throw InputError((variant / "metadata.json").string() +
+      throw matbase::InputError((variant / "metadata.json").string() +
                        ": this variant was made with other settings (the configuration it records differs from "
                        "this run's); render into another --output, or delete the folder to render it again");
 }

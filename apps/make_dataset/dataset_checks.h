@@ -14,16 +14,16 @@
 namespace make_dataset {
 
 // The parts of each slot of object `object`, given its part names and count: those a slot
-// names, and for the one slot that names none, every other part. Throws InputError naming the
+// names, and for the one slot that names none, every other part. Throws matbase::InputError naming the
 // configuration's key for an unknown part, a part in two slots, or a part in none.
 std::vector<std::vector<uint32_t>> parts_of_slots(const DatasetConfig& config, size_t object,
                                                   const std::vector<std::string>& part_names, size_t part_count);
 
 // Loads each object's geometry (not its textures) and checks its slots, and checks each
-// candidate's class. Throws InputError.
+// candidate's class. Throws matbase::InputError.
 void check_before_writing(const DatasetConfig& config);
 
-// Throws InputError when the output folder holds object or variant folders the plan does not make
+// Throws matbase::InputError when the output folder holds object or variant folders the plan does not make
 // (a second run with other objects, or fewer variants, into the same folder): their frames would
 // be in none of the split files this run writes, and two datasets would pass for one. Also when a
 // variant folder records another configuration: both before the split files are written.

@@ -109,7 +109,7 @@ class Value {
   // Whether the key is given as null (`~`, `null` or nothing), which only `max_variants` accepts.
   bool is_null() const { return node_.IsDefined() && node_.IsNull(); }
   const std::string& key() const { return key_; }
-  [[noreturn]] void fail(const std::string& message) const { throw InputError(sources_.at(key_) + ": " + message); }
+  [[noreturn]] void fail(const std::string& message) const { throw matbase::InputError(sources_.at(key_) + ": " + message); }
 
   Value child(const std::string& name) const {
     return Value(node_.IsMap() ? node_[name] : YAML::Node(YAML::NodeType::Undefined),
@@ -187,15 +187,15 @@ class Value {
 // indexes a list). A single value on the way is not replaced by a map: the key is misspelled.
 void apply_override(YAML::Node root, const Override& o) {
   if (o.value.find_first_not_of(" \t") == std::string::npos)
-    throw InputError(o.option + ": no value given: write one (null where the key takes none)");
+    throw matbase::InputError(o.option + ": no value given: write one (null where the key takes none)");
   YAML::Node value;
   try {
     value = YAML::Load(o.value);
   } catch (const YAML::Exception& e) {
-    throw InputError(o.option + ": \"" + o.value + "\" is not a YAML value: " + e.msg);
+    throw matbase::InputError(o.option + ": \"" + o.value + "\" is not a YAML value: " + e.msg);
   }
   if (const std::optional<std::string> problem = app_support::repeated_key_problem(value))
-    throw InputError(o.option + ": " + *problem);
+    throw matbase::InputError(o.option + ": " + *problem);
   std::vector<std::string> parts;
   for (size_t start = 0;;) {
     const size_t dot = o.key.find('.', start);
@@ -209,13 +209,13 @@ void apply_override(YAML::Node root, const Override& o) {
     const std::optional<int64_t> index = app_support::whole_number(parts[k]);
     if (node.IsSequence()) {
       if (!index || *index < 0 || static_cast<size_t>(*index) >= node.size())
-        throw InputError(o.option + ": " + o.key + ": \"" + parts[k] + "\" is not an index of that list");
+        throw matbase::InputError(o.option + ": " + o.key + ": \"" + parts[k] + "\" is not an index of that list");
       path.push_back(node[static_cast<size_t>(*index)]);
     } else if (node.IsMap()) {
       if (!node[parts[k]].IsDefined() || node[parts[k]].IsNull()) node[parts[k]] = YAML::Node(YAML::NodeType::Map);
       path.push_back(node[parts[k]]);
     } else {
-      throw InputError(o.option + ": " + o.key + ": " + parts[k - 1] + " is a single value, with no key \"" +
+      throw matbase::InputError(o.option + ": " + o.key + ": " + parts[k - 1] + " is a single value, with no key \"" +
                        parts[k] + "\" inside");
     }
   }
@@ -223,12 +223,12 @@ void apply_override(YAML::Node root, const Override& o) {
   const std::optional<int64_t> index = app_support::whole_number(parts.back());
   if (parent.IsSequence()) {
     if (!index || *index < 0 || static_cast<size_t>(*index) >= parent.size())
-      throw InputError(o.option + ": " + o.key + ": \"" + parts.back() + "\" is not an index of that list");
+      throw matbase::InputError(o.option + ": " + o.key + ": \"" + parts.back() + "\" is not an index of that list");
     parent[static_cast<size_t>(*index)] = value;
   } else if (parent.IsMap()) {
     parent[parts.back()] = value;
   } else {
-    throw InputError(o.option + ": " + o.key + ": " + parts[parts.size() - 2] + " is a single value, with no key \"" +
+    throw matbase::InputError(o.option + ": " + o.key + ": " + parts[parts.size() - 2] + " is a single value, with no key \"" +
                      parts.back() + "\" inside");
   }
 }
@@ -505,9 +505,9 @@ namespace {
 
 DatasetConfig read_root(YAML::Node root, const std::string& source, const fs::path& base,
                         const std::vector<Override>& overrides) {
-  if (!root.IsMap()) throw InputError(source + ": expected a mapping of keys at the top");
+  if (!root.IsMap()) throw matbase::InputError(source + ": expected a mapping of keys at the top");
   if (const std::optional<std::string> problem = app_support::repeated_key_problem(root))
-    throw InputError(source + ": " + *problem);
+    throw matbase::InputError(source + ": " + *problem);
   Sources sources(source);
   for (const Override& o : overrides) {
     apply_override(root, o);
@@ -529,8 +529,8 @@ DatasetConfig read_root(YAML::Node root, const std::string& source, const fs::pa
   return config;
 }
 
-InputError yaml_error(const std::string& source, const YAML::Exception& e) {
-  return InputError(source + ": not valid YAML or JSON: " + e.msg + fmt::format(" (line {})", e.mark.line + 1));
+matbase::InputError yaml_error(const std::string& source, const YAML::Exception& e) {
+  return matbase::InputError(source + ": not valid YAML or JSON: " + e.msg + fmt::format(" (line {})", e.mark.line + 1));
 }
 
 }  // namespace
@@ -540,7 +540,7 @@ DatasetConfig load_config(const std::string& file, const std::vector<Override>& 
   try {
     matbase::require_input_file(file);
   } catch (const std::exception& e) {
-    throw InputError(e.what());
+    throw matbase::InputError(e.what());
   }
   YAML::Node root;
   try {

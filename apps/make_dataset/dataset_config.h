@@ -22,7 +22,7 @@
 
 namespace make_dataset {
 
-using matrender::InputError;
+using matbase::InputError;
 
 // A candidate material of a slot: a library material or a MatSynth-style material folder.
 struct MaterialCandidate {
@@ -111,7 +111,7 @@ struct Override {
 const std::string& embedded_default_yaml();
 
 // Reads `file` (YAML or JSON; empty: the embedded default), applies the overrides in order and
-// checks every value. Throws InputError naming the file or option and the key.
+// checks every value. Throws matbase::InputError naming the file or option and the key.
 DatasetConfig load_config(const std::string& file, const std::vector<Override>& overrides);
 // The same from YAML text; `source` names it in errors and relative paths resolve against `base`.
 DatasetConfig parse_config(const std::string& yaml, const std::string& source, const std::filesystem::path& base,

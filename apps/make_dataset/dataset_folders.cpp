@@ -39,7 +39,7 @@ std::optional<std::string> object_folder_problem(const std::string& name) {
 
 std::vector<std::filesystem::path> variant_folders(const std::filesystem::path& root, const std::string& marker) {
   namespace fs = std::filesystem;
-  if (!fs::is_directory(root)) throw InputError(root.string() + ": no such folder");
+  if (!fs::is_directory(root)) throw matbase::InputError(root.string() + ": no such folder");
   std::vector<fs::path> variants;
   for (const fs::directory_entry& object : fs::directory_iterator(root)) {
     const std::string name = object.path().filename().string();
@@ -48,7 +48,7 @@ std::vector<std::filesystem::path> variant_folders(const std::filesystem::path& 
       if (variant.is_directory() && fs::exists(variant.path() / marker)) variants.push_back(variant.path());
   }
   if (variants.empty())
-    throw InputError(root.string() + ": holds no <object>/<variant>/" + marker + ": not a dataset");
+    throw matbase::InputError(root.string() + ": holds no <object>/<variant>/" + marker + ": not a dataset");
   std::sort(variants.begin(), variants.end());
   return variants;
 }

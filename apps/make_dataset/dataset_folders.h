@@ -22,7 +22,7 @@ inline constexpr const char* kSplitFiles[] = {"object_disjoint_v1.yaml", "varian
 std::optional<std::string> object_folder_problem(const std::string& name);
 
 // <root>/<object>/<variant>/ folders holding `marker` ("images", "transforms.json"), sorted;
-// the dataset's own folders are no objects. Throws InputError when `root` is no folder or holds
+// the dataset's own folders are no objects. Throws matbase::InputError when `root` is no folder or holds
 // no such variant.
 std::vector<std::filesystem::path> variant_folders(const std::filesystem::path& root, const std::string& marker);
 

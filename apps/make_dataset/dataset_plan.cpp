@@ -59,13 +59,13 @@ DatasetPlan plan_dataset(const DatasetConfig& config) {
     try {
       variants = matgeom::variant_count(slot_candidates(config.objects[o]), config.combination);
     } catch (const std::invalid_argument& e) {
-      throw InputError(config.source + ": objects." + std::to_string(o) + ": " + e.what());
+      throw matbase::InputError(config.source + ": objects." + std::to_string(o) + ": " + e.what());
     }
     if (config.max_variants) variants = std::min(variants, *config.max_variants);
     frames += static_cast<long double>(variants) * static_cast<long double>(plan.views);
   }
   if (frames > static_cast<long double>(kMaxFrames))
-    throw InputError(fmt::format("{}: the plan has {:.4g} frames, more than the {} one dataset may have; cap the "
+    throw matbase::InputError(fmt::format("{}: the plan has {:.4g} frames, more than the {} one dataset may have; cap the "
                                  "variants (variants.max_variants) or the views (camera.grid)",
                                  config.source, static_cast<double>(frames), app_support::with_thousands(kMaxFrames)));
   for (size_t o = 0; o < config.objects.size(); ++o) {
@@ -73,7 +73,7 @@ DatasetPlan plan_dataset(const DatasetConfig& config) {
       plan.variants.push_back(matgeom::material_variants(slot_candidates(config.objects[o]), config.combination,
                                                          config.max_variants, config.variant_seed));
     } catch (const std::invalid_argument& e) {
-      throw InputError(config.source + ": objects." + std::to_string(o) + ": " + e.what());
+      throw matbase::InputError(config.source + ": objects." + std::to_string(o) + ": " + e.what());
     }
     for (size_t v = 0; v < plan.variants.back().size(); ++v)
       for (size_t view = 0; view < plan.views; ++view) plan.frames.push_back({o, v, view});

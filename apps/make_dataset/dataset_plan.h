@@ -38,7 +38,7 @@ struct DatasetPlan {
   std::vector<FrameRef> frames;  // object by object, variant by variant, view by view
 };
 
-// Throws InputError when an object's variants cannot be formed (a cartesian product too large).
+// Throws matbase::InputError when an object's variants cannot be formed (a cartesian product too large).
 DatasetPlan plan_dataset(const DatasetConfig& config);
 
 // The folder of a variant and a frame's stem.

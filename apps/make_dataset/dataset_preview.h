@@ -24,7 +24,7 @@ struct PreviewSummary {
 
 // Writes <root>/preview/<object>__<variant>.png for every variant and <root>/preview/index.html,
 // replacing the folder whole once everything is written. A map that cannot be read is drawn as a
-// broken tile and named on the page and in the summary. Throws InputError when `root` holds no
+// broken tile and named on the page and in the summary. Throws matbase::InputError when `root` holds no
 // dataset, std::runtime_error when a variant's records cannot be read or a file written; then
 // the preview folder is as it was.
 PreviewSummary write_preview(const std::filesystem::path& root, const PreviewOptions& options = {});

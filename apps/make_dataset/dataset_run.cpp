@@ -46,7 +46,7 @@ void write_variant_records(const DatasetConfig& config, const DatasetPlan& plan,
     if (const std::optional<std::string> problem = matbase::read_whole_file(metadata_file, before))
       throw std::runtime_error(*problem);
   if (existed && before != text)
-    throw InputError(metadata_file.string() +
+    throw matbase::InputError(metadata_file.string() +
                      ": this variant was made with other settings (its metadata differs from this run's); "
                      "render into another --output, or delete the folder to render it again");
   matbase::write_file_atomically(metadata_file, text);

@@ -32,7 +32,7 @@ struct RunSummary {
   std::vector<std::string> empty_frames;    // rendered this run with the object in no pixel: "vase/var000/003"
 };
 
-// Throws InputError when an object, a material or the folder's earlier contents do not fit the
+// Throws matbase::InputError when an object, a material or the folder's earlier contents do not fit the
 // configuration (a variant made with other settings), std::runtime_error when a write fails.
 RunSummary run_dataset(const DatasetConfig& config, const DatasetPlan& plan, const RunOptions& options);
 

@@ -66,7 +66,7 @@ std::vector<std::string> comma_list(const std::string& text) {
 // "AxB" as the YAML list "[A, B]", unchecked: the configuration's reader names what is wrong.
 std::string pair_list(const std::string& text, const std::string& option) {
   const size_t x = text.find('x');
-  if (x == std::string::npos) throw InputError(option + ": expected AxB, got " + text);
+  if (x == std::string::npos) throw matbase::InputError(option + ": expected AxB, got " + text);
   return "[" + quoted(text.substr(0, x)) + ", " + quoted(text.substr(x + 1)) + "]";
 }
 
@@ -140,7 +140,7 @@ std::vector<Override> overrides(const Options& options) {
   std::vector<Override> all = options.named;
   for (const std::string& set : options.sets) {
     const size_t equals = set.find('=');
-    if (equals == std::string::npos || equals == 0) throw InputError("--set: expected KEY=VALUE, got " + set);
+    if (equals == std::string::npos || equals == 0) throw matbase::InputError("--set: expected KEY=VALUE, got " + set);
     all.push_back({set.substr(0, equals), set.substr(equals + 1), "--set " + set.substr(0, equals)});
   }
   return all;
@@ -169,7 +169,7 @@ int preview(const std::string& folder) {
 
 int make(const Options& options) {
   const std::optional<make_dataset::Shard> shard = make_dataset::parse_shard(options.shard);
-  if (!shard) throw InputError("--shard: expected K/N with 0 <= K < N, got " + options.shard);
+  if (!shard) throw matbase::InputError("--shard: expected K/N with 0 <= K < N, got " + options.shard);
   const make_dataset::DatasetConfig config = make_dataset::load_config(options.config_file, overrides(options));
   if (options.print_config) {
     fmt::print("# output: {}\n{}", config.output, config.canonical_yaml);
@@ -242,14 +242,14 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help
     return report_error(e.what(), kInputError);
-  } catch (const InputError& e) {
+  } catch (const matbase::InputError& e) {
     return report_error(e.what(), kInputError);
   }
   try {
     if (!options.verify.empty()) return verify(options.verify);
     if (!options.preview.empty()) return preview(options.preview);
     return make(options);
-  } catch (const InputError& e) {
+  } catch (const matbase::InputError& e) {
     return report_error(e.what(), kInputError);
   } catch (const std::filesystem::filesystem_error& e) {
     return report_error(app_support::filesystem_error_text(e), kRuntimeFailure);

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "dataset_checks.h"
+#include "matbase/pi.h"
 #include "matgeom/bounding_sphere.h"
 #include "matgeom/uv/uv_scale.h"
 #include "matmaterial/folder/material_folder.h"
@@ -20,7 +21,7 @@ namespace make_dataset {
 namespace {
 
 using nlohmann::ordered_json;
-constexpr double kDegree = 3.14159265358979323846 / 180.0;
+constexpr double kDegree = matbase::kPi / 180.0;
 
 matrender::SceneDescription object_scene(const DatasetConfig& config, size_t index) {
   const ObjectConfig& object = config.objects[index];
@@ -156,7 +157,7 @@ void ObjectRenderer::select_variant(const matgeom::MaterialVariant& variant, con
     else if (const auto* spec = std::get_if<matmaterial::LibraryMaterialSpec>(&candidate.source))
       label = matmaterial::label_id(spec->material_class);
     if (!matmaterial::material_class_of_label(label) || label == 0)
-      throw InputError(config_.source + ": " + object_.name + ": material \"" + candidate.spelled +
+      throw matbase::InputError(config_.source + ": " + object_.name + ": material \"" + candidate.spelled +
                        "\" has no material class, so its pixels would be labelled background; name its folder "
                        "after its class (\"wood_oak\") or give its metadata.json a category");
     slot_materials_.push_back({object_.slots[s].key, candidate.name, label});

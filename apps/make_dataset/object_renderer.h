@@ -27,12 +27,12 @@ double camera_grid_radius(const CameraConfig& camera, const matgeom::TriangleMes
 
 class ObjectRenderer {
  public:
-  // Loads the object and builds its scene; throws InputError naming the configuration's key
+  // Loads the object and builds its scene; throws matbase::InputError naming the configuration's key
   // when the object cannot be loaded or a part is in no slot.
   ObjectRenderer(const DatasetConfig& config, size_t object);
 
   // Puts the object in the variant's materials (loading those not used before); throws
-  // InputError for a material that cannot be loaded or has no material class, and
+  // matbase::InputError for a material that cannot be loaded or has no material class, and
   // matbase::Cancelled soon after `cancel` (when given) is set.
   void select_variant(const matgeom::MaterialVariant& variant, const std::atomic<bool>* cancel = nullptr);
 

@@ -76,7 +76,7 @@ void write_material_references(const DatasetConfig& config) {
           else
             material = matmaterial::read_material_folder(std::get<std::string>(candidate.source));
         } catch (const std::exception& e) {
-          throw InputError(config.source + ": objects." + std::to_string(o) + ".materials." + slot.key + ": " + e.what());
+          throw matbase::InputError(config.source + ": objects." + std::to_string(o) + ".materials." + slot.key + ": " + e.what());
         }
         matlearn::write_texture_target_references(texture_target_root(config), candidate.name,
                                                   material_references(material));

@@ -18,7 +18,7 @@ std::filesystem::path texture_target_root(const DatasetConfig& config);
 matlearn::MaterialReferences material_references(const matmaterial::FolderMaterial& material);
 
 // Writes the reference maps of every candidate material of the configuration (generating or
-// reading each once). Throws InputError for a folder that cannot be read.
+// reading each once). Throws matbase::InputError for a folder that cannot be read.
 void write_material_references(const DatasetConfig& config);
 
 }  // namespace make_dataset

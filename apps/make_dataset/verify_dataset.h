@@ -21,7 +21,7 @@ struct VerifyReport {
   std::vector<std::string> problems;  // each naming the file
 };
 
-// Throws InputError when `root` is no folder or holds no variant folder at all.
+// Throws matbase::InputError when `root` is no folder or holds no variant folder at all.
 VerifyReport verify_dataset(const std::filesystem::path& root);
 
 }  // namespace make_dataset

@@ -29,7 +29,7 @@
 
 using render_object::Options;
 using matrender::BuiltScene;
-using matrender::InputError;
+using matbase::InputError;
 using matrender::SceneDescription;
 
 namespace {
@@ -81,7 +81,7 @@ void report_textures() {
 
 int render_and_write(const Options& options) {
   if (const std::optional<std::string> problem = app_support::output_folder_problem(options.output_folder))
-    throw InputError("--output: " + *problem);
+    throw matbase::InputError("--output: " + *problem);
   const std::atomic<bool>* cancel = app_support::cancel_on_interrupt();
   matrender::set_texture_memory_limit(options.texture_memory_mib << 20);
   const SceneDescription description = render_object::describe_scene(options);
@@ -151,7 +151,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     return render_and_write(options);
-  } catch (const InputError& e) {
+  } catch (const matbase::InputError& e) {
     return report_error(e.what(), kInputError);
   } catch (const std::exception& e) {
     return report_error(e.what(), kRuntimeFailure);

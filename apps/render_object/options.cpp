@@ -24,7 +24,7 @@ namespace {
 using matrender::BuiltinObject;
 using matrender::CameraDescription;
 using matrender::GridPlacement;
-using matrender::InputError;
+using matbase::InputError;
 using matrender::LightRigDescription;
 using matrender::LightsDescription;
 using matrender::LookAtPlacement;
@@ -378,7 +378,7 @@ std::string joined(const std::vector<std::string>& names) {
 uint32_t parse_seed(const std::string& text) {
   if (const std::optional<std::string> problem =
           app_support::whole_number_problem(text, 0, std::numeric_limits<uint32_t>::max()))
-    throw InputError("--object: seed: " + *problem);
+    throw matbase::InputError("--object: seed: " + *problem);
   return static_cast<uint32_t>(std::stoul(text));
 }
 
@@ -388,7 +388,7 @@ ObjectDescription builtin_object(const std::string& argument) {
   BuiltinObject builtin{argument.substr(0, colon), 0};
   const std::vector<std::string> names = matgeom::builtin_object_names();
   if (std::find(names.begin(), names.end(), builtin.name) == names.end())
-    throw InputError("--object: unknown built-in object \"" + builtin.name + "\" (available: " + joined(names) + ")");
+    throw matbase::InputError("--object: unknown built-in object \"" + builtin.name + "\" (available: " + joined(names) + ")");
   if (colon != std::string::npos) builtin.seed = parse_seed(argument.substr(colon + 1));
   return object_from(builtin, "--object");
 }
@@ -403,7 +403,7 @@ SceneDescription chosen_scene(const Options& options) {
 void apply_camera_options(const Options& o, CameraDescription& camera) {
   if (o.camera_position) {
     if (*o.camera_position == *o.look_at)
-      throw InputError("--look-at: expected a point different from --camera-position");
+      throw matbase::InputError("--look-at: expected a point different from --camera-position");
     camera.placement = LookAtPlacement{*o.camera_position, *o.look_at, glm::dvec3(0.0, 0.0, 1.0)};
   }
   // Any grid option makes the camera a grid camera: the scene's own grid if it has one, else the
@@ -421,7 +421,7 @@ void apply_camera_options(const Options& o, CameraDescription& camera) {
       grid.j = (*o.cell)[1];
     }
     if (grid.i >= grid.spec.n_phi || grid.j >= grid.spec.n_theta)
-      throw InputError(fmt::format("{}: camera cell {},{} is outside the {} x {} grid", o.cell ? "--cell" : "--grid",
+      throw matbase::InputError(fmt::format("{}: camera cell {},{} is outside the {} x {} grid", o.cell ? "--cell" : "--grid",
                                    grid.i, grid.j, grid.spec.n_phi, grid.spec.n_theta));
   }
   if (o.fov_deg) camera.vertical_fov = glm::radians(*o.fov_deg);
@@ -439,7 +439,7 @@ void apply_render_options(const Options& o, SceneDescription& scene) {
   if (o.cycles_parity) s.cycles_parity = true;
   if (o.denoise) s.denoise = true;
   if (s.denoise && s.cycles_parity)
-    throw InputError("--denoise and --cycles-parity exclude each other: Blender 3.4 in Debian has no denoiser");
+    throw matbase::InputError("--denoise and --cycles-parity exclude each other: Blender 3.4 in Debian has no denoiser");
   if (o.light_selection) s.light_selection = *o.light_selection;
   if (o.no_mipmaps) s.mipmaps = false;
   if (o.exposure) scene.exposure_stops = *o.exposure;
@@ -457,7 +457,7 @@ void apply_environment_options(const Options& o, matrender::BackgroundDescriptio
   if (!o.environment_strength && !o.environment_rotation_deg) return;
   auto* environment = std::get_if<matrender::EnvironmentDescription>(&background);
   if (!environment)
-    throw InputError(std::string(o.environment_strength ? "--environment-strength" : "--environment-rotation") +
+    throw matbase::InputError(std::string(o.environment_strength ? "--environment-strength" : "--environment-rotation") +
                      ": the scene has no environment map (give --environment or a scene file with one)");
   if (o.environment_strength) environment->strength = *o.environment_strength;
   if (o.environment_rotation_deg) environment->rotation_z = glm::radians(*o.environment_rotation_deg);
@@ -490,7 +490,7 @@ void apply_illuminance(const Options& o, LightsDescription& lights) {
   if (!o.illuminance_lux) return;
   auto* rig = std::get_if<LightRigDescription>(&lights);
   if (!rig)
-    throw InputError("--illuminance: rescales only the paper's light rig, and the scene file lists its own lights");
+    throw matbase::InputError("--illuminance: rescales only the paper's light rig, and the scene file lists its own lights");
   rig->target_illuminance_lux = o.illuminance_lux;
 }
 

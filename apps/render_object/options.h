@@ -64,7 +64,7 @@ struct Options {
 void add_options(CLI::App& app, Options& options);
 
 // The scene file, --mesh, --object or the built-in default, with the overrides applied.
-// Throws matrender::InputError.
+// Throws matbase::InputError.
 matrender::SceneDescription describe_scene(const Options& options);
 
 }  // namespace render_object

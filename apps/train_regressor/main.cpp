@@ -94,10 +94,10 @@ int train(Options options, bool example) {
     try {
       trainer.resume(from);
     } catch (const std::exception& e) {
-      throw InputError(e.what());
+      throw matbase::InputError(e.what());
     }
     if (trainer.epochs_done() > config.epochs)
-      throw InputError(fmt::format("{} already holds epoch {}, beyond the {} epochs asked for; nothing was trained "
+      throw matbase::InputError(fmt::format("{} already holds epoch {}, beyond the {} epochs asked for; nothing was trained "
                                    "(ask for more epochs, or give another --output-dir for a new run)",
                                    from.string(), trainer.epochs_done(), config.epochs));
     if (trainer.epochs_done() == config.epochs) {
@@ -180,7 +180,7 @@ int main(int argc, char** argv) {
   }
   try {
     return train(options, /*example=*/argc == 1);
-  } catch (const InputError& e) {
+  } catch (const matbase::InputError& e) {
     return app_support::report_error("train_regressor", e.what(), app_support::kInputError);
   } catch (const matlearn::DatasetError& e) {
     return app_support::report_error("train_regressor", e.what(), app_support::kInputError);

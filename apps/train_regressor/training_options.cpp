@@ -125,7 +125,7 @@ int64_t whole_setting(const std::map<std::string, std::string>& s, const std::st
   const std::string& text = s.at(key);
   if (const auto problem =
           app_support::whole_number_problem(text, static_cast<int64_t>(r.low), static_cast<int64_t>(r.high)))
-    throw InputError(key + ": " + *problem);
+    throw matbase::InputError(key + ": " + *problem);
   return *app_support::whole_number(text);
 }
 
@@ -137,13 +137,13 @@ double number_setting(const std::map<std::string, std::string>& s, const std::st
   const Range& r = setting_named(key).range;
   const std::string& text = s.at(key);
   if (const auto problem = app_support::number_problem(text, r.low, r.high, r.low_open))
-    throw InputError(key + ": " + *problem);
+    throw matbase::InputError(key + ": " + *problem);
   return *app_support::finite_number(text);
 }
 
 uint64_t seed_setting(const std::map<std::string, std::string>& s, const std::string& key) {
   const std::string& text = s.at(key);
-  if (const auto problem = app_support::seed_problem(text)) throw InputError(key + ": " + *problem);
+  if (const auto problem = app_support::seed_problem(text)) throw matbase::InputError(key + ": " + *problem);
   return *app_support::unsigned_whole_number(text);
 }
 
@@ -151,7 +151,7 @@ bool parse_bool(const std::map<std::string, std::string>& s, const std::string& 
   const std::string& text = s.at(key);
   if (text == "true" || text == "1" || text == "yes") return true;
   if (text == "false" || text == "0" || text == "no") return false;
-  throw InputError(key + ": expected true or false, got \"" + text + "\"");
+  throw matbase::InputError(key + ": expected true or false, got \"" + text + "\"");
 }
 
 std::string network_name(const std::string& name) {
@@ -172,12 +172,12 @@ std::vector<matlearn::OutputGroup> output_groups(const std::map<std::string, std
     try {
       map = matlearn::map_kind_named(name);
     } catch (const std::invalid_argument& e) {
-      throw InputError(std::string("outputs: ") + e.what());
+      throw matbase::InputError(std::string("outputs: ") + e.what());
     }
     int64_t channels = matlearn::is_colour_map(map) ? 3 : 1;
     if (colon != std::string::npos) {
       const std::string count = entry.substr(colon + 1);
-      if (count != "1" && count != "3") throw InputError("outputs: \"" + entry + "\": channels must be 1 or 3");
+      if (count != "1" && count != "3") throw matbase::InputError("outputs: \"" + entry + "\": channels must be 1 or 3");
       channels = std::stoi(count);
     }
     const std::string weight_key = map == matlearn::MapKind::base_color ? "albedo_weight" : name + "_weight";
@@ -214,18 +214,18 @@ std::map<std::string, std::string> resolve_settings(const Options& options) {
     try {
       root = YAML::LoadFile(file);
     } catch (const YAML::Exception& e) {
-      throw InputError(file + ": not valid YAML: " + e.what());
+      throw matbase::InputError(file + ": not valid YAML: " + e.what());
     }
-    if (!root.IsMap()) throw InputError(file + ": expected a mapping of settings");
+    if (!root.IsMap()) throw matbase::InputError(file + ": expected a mapping of settings");
     // yaml-cpp keeps both entries of a repeated key, and this loop would take the last.
     if (const std::optional<std::string> problem = app_support::repeated_key_problem(root))
-      throw InputError(file + ": " + *problem);
+      throw matbase::InputError(file + ": " + *problem);
     for (const auto& entry : root) {
       const std::string key = entry.first.as<std::string>();
       const bool ignored = std::count(ignored_repository_keys().begin(), ignored_repository_keys().end(), key) > 0;
       if (ignored) continue;
-      if (!settings.count(key)) throw InputError(file + ": unknown key \"" + key + "\"");
-      if (!entry.second.IsScalar() && !entry.second.IsNull()) throw InputError(file + ": " + key + ": expected a single value");
+      if (!settings.count(key)) throw matbase::InputError(file + ": unknown key \"" + key + "\"");
+      if (!entry.second.IsScalar() && !entry.second.IsNull()) throw matbase::InputError(file + ": " + key + ": expected a single value");
       settings[key] = entry.second.IsNull() ? "" : entry.second.as<std::string>();
     }
   }
@@ -250,25 +250,25 @@ matlearn::TrainingConfig training_config(const std::map<std::string, std::string
     const matlearn::Architecture architecture = matlearn::architecture_named(c.network).architecture;
     c.width_divisor = whole_setting(s, "width_divisor");
     if (const auto problem = matlearn::width_divisor_problem(architecture, c.width_divisor))
-      throw InputError("width_divisor: " + *problem);
+      throw matbase::InputError("width_divisor: " + *problem);
     c.encoder_weights = s.at("encoder_weights");
     c.output_dir = s.at("output_dir");
     const std::string task = s.at("task_mode");
     if (task != "pbr" && task != "material" && task != "both")
-      throw InputError("task_mode: expected pbr, material or both, got \"" + task + "\"");
+      throw matbase::InputError("task_mode: expected pbr, material or both, got \"" + task + "\"");
     if (task != "material") c.layout.groups = output_groups(s);
     else c.layout.groups.clear();
     if (task != "pbr") {
       c.layout.material_classes = whole_setting(s, "material_num_classes");
       // A segmentation task needs a background and one class at least; 0 would train nothing.
       if (c.layout.material_classes < 2)
-        throw InputError("material_num_classes: task_mode " + task + " needs at least 2 classes (0 is the background), got " +
+        throw matbase::InputError("material_num_classes: task_mode " + task + " needs at least 2 classes (0 is the background), got " +
                          std::to_string(c.layout.material_classes));
       c.layout.material_weight = number_setting(s, "material_ce_weight");
     }
     matlearn::validate(c.layout);
     const std::string loss = s.at("loss");
-    if (loss != "mse" && loss != "l1") throw InputError("loss: expected mse or l1, got \"" + loss + "\"");
+    if (loss != "mse" && loss != "l1") throw matbase::InputError("loss: expected mse or l1, got \"" + loss + "\"");
     c.loss = loss == "mse" ? matlearn::RegressionLoss::mse : matlearn::RegressionLoss::l1;
     c.linear_albedo = parse_bool(s, "linear_albedo");
     c.optimizer = matlearn::optimizer_kind_named(s.at("optimizer_name"));
@@ -286,28 +286,28 @@ matlearn::TrainingConfig training_config(const std::map<std::string, std::string
     c.seed = seed_setting(s, "seed");
     c.validate_every = int_setting(s, "validate_every");
   } catch (const std::invalid_argument& e) {
-    throw InputError(e.what());
+    throw matbase::InputError(e.what());
   }
   c.config_text = settings_yaml(s);
   if (!with_dataset) return c;
-  if (s.at("dataset_root").empty()) throw InputError("no dataset: give --dataset-root or dataset_root in --config");
+  if (s.at("dataset_root").empty()) throw matbase::InputError("no dataset: give --dataset-root or dataset_root in --config");
   c.dataset_root = s.at("dataset_root");
   try {
     if (!s.at("split_file").empty()) {
       const matlearn::SplitFile split = matlearn::read_split_file(s.at("split_file"));
       c.train_samples = matlearn::split_samples(split, "train", c.dataset_root);
       c.validation_samples = matlearn::split_samples(split, "val", c.dataset_root);
-      if (c.train_samples.empty()) throw InputError(s.at("split_file") + ": its train list is empty");
+      if (c.train_samples.empty()) throw matbase::InputError(s.at("split_file") + ": its train list is empty");
     } else {
       const std::vector<matlearn::SampleId> all = matlearn::index_dataset(c.dataset_root);
-      if (all.empty()) throw InputError(c.dataset_root.string() + ": no samples in the MatPredict layout");
+      if (all.empty()) throw matbase::InputError(c.dataset_root.string() + ": no samples in the MatPredict layout");
       const auto parts = matlearn::split_by_variant(all, matlearn::SplitRatios{}, c.seed);
       c.train_samples = parts[0];
       c.validation_samples = parts[1];
     }
   } catch (const std::runtime_error& e) {
-    if (dynamic_cast<const InputError*>(&e)) throw;
-    throw InputError(e.what());
+    if (dynamic_cast<const matbase::InputError*>(&e)) throw;
+    throw matbase::InputError(e.what());
   }
   return c;
 }

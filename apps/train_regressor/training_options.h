@@ -10,13 +10,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include "matbase/input_error.h"
 #include "matlearn/training/trainer.h"
 
 namespace train_regressor {
-
-struct InputError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 struct Options {
   std::filesystem::path config_file;
@@ -32,7 +29,7 @@ void add_options(CLI::App& app, Options& options);
 std::map<std::string, std::string> resolve_settings(const Options& options);
 
 // The training configuration those settings describe: the output layout, the optimiser and, with
-// with_dataset, the dataset indexed and split. Throws InputError.
+// with_dataset, the dataset indexed and split. Throws matbase::InputError.
 matlearn::TrainingConfig training_config(const std::map<std::string, std::string>& settings, bool with_dataset);
 
 // The settings as a YAML document (written beside the outputs as config.yaml).

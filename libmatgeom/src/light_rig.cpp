@@ -7,12 +7,14 @@
 #include <string>
 
 #include "matbase/image/srgb.h"
+#include "matbase/pi.h"
+#include "matbase/smoothstep.h"
 #include "matgeom/camera_grid.h"
 
 namespace matgeom {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using matbase::kPi;
 
 // Paper: "Two additional accent lights are added on the vertical axis at +-35 degrees. If
 // r > 0.15 m these accents are area lights; otherwise they are 10 degree spot lights".
@@ -123,8 +125,7 @@ double spot_lamp_irradiance(const RigLight& light, const glm::dvec3& point, cons
   const double smooth_width = (1.0 - cos_half) * light.spot_blend;
   const double into_cone = cos_axis - cos_half;
   if (into_cone < smooth_width) {
-    const double s = into_cone / smooth_width;
-    falloff *= s * s * (3.0 - 2.0 * s);
+    falloff *= matbase::smoothstep(into_cone / smooth_width);
   }
   const double intensity = light.power * matbase::rec709_luminance(light.color) / (4.0 * kPi);
   return intensity * falloff * cos_surface / distance_squared;

@@ -9,10 +9,6 @@
 namespace matrender {
 namespace {
 
-Wrap to_wrap(matmaterial::TextureWrap wrap) {
-  return wrap == matmaterial::TextureWrap::Clamp ? Wrap::Clamp : Wrap::Repeat;
-}
-
 // The asset's images as textures, each decoded once per colour space and wrap it is used with.
 class AssetTextures {
  public:
@@ -27,7 +23,7 @@ class AssetTextures {
     if (!decoded) {
       const matbase::ImagePixels& image = images_[static_cast<size_t>(index)];
       decoded = Texture::from_pixels8(image.width, image.height, image.channels, image.data.data(), space,
-                                      to_wrap(wrap), image.name);
+                                      wrap, image.name);
     }
     return decoded;
   }

@@ -6,10 +6,12 @@
 #include <cstddef>
 #include <vector>
 
+#include "matbase/pi.h"
+
 namespace shaders_ref {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using matbase::kPi;
 
 // --- One-dimensional globally adaptive Gauss-Kronrod quadrature ------------------------------
 

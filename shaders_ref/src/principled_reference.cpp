@@ -4,10 +4,12 @@
 #include <cmath>
 #include <limits>
 
+#include "matbase/pi.h"
+
 namespace shaders_ref {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using matbase::kPi;
 
 // Cycles makes no closure whose average weight is below 1e-5 (CLOSURE_WEIGHT_CUTOFF).
 constexpr double kClosureWeightCutoff = 1e-5;

@@ -18,6 +18,7 @@
 #include <OpenImageIO/imageio.h>
 #include <nlohmann/json.hpp>
 
+#include "matbase/pi.h"
 #include "matlearn/dataset_index.h"
 #include "matlearn/decoded_image.h"
 #include "matlearn/sample_reader.h"
@@ -307,7 +308,7 @@ TEST_CASE("transforms.json places each camera on the grid's sphere, looking at i
   const nlohmann::json grid =
       nlohmann::json::parse(std::ifstream(variant / "metadata.json"))["provenance"]["camera"]["grid"];
   CHECK(transforms["w"] == kSize);
-  CHECK(transforms["fl_x"].get<double>() == Approx(0.5 * kSize / std::tan(0.5 * 39.597752 * 3.14159265358979 / 180)));
+  CHECK(transforms["fl_x"].get<double>() == Approx(0.5 * kSize / std::tan(0.5 * 39.597752 * matbase::kPi / 180)));
   REQUIRE(transforms["frames"].size() == 6);
   for (const nlohmann::json& frame : transforms["frames"]) {
     const nlohmann::json& m = frame["transform_matrix"];

@@ -1,5 +1,5 @@
 // make_dataset's configuration reader on arbitrary YAML or JSON: every value is checked where it
-// is read, so bad input leaves only as InputError (a std::runtime_error) naming the key.
+// is read, so bad input leaves only as matbase::InputError (a std::runtime_error) naming the key.
 #include "fuzz_file.h"
 #include "make_dataset/dataset_config.h"
 

@@ -8,6 +8,8 @@
 #include <random>
 #include <vector>
 
+#include "matbase/pi.h"
+
 namespace {
 
 using matgeom::Sphere;
@@ -199,7 +201,7 @@ TEST_CASE("degenerate point sets", "[geom][render]") {
     const glm::dvec3 v_orthogonal = glm::cross(w, u);
     std::vector<glm::dvec3> points{center};
     for (int k = 0; k < 64; ++k) {
-      const double angle = 2.0 * 3.14159265358979323846 * k / 64.0;
+      const double angle = 2.0 * matbase::kPi * k / 64.0;
       points.push_back(center + 2.0 * (std::cos(angle) * u + std::sin(angle) * v_orthogonal));
     }
     check_sphere(matgeom::minimal_enclosing_sphere(points), center, 2.0, 1e-12);

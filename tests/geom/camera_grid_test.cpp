@@ -5,9 +5,11 @@
 #include <limits>
 #include <stdexcept>
 
+#include "matbase/pi.h"
+
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using matbase::kPi;
 
 glm::dvec3 column(const glm::dmat4& m, int k) { return glm::dvec3(m[k]); }
 

@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "matbase/pi.h"
 #include "matgeom/uv/uv_distortion.h"
 
 // LSCM on surfaces whose best flattening is known: developable patches (a cylinder or cone cut
@@ -40,7 +41,7 @@ Surface grid_surface(int nu, int nv, Point point) {
 // patch is exactly developable.
 Surface cylinder_patch(const glm::dvec3& offset = glm::dvec3(0.0)) {
   return grid_surface(36, 8, [&](double s, double t) {
-    const double angle = 1.5 * M_PI * s;
+    const double angle = 1.5 * matbase::kPi * s;
     return offset + glm::dvec3(0.3 * std::cos(angle), 0.3 * std::sin(angle), 0.5 * t);
   });
 }
@@ -49,7 +50,7 @@ Surface cylinder_patch(const glm::dvec3& offset = glm::dvec3(0.0)) {
 // developable too.
 Surface cone_patch() {
   return grid_surface(30, 6, [](double s, double t) {
-    const double angle = 1.2 * M_PI * s;
+    const double angle = 1.2 * matbase::kPi * s;
     const double along = 0.2 + 0.8 * t;  // distance from the apex along a ruling, scaled
     return along * glm::dvec3(0.5 * std::cos(angle), 0.5 * std::sin(angle), 0.7);
   });
@@ -62,7 +63,7 @@ Surface hemisphere(int rings) {
   s.positions.emplace_back(0.0, 0.0, 0.4);
   for (int r = 1; r <= rings; ++r)
     for (int k = 0; k < segments; ++k) {
-      const double polar = 0.5 * M_PI * r / rings, azimuth = 2.0 * M_PI * k / segments;
+      const double polar = 0.5 * matbase::kPi * r / rings, azimuth = 2.0 * matbase::kPi * k / segments;
       s.positions.push_back(0.4 * glm::dvec3(std::sin(polar) * std::cos(azimuth),
                                              std::sin(polar) * std::sin(azimuth), std::cos(polar)));
     }
@@ -129,8 +130,8 @@ TEST_CASE("LSCM maps a hemisphere conformally up to the discretisation", "[geom]
   // A smooth conformal map exists; on the piecewise-flat mesh the residual angle distortion is
   // a discretisation error, of the order of the edge length in radians (pi/32 at 16 rings), and
   // it halves when the rings double.
-  CHECK(coarse.angle_mean < M_PI / 32.0);
-  CHECK(coarse.angle_max < 4.0 * M_PI / 32.0);
+  CHECK(coarse.angle_mean < matbase::kPi / 32.0);
+  CHECK(coarse.angle_max < 4.0 * matbase::kPi / 32.0);
   CHECK(fine.angle_mean < 0.6 * coarse.angle_mean);
   CHECK(coarse.flipped_triangles == 0);
   CHECK(fine.flipped_triangles == 0);

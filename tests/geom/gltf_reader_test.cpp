@@ -11,11 +11,13 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+#include <random>
 
 #include <catch2/catch.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
+#include "support/reader_checks.h"
 #include "support/temp_dir.h"
 #include "support/test_files.h"
 
@@ -547,6 +549,26 @@ std::string write_triangle(const TempDir& dir, const std::string& stem,
 const std::vector<float> kTriangle = {0, 0, 0, 1, 0, 0, 0, 1, 0};
 
 }  // namespace
+
+TEST_CASE("glTF reader survives truncated and bit-flipped files", "[geom]") {
+  const TempDir dir;
+  for (const Container container : {Container::Glb, Container::EmbeddedDataUri}) {
+    const std::string path = write_two_material_quad(dir, container);
+    const std::string original = read_bytes(path);
+    const std::string damaged_path = dir.file("damaged" + std::filesystem::path(path).extension().string());
+    const auto read = [](const std::string& file) { return matgeom::read_gltf(file); };
+    // Every truncation up to 2 KiB (headers, JSON, buffer starts), then every 37th length.
+    for (size_t length = 0; length < original.size(); length += length < 2048 ? 1 : 37)
+      check_reads_or_rejects(damaged_path, original.substr(0, length), read);
+    std::mt19937 random(20261123u);
+    for (int flip = 0; flip < 1000; ++flip) {
+      std::string damaged = original;
+      const size_t byte = random() % damaged.size();
+      damaged[byte] = static_cast<char>(damaged[byte] ^ (1 << (random() % 8)));
+      check_reads_or_rejects(damaged_path, damaged, read);
+    }
+  }
+}
 
 TEST_CASE("glTF reader errors name the file and the problem", "[geom]") {
   TempDir dir;

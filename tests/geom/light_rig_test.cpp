@@ -6,12 +6,14 @@
 #include <stdexcept>
 #include <vector>
 
+#include "matbase/pi.h"
+
 namespace {
 
 using matgeom::RigLight;
 using matgeom::RigLightKind;
 
-constexpr double kPi = 3.14159265358979323846;
+using matbase::kPi;
 constexpr double kDegrees = kPi / 180.0;
 constexpr double kLumensPerWatt = 683.0;
 constexpr double kLuminanceOfLampColor = 0.8;  // Rec.709 Y of (0.8, 0.8, 0.8)

@@ -13,6 +13,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "support/reader_checks.h"
 #include "support/temp_dir.h"
 #include "support/test_files.h"
 
@@ -862,19 +863,6 @@ map_Kd -s 1 1 1 tex.png
 map_Bump -bm 2 tex.png
 )";
 
-// read_obj either gives a valid asset or a runtime_error naming the file; anything else (another
-// exception, a crash, a sanitizer report) fails the test.
-void check_reads_or_rejects(const std::string& path) {
-  try {
-    const ObjectAsset asset = read_obj(path);
-    validate_mesh(asset.mesh, path);
-    REQUIRE(asset.mesh.triangle_count() > 0);
-    REQUIRE(asset.materials.size() >= asset.mesh.part_count());
-  } catch (const std::runtime_error& error) {
-    REQUIRE(std::string(error.what()).rfind(path + ": ", 0) == 0);
-  }
-}
-
 // Checks one variant of the fuzz files: an .obj text with the base .mtl, or the base .obj with
 // an .mtl text. Each variant goes to new files, removed afterwards: rewriting a file in place
 // makes ext4 flush it at every close (auto_da_alloc), a hundred times slower.
@@ -888,7 +876,7 @@ class FuzzVariants {
   void check_obj(const std::string& obj) {
     const std::string path = dir_.file("variant" + std::to_string(++count_) + ".obj");
     write_text(path, obj);
-    check_reads_or_rejects(path);
+    check_reads_or_rejects(path, [](const std::string& file) { return read_obj(file); });
     std::filesystem::remove(path);
   }
 

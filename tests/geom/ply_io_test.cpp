@@ -13,6 +13,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "support/reader_checks.h"
 #include "support/temp_dir.h"
 #include "support/test_files.h"
 
@@ -226,21 +227,6 @@ std::string ascii_ply(int vertices, int faces, const std::string& body) {
 }
 
 const std::string kTriangleBody = "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
-
-// What read_ply may do with damaged bytes: return a valid mesh or throw std::runtime_error.
-// Any other exception escapes and fails the test; a crash fails it too.
-void check_reads_or_rejects(const std::string& path, const std::string& bytes) {
-  // A new file each time: truncating a file that has data makes ext4 flush it to disk
-  // (auto_da_alloc), which would make thousands of rewrites slow.
-  fs::remove(path);
-  write_bytes(path, bytes);
-  try {
-    const matgeom::TriangleMesh mesh = matgeom::read_ply(path);
-    CHECK_NOTHROW(matgeom::validate_mesh(mesh, path));
-  } catch (const std::runtime_error&) {
-    // rejected with a message: fine
-  }
-}
 
 }  // namespace
 
@@ -514,9 +500,10 @@ TEST_CASE("PLY reader survives truncated and bit-flipped files", "[geom]") {
   const std::vector<std::string> originals = {read_bytes(original_path), kAsciiQuadAndTriangle,
                                               every_type_ply(true), replica_like_ply()};
   const std::string path = dir.file("damaged.ply");
+  const auto read = [](const std::string& file) { return matgeom::read_ply(file); };
   for (const std::string& original : originals) {
     for (size_t length = 0; length < original.size(); ++length) {
-      check_reads_or_rejects(path, original.substr(0, length));
+      check_reads_or_rejects(path, original.substr(0, length), read);
     }
 
     std::mt19937 random(20240611u);
@@ -524,7 +511,7 @@ TEST_CASE("PLY reader survives truncated and bit-flipped files", "[geom]") {
       std::string damaged = original;
       const size_t byte = random() % damaged.size();
       damaged[byte] = static_cast<char>(damaged[byte] ^ (1 << (random() % 8)));
-      check_reads_or_rejects(path, damaged);
+      check_reads_or_rejects(path, damaged, read);
     }
   }
 }

@@ -10,6 +10,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "matbase/pi.h"
 #include "matgeom/builtin/builtin_objects.h"
 #include "matgeom/tangents.h"
 #include "matgeom/uv/chart_segmentation.h"
@@ -75,7 +76,7 @@ TriangleMesh bumpy_sphere(float radius, float bumps, int rings, int segments) {
   mesh.positions.emplace_back(0.0f, 0.0f, radius);
   for (int i = 1; i < rings; ++i)
     for (int k = 0; k < segments; ++k) {
-      const float theta = 3.14159265f * static_cast<float>(i) / static_cast<float>(rings);
+      const float theta = matbase::kPiAs<float> * static_cast<float>(i) / static_cast<float>(rings);
       const float phi = 6.2831853f * static_cast<float>(k) / static_cast<float>(segments);
       const float r = radius * (1.0f + bumps * std::sin(5.0f * theta) * std::sin(6.0f * phi));
       mesh.positions.emplace_back(r * std::sin(theta) * std::cos(phi), r * std::sin(theta) * std::sin(phi),
@@ -321,9 +322,9 @@ TEST_CASE("Charts too stretched or too sparse in their box are halved until with
 
 TEST_CASE("The target density follows the paper's formula", "[geom]") {
   // d = 512 px/m at l = sqrt(A / pi) = 1 m; inversely proportional to l.
-  CHECK(target_texel_density(M_PI) == Approx(512.0));
-  CHECK(target_texel_density(4.0 * M_PI) == Approx(256.0));
-  CHECK(target_texel_density(0.01 * M_PI) == Approx(5120.0));
+  CHECK(target_texel_density(matbase::kPi) == Approx(512.0));
+  CHECK(target_texel_density(4.0 * matbase::kPi) == Approx(256.0));
+  CHECK(target_texel_density(0.01 * matbase::kPi) == Approx(5120.0));
 }
 
 TEST_CASE("Charts too large for a tile are split and still reach the density", "[geom]") {

@@ -12,6 +12,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include "matbase/pi.h"
 #include "matlearn/evaluation/evaluator.h"
 #include "matlearn/evaluation/inference.h"
 #include "matlearn/evaluation/panels.h"
@@ -69,7 +70,7 @@ CATCH_TEST_CASE("Evaluation scores the sigmoid maps against the truth, whole and
       }
       CATCH_CHECK(s.scores[Metric::rmse] == Catch::Detail::Approx(std::sqrt(squared)).epsilon(1e-5));
       CATCH_CHECK(s.scores[Metric::sam] ==
-                  Catch::Detail::Approx(std::acos(dot / std::sqrt(norm * 0.75)) * 180.0 / M_PI).epsilon(1e-4));
+                  Catch::Detail::Approx(std::acos(dot / std::sqrt(norm * 0.75)) * 180.0 / matbase::kPi).epsilon(1e-4));
     } else {
       CATCH_CHECK(s.map == "roughness");
       const double r = training_dataset::kRoughness[k] / 255.0;

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <string>
 
+#include "matbase/pi.h"
 #include "matlearn/image_metrics.h"
 #include "noisy_image.h"
 
@@ -114,7 +115,7 @@ TEST_CASE("A constant offset gives its closed-form RMSE, PSNR, SRE and ISSM", "[
 TEST_CASE("SAM of colours rotated by a known angle is that angle", "[learn]") {
   // Colours in the red-green plane rotated about the blue axis by 7 degrees: every pixel's angle
   // is exactly 7 degrees, whatever its length.
-  const double angle = 7.0 * M_PI / 180.0;
+  const double angle = 7.0 * matbase::kPi / 180.0;
   Image truth(16, 16, 3), prediction(16, 16, 3);
   std::mt19937 rng(3);
   std::uniform_real_distribution<float> value(0.05f, 1.0f);
@@ -134,7 +135,7 @@ TEST_CASE("SAM of colours rotated by a known angle is that angle", "[learn]") {
   Image nudged = truth;
   nudged.at(5, 5, 2) = 1e-4f * truth.at(5, 5, 0);  // one pixel tilted by about 1e-4 rad
   const double tilt = std::atan2(1e-4 * truth.at(5, 5, 0), std::hypot(truth.at(5, 5, 0), truth.at(5, 5, 1)));
-  CHECK(sam_degrees(truth, nudged) == Approx(tilt * 180.0 / M_PI / 256.0).epsilon(1e-3));
+  CHECK(sam_degrees(truth, nudged) == Approx(tilt * 180.0 / matbase::kPi / 256.0).epsilon(1e-3));
 }
 
 TEST_CASE("SAM leaves out pixels without a colour", "[learn]") {

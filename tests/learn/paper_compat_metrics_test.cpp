@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "matbase/pi.h"
 #include "matlearn/image_metrics.h"
 #include "matlearn/paper_compat_metrics.h"
 
@@ -53,7 +54,7 @@ TEST_CASE("Paper-compatible SAM multiplies in 8 bits", "[learn]") {
   CHECK(compat::sam_degrees(image8(1, 1, 3, {10, 0, 0}), image8(1, 1, 3, {20, 0, 0})) == Approx(0.0).margin(1e-6));
   // 100 * 3 = 300 wraps to 44: acos(44 / 300).
   CHECK(compat::sam_degrees(image8(1, 1, 3, {100, 0, 0}), image8(1, 1, 3, {3, 0, 0})) ==
-        Approx(std::acos(44.0 / 300.0) * 180.0 / M_PI));
+        Approx(std::acos(44.0 / 300.0) * 180.0 / matbase::kPi));
   // One black pixel makes the package's mean NaN, reported as 0.
   CHECK(compat::sam_degrees(image8(2, 1, 3, {0, 0, 0, 100, 0, 0}), image8(2, 1, 3, {5, 5, 5, 3, 0, 0})) == 0.0);
 }

@@ -1,6 +1,7 @@
 // The procedural material library (matmaterial/library/material_library.h): every style's maps are seamless,
 // inside its class's stated ranges, unit normals, the same bytes on any thread count; a
 // generated folder reads back as generated; specs parse or fail with their own message.
+#include "matbase/pi.h"
 #include "matmaterial/library/material_library.h"
 
 #include <catch2/catch.hpp>
@@ -82,7 +83,7 @@ TEST_CASE("The seam checker catches a map that does not wrap", "[material]") {
     for (int y = 0; y < 128; ++y)
       for (int x = 0; x < 128; ++x) {
         const double u = (x + 0.5) / 128.0, v = 1.0 - (y + 0.5) / 128.0;
-        const double w = 0.5 + 0.25 * std::sin(2.0 * M_PI * (fu * u + 0.3)) + 0.2 * std::sin(2.0 * M_PI * (fv * v + 3.0 * u));
+        const double w = 0.5 + 0.25 * std::sin(2.0 * matbase::kPi * (fu * u + 0.3)) + 0.2 * std::sin(2.0 * matbase::kPi * (fv * v + 3.0 * u));
         image.data[static_cast<size_t>(y * 128 + x)] = matbase::unorm8(w);
       }
     return image;

@@ -98,7 +98,7 @@ TEST_CASE("A cut-out texture casts a shadow of its shape", "[render]") {
     for (int x = 0; x < 4; ++x) checker[static_cast<size_t>(4 * y + x)] = (x + y) % 2 ? 255 : 0;
   Material card = black_card(1.0f);
   card[MaterialParameter::Alpha].texture =
-      Texture::from_pixels8(4, 4, 1, checker.data(), ColorSpace::NonColor, Wrap::Clamp, "checker");
+      Texture::from_pixels8(4, 4, 1, checker.data(), ColorSpace::NonColor, TextureWrap::Clamp, "checker");
   ShadowScene lit(nullptr);
   const FrameBuffers open = lit.render_frame();
   const FrameBuffers shadowed = ShadowScene(&card).render_frame();

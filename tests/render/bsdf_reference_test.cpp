@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <random>
 
+#include "matbase/pi.h"
 #include "reference_params.h"
 #include "principled_lobes.h"
 #include "uniform_floats.h"
@@ -24,7 +25,7 @@ using matrender::PrincipledInputs;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using matbase::kPi;
 
 glm::dvec3 direction_with_cosine(double cos_theta) {
   return {std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta)), 0.0, cos_theta};

@@ -13,6 +13,7 @@
 #include <random>
 #include <vector>
 
+#include "matbase/pi.h"
 #include "chi_square.h"
 #include "reference_params.h"
 #include "principled_lobes.h"
@@ -35,7 +36,7 @@ using matrender::PrincipledInputs;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using matbase::kPi;
 
 glm::vec3 direction_with_cosine(float cos_theta) {
   return {std::sqrt(std::max(0.0f, 1.0f - cos_theta * cos_theta)), 0.0f, cos_theta};

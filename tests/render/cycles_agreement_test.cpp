@@ -15,6 +15,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "matbase/pi.h"
 #include "matgeom/bounding_sphere.h"
 #include "matgeom/camera_grid.h"
 #include "matgeom/tangents.h"
@@ -43,7 +44,7 @@ matgeom::TriangleMesh bumpy_sphere(int rings = 48) {
   matgeom::TriangleMesh mesh;
   for (int i = 0; i <= kRings; ++i)
     for (int j = 0; j <= kSegments; ++j) {
-      const double theta = M_PI * i / kRings, phi = 2.0 * M_PI * j / kSegments;
+      const double theta = matbase::kPi * i / kRings, phi = 2.0 * matbase::kPi * j / kSegments;
       const double r = 0.3 * (1.0 + 0.08 * std::sin(7.0 * theta) * std::sin(5.0 * phi));
       mesh.positions.emplace_back(r * std::sin(theta) * std::cos(phi), r * std::sin(theta) * std::sin(phi),
                                   0.35 + r * std::cos(theta));
@@ -69,12 +70,12 @@ matgeom::TriangleMesh open_vessel() {
   std::vector<glm::dvec2> profile = {{0.0, 0.0}, {0.03, 0.0}, {0.06, 0.0}};
   for (int k = 1; k <= 12; ++k) {
     const double z = 0.3 * k / 12.0;
-    profile.push_back({0.06 + 0.015 * std::sin(M_PI * z / 0.3), z});
+    profile.push_back({0.06 + 0.015 * std::sin(matbase::kPi * z / 0.3), z});
   }
   matgeom::TriangleMesh mesh;
   for (const glm::dvec2& point : profile)
     for (int j = 0; j < kSegments; ++j) {
-      const double phi = 2.0 * M_PI * j / kSegments;
+      const double phi = 2.0 * matbase::kPi * j / kSegments;
       mesh.positions.emplace_back(point.x * std::cos(phi), point.x * std::sin(phi), point.y);
     }
   for (uint32_t ring = 0; ring + 1 < profile.size(); ++ring)
@@ -344,7 +345,7 @@ std::string write_sky_exr(const std::string& folder) {
   std::vector<float> rgb;
   for (int y = 0; y < kHeight; ++y)
     for (int x = 0; x < kWidth; ++x) {
-      const double phi = M_PI * (1.0 - 2.0 * (x + 0.5) / kWidth), theta = M_PI * (y + 0.5) / kHeight;
+      const double phi = matbase::kPi * (1.0 - 2.0 * (x + 0.5) / kWidth), theta = matbase::kPi * (y + 0.5) / kHeight;
       const glm::dvec3 d(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
       glm::vec3 c = d.z < 0.0 ? glm::vec3(0.3f, 0.2f, 0.1f)
                               : glm::vec3(glm::dvec3(0.4 + 0.5 * (1.0 - d.z), 0.6 + 0.3 * (1.0 - d.z), 1.0));

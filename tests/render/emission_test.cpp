@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "matbase/pi.h"
 #include "matrender/camera.h"
 #include "matrender/render.h"
 #include "matrender/scene.h"
@@ -110,7 +111,7 @@ TEST_CASE("Next-event estimation reaches emissive meshes: a plane under an emitt
   settings.max_bounces = 0;  // direct light only
   FrameBuffers frame;
   REQUIRE(render(scene, camera, settings, frame).discarded_samples == 0);
-  const double expected = albedo / M_PI * rectangle_irradiance_below(0.6, 0.4, 1.5, 5.0);
+  const double expected = albedo / matbase::kPi * rectangle_irradiance_below(0.6, 0.4, 1.5, 5.0);
   const auto s = test_scenes::channel_statistics(frame, 0);
   INFO(s.mean << " +- " << s.standard_error << ", expected " << expected);
   CHECK(std::abs(s.mean - expected) < 4.0 * s.standard_error + 1e-4 * expected);

@@ -13,6 +13,7 @@
 #include "chi_square.h"
 #include "lights/environment_light.h"
 #include "lights/light_sampler.h"
+#include "matbase/pi.h"
 #include "matrender/camera.h"
 #include "matrender/render.h"
 #include "matrender/scene.h"
@@ -25,7 +26,7 @@ namespace {
 
 // The direction at (u, v) by the definition u = 0.5 - atan2(y, x) / 2pi, v = 1 - acos(z) / pi.
 glm::dvec3 direction_at(double u, double v) {
-  const double phi = M_PI * (1.0 - 2.0 * u), theta = M_PI * (1.0 - v);
+  const double phi = matbase::kPi * (1.0 - 2.0 * u), theta = matbase::kPi * (1.0 - v);
   return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
 }
 
@@ -110,15 +111,15 @@ TEST_CASE("The map is looked up as Blender 3.4 does at the poles, the seam and t
 TEST_CASE("A Z rotation looks the map up along R_z(angle) d, as a Mapping node's rotation", "[render]") {
   // Columns numbered by their value: world -Y turned by +90 degrees looks at the map's +X column.
   const TexturePtr columns = map_of(64, 32, [](int x, int) { return glm::vec3(static_cast<float>(x)); });
-  const PreparedEnvironmentLight turned(EnvironmentMap{columns, 2.0, M_PI / 2});
+  const PreparedEnvironmentLight turned(EnvironmentMap{columns, 2.0, matbase::kPi / 2});
   const PreparedEnvironmentLight plain(EnvironmentMap{columns, 2.0, 0.0});
   CHECK(turned.radiance({0, -1, 0}).x == Approx(plain.radiance({1, 0, 0}).x));
   CHECK(plain.radiance({1, 0, 0}).x == Approx(2.0 * 31.5));  // strength times the centre columns' mean
   UniformFloats rng(3);
   for (int i = 0; i < 100; ++i) {
     const glm::vec3 d = random_unit_vector(rng);
-    CHECK(turned.radiance(d).x == Approx(plain.radiance(rotated_about_z(d, M_PI / 2)).x).margin(1e-3));
-    CHECK(turned.pdf(d) == Approx(plain.pdf(rotated_about_z(d, M_PI / 2))).epsilon(1e-4));
+    CHECK(turned.radiance(d).x == Approx(plain.radiance(rotated_about_z(d, matbase::kPi / 2)).x).margin(1e-3));
+    CHECK(turned.pdf(d) == Approx(plain.pdf(rotated_about_z(d, matbase::kPi / 2))).epsilon(1e-4));
   }
 }
 
@@ -135,7 +136,7 @@ TEST_CASE("Environment sampling fits its pdf (chi-square), and the pdf covers ev
       {"sun over a black band",
        map_of(32, 16, [](int x, int y) { return y == 3 && x == 20 ? glm::vec3(5000.0f) : glm::vec3(y > 6 ? 0.2f : 0.0f); }),
        0.0},
-      {"probe, turned", probe_map(), M_PI / 6},
+      {"probe, turned", probe_map(), matbase::kPi / 6},
   };
   constexpr int kBinsU = 64, kBinsV = 32, kSamples = 1000000;
   const double significance = 0.01 / static_cast<double>(cases.size());
@@ -170,7 +171,7 @@ TEST_CASE("Environment sampling fits its pdf (chi-square), and the pdf covers ev
           for (int j = 0; j < 4; ++j) {
             const double u = (bu + (i + 0.5) / 4.0) / kBinsU, v = (bv + (j + 0.5) / 4.0) / kBinsV;
             const glm::vec3 d = rotated_about_z(glm::vec3(direction_at(u, v)), -c.rotation);
-            integral += light.pdf(d) * 2.0 * M_PI * M_PI * std::sin(M_PI * (1.0 - v));
+            integral += light.pdf(d) * 2.0 * matbase::kPi * matbase::kPi * std::sin(matbase::kPi * (1.0 - v));
           }
         const double probability = integral / 16.0 / (kBinsU * kBinsV);
         expected[static_cast<size_t>(bv) * kBinsU + bu] = kSamples * probability;
@@ -257,7 +258,7 @@ TEST_CASE("A Lambertian plane under a linear map converges to a (c0 + 2/3 c.n), 
   const double c0 = 1.0;
   const glm::dvec3 c(0.3, -0.2, 0.5);
   const TexturePtr linear = map_of_function(512, 256, [&](const glm::dvec3& d) { return glm::vec3(c0 + glm::dot(c, d)); });
-  for (double rotation : {0.0, M_PI / 2}) {
+  for (double rotation : {0.0, matbase::kPi / 2}) {
     // Looked up along R d, the world sees c0 + (R^T c).d.
     const glm::dvec3 world_c = glm::transpose(glm::dmat3(glm::rotate(glm::dmat4(1.0), rotation, glm::dvec3(0, 0, 1)))) * c;
     for (const glm::dvec3& n : {glm::dvec3(0, 0, 1), glm::dvec3(0, 0, -1), glm::dvec3(1, 0, 0),

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "matbase/pi.h"
 #include "matgeom/camera_grid.h"
 #include "matrender/camera.h"
 #include "matrender/render.h"
@@ -16,7 +17,7 @@ using namespace matrender;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using matbase::kPi;
 
 // Irradiance at x (normal n) from a uniform Lambertian polygon of radiance L (Lambert 1760;
 // e.g. Arvo 1995, eq. 9): E = L/2 sum_i angle(v_i, v_i+1) n . unit(v_i x v_i+1), vertices

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "lights/light_sampler.h"
+#include "matbase/pi.h"
 #include "uniform_floats.h"
 
 using namespace matrender;
@@ -89,7 +90,7 @@ TEST_CASE("An importance pick chooses each light in proportion to its importance
                                      PointLight{glm::dvec3(0.0, 0.0, 5.0), 10.0, glm::dvec3(1.0)}};
   const LightSampler sampler(lights, UniformBackground(glm::vec3(0.0f)));
   const PickSite site = sampler.site(glm::vec3(0.0f, 0.0f, 1.0f), {glm::vec3(0.0f, 0.0f, 1.0f), false});
-  const double near = 10.0 / (4.0 * M_PI) / 1.0, far = 10.0 / (4.0 * M_PI) / 16.0;
+  const double near = 10.0 / (4.0 * matbase::kPi) / 1.0, far = 10.0 / (4.0 * matbase::kPi) / 16.0;
   CHECK(site.total_importance == Approx(near + far).epsilon(1e-5));
   REQUIRE(std::holds_alternative<PreparedRectLight>(sampler.light(0)));
   CHECK(sampler.pick_probability(0, site) == 0.0f);

@@ -10,6 +10,7 @@
 #include <string>
 #include <unistd.h>
 
+#include "matbase/pi.h"
 #include "matgeom/io/mesh_io.h"
 #include "matrender/asset.h"
 #include "matrender/camera.h"
@@ -22,7 +23,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using matbase::kPi;
 
 // UV sphere with `segments` meridians and `rings` latitude bands, vertex normals, outward
 // counter-clockwise triangles, zero thickness.

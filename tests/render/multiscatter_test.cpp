@@ -8,6 +8,7 @@
 
 #include "bsdf/multiscatter_ggx_lobe.h"
 #include "bsdf/principled.h"
+#include "matbase/pi.h"
 #include "matrender/camera.h"
 #include "matrender/render.h"
 #include "matrender/scene.h"
@@ -101,7 +102,7 @@ TEST_CASE("Multiscatter GGX's evaluation integrates to the albedo its samples ca
         const glm::vec3 wi = random_upper_direction(rng);
         float pdf;
         const glm::vec3 f = MultiscatterGgxLobe(1.0f, copper, alpha, wo, static_cast<uint32_t>(i) * 747796405u).eval(wi, &pdf);
-        return static_cast<double>(f.y) * 2.0 * M_PI;
+        return static_cast<double>(f.y) * 2.0 * matbase::kPi;
       });
       const Mean by_sample = mean_of(400000, [&](int i) {
         LobeMixture lobes;
@@ -130,7 +131,7 @@ TEST_CASE("Cycles 3.4's walk, kept for parity, loses energy where the exact walk
       float pdf;
       return static_cast<double>(
                  MultiscatterGgxLobe(1.0f, kWhite, 1.0f, wo, static_cast<uint32_t>(i) * 747796405u, walk).eval(wi, &pdf).x) *
-             2.0 * M_PI;
+             2.0 * matbase::kPi;
     });
   };
   const Mean exact = albedo_by_eval(MultiscatterWalk::Exact), cycles = albedo_by_eval(MultiscatterWalk::Cycles34);

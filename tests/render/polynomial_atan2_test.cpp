@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <random>
 
+#include "matbase/pi.h"
 #include "util/polynomial_atan2.h"
 
 using matrender::polynomial_atan2;
@@ -25,7 +26,7 @@ TEST_CASE("polynomial_atan2 is within an ulp of double-precision atan2", "[rende
 }
 
 TEST_CASE("polynomial_atan2 on the axes, the diagonals and the origin", "[render]") {
-  constexpr float kPi = 3.14159265358979323846f;
+  constexpr float kPi = matbase::kPiAs<float>;
   CHECK(polynomial_atan2(0.0f, 1.0f) == 0.0f);
   CHECK(polynomial_atan2(0.0f, 0.0f) == 0.0f);
   CHECK(polynomial_atan2(1.0f, 0.0f) == Approx(0.5f * kPi).epsilon(1e-7));

@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "matbase/pi.h"
 #include "matrender/paper_setup.h"
 #include "matrender/render.h"
 #include "test_scenes.h"
@@ -53,8 +54,8 @@ TEST_CASE("grey_card_exposure makes a card facing the camera show half its albed
     matgeom::CameraGridSpec grid;
     grid.center = centre;
     grid.radius = 3.0;
-    grid.phi_min = 50.0 * M_PI / 180.0, grid.phi_max = 70.0 * M_PI / 180.0;
-    grid.theta_min = 10.0 * M_PI / 180.0, grid.theta_max = 30.0 * M_PI / 180.0;
+    grid.phi_min = 50.0 * matbase::kPi / 180.0, grid.phi_max = 70.0 * matbase::kPi / 180.0;
+    grid.theta_min = 10.0 * matbase::kPi / 180.0, grid.theta_max = 30.0 * matbase::kPi / 180.0;
     grid.n_phi = grid.n_theta = 1;
     const double stops = matrender::grey_card_exposure(rig, grid);
 

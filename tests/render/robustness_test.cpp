@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "matbase/pi.h"
 #include "matrender/camera.h"
 #include "matrender/render.h"
 #include "matrender/scene.h"
@@ -98,7 +99,7 @@ TEST_CASE("Grazing views of a smooth normal-mapped sphere stay finite", "[render
   const int rings = 24, segments = 48;
   for (int i = 0; i <= rings; ++i) {
     for (int j = 0; j <= segments; ++j) {
-      const float theta = 3.14159265f * i / rings, phi = 6.2831853f * j / segments;
+      const float theta = matbase::kPiAs<float> * i / rings, phi = 2.0f * matbase::kPiAs<float> * j / segments;
       const glm::vec3 n(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
       sphere.positions.push_back(n);
       // Bent normals: tilt every normal by 60 degrees so many face away at the silhouette.

@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "matbase/pi.h"
 #include "uniform_floats.h"
 #include "bsdf/shading_frame.h"
 
@@ -16,7 +17,7 @@ using matrender::ShadingFrame;
 
 namespace {
 
-constexpr float kPi = 3.14159265358979323846f;
+constexpr float kPi = matbase::kPiAs<float>;
 
 bool is_finite(const glm::vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);

@@ -10,6 +10,7 @@
 
 #include "bsdf/bump_shadowing.h"
 #include "integrator/shadow_terminator.h"
+#include "matbase/pi.h"
 
 using namespace matrender;
 
@@ -57,10 +58,10 @@ TEST_CASE("Terminator offset amount: all of it at the terminator, none well insi
 
 TEST_CASE("Bump shadowing term follows its closed form", "[render]") {
   // Smooth normal tilted by 20 degrees from the shading normal (+Z) toward +X.
-  const float tilt = 20.0f * static_cast<float>(M_PI) / 180.0f;
+  const float tilt = 20.0f * static_cast<float>(matbase::kPi) / 180.0f;
   const glm::vec3 smooth(std::sin(tilt), 0.0f, std::cos(tilt));
   for (int k = 1; k < 90; ++k) {
-    const float angle = static_cast<float>(k) * static_cast<float>(M_PI) / 180.0f;  // from +Z toward -X
+    const float angle = static_cast<float>(k) * static_cast<float>(matbase::kPi) / 180.0f;  // from +Z toward -X
     const glm::vec3 wi(-std::sin(angle), 0.0f, std::cos(angle));
     const double g = (double(smooth.x) * wi.x + double(smooth.z) * wi.z) / (double(wi.z) * smooth.z);
     const double expected = g >= 1.0 ? 1.0 : g < 0.0 ? 0.0 : -g * g * g + g * g + g;

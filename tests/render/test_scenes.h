@@ -5,6 +5,7 @@
 
 #include <glm/glm.hpp>
 
+#include "matbase/pi.h"
 #include "matgeom/mesh.h"
 #include "matrender/frame.h"
 #include "matrender/material.h"
@@ -31,7 +32,7 @@ inline matgeom::TriangleMesh uv_sphere(double radius, int rings, const glm::dvec
   const int segments = 2 * rings;
   for (int i = 0; i <= rings; ++i)
     for (int j = 0; j <= segments; ++j) {
-      const double theta = M_PI * i / rings, phi = 2.0 * M_PI * j / segments;
+      const double theta = matbase::kPi * i / rings, phi = 2.0 * matbase::kPi * j / segments;
       const glm::dvec3 n(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
       m.positions.emplace_back(center + radius * n);
       m.normals.emplace_back(n);

@@ -96,8 +96,8 @@ TEST_CASE("Display PNGs store straight alpha: a partly covered pixel keeps the s
 
 TEST_CASE("Clamp holds the edge texel; repeat blends across the seam", "[render]") {
   const std::vector<float> ramp = {0.0f, 1.0f};  // 2 x 1, grey
-  const auto clamped = Texture::from_pixelsf(2, 1, 1, ramp.data(), ColorSpace::NonColor, Wrap::Clamp);
-  const auto repeated = Texture::from_pixelsf(2, 1, 1, ramp.data(), ColorSpace::NonColor, Wrap::Repeat);
+  const auto clamped = Texture::from_pixelsf(2, 1, 1, ramp.data(), ColorSpace::NonColor, TextureWrap::Clamp);
+  const auto repeated = Texture::from_pixelsf(2, 1, 1, ramp.data(), ColorSpace::NonColor, TextureWrap::Repeat);
   CHECK(clamped->sample({0.0f, 0.5f}).x == Approx(0.0f));
   CHECK(clamped->sample({-3.0f, 0.5f}).x == Approx(0.0f));
   CHECK(clamped->sample({5.0f, 0.5f}).x == Approx(1.0f));

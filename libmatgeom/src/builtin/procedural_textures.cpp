@@ -2,6 +2,7 @@
 
 #include "matbase/image/srgb.h"
 #include "matbase/image/unorm.h"
+#include "matbase/smoothstep.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,18 +20,12 @@ double lattice_value(int ix, int iy, int period_x, int period_y, uint32_t salt) 
   return hash_to_unit(hash32(salt ^ static_cast<uint32_t>(wx)) + static_cast<uint32_t>(wy) * 0x9e3779b9u);
 }
 
-
 }  // namespace
-
-double smoothstep(double t) {
-  t = std::clamp(t, 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
-}
 
 double periodic_value_noise(double x, double y, int period_x, int period_y, uint32_t salt) {
   const double px = x * period_x, py = y * period_y;
   const int ix = static_cast<int>(std::floor(px)), iy = static_cast<int>(std::floor(py));
-  const double fx = smoothstep(px - ix), fy = smoothstep(py - iy);
+  const double fx = matbase::smoothstep(px - ix), fy = matbase::smoothstep(py - iy);
   const auto value = [&](int dx, int dy) { return lattice_value(ix + dx, iy + dy, period_x, period_y, salt); };
   return lerp(lerp(value(0, 0), value(1, 0), fx), lerp(value(0, 1), value(1, 1), fx), fy);
 }

@@ -25,7 +25,6 @@ double fractal_noise(double x, double y, int base_period, uint32_t salt);
 // The same with different cell counts along x and y: streaks when they differ.
 double fractal_noise(double x, double y, int base_period_x, int base_period_y, uint32_t salt);
 
-double smoothstep(double t);
 
 // A size x size RGB image; texel(u, v) returns values in [0, 1] (sRGB-encoded for colour maps);
 // rows run top to bottom, so row y holds v = 1 - (y + 0.5) / size.

@@ -8,11 +8,12 @@
 
 #include <glm/glm.hpp>
 
+#include "matbase/pi.h"
 #include "matgeom/mesh.h"
 
 namespace matgeom::builtin {
 
-constexpr double kPi = 3.14159265358979323846;
+using matbase::kPi;
 
 // Axis-aligned box between two corners.
 TriangleMesh box_mesh(const glm::dvec3& lower, const glm::dvec3& upper);

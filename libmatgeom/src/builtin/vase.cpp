@@ -8,6 +8,7 @@
 #include "builtin/procedural_textures.h"
 #include "builtin/shapes.h"
 #include "matbase/image/srgb.h"
+#include "matbase/smoothstep.h"
 #include "matbase/uniform_source.h"
 #include "matmaterial/material_classes.h"
 
@@ -59,7 +60,7 @@ double outer_radius(const VaseShape& shape, double z) {
   for (int k = 0; k < 3; ++k) {
     if (z <= heights[k + 1] || k == 2) {
       return lerp(radii[k], radii[k + 1],
-                  smoothstep((z - heights[k]) / (heights[k + 1] - heights[k])));
+                  matbase::smoothstep((z - heights[k]) / (heights[k + 1] - heights[k])));
     }
   }
   return radii[3];

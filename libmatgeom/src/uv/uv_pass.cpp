@@ -10,6 +10,7 @@
 #include <utility>
 #include <stdexcept>
 
+#include "matbase/pi.h"
 #include "matgeom/tangents.h"
 #include "matgeom/uv/conformal_flattening.h"
 #include "matgeom/uv/uv_packing.h"
@@ -113,7 +114,7 @@ void rotate_to_smallest_box(Chart& chart) {
     if (size.x * size.y < best_area) best_area = size.x * size.y, best_angle = angle;
   }
   const glm::dvec2 size = rotated_box_size(chart.uvs, best_angle);
-  if (size.y > size.x) best_angle += 0.5 * M_PI;
+  if (size.y > size.x) best_angle += 0.5 * matbase::kPi;
   for (glm::dvec2& uv : chart.uvs) uv = rotated(uv, best_angle);
   update_bounds(chart);
 }
@@ -264,7 +265,7 @@ UvPartReport measure_part(const TriangleMesh& mesh, const std::vector<uint32_t>&
 double target_texel_density(double surface_area_m2) {
   constexpr double kD0 = 512.0;  // px/m
   constexpr double kL0 = 1.0;    // m
-  const double characteristic_length = std::sqrt(surface_area_m2 / M_PI);
+  const double characteristic_length = std::sqrt(surface_area_m2 / matbase::kPi);
   return kD0 * kL0 / characteristic_length;
 }
 

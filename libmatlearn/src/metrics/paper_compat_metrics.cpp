@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "matbase/pi.h"
 #include "matlearn/image_metrics.h"
 #include "metrics/image_pair.h"
 #include "metrics/window_moments.h"
@@ -110,7 +111,7 @@ double sam_degrees(const Image8& truth, const Image8& prediction) {
     if (denominator == 0.0) return 0.0;
     total += std::acos(std::clamp(static_cast<double>(wrapped_dot) / denominator, -1.0, 1.0));
   }
-  return total / static_cast<double>(pixels) * (180.0 / M_PI);
+  return total / static_cast<double>(pixels) * (180.0 / matbase::kPi);
 }
 
 }  // namespace matlearn::paper_compat

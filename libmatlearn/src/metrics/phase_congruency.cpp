@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "matbase/pi.h"
 #include "metrics/fft2d.h"
 
 namespace matlearn {
@@ -65,12 +66,12 @@ PhaseCongruency phase_congruency(const std::vector<double>& image, int width, in
   std::vector<ComplexGrid> responses(static_cast<size_t>(settings.scales));
   for (int o = 0; o < settings.orientations; ++o) {
     // Angular window: a raised cosine reaching zero at twice the orientation spacing.
-    const double angle = o * M_PI / settings.orientations;
+    const double angle = o * matbase::kPi / settings.orientations;
     std::vector<double> spread(n);
     for (size_t i = 0; i < n; ++i) {
       const double ds = sin_theta[i] * std::cos(angle) - cos_theta[i] * std::sin(angle);
       const double dc = cos_theta[i] * std::cos(angle) + sin_theta[i] * std::sin(angle);
-      const double dtheta = std::min(std::abs(std::atan2(ds, dc)) * settings.orientations / 2.0, M_PI);
+      const double dtheta = std::min(std::abs(std::atan2(ds, dc)) * settings.orientations / 2.0, matbase::kPi);
       spread[i] = 0.5 * (std::cos(dtheta) + 1.0);
     }
     std::vector<double> sum_e(n, 0.0), sum_o(n, 0.0), sum_amplitude(n, 0.0), max_amplitude(n, 0.0);
@@ -96,7 +97,7 @@ PhaseCongruency phase_congruency(const std::vector<double>& image, int width, in
     // its mean and spread for a Rayleigh distribution.
     const double inverse_mult = 1.0 / settings.scale_factor;
     const double total_tau = tau * (1.0 - std::pow(inverse_mult, settings.scales)) / (1.0 - inverse_mult);
-    const double threshold = total_tau * std::sqrt(M_PI / 2.0) + settings.noise_k * total_tau * std::sqrt((4.0 - M_PI) / 2.0);
+    const double threshold = total_tau * std::sqrt(matbase::kPi / 2.0) + settings.noise_k * total_tau * std::sqrt((4.0 - matbase::kPi) / 2.0);
 
     std::vector<double>& pc = result.per_orientation.emplace_back(n, 0.0);
     for (size_t i = 0; i < n; ++i) {

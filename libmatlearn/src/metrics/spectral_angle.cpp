@@ -2,6 +2,7 @@
 #include <cmath>
 #include <limits>
 
+#include "matbase/pi.h"
 #include "matlearn/image_metrics.h"
 #include "metrics/image_pair.h"
 
@@ -34,7 +35,7 @@ double sam_degrees(const Image& truth, const Image& prediction, const Mask& mask
     ++count;
   }
   if (count == 0) return std::numeric_limits<double>::quiet_NaN();
-  return total / static_cast<double>(count) * (180.0 / M_PI);
+  return total / static_cast<double>(count) * (180.0 / matbase::kPi);
 }
 
 }  // namespace matlearn

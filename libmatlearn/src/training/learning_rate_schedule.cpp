@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "matbase/pi.h"
+
 namespace matlearn {
 
 ScheduleState start_schedule(double base_rate) {
@@ -20,7 +22,7 @@ ScheduleState finish_epoch(const ScheduleSettings& settings, double base_rate, S
       break;
     case ScheduleKind::cosine: {
       // PyTorch's CosineAnnealingLR closed form (eta_min 0): base (1 + cos(pi t / T_max)) / 2.
-      const double pi = 3.14159265358979323846;
+      const double pi = matbase::kPi;
       state.rate = 0.5 * base_rate * (1.0 + std::cos(pi * state.epochs / settings.t_max));
       break;
     }

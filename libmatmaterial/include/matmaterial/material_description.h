@@ -14,8 +14,6 @@
 
 namespace matmaterial {
 
-enum class TextureWrap { Repeat, Clamp };
-
 // One Principled parameter of a material slot: a constant, or the constant times an image of the
 // asset (a factor, as glTF and Blender's importers multiply them): its RGB for a colour, one
 // channel for a scalar.

@@ -9,6 +9,10 @@
 
 namespace matmaterial {
 
+// What a lookup outside [0, 1] reads: the image repeated, or its edge texels (glTF's sampler
+// REPEAT and CLAMP_TO_EDGE, Blender's Image Texture extension Repeat and Extend).
+enum class TextureWrap { Repeat, Clamp };
+
 struct TextureTransform {
   glm::dvec2 offset{0.0};
   double rotation = 0.0;  // radians

@@ -92,7 +92,7 @@ Recipe textured_plastic(matbase::UniformSource& random) {
   const uint32_t salt = random.bits();
   Recipe recipe;
   recipe.texel = [=](glm::dvec2 uv) {
-    const double bump = soft_step(0.0, 0.5, cellular_noise(uv, {160, 160}, salt).f1);  // a moulded stipple
+    const double bump = smoothstep(0.0, 0.5, cellular_noise(uv, {160, 160}, salt).f1);  // a moulded stipple
     Texel t;
     t.base_color = colour;
     t.roughness = roughness + 0.1 * bump;
@@ -164,7 +164,7 @@ Recipe hammered_metal(matbase::UniformSource& random) {
     const double f1 = cellular_noise(uv, {dimples, dimples}, salt).f1;
     Texel t;
     t.base_color = f0;
-    t.roughness = roughness + 0.05 * soft_step(0.2, 0.7, f1);
+    t.roughness = roughness + 0.05 * smoothstep(0.2, 0.7, f1);
     t.height_m = -0.001 * std::max(0.0, 1.0 - (f1 / 0.7) * (f1 / 0.7));
     return t;
   });

@@ -66,7 +66,7 @@ Recipe cast_concrete(matbase::UniformSource& random) {
   recipe.texel = [=](glm::dvec2 uv) {
     const double speckle = fractal_noise(uv, {128, 128}, 2, salt);
     const double blotch = fractal_noise(uv, {4, 4}, 4, salt + 1u);
-    const double pore = 1.0 - soft_step(0.06, 0.12, cellular_noise(uv, {200, 200}, salt + 2u).f1);
+    const double pore = 1.0 - smoothstep(0.06, 0.12, cellular_noise(uv, {200, 200}, salt + 2u).f1);
     Texel t;
     t.base_color = grey * (0.85 + 0.2 * speckle) * (0.9 + 0.15 * blotch) * (1.0 - 0.4 * pore);
     t.roughness = 0.8 + 0.15 * speckle;
@@ -84,7 +84,7 @@ Recipe aggregate_concrete(matbase::UniformSource& random) {
   Recipe recipe;
   recipe.texel = [=](glm::dvec2 uv) {
     const CellularSample cell = cellular_noise(uv, {pebbles, pebbles}, salt);
-    const double stone = soft_step(0.1, 0.2, cell.f2 - cell.f1);
+    const double stone = smoothstep(0.1, 0.2, cell.f2 - cell.f1);
     const glm::dvec3 pebble = stones[hash32(cell.cell) % 3] * (0.9 + 0.2 * hash_to_unit(cell.cell + 1u));
     const double grit = fractal_noise(uv, {256, 256}, 1, salt + 1u);
     Texel t;
@@ -108,7 +108,7 @@ Recipe granite(matbase::UniformSource& random) {
     const CellularSample grain = cellular_noise(uv, {90, 90}, salt);
     const double mineral = hash_to_unit(grain.cell);
     const glm::dvec3 colour = mineral < mica_share ? mica : (mineral < 0.6 ? feldspar : quartz);
-    const double edge = 1.0 - soft_step(0.0, 0.08, grain.f2 - grain.f1);
+    const double edge = 1.0 - smoothstep(0.0, 0.08, grain.f2 - grain.f1);
     Texel t;
     t.base_color = colour * (0.9 + 0.1 * hash_to_unit(grain.cell + 7u)) * (1.0 - 0.15 * edge);
     t.roughness = roughness + 0.05 * edge;
@@ -196,7 +196,7 @@ Recipe speckled_ceramic(matbase::UniformSource& random) {
   const uint32_t salt = random.bits();
   Recipe recipe;
   recipe.texel = [=](glm::dvec2 uv) {
-    const double speck = 1.0 - soft_step(0.04, 0.09, cellular_noise(uv, {120, 120}, salt).f1);
+    const double speck = 1.0 - smoothstep(0.04, 0.09, cellular_noise(uv, {120, 120}, salt).f1);
     Texel t;
     t.base_color = glm::mix(body * (0.95 + 0.05 * fractal_noise(uv, {5, 5}, 3, salt + 1u)), iron, speck);
     t.roughness = roughness;
@@ -217,7 +217,7 @@ Recipe terracotta(matbase::UniformSource& random) {
   Recipe recipe;
   recipe.texel = [=](glm::dvec2 uv) {
     const double mottle = fractal_noise(uv, {5, 5}, 4, salt);
-    const double pore = 1.0 - soft_step(0.05, 0.1, cellular_noise(uv, {150, 150}, salt + 1u).f1);
+    const double pore = 1.0 - smoothstep(0.05, 0.1, cellular_noise(uv, {150, 150}, salt + 1u).f1);
     Texel t;
     t.base_color = clay * (0.85 + 0.25 * mottle) * (1.0 - 0.25 * pore);
     t.roughness = 0.85 + 0.1 * mottle;

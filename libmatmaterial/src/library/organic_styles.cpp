@@ -24,9 +24,9 @@ struct WoodGrain {
   double latewood_band(glm::dvec2 uv) const {
     const double warp = 1.2 * fractal_noise(uv, {1, 2}, 4, salt) + 0.3 * fractal_noise(uv, {4, 8}, 3, salt + 1u);
     const double t = fract(rings * uv.y + warp);
-    return soft_step(0.55, 0.8, t) * (1.0 - soft_step(0.9, 1.0, t));
+    return smoothstep(0.55, 0.8, t) * (1.0 - smoothstep(0.9, 1.0, t));
   }
-  double pores(glm::dvec2 uv) const { return soft_step(0.55, 0.8, fractal_noise(uv, {3, 200}, 2, salt + 2u)); }
+  double pores(glm::dvec2 uv) const { return smoothstep(0.55, 0.8, fractal_noise(uv, {3, 200}, 2, salt + 2u)); }
   glm::dvec3 colour(glm::dvec2 uv) const {
     return glm::mix(earlywood, latewood, 0.7 * latewood_band(uv) + 0.3 * pores(uv));
   }
@@ -213,12 +213,12 @@ Recipe pebbled_leather(matbase::UniformSource& random) {
   Recipe recipe;
   recipe.texel = [=](glm::dvec2 uv) {
     const CellularSample cell = cellular_noise(uv, {pebbles, pebbles}, salt);
-    const double crease = 1.0 - soft_step(0.0, 0.12, cell.f2 - cell.f1);
+    const double crease = 1.0 - smoothstep(0.0, 0.12, cell.f2 - cell.f1);
     const double mottle = fractal_noise(uv, {4, 4}, 3, salt + 1u);
     Texel t;
     t.base_color = colour * (1.0 - 0.25 * crease) * (0.92 + 0.16 * mottle);
     t.roughness = 0.45 + 0.2 * crease + 0.05 * mottle;
-    t.height_m = 0.0004 * soft_step(0.0, 0.25, cell.f2 - cell.f1);
+    t.height_m = 0.0004 * smoothstep(0.0, 0.25, cell.f2 - cell.f1);
     return t;
   };
   return recipe;

@@ -7,11 +7,13 @@
 #include <glm/glm.hpp>
 
 #include "matbase/image/srgb.h"
+#include "matbase/pi.h"
+#include "matbase/smoothstep.h"
 #include "matbase/uniform_source.h"
 
 namespace matmaterial::library {
 
-constexpr double kPi = 3.14159265358979323846;
+using matbase::kPi;
 
 // The linear reflectance of an sRGB-encoded colour: palettes are picked by eye in sRGB.
 inline glm::dvec3 from_srgb(double r, double g, double b) {
@@ -26,11 +28,7 @@ inline glm::dvec3 pick_colour(matbase::UniformSource& random, std::initializer_l
 
 inline double fract(double x) { return x - std::floor(x); }
 
-// Hermite step from 0 at `edge0` to 1 at `edge1` (GLSL's smoothstep).
-inline double soft_step(double edge0, double edge1, double x) {
-  const double t = glm::clamp((x - edge0) / (edge1 - edge0), 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
-}
+using matbase::smoothstep;
 
 // A round thread's height across its width: 1 on its axis, 0 at its edges (t in [0, 1)).
 inline double thread_profile(double t) { return std::sqrt(std::max(0.0, 1.0 - (2.0 * t - 1.0) * (2.0 * t - 1.0))); }
@@ -39,7 +37,7 @@ inline double thread_profile(double t) { return std::sqrt(std::max(0.0, 1.0 - (2
 // soft edge `edge` pitches wide.
 inline double perforation_opacity(glm::dvec2 uv, int count, double radius, double edge) {
   const glm::dvec2 cell(fract(uv.x * count) - 0.5, fract(uv.y * count) - 0.5);
-  return soft_step(radius - 0.5 * edge, radius + 0.5 * edge, glm::length(cell));
+  return smoothstep(radius - 0.5 * edge, radius + 0.5 * edge, glm::length(cell));
 }
 
 }  // namespace matmaterial::library

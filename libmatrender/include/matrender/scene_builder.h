@@ -28,7 +28,7 @@ struct BuiltScene {
   std::vector<matgeom::TriangleMesh> object_surfaces;
 };
 
-// Throws InputError naming the described item when an input fails to load or does not fit
+// Throws matbase::InputError naming the described item when an input fails to load or does not fit
 // (unreadable mesh or texture, unknown part name), and matbase::Cancelled soon after `cancel`
 // (when given) is set while materials load (SceneMaterials::cancel_on).
 BuiltScene build_scene(const SceneDescription& description, const std::atomic<bool>* cancel = nullptr);
@@ -36,7 +36,7 @@ BuiltScene build_scene(const SceneDescription& description, const std::atomic<bo
 // Puts object `object` (its index in the description) in other materials of the description:
 // `materials.material` on every part and `materials.part_materials` by part name, as
 // build_scene reads them (the description's source and transform are not used); parts it does
-// not name keep the material they have. The BVH is not rebuilt. Throws InputError for an unknown
+// not name keep the material they have. The BVH is not rebuilt. Throws matbase::InputError for an unknown
 // part name or a material input that fails to load, std::out_of_range for an unknown material.
 void assign_object_materials(BuiltScene& built, size_t object, const ObjectDescription& materials);
 

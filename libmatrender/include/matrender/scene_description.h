@@ -14,6 +14,7 @@
 
 #include <glm/glm.hpp>
 
+#include "matbase/input_error.h"
 #include "matgeom/camera_grid.h"
 #include "matmaterial/library/material_library.h"
 #include "matrender/camera.h"
@@ -24,13 +25,6 @@
 
 namespace matrender {
 
-// A problem with what the user gave (a file or an option), as opposed to a failure while
-// rendering or writing: the two end with different exit codes.
-class InputError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
 // Where a described item came from, so that problems found only while building (a corrupt mesh,
 // an unknown part name) still point at the value to fix.
 struct Origin {
@@ -39,14 +33,14 @@ struct Origin {
 
   // "scene.json: /objects/1/mesh" for child "/mesh" of "/objects/1"; just "--mesh" for an option.
   std::string describe(const std::string& child = "") const;
-  InputError error(const std::string& child, const std::string& message) const;
+  matbase::InputError error(const std::string& child, const std::string& message) const;
 };
 
 // A texture file to load; the path is already resolved against the scene file's folder.
 struct TextureFile {
   std::string path;
   ColorSpace color_space = ColorSpace::NonColor;
-  Wrap wrap = Wrap::Repeat;
+  TextureWrap wrap = TextureWrap::Repeat;
   Origin origin;
 };
 

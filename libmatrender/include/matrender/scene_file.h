@@ -7,7 +7,7 @@
 
 namespace matrender {
 
-// Throws InputError naming the file and the JSON pointer of the offending value, e.g.
+// Throws matbase::InputError naming the file and the JSON pointer of the offending value, e.g.
 // "scene.json: /objects/1/transform/scale: expected a positive number".
 SceneDescription read_scene_file(const std::string& path);
 

@@ -28,7 +28,7 @@ class SceneMaterials {
   void cancel_on(const std::atomic<bool>* cancel) { cancel_ = cancel; }
 
   // The scene material id of the described material `name`, added to `scene` when first asked
-  // for. Throws InputError naming the file when one of its inputs fails to load, and
+  // for. Throws matbase::InputError naming the file when one of its inputs fails to load, and
   // std::out_of_range for a name not described.
   uint32_t id(Scene& scene, const std::string& name);
 
@@ -43,7 +43,7 @@ class SceneMaterials {
 
   std::map<std::string, MaterialDescription> described_;
   std::map<std::string, uint32_t> ids_;
-  std::map<std::tuple<std::string, ColorSpace, Wrap>, TexturePtr> textures_;
+  std::map<std::tuple<std::string, ColorSpace, TextureWrap>, TexturePtr> textures_;
   std::map<std::string, Material> folder_materials_;   // by folder path
   std::map<std::string, Material> library_materials_;  // by canonical name and resolution
   std::map<std::string, double> folder_tile_sizes_, library_tile_sizes_;  // keyed as the two above

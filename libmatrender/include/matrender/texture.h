@@ -23,11 +23,12 @@
 #include <glm/glm.hpp>
 
 #include "matmaterial/material_parameters.h"
+#include "matmaterial/texture_transform.h"
 
 namespace matrender {
 
 using matmaterial::ColorSpace;
-enum class Wrap { Repeat, Clamp };
+using matmaterial::TextureWrap;
 
 struct TexelLevel;
 class TexelPage;
@@ -44,16 +45,16 @@ class Texture {
   // zero, so (-1, 0) still reads tile 1001's first column or row, wrapped; UVs in a tile the set
   // lacks, or left of u = -1 or beyond u = 10, read Cycles' missing-texture magenta (1, 0, 1, 1).
   static std::shared_ptr<const Texture> load(const std::string& path, ColorSpace space,
-                                             Wrap wrap = Wrap::Repeat);
+                                             TextureWrap wrap = TextureWrap::Repeat);
   // From 8-bit pixels in memory, rows top to bottom.
   static std::shared_ptr<const Texture> from_pixels8(int width, int height, int channels,
                                                      const uint8_t* pixels, ColorSpace space,
-                                                     Wrap wrap = Wrap::Repeat,
+                                                     TextureWrap wrap = TextureWrap::Repeat,
                                                      std::string name = "<memory>");
   // From float pixels (already linear), rows top to bottom.
   static std::shared_ptr<const Texture> from_pixelsf(int width, int height, int channels,
                                                      const float* pixels, ColorSpace space,
-                                                     Wrap wrap = Wrap::Repeat,
+                                                     TextureWrap wrap = TextureWrap::Repeat,
                                                      std::string name = "<memory>");
 
   // Bilinear lookup at (u, v), v = 0 at the bottom row (OpenGL/Blender UV convention).
@@ -84,7 +85,7 @@ class Texture {
   static void associate_alpha(Decoded& decoded);
   // A texture of these texels. `remake`, when given, makes level 0 again after the texture
   // cache dropped it; without it level 0 stays in memory.
-  static std::shared_ptr<const Texture> with_texels(Decoded decoded, ColorSpace space, Wrap wrap, std::string name,
+  static std::shared_ptr<const Texture> with_texels(Decoded decoded, ColorSpace space, TextureWrap wrap, std::string name,
                                                     std::function<TexelLevel()> remake);
 
   glm::vec4 bilinear(const TexelLevel& level, glm::vec2 uv) const;
@@ -94,7 +95,7 @@ class Texture {
   int width_ = 0;
   int height_ = 0;
   ColorSpace space_ = ColorSpace::SRGB;
-  Wrap wrap_ = Wrap::Repeat;
+  TextureWrap wrap_ = TextureWrap::Repeat;
   bool convert_srgb_after_filtering_ = false;
   bool associated_alpha_ = false;
   std::string name_;
@@ -108,7 +109,7 @@ class Texture {
     std::shared_ptr<const Texture> texture;  // set once, by the first lookup in the tile
   };
   std::vector<std::unique_ptr<UdimTile>> udim_;  // by tile number; empty for a single image
-  static std::shared_ptr<const Texture> load_udim(const std::string& pattern, ColorSpace space, Wrap wrap);
+  static std::shared_ptr<const Texture> load_udim(const std::string& pattern, ColorSpace space, TextureWrap wrap);
   glm::vec4 sample_udim(glm::vec2 uv, bool unassociate, float footprint) const;
 };
 

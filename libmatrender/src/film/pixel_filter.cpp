@@ -4,11 +4,13 @@
 #include <cmath>
 #include <vector>
 
+#include "matbase/pi.h"
+
 namespace matrender {
 
 double blackman_harris_weight(double x) {
   if (std::abs(x) > PixelFilterSampler::kRadius) return 0.0;
-  const double a = 2.0 * M_PI * (x / (2.0 * PixelFilterSampler::kRadius) + 0.5);
+  const double a = 2.0 * matbase::kPi * (x / (2.0 * PixelFilterSampler::kRadius) + 0.5);
   return 0.35875 - 0.48829 * std::cos(a) + 0.14128 * std::cos(2.0 * a) - 0.01168 * std::cos(3.0 * a);
 }
 

@@ -26,6 +26,7 @@
 #include "lights/light_sampler.h"
 #include "matbase/image/srgb.h"
 #include "matbase/memory_limit.h"
+#include "matbase/pi.h"
 #include "matbase/threads.h"
 #include "matrender/denoise.h"
 #include "matrender/scene_limits.h"
@@ -84,7 +85,7 @@ void validate(const Camera& camera, const RenderSettings& settings) {
   if (!is_finite(camera.camera_to_world))
     throw std::invalid_argument("render: the camera's camera-to-world matrix has a non-finite entry");
   check_scene_point(glm::dvec3(camera.camera_to_world[3]), "render: the camera");
-  if (!(camera.vertical_fov > 0.0 && camera.vertical_fov < M_PI))
+  if (!(camera.vertical_fov > 0.0 && camera.vertical_fov < matbase::kPi))
     throw std::invalid_argument("render: vertical field of view must be in (0, pi) radians");
   if (!(settings.noise_threshold >= 0.0 && settings.noise_threshold <= 1.0))
     throw std::invalid_argument("render: the noise threshold must be in [0, 1] (0: adaptive sampling off)");

@@ -5,6 +5,7 @@
 #include "bsdf/shading_frame.h"
 #include "lights/light_importance.h"
 #include "lights/spot_light.h"
+#include "matbase/pi.h"
 #include "sampling/warp.h"
 #include "util/channel_average.h"
 
@@ -12,7 +13,7 @@ namespace matrender {
 namespace {
 
 glm::vec3 disk_radiance(double power, const glm::dvec3& color, double radius) {
-  return glm::vec3(power * color / (4.0 * M_PI * M_PI * radius * radius));
+  return glm::vec3(power * color / (4.0 * matbase::kPi * matbase::kPi * radius * radius));
 }
 
 }  // namespace
@@ -21,13 +22,13 @@ PreparedDiskLamp::PreparedDiskLamp(const PointLight& light)
     : center_(light.position),
       radius_(static_cast<float>(light.radius)),
       radiance_(disk_radiance(light.power, light.color, light.radius)),
-      intensity_(static_cast<float>(light.power / (4.0 * M_PI)) * channel_average(glm::vec3(light.color))) {}
+      intensity_(static_cast<float>(light.power / (4.0 * matbase::kPi)) * channel_average(glm::vec3(light.color))) {}
 
 PreparedDiskLamp::PreparedDiskLamp(const SpotLight& light)
     : center_(light.position),
       radius_(static_cast<float>(light.radius)),
       radiance_(disk_radiance(light.power, light.color, light.radius)),
-      intensity_(static_cast<float>(light.power / (4.0 * M_PI)) * channel_average(glm::vec3(light.color))),
+      intensity_(static_cast<float>(light.power / (4.0 * matbase::kPi)) * channel_average(glm::vec3(light.color))),
       axis_(glm::normalize(light.direction)),
       cos_half_angle_(static_cast<float>(std::cos(0.5 * light.spot_angle))),
       blend_(static_cast<float>(light.blend)),

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "matbase/pi.h"
 #include "sampling/warp.h"
 #include "util/channel_average.h"
 
@@ -85,7 +86,7 @@ PreparedEnvironmentLight::PreparedEnvironmentLight(const EnvironmentMap& map) : 
   distribution_ = std::make_shared<PiecewiseConstant2D>(weights, width, height);
   // The density's integral over (u, v) is that of L sin(theta), so the mean radiance over the
   // sphere, the integral of L d omega / 4 pi, is 2 pi^2 integral / 4 pi.
-  importance_ = static_cast<float>(M_PI * strength_ * 0.5 * M_PI * distribution_->integral());
+  importance_ = static_cast<float>(matbase::kPi * strength_ * 0.5 * matbase::kPi * distribution_->integral());
 }
 
 glm::vec3 PreparedEnvironmentLight::to_map(const glm::vec3& d) const {

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "matbase/pi.h"
 #include "matrender/scene_limits.h"
 #include "util/finite.h"
 
@@ -72,21 +73,21 @@ void check_point(const glm::dvec3& position, double power, const glm::dvec3& col
   check_point_within_limit(position, "position");
   check_color(color);
   check_power(power);
-  check_emission(power * color / (4.0 * M_PI), "intensity", "lower the power");
+  check_emission(power * color / (4.0 * matbase::kPi), "intensity", "lower the power");
   if (!(std::isfinite(radius) && radius >= 0.0)) refuse(fmt::format("radius {} m must be finite and >= 0", radius));
   if (radius > kMaxSceneCoordinate) refuse(fmt::format("radius {} m exceeds the scene's {} m", radius, kMaxSceneCoordinate));
   if (radius == 0.0) return;
-  const double area = M_PI * radius * radius;
+  const double area = matbase::kPi * radius * radius;
   if (!(area >= kMinNormalFloat))
     refuse(fmt::format("its disk's area {:g} m^2 (radius {} m) is below the {:g} single precision holds", area, radius,
                        kMinNormalFloat));
-  check_emission(power * color / (4.0 * M_PI * area), "radiance", "lower the power or enlarge the radius");
+  check_emission(power * color / (4.0 * matbase::kPi * area), "radiance", "lower the power or enlarge the radius");
 }
 
 void check_spot(const SpotLight& spot) {
   check_point(spot.position, spot.power, spot.color, spot.radius);
   check_direction(spot.direction);
-  if (!(spot.spot_angle > 0.0 && spot.spot_angle <= M_PI))
+  if (!(spot.spot_angle > 0.0 && spot.spot_angle <= matbase::kPi))
     refuse(fmt::format("spot angle {} rad must lie in (0, pi]", spot.spot_angle));
   if (!(spot.blend >= 0.0 && spot.blend <= 1.0)) refuse(fmt::format("blend {} must lie in [0, 1]", spot.blend));
 }
@@ -102,9 +103,9 @@ void check_sun(const SunLight& sun) {
   if (sun.angle == 0.0) return;
   // The radiance E / (pi tan^2(angle / 2)) at the centre of the disk of directions.
   const double tangent = std::tan(0.5 * sun.angle);
-  if (!(M_PI * tangent * tangent >= kMinNormalFloat))
+  if (!(matbase::kPi * tangent * tangent >= kMinNormalFloat))
     refuse(fmt::format("angle {:g} rad is too small for single precision; use 0 for a single direction", sun.angle));
-  check_emission(sun.strength * sun.color / (M_PI * tangent * tangent), "radiance",
+  check_emission(sun.strength * sun.color / (matbase::kPi * tangent * tangent), "radiance",
                  "lower the strength or widen the angle");
 }
 

@@ -6,13 +6,14 @@
 #include <optional>
 #include <string>
 
+#include "matbase/pi.h"
 #include "matrender/light.h"
 
 namespace matrender {
 
 // The widest sun: Blender takes 180 degrees, where the disk of directions, of radius
 // tan(angle / 2), becomes infinite; at 179 degrees it is 115 wide.
-constexpr double kMaxSunAngle = 179.0 * M_PI / 180.0;
+constexpr double kMaxSunAngle = 179.0 * matbase::kPi / 180.0;
 
 // Why the lamp cannot be rendered as given ("power 1e+308 W exceeds ..."), or nothing.
 std::optional<std::string> light_problem(const Light& light);

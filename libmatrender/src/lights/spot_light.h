@@ -9,22 +9,19 @@
 
 #include "lights/light_sample.h"
 #include "lights/light_type.h"
+#include "matbase/pi.h"
+#include "matbase/smoothstep.h"
 #include "matrender/light.h"
 #include "sampling/warp.h"
 #include "util/channel_average.h"
 
 namespace matrender {
 
-inline float smoothstep01(float x) {
-  x = glm::clamp(x, 0.0f, 1.0f);
-  return x * x * (3.0f - 2.0f * x);
-}
-
 // cos t = cosine between the lamp axis and the direction from the lamp to the lit point.
 inline float spot_attenuation(float cos_t, float cos_half_angle, float blend) {
   if (cos_t <= cos_half_angle) return 0.0f;
   const float smooth_width = (1.0f - cos_half_angle) * blend;
-  const float edge = smooth_width > 0.0f ? smoothstep01((cos_t - cos_half_angle) / smooth_width) : 1.0f;
+  const float edge = smooth_width > 0.0f ? matbase::smoothstep((cos_t - cos_half_angle) / smooth_width) : 1.0f;
   return cos_t * edge;
 }
 
@@ -32,11 +29,11 @@ class PreparedDeltaLight {
  public:
   explicit PreparedDeltaLight(const PointLight& light)
       : position_(light.position),
-        intensity_(light.power * light.color / (4.0 * M_PI)),
+        intensity_(light.power * light.color / (4.0 * matbase::kPi)),
         mean_intensity_(channel_average(intensity_)) {}
   explicit PreparedDeltaLight(const SpotLight& light)
       : position_(light.position),
-        intensity_(light.power * light.color / (4.0 * M_PI)),
+        intensity_(light.power * light.color / (4.0 * matbase::kPi)),
         mean_intensity_(channel_average(intensity_)),
         axis_(glm::normalize(light.direction)),
         cos_half_angle_(static_cast<float>(std::cos(0.5 * light.spot_angle))),

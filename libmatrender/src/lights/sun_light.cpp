@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "matbase/pi.h"
 #include "bsdf/shading_frame.h"
 #include "lights/light_importance.h"
 #include "util/channel_average.h"
@@ -14,7 +15,7 @@ PreparedSunLight::PreparedSunLight(const SunLight& light)
     : to_sun_(-glm::normalize(light.direction)), irradiance_(light.strength * light.color) {
   const double radius = std::tan(0.5 * light.angle);
   disk_radius_ = static_cast<float>(radius);
-  inverse_disk_area_ = radius > 0.0 ? static_cast<float>(1.0 / (M_PI * radius * radius)) : 0.0f;
+  inverse_disk_area_ = radius > 0.0 ? static_cast<float>(1.0 / (matbase::kPi * radius * radius)) : 0.0f;
   cos_half_angle_ = static_cast<float>(std::cos(0.5 * light.angle));
   sin_half_angle_ = static_cast<float>(std::sin(0.5 * light.angle));
   mean_irradiance_ = channel_average(irradiance_);

@@ -5,9 +5,11 @@
 
 #include <glm/glm.hpp>
 
+#include "matbase/pi.h"
+
 namespace matrender {
 
-constexpr float kPi = 3.14159265358979323846f;
+constexpr float kPi = matbase::kPiAs<float>;
 constexpr float kInvPi = 0.31830988618379067154f;
 
 // Shirley-Chiu concentric map of [0,1)^2 onto the unit disk (pbrt-v4 eq. A.5.1): area-preserving

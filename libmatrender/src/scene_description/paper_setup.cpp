@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "matbase/image/image_writing.h"
+#include "matbase/pi.h"
 #include "matrender/rig_lights.h"
 
 namespace matrender {
@@ -27,7 +28,7 @@ double grey_card_exposure(const matgeom::LightRig& rig, const matgeom::CameraGri
     illuminance += matgeom::card_illuminance_lux(rig.lights, grid.center, glm::normalize(camera.position - grid.center));
   illuminance /= static_cast<double>(cameras.size());
   if (!(illuminance > 0.0)) return 0.0;
-  const double stops = std::log2(matgeom::kLuxPerWattPerSquareMetre * M_PI / illuminance) - kGreyCardHeadroomStops;
+  const double stops = std::log2(matgeom::kLuxPerWattPerSquareMetre * matbase::kPi / illuminance) - kGreyCardHeadroomStops;
   return std::clamp(stops, -matbase::kMaxExposureStops, matbase::kMaxExposureStops);
 }
 

@@ -125,7 +125,7 @@ void add_lights(const LightsDescription& lights, BuiltScene& built) {
     built.rig = paper_rig(built.bounds, std::get<LightRigDescription>(lights).target_illuminance_lux);
     add_rig(built.scene, *built.rig);
   } catch (const std::invalid_argument& e) {
-    throw InputError(std::string(listed ? "lights: " : "light rig: ") + e.what());
+    throw matbase::InputError(std::string(listed ? "lights: " : "light rig: ") + e.what());
   }
 }
 
@@ -150,7 +150,7 @@ glm::dmat4 camera_to_world(const CameraDescription& camera, const glm::dvec3& ce
     try {
       return matgeom::look_at_camera_to_world(look->position, look->target, look->up);
     } catch (const std::invalid_argument& e) {
-      throw InputError(std::string("camera: ") + e.what());
+      throw matbase::InputError(std::string("camera: ") + e.what());
     }
   }
   if (const auto* matrix = std::get_if<MatrixPlacement>(&camera.placement)) return matrix->camera_to_world;
@@ -160,7 +160,7 @@ glm::dmat4 camera_to_world(const CameraDescription& camera, const glm::dvec3& ce
   try {
     return matgeom::grid_camera(spec, grid.i, grid.j).camera_to_world;
   } catch (const std::logic_error& e) {
-    throw InputError(std::string("camera grid: ") + e.what());
+    throw matbase::InputError(std::string("camera grid: ") + e.what());
   }
 }
 
@@ -184,7 +184,7 @@ Background load_background(const BackgroundDescription& description) {
   try {
     const ColorSpace space = environment->color_space ? *environment->color_space
                                                       : blender_default_color_space(environment->path);
-    return EnvironmentMap{Texture::load(environment->path, space, Wrap::Repeat), environment->strength,
+    return EnvironmentMap{Texture::load(environment->path, space, TextureWrap::Repeat), environment->strength,
                           environment->rotation_z};
   } catch (const std::exception& e) {
     throw environment->origin.error("/environment", e.what());
@@ -214,7 +214,7 @@ BuiltScene build_scene(const SceneDescription& description, const std::atomic<bo
   built.scene.set_background(load_background(description.background));
   built.camera = make_camera(description.camera, matgeom::surface_centroid(surface));
   if (const std::optional<std::string> problem = scene_point_problem(glm::dvec3(built.camera.camera_to_world[3]), "the camera"))
-    throw InputError("camera: " + *problem);
+    throw matbase::InputError("camera: " + *problem);
   built.frame_stem = frame_stem(description.camera);
   built.scene.commit();
   return built;

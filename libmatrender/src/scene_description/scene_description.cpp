@@ -8,8 +8,8 @@ std::string Origin::describe(const std::string& child) const {
   return where.empty() ? source : source + ": " + where;
 }
 
-InputError Origin::error(const std::string& child, const std::string& message) const {
-  return InputError(describe(child) + ": " + message);
+matbase::InputError Origin::error(const std::string& child, const std::string& message) const {
+  return matbase::InputError(describe(child) + ": " + message);
 }
 
 }  // namespace matrender

@@ -437,7 +437,7 @@ TextureFile read_texture_file(const Node& node, const fs::path& folder, ColorSpa
     file.color_space = space->choice({"sRGB", "non-color"}) == 0 ? ColorSpace::SRGB
                                                                   : ColorSpace::NonColor;
   if (auto wrap = node.find("wrap"))
-    file.wrap = wrap->choice({"repeat", "clamp"}) == 0 ? Wrap::Repeat : Wrap::Clamp;
+    file.wrap = wrap->choice({"repeat", "clamp"}) == 0 ? TextureWrap::Repeat : TextureWrap::Clamp;
   return file;
 }
 
@@ -719,9 +719,9 @@ void read_render(const Node& node, SceneDescription& scene) {
 }
 
 json parse_json_file(const std::string& path) {
-  if (const std::optional<std::string> problem = matbase::input_file_problem(path)) throw InputError(path + ": " + *problem);
+  if (const std::optional<std::string> problem = matbase::input_file_problem(path)) throw matbase::InputError(path + ": " + *problem);
   std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open: " + std::strerror(errno));
+  if (!in) throw matbase::InputError(path + ": cannot open: " + std::strerror(errno));
   // nlohmann keeps the last of two equal keys in an object; a scene file that says a value twice
   // is a mistake to report, not to resolve. The parser's events are followed with one frame per
   // open object or array, enough to name the repeated key's JSON pointer.
@@ -762,20 +762,20 @@ json parse_json_file(const std::string& path) {
   };
   try {
     json document = json::parse(in, find_duplicates);
-    if (!duplicate_pointer.empty()) throw InputError(path + ": " + duplicate_pointer + ": this key appears twice in its object");
+    if (!duplicate_pointer.empty()) throw matbase::InputError(path + ": " + duplicate_pointer + ": this key appears twice in its object");
     return document;
   } catch (const json::out_of_range& e) {
     // A number beyond a double ("1e309"): nlohmann says "number overflow parsing '1e309'".
     const std::string what = e.what();
     const size_t quote = what.find('\'');
-    throw InputError(path + ": not valid JSON: the number " +
+    throw matbase::InputError(path + ": not valid JSON: the number " +
                      (quote == std::string::npos ? std::string("") : what.substr(quote) + " ") +
                      "is too large for a double");
   } catch (const json::parse_error& e) {
     // Drop nlohmann's "[json.exception.parse_error.101] " prefix; the rest names line and column.
     const std::string what = e.what();
     const size_t end_of_tag = what.find("] ");
-    throw InputError(path + ": not valid JSON: " +
+    throw matbase::InputError(path + ": not valid JSON: " +
                      (end_of_tag == std::string::npos ? what : what.substr(end_of_tag + 2)));
   }
 }

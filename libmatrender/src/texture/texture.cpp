@@ -53,8 +53,8 @@ void require_plausible_header(const std::string& path) {
     throw std::runtime_error(path + ": " + *problem);
 }
 
-int wrap_index(int i, int n, Wrap wrap) {
-  if (wrap == Wrap::Clamp) return i < 0 ? 0 : (i >= n ? n - 1 : i);
+int wrap_index(int i, int n, TextureWrap wrap) {
+  if (wrap == TextureWrap::Clamp) return i < 0 ? 0 : (i >= n ? n - 1 : i);
   const int r = i % n;
   return r < 0 ? r + n : r;
 }
@@ -209,7 +209,7 @@ Texture::Decoded Texture::decode_file(const std::string& path, ColorSpace space)
   return decode_floats(spec.width, spec.height, channels, pixels.data(), path);
 }
 
-std::shared_ptr<const Texture> Texture::with_texels(Decoded decoded, ColorSpace space, Wrap wrap, std::string name,
+std::shared_ptr<const Texture> Texture::with_texels(Decoded decoded, ColorSpace space, TextureWrap wrap, std::string name,
                                                     std::function<TexelLevel()> remake) {
   auto texture = std::shared_ptr<Texture>(new Texture());
   texture->width_ = decoded.level0.width;
@@ -232,20 +232,20 @@ std::shared_ptr<const Texture> Texture::with_texels(Decoded decoded, ColorSpace 
 }
 
 std::shared_ptr<const Texture> Texture::from_pixelsf(int width, int height, int channels,
-                                                     const float* pixels, ColorSpace space, Wrap wrap,
+                                                     const float* pixels, ColorSpace space, TextureWrap wrap,
                                                      std::string name) {
   Decoded decoded = decode_floats(width, height, channels, pixels, name);
   return with_texels(std::move(decoded), space, wrap, std::move(name), nullptr);
 }
 
 std::shared_ptr<const Texture> Texture::from_pixels8(int width, int height, int channels,
-                                                     const uint8_t* pixels, ColorSpace space, Wrap wrap,
+                                                     const uint8_t* pixels, ColorSpace space, TextureWrap wrap,
                                                      std::string name) {
   Decoded decoded = decode_bytes(width, height, channels, pixels, space, name);
   return with_texels(std::move(decoded), space, wrap, std::move(name), nullptr);
 }
 
-std::shared_ptr<const Texture> Texture::load(const std::string& path, ColorSpace space, Wrap wrap) {
+std::shared_ptr<const Texture> Texture::load(const std::string& path, ColorSpace space, TextureWrap wrap) {
   if (path.find(kUdimToken) != std::string::npos) return load_udim(path, space, wrap);
   Decoded decoded = decode_file(path, space);
   const int width = decoded.level0.width, height = decoded.level0.height;
@@ -288,7 +288,7 @@ glm::vec4 Texture::bilinear(const TexelLevel& level, glm::vec2 uv) const {
   // maps, and the small mip levels, take this path often).
   const auto index = [&](float f, int offset, int n) {
     if (f >= 0.0f && f < static_cast<float>(n - offset)) return static_cast<int>(f) + offset;
-    if (wrap_ == Wrap::Repeat) {
+    if (wrap_ == TextureWrap::Repeat) {
       constexpr float kIntRange = 0x1p30f;
       // In (-n, n]: a remainder in (-n, n), plus 0 or 1.
       const int i = (std::abs(f) < kIntRange ? static_cast<int>(f) % n
@@ -306,7 +306,7 @@ glm::vec4 Texture::bilinear(const TexelLevel& level, glm::vec2 uv) const {
                                  : blend_texels<false>(level, x0, x1, y0, y1, tx, ty);
 }
 
-std::shared_ptr<const Texture> Texture::load_udim(const std::string& pattern, ColorSpace space, Wrap wrap) {
+std::shared_ptr<const Texture> Texture::load_udim(const std::string& pattern, ColorSpace space, TextureWrap wrap) {
   const size_t token = pattern.find(kUdimToken);
   const fs::path folder = fs::path(pattern.substr(0, token)).parent_path();
   const std::string prefix = fs::path(pattern.substr(0, token)).filename().string();

@@ -6,12 +6,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "matbase/pi.h"
+
 namespace matrender {
 
 // The angle of (x, y) in [-pi, pi]; 0 at the origin. Within one ulp of the exact value for
 // finite arguments (tests/render/polynomial_atan2_test.cpp).
 inline float polynomial_atan2(float y, float x) {
-  constexpr double pi = 3.14159265358979323846;
+  constexpr double pi = matbase::kPi;
   constexpr double tan_pi_over_8 = 0.41421356237309504880;
   const double ax = std::abs(static_cast<double>(x)), ay = std::abs(static_cast<double>(y));
   const double big = std::max(ax, ay), small = std::min(ax, ay);
