@@ -1,0 +1,84 @@
+// The scene file's refusals as the library makes them: read_scene_file, then build_scene for what
+// only loading finds. Each broken file in scene_files/ is refused with a matbase::InputError that
+// names the file, the JSON pointer of the value to fix and the problem (docs/scene_format.md);
+// render_object's own tests check that the app turns a few of them into exit code 2 with nothing
+// written.
+#include <string>
+
+#include <catch2/catch.hpp>
+
+#include "matbase/input_error.h"
+#include "matrender/scene_builder.h"
+#include "matrender/scene_file.h"
+
+namespace {
+
+struct Refusal {
+  const char* file;     // in scene_files/, without "bad_" and ".json"
+  const char* message;  // an ECMAScript regex of what follows "<path>: "
+};
+
+const Refusal kRefusals[] = {
+    {"unknown_key", R"(/objects/0/trasnform: unknown key.*)"},
+    {"wrong_type", R"(/render/spp: expected an integer in \[1, 2147483647\].*)"},
+    {"missing_mesh", R"(/objects/0/mesh: file not found.*)"},
+    {"unknown_material", R"(/objects/0/material: unknown material "chrome".*)"},
+    {"negative_size", R"(/lights/0/size/1: expected a positive number.*)"},
+    {"cell_out_of_range", R"(/camera/grid/cell/0: expected an integer in \[0, 15\].*)"},
+    {"terminator_offset", R"(/objects/0/shadow_terminator_geometry_offset: expected a number in \[0, 1\].*)"},
+    {"parameter_range", R"(/materials/glass/ior: expected a number in \[1, 1000\].*)"},
+    {"untexturable", R"(/materials/glass/ior: expected a number in \[1, 1000\].*)"},
+    {"texture_transform", R"(/materials/oak/base_color/transform/scale: expected \[u, v\].*)"},
+    // Strict as the docs promise: no repeated key, no number beyond a double, nothing that would
+    // render black or clipped.
+    {"duplicate_key", R"(/lights/1/power: this key appears twice in its object.*)"},
+    {"number_overflow", R"(not valid JSON: the number '1e309' is too large for a double.*)"},
+    {"exposure", R"(/render/exposure: expected a number of stops in \[-126, 126\].*)"},
+    {"label_id", R"(/materials/clay/label_id: expected an integer in \[0, 65535\].*)"},
+    {"matsynth_folder",
+     R"(/materials/cloth/matsynth: expected a material folder \(matgeom's MatSynth layout\), found no folder at.*)"},
+    {"label_class", R"(/materials/clay/label_id: unknown material class "clay" \(known: "background", "concrete".*)"},
+    {"library_style", R"(/objects/0/material/style: no style "velvet" of wood \(styles: raw, lacquered, painted, wicker\).*)"},
+    {"library_class", R"(/materials/floor/class: unknown material class "linoleum" \(known: "concrete", "fabric".*)"},
+    {"library_resolution", R"(/materials/clay/resolution: expected an integer in \[8, 8192\].*)"},
+    // Valid alone, yet beyond what single precision renders: refused with the reason.
+    {"tiny_lamp", R"(/lights/0: its area 2e-301 m\^2 .* is below the 1.17549e-38 single precision holds.*)"},
+    {"huge_power", R"(/lights/0: its intensity 7.95775e\+306 exceeds single precision's 3.40282e\+38.*)"},
+    {"far_lamp", R"(/lights/0: position at \(10000000, 0, 1\) lies beyond 65536 m of the origin.*)"},
+    {"far_object", R"(/objects/1: after its transform, vertex [0-9]+ at .* lies beyond 65536 m of the origin.*)"},
+    {"huge_scale", R"(/objects/0: after its transform, vertex [0-9]+ at .* lies beyond 65536 m of the origin.*)"},
+    {"sun_angle", R"(/lights/0/angle_deg: expected an angle in \[0, 179\] degrees.*)"},
+    {"tiny_radius",
+     R"(/lights/0: its disk's area 3.14159e-60 m\^2 \(radius 1e-30 m\) is below the 1.17549e-38 single precision holds.*)"},
+};
+
+// Reads and builds the scene; the message of the InputError either step throws, or none.
+std::string refusal_of(const std::string& path) {
+  try {
+    const matrender::SceneDescription description = matrender::read_scene_file(path);
+    matrender::build_scene(description);
+  } catch (const matbase::InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+// What std::regex reads literally.
+std::string escaped(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (std::string("\\^$.|?*+()[]{}").find(c) != std::string::npos) out += '\\';
+    out += c;
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("scene files are refused naming the file, the JSON pointer and the problem", "[render]") {
+  for (const Refusal& refusal : kRefusals) {
+    const std::string path = std::string(MATPREDICT_SCENE_FILES) + "/bad_" + refusal.file + ".json";
+    INFO(path);
+    CHECK_THAT(refusal_of(path), Catch::Matchers::Matches(escaped(path) + ": " + refusal.message));
+  }
+}
