@@ -81,7 +81,7 @@ int main(int argc, char** argv) {
 
     matgeom::ObjectAsset plain = matgeom::make_builtin_object("vase", 0);
     plain.images.clear();
-    for (matmaterial::MaterialDesc& slot : plain.materials) slot = matmaterial::MaterialDesc(slot.name);  // Blender's default
+    for (matmaterial::MaterialInputs& slot : plain.materials) slot = matmaterial::MaterialInputs(slot.name);  // Blender's default
     const double plain_seconds = render_seconds(plain, size, spp, repeats, threads);
 
     std::string header = fmt::format("{:<22}", "style");

@@ -86,7 +86,7 @@ matmaterial::FolderMaterial load_candidate(const MaterialCandidate& candidate, i
 }
 
 // The material with its images moved to the end of `images`, its image indices following them.
-matmaterial::MaterialDesc with_images_appended(matmaterial::FolderMaterial material,
+matmaterial::MaterialInputs with_images_appended(matmaterial::FolderMaterial material,
                                            std::vector<matbase::ImagePixels>& images) {
   const int offset = static_cast<int>(images.size());
   for (matmaterial::MaterialInput& input : material.material.inputs)
@@ -172,7 +172,7 @@ matgeom::ObjectAsset ObjectRenderer::variant_asset() const {
     const MaterialCandidate& candidate = object_.slots[s].candidates[variant_[s]];
     matmaterial::FolderMaterial loaded = load_candidate(candidate, config_.render.material_resolution);
     const std::optional<double> tile_size_m = loaded.tile_size_m;
-    const matmaterial::MaterialDesc material = with_images_appended(std::move(loaded), asset.images);
+    const matmaterial::MaterialInputs material = with_images_appended(std::move(loaded), asset.images);
     for (const uint32_t part : slot_parts_[s])
       asset.materials[part] = tile_size_m ? matgeom::with_texture_repeats(
                                                 material, matgeom::texture_repeats(asset.mesh, part, *tile_size_m))

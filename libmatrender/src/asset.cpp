@@ -35,7 +35,7 @@ class AssetTextures {
 
 // Every input of the parameter table carries over: its constant, and its image decoded in the
 // table's colour space; the normal map is Non-Color.
-Material material_with_textures(const matmaterial::MaterialDesc& desc, AssetTextures& textures) {
+Material material_with_textures(const matmaterial::MaterialInputs& desc, AssetTextures& textures) {
   Material m;
   m.name = desc.name;
   m.label_id = desc.label_id;
@@ -57,7 +57,7 @@ Material material_with_textures(const matmaterial::MaterialDesc& desc, AssetText
 
 }  // namespace
 
-Material material_from_desc(const matmaterial::MaterialDesc& desc, const std::vector<matbase::ImagePixels>& images) {
+Material material_from_desc(const matmaterial::MaterialInputs& desc, const std::vector<matbase::ImagePixels>& images) {
   AssetTextures textures(images);
   return material_with_textures(desc, textures);
 }

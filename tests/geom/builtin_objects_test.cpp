@@ -244,7 +244,7 @@ TEST_CASE("the vase is a closed, outward-facing, textured surface", "[geom]") {
     CHECK(band_triangles > 0);
     CHECK(band_triangles < static_cast<long>(mesh.triangle_count() / 4));
     REQUIRE(asset.materials.size() == 2);
-    const matmaterial::MaterialDesc& body = asset.materials[0];
+    const matmaterial::MaterialInputs& body = asset.materials[0];
     CHECK(body.scalar(P::Metallic) == 0.0);
     CHECK(body.normal_strength == 1.0);
     REQUIRE(asset.images.size() == 3);

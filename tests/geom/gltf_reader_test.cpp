@@ -344,7 +344,7 @@ TEST_CASE("glTF two-material quad: transforms, axes, uvs, parts, materials, imag
   }
 
   REQUIRE(asset.materials.size() == 2);
-  const matmaterial::MaterialDesc& red = asset.materials[0];
+  const matmaterial::MaterialInputs& red = asset.materials[0];
   CHECK(red.name == "red_metal");
   CHECK(red.color(P::BaseColor).r == Approx(0.8));
   CHECK(red.color(P::BaseColor).g == Approx(0.1));
@@ -369,7 +369,7 @@ TEST_CASE("glTF two-material quad: transforms, axes, uvs, parts, materials, imag
   // Without the sheen extension no velvet is added.
   CHECK(red.color(P::VelvetColor) == glm::dvec3(0.0));
   CHECK(red[P::VelvetColor].image == -1);
-  const matmaterial::MaterialDesc& blue = asset.materials[1];
+  const matmaterial::MaterialInputs& blue = asset.materials[1];
   CHECK(blue.name == "blue");
   CHECK(blue.color(P::BaseColor).b == Approx(0.9));
   CHECK(blue.scalar(P::Metallic) == 0.0);

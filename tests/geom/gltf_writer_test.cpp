@@ -44,7 +44,7 @@ ObjectAsset two_part_asset() {
   for (int k = 0; k < 16; ++k) rgba.data.push_back(static_cast<uint8_t>(255 - k * 13));
   asset.images = {rgb, rgba};
 
-  matmaterial::MaterialDesc wood;
+  matmaterial::MaterialInputs wood;
   wood.name = "wood";
   wood.set(P::BaseColor, glm::dvec3(0.5, 0.25, 0.125));
   wood.set_image(P::BaseColor, 0);
@@ -63,7 +63,7 @@ ObjectAsset two_part_asset() {
   // Glass where image 0's red says (KHR_materials_transmission).
   wood.set(P::Transmission, 0.5);
   wood.set_image(P::Transmission, 0, 0);
-  matmaterial::MaterialDesc brass;
+  matmaterial::MaterialInputs brass;
   brass.name = "brass handle";
   brass.set(P::BaseColor, glm::dvec3(1.0, 0.75, 0.25));
   brass.set(P::Metallic, 1.0);
@@ -109,8 +109,8 @@ void check_same_asset(const ObjectAsset& written, const ObjectAsset& read) {
 
   REQUIRE(read.materials.size() == written.materials.size());
   for (size_t k = 0; k < read.materials.size(); ++k) {
-    const matmaterial::MaterialDesc& a = written.materials[k];
-    const matmaterial::MaterialDesc& b = read.materials[k];
+    const matmaterial::MaterialInputs& a = written.materials[k];
+    const matmaterial::MaterialInputs& b = read.materials[k];
     CHECK(b.name == a.name);
     CHECK(b.color(P::BaseColor) == a.color(P::BaseColor));
     CHECK(b.scalar(P::Metallic) == a.scalar(P::Metallic));
@@ -205,7 +205,7 @@ TEST_CASE("write_gltf rejects what glTF cannot hold and leaves nothing behind", 
 namespace {
 
 // The value material input `p` of `desc` reads at texel (x, y) of its image, 0..255.
-int input_texel(const ObjectAsset& asset, const matmaterial::MaterialDesc& desc, P p, int x, int y) {
+int input_texel(const ObjectAsset& asset, const matmaterial::MaterialInputs& desc, P p, int x, int y) {
   const matmaterial::MaterialInput& input = desc[p];
   const matbase::ImagePixels& image = asset.images.at(static_cast<size_t>(input.image));
   return matbase::texel_channel(image, static_cast<size_t>(y) * static_cast<size_t>(image.width) + static_cast<size_t>(x),
@@ -219,11 +219,11 @@ TEST_CASE("write_gltf packs roughness and metallic from any images and channels 
   ObjectAsset asset = two_part_asset();
   // Roughness from a grey 2x2 image, metallic from the alpha of the 2x2 RGBA image (image 1).
   asset.images.push_back(matbase::ImagePixels{"rough.png", 2, 2, 1, {10, 60, 110, 160}});
-  matmaterial::MaterialDesc& brass = asset.materials[1];
+  matmaterial::MaterialInputs& brass = asset.materials[1];
   brass.set_image(P::Roughness, 2, 0).set_image(P::Metallic, 1, 3);
   write_gltf(asset, dir.file("packed.glb"));
   const ObjectAsset read = read_gltf(dir.file("packed.glb"));
-  const matmaterial::MaterialDesc& back = read.materials[1];
+  const matmaterial::MaterialInputs& back = read.materials[1];
   REQUIRE(back[P::Roughness].image >= 0);
   CHECK(back[P::Roughness].image == back[P::Metallic].image);
   CHECK(back.scalar(P::Roughness) == brass.scalar(P::Roughness));
@@ -239,7 +239,7 @@ TEST_CASE("write_gltf packs roughness and metallic from any images and channels 
   brass.set_image(P::Metallic, -1);
   write_gltf(asset, dir.file("roughness_only.glb"));
   const ObjectAsset roughness_only = read_gltf(dir.file("roughness_only.glb"));
-  const matmaterial::MaterialDesc& r = roughness_only.materials[1];
+  const matmaterial::MaterialInputs& r = roughness_only.materials[1];
   CHECK(input_texel(roughness_only, r, P::Roughness, 1, 1) == 160);
   CHECK(input_texel(roughness_only, r, P::Metallic, 1, 1) == 255);
   CHECK(r.scalar(P::Metallic) == brass.scalar(P::Metallic));

@@ -142,23 +142,23 @@ TEST_CASE("OBJ reader: quad, triangle, two materials, a group without one, split
   CHECK(mesh.part_names == std::vector<std::string>{"red", "blue", "default"});
   CHECK(mesh.triangle_parts == std::vector<uint32_t>{2, 0, 0, 1});
   REQUIRE(asset.materials.size() == 3);
-  const matmaterial::MaterialDesc& red = asset.materials[0];
+  const matmaterial::MaterialInputs& red = asset.materials[0];
   CHECK(red.name == "red");
   check_color(red.color(P::BaseColor), {0.8, 0.1, 0.1});
   CHECK(red.scalar(P::Roughness) == Approx(0.25));
   CHECK(red.scalar(P::Metallic) == Approx(0.75));
   CHECK(red.scalar(P::Specular) == 0.0);  // no Ks and no highlights (illum 2): Blender's Specular 0
-  const matmaterial::MaterialDesc& blue = asset.materials[1];
+  const matmaterial::MaterialInputs& blue = asset.materials[1];
   check_color(blue.color(P::BaseColor), {0.1, 0.2, 0.9});
   CHECK(blue.scalar(P::Roughness) == Approx(0.5));  // 1 - sqrt(250 / 1000)
   CHECK(blue.scalar(P::Metallic) == 0.0);
   CHECK(blue.scalar(P::Specular) == Approx(0.5));  // mean of Ks
-  const matmaterial::MaterialDesc& none = asset.materials[2];
+  const matmaterial::MaterialInputs& none = asset.materials[2];
   CHECK(none.name == "default");
   check_color(none.color(P::BaseColor), glm::dvec3(0.8));
   CHECK(none.scalar(P::Roughness) == 0.5);
   CHECK(none.scalar(P::Metallic) == 0.0);
-  for (const matmaterial::MaterialDesc& material : asset.materials) {
+  for (const matmaterial::MaterialInputs& material : asset.materials) {
     CHECK(material[P::BaseColor].image == -1);
     CHECK(material[P::Roughness].image == -1);
     CHECK(material.normal_image == -1);
@@ -212,7 +212,7 @@ TEST_CASE("OBJ reader maps MTL statements as Blender's importer does", "[geom]")
   const ObjectAsset asset = read_obj(dir.file("cases.obj"));
   REQUIRE(asset.materials.size() == cases.size());
   for (size_t k = 0; k < cases.size(); ++k) {
-    const matmaterial::MaterialDesc& material = asset.materials[k];
+    const matmaterial::MaterialInputs& material = asset.materials[k];
     INFO("material " << cases[k].name);
     CHECK(material.name == cases[k].name);
     check_color(material.color(P::BaseColor), cases[k].base_color);
@@ -240,7 +240,7 @@ TEST_CASE("OBJ reader maps Ni, d, Ke, Tf, Pc, Pcr and Ps as Blender 3.4's import
   // Ke beyond 1 (Blender: that colour at strength 1): the same radiance as colour x strength.
   check_color(asset.materials[2].color(P::Emission), {1.0, 0.5, 0.25});
   CHECK(asset.materials[2].scalar(P::EmissionStrength) == 4.0);
-  const matmaterial::MaterialDesc& lacquer = asset.materials[0];
+  const matmaterial::MaterialInputs& lacquer = asset.materials[0];
   CHECK(lacquer.scalar(P::Specular) == 1.0);
   CHECK(lacquer.scalar(P::Roughness) == Approx(0.5));
   CHECK(lacquer.scalar(P::Ior) == Approx(1.33));
@@ -251,7 +251,7 @@ TEST_CASE("OBJ reader maps Ni, d, Ke, Tf, Pc, Pcr and Ps as Blender 3.4's import
   CHECK(lacquer.scalar(P::ClearcoatRoughness) == Approx(0.2));
   CHECK(lacquer.scalar(P::Sheen) == Approx(0.7));
   CHECK(lacquer.scalar(P::Transmission) == 0.0);
-  const matmaterial::MaterialDesc& glass = asset.materials[1];
+  const matmaterial::MaterialInputs& glass = asset.materials[1];
   CHECK(glass.scalar(P::Metallic) == 1.0);
   CHECK(glass.scalar(P::Specular) == 0.0);
   CHECK(glass.scalar(P::Roughness) == 1.0);
@@ -273,7 +273,7 @@ TEST_CASE("OBJ reader reads map_Ke as the emission and map_d's alpha as the opac
   write_text(dir.file("maps.mtl"), "newmtl maps\nKe 0.5 0.5 0.5\nmap_Ke glow.png\nmap_d glow.png\n");
   const ObjectAsset asset = read_obj(dir.file("maps.obj"));
   REQUIRE(asset.images.size() == 1);  // decoded once for both
-  const matmaterial::MaterialDesc& maps = asset.materials[0];
+  const matmaterial::MaterialInputs& maps = asset.materials[0];
   CHECK(maps[P::Emission].image == 0);
   check_color(maps.color(P::Emission), glm::dvec3(1.0));  // the map replaces Ke
   CHECK(maps.scalar(P::EmissionStrength) == 1.0);
@@ -312,7 +312,7 @@ TEST_CASE("OBJ reader decodes map_Kd, packs map_Pr into G and reads map_Bump and
   CHECK(packed.data == std::vector<uint8_t>{0, 0, 255, 0, 64, 255, 0, 128, 255, 0, 255, 255});
   CHECK(asset.images[2].data == as_rgba(3, normal));
 
-  const matmaterial::MaterialDesc& textured = asset.materials[0];
+  const matmaterial::MaterialInputs& textured = asset.materials[0];
   // A map replaces its value in Blender: the base colour and roughness factors are 1.
   CHECK(textured[P::BaseColor].image == 0);
   check_color(textured.color(P::BaseColor), glm::dvec3(1.0));
@@ -322,7 +322,7 @@ TEST_CASE("OBJ reader decodes map_Kd, packs map_Pr into G and reads map_Bump and
   CHECK(textured.normal_image == 2);
   CHECK(textured.normal_strength == Approx(0.7));
   CHECK(textured.wrap == matmaterial::TextureWrap::Repeat);
-  const matmaterial::MaterialDesc& shares = asset.materials[1];
+  const matmaterial::MaterialInputs& shares = asset.materials[1];
   CHECK(shares[P::BaseColor].image == 0);  // the quotes are dropped, as Blender drops them
   CHECK(shares[P::Roughness].image == -1);
   CHECK(shares.normal_image == 2);
@@ -354,7 +354,7 @@ TEST_CASE("OBJ reader places every map by -o and -s as Blender's Mapping node do
              "newmtl plain\nmap_Kd t.png\nnorm -o -1 -2 -3 -s 3 3 3 t.png\n");
   const ObjectAsset asset = read_obj(dir.file("placed.obj"));
   REQUIRE(asset.images.size() == 2);  // t.png, and t.png packed as roughness and metallic
-  const matmaterial::MaterialDesc& placed = asset.materials[0];
+  const matmaterial::MaterialInputs& placed = asset.materials[0];
   // s (2, 3), o (0.25, 0.5): (0.1, 0.2) -> (0.2 + 0.25, 0.6 + 0.5).
   check_lookup(placed[P::BaseColor].transform, {0.1f, 0.2f}, {0.45f, 1.1f});
   check_lookup(placed[P::BaseColor].transform, {0.0f, 0.0f}, {0.25f, 0.5f});
@@ -372,7 +372,7 @@ TEST_CASE("OBJ reader places every map by -o and -s as Blender's Mapping node do
   check_lookup(placed.normal_transform, {0.1f, 0.2f}, {0.15f, 0.25f});
   check_lookup(placed.normal_transform, {1.0f, 1.0f}, {0.6f, 0.45f});
   CHECK(placed.normal_strength == 0.5);
-  const matmaterial::MaterialDesc& plain = asset.materials[1];
+  const matmaterial::MaterialInputs& plain = asset.materials[1];
   CHECK(plain[P::BaseColor].transform.is_identity());
   check_lookup(plain.normal_transform, {0.1f, 0.2f}, {-0.7f, -1.4f});
   check_lookup(plain.normal_transform, {1.0f, 1.0f}, {2.0f, 1.0f});
@@ -443,7 +443,7 @@ ObjectAsset round_trip_asset() {
   matbase::ImagePixels normal{"normal.png", 1, 1, 4, {128, 128, 255, 255}};
   asset.images = {base, metallic_roughness, normal};
 
-  matmaterial::MaterialDesc red = matmaterial::MaterialDesc("red_paint");
+  matmaterial::MaterialInputs red = matmaterial::MaterialInputs("red_paint");
   red.set_image(P::BaseColor, 0);
   red.set(P::BaseColor, glm::dvec3(1.0));
   red.set_metallic_roughness_image(1);
@@ -453,7 +453,7 @@ ObjectAsset round_trip_asset() {
   red.set(P::Roughness, 1.0);
   red.set(P::Metallic, 1.0);
   red.set(P::Specular, 0.25);
-  matmaterial::MaterialDesc blue = matmaterial::MaterialDesc("blue");
+  matmaterial::MaterialInputs blue = matmaterial::MaterialInputs("blue");
   blue.set(P::BaseColor, glm::dvec3(0.1, 0.2, 0.9));
   blue.set(P::Roughness, 0.8);
   blue.set(P::Metallic, 0.2);
@@ -512,8 +512,8 @@ TEST_CASE("OBJ written by write_obj reads back as the same asset", "[geom]") {
 
   REQUIRE(read.materials.size() == 2);
   for (size_t k = 0; k < 2; ++k) {
-    const matmaterial::MaterialDesc& expected = original.materials[k];
-    const matmaterial::MaterialDesc& actual = read.materials[k];
+    const matmaterial::MaterialInputs& expected = original.materials[k];
+    const matmaterial::MaterialInputs& actual = read.materials[k];
     INFO("material " << expected.name);
     CHECK(actual.name == expected.name);
     check_color(actual.color(P::BaseColor), expected.color(P::BaseColor));
@@ -546,8 +546,8 @@ TEST_CASE("write_obj makes names OBJ-safe and unique and refuses what it cannot 
   TempDir dir;
   ObjectAsset asset = round_trip_asset();
   asset.images.clear();
-  asset.materials[0] = matmaterial::MaterialDesc("two words\nand a line");
-  asset.materials[1] = matmaterial::MaterialDesc("two_words_and_a_line");
+  asset.materials[0] = matmaterial::MaterialInputs("two words\nand a line");
+  asset.materials[1] = matmaterial::MaterialInputs("two_words_and_a_line");
   asset.mesh.part_names = {"", "group one"};
   write_obj(asset, dir.file("names.obj"));
   const std::string obj = read_bytes(dir.file("names.obj"));

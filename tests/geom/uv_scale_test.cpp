@@ -41,11 +41,11 @@ TEST_CASE("A part's metres per UV unit is the square root of its area ratio", "[
 }
 
 TEST_CASE("with_texture_repeats scales the transforms of the images a material reads, only", "[geom]") {
-  matmaterial::MaterialDesc material;
+  matmaterial::MaterialInputs material;
   material.set_image(matmaterial::MaterialParameter::BaseColor, 0);
   material[matmaterial::MaterialParameter::BaseColor].transform.scale = {2.0, 3.0};
   material.normal_image = 1;
-  const matmaterial::MaterialDesc repeated = with_texture_repeats(material, 4.0);
+  const matmaterial::MaterialInputs repeated = with_texture_repeats(material, 4.0);
   CHECK(repeated[matmaterial::MaterialParameter::BaseColor].transform.scale == glm::dvec2(8.0, 12.0));
   CHECK(repeated.normal_transform.scale == glm::dvec2(4.0));
   CHECK(repeated[matmaterial::MaterialParameter::Roughness].transform.is_identity());  // a constant: nothing to repeat
@@ -55,7 +55,7 @@ TEST_CASE("Repeated maps stay anchored at the origin of our UVs, wherever glTF's
   // Not a whole number of repeats: a shift by whole tiles would hide under the wrap.
   const double k = 1.46;
   const auto lookup = [](const matmaterial::TextureTransform& t, glm::vec2 uv) { return matmaterial::uv_affine(t).apply(uv); };
-  matmaterial::MaterialDesc material;
+  matmaterial::MaterialInputs material;
   material.normal_image = 0;
   // Unplaced: the image repeats k times from (0, 0), so (u, v) reads the image at (k u, k v).
   const matmaterial::TextureTransform plain = with_texture_repeats(material, k).normal_transform;
@@ -79,7 +79,7 @@ TEST_CASE("Repeated maps stay anchored at the origin of our UVs, wherever glTF's
 TEST_CASE("assign_material_to_all_parts repeats a folder material's maps to size on every part", "[geom]") {
   ObjectAsset asset;
   asset.mesh = two_squares(2.0f, 1.0f);
-  asset.materials = {matmaterial::MaterialDesc("square"), matmaterial::MaterialDesc("collapsed")};
+  asset.materials = {matmaterial::MaterialInputs("square"), matmaterial::MaterialInputs("collapsed")};
   matmaterial::FolderMaterial folder;
   folder.material.set_image(matmaterial::MaterialParameter::Roughness, 0);
   folder.images.push_back(matbase::ImagePixels{"r", 1, 1, 1, {128}});

@@ -67,7 +67,7 @@ std::string read_error(const std::string& folder) {
 TEST_CASE("A written material folder reads back the same", "[geom]") {
   TempDir dir;
   FolderMaterial written;
-  written.material = matmaterial::MaterialDesc("lacquered_oak");
+  written.material = matmaterial::MaterialInputs("lacquered_oak");
   written.images = {
       rgba_image("base", 8, 8,
                  [](int x, int y) {
@@ -242,13 +242,13 @@ TEST_CASE("Each kind of broken material folder gets its own message", "[geom]") 
 TEST_CASE("write_material_folder refuses what a folder cannot hold and leaves nothing behind", "[geom]") {
   TempDir dir;
   FolderMaterial m;
-  m.material = matmaterial::MaterialDesc("coat");
+  m.material = matmaterial::MaterialInputs("coat");
   m.images = {grey_image("g", 4, 10)};
   m.material.set_image(P::Clearcoat, 0);
   const std::string folder = (dir.path() / "coat").string();
   CHECK_THROWS_WITH(matmaterial::write_material_folder(m, folder),
                     Contains("clearcoat comes from an image, and a material folder has no map for it"));
-  m.material = matmaterial::MaterialDesc("packed");
+  m.material = matmaterial::MaterialInputs("packed");
   m.material.set_image(P::Roughness, 0, 1);
   CHECK_THROWS_WITH(matmaterial::write_material_folder(m, folder), Contains("roughness reads image channel 1"));
   CHECK_FALSE(std::filesystem::exists(folder));

@@ -46,13 +46,13 @@ TEST_CASE("docs/scene_format.md and the README list the material parameters exac
 }
 
 TEST_CASE("An asset material starts at the table's defaults and takes images only where the table allows", "[geom]") {
-  const matmaterial::MaterialDesc desc("slot");
+  const matmaterial::MaterialInputs desc("slot");
   CHECK(desc.name == "slot");
   for (const matmaterial::MaterialParameterInfo& info : matmaterial::kMaterialParameters) {
     CAPTURE(info.name);
     CHECK(desc.color(info.id) == glm::dvec3(info.default_value));
     CHECK(desc[info.id].image == -1);
-    matmaterial::MaterialDesc textured;
+    matmaterial::MaterialInputs textured;
     if (info.texturable) {
       textured.set_image(info.id, 0, 3);
       CHECK(textured[info.id].image == 0);
@@ -61,7 +61,7 @@ TEST_CASE("An asset material starts at the table's defaults and takes images onl
       CHECK_THROWS_AS(textured.set_image(info.id, 0), std::invalid_argument);
     }
   }
-  matmaterial::MaterialDesc any;
+  matmaterial::MaterialInputs any;
   CHECK_THROWS_AS(any.set_image(matmaterial::MaterialParameter::Roughness, 0, 4), std::invalid_argument);
 }
 

@@ -21,7 +21,7 @@
 
 namespace {
 
-using matmaterial::MaterialDesc;
+using matmaterial::MaterialInputs;
 using P = matmaterial::MaterialParameter;
 
 // A quad of two triangles, one per part, with UVs.
@@ -39,7 +39,7 @@ matgeom::ObjectAsset two_material_quad() {
   asset.images = {rgb};
 
   // Constants everywhere the table and glTF allow, away from Blender's defaults.
-  MaterialDesc lacquer("lacquer");
+  MaterialInputs lacquer("lacquer");
   lacquer.set(P::BaseColor, glm::dvec3(0.5, 0.25, 0.125));
   lacquer.set(P::Metallic, 0.3);
   lacquer.set(P::Roughness, 0.6);
@@ -57,7 +57,7 @@ matgeom::ObjectAsset two_material_quad() {
   const auto placed = [](double k) {
     return matmaterial::TextureTransform{{0.1 * k, -0.2 + 0.05 * k}, 0.3 * k - 0.5, {1.0 + 0.5 * k, 2.0 - 0.25 * k}};
   };
-  MaterialDesc textured("textured");
+  MaterialInputs textured("textured");
   textured.set_image(P::BaseColor, 0);
   textured.set_image(P::Alpha, 0, 3);  // the base colour's alpha
   textured.set_metallic_roughness_image(0, placed(1));
@@ -116,7 +116,7 @@ TEST_CASE("Blender's glTF importer makes of our glTF files what read_gltf makes"
   const shaders_ref::BlenderMaterials blender = shaders_ref::import_gltf_with_blender(path, folder.string());
 
   REQUIRE(ours.materials.size() == 2);
-  for (const MaterialDesc& material : ours.materials) {
+  for (const MaterialInputs& material : ours.materials) {
     REQUIRE(blender.count(material.name) == 1);
     const shaders_ref::BlenderNodes& nodes = blender.at(material.name);
     // Both materials have a velvet: the importer must have added one to each.

@@ -44,7 +44,7 @@ TEST_CASE("Every built-in object renders with finite pixels", "[render]") {
   CHECK(coverage > 0.1);
   // Every label the object's materials carry shows up, and no other.
   std::set<int32_t> expected = {0}, seen;
-  for (const matmaterial::MaterialDesc& m : asset.materials) expected.insert(m.label_id);
+  for (const matmaterial::MaterialInputs& m : asset.materials) expected.insert(m.label_id);
   for (int32_t label : frame.label) seen.insert(label);
   CHECK(std::includes(expected.begin(), expected.end(), seen.begin(), seen.end()));
 }

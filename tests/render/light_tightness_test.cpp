@@ -88,7 +88,7 @@ matgeom::ObjectAsset through_obj_file(const matgeom::TriangleMesh& mesh, const s
   matgeom::ObjectAsset asset;
   asset.mesh = mesh;
   asset.mesh.part_names = {"surface"};
-  asset.materials = {matmaterial::MaterialDesc("surface")};
+  asset.materials = {matmaterial::MaterialInputs("surface")};
   const std::string path = (dir / (name + ".obj")).string();
   matgeom::write_object(asset, path);
   matgeom::ObjectAsset read = matgeom::read_object(path);

@@ -158,7 +158,7 @@ TEST_CASE("A folder's physical size sets how often its maps repeat on a part", "
   const std::filesystem::path mesh_file = root / "plane.ply";
   matgeom::ObjectAsset asset;
   asset.mesh = plane;
-  asset.materials = {matmaterial::MaterialDesc("plane")};
+  asset.materials = {matmaterial::MaterialInputs("plane")};
   matgeom::write_object(asset, mesh_file.string());
   std::ofstream(root / "scene.json") << R"({
     "camera": { "position": [0, 0, 3], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov_deg": 4.65, "width": 64, "height": 8 },
@@ -198,7 +198,7 @@ TEST_CASE("A material repeated for export reads its maps where the renderer's re
   for (const matmaterial::TextureTransform& placement :
        {matmaterial::TextureTransform{}, matmaterial::TextureTransform{{0.25, -0.5}, 0.75, {2.0, 3.0}}}) {
     for (const double k : {1.46093, 4.0, 0.3}) {
-      matmaterial::MaterialDesc desc("tiled");
+      matmaterial::MaterialInputs desc("tiled");
       desc.normal_image = 0;
       desc.normal_transform = placement;
       desc.set_image(MaterialParameter::BaseColor, 1);

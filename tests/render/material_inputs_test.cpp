@@ -77,7 +77,7 @@ TEST_CASE("An asset's image on any texturable parameter reaches the shading, in 
     matgeom::ObjectAsset asset;
     asset.mesh = test_scenes::horizontal_square(1.0);
     asset.images.push_back({"texel", 1, 1, 4, {texel.begin(), texel.end()}});
-    matmaterial::MaterialDesc desc;
+    matmaterial::MaterialInputs desc;
     desc.set(info.id, 0.5).set_image(info.id, 0, 3);
     asset.materials = {desc};
     Scene scene;
@@ -141,7 +141,7 @@ TEST_CASE("An asset's texture transform moves its image on the UVs, per input, p
   matgeom::ObjectAsset asset;
   asset.mesh = test_scenes::horizontal_square(1.0);
   asset.images.push_back({"ramp", 4, 1, 1, {ramp.begin(), ramp.end()}});
-  matmaterial::MaterialDesc desc;
+  matmaterial::MaterialInputs desc;
   const matmaterial::TextureTransform shifted{{0.25, 0.0}, 0.0, {1.0, 1.0}};
   desc.set(MaterialParameter::Roughness, 1.0).set_image(MaterialParameter::Roughness, 0, 0, shifted);
   desc.set(MaterialParameter::Metallic, 1.0).set_image(MaterialParameter::Metallic, 0, 0);

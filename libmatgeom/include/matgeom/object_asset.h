@@ -6,13 +6,13 @@
 
 #include "matbase/image/image_pixels.h"
 #include "matgeom/mesh.h"
-#include "matmaterial/material_description.h"
+#include "matmaterial/material_inputs.h"
 
 namespace matgeom {
 
 struct ObjectAsset {
   TriangleMesh mesh;                     // part k uses materials[k]
-  std::vector<matmaterial::MaterialDesc> materials;
+  std::vector<matmaterial::MaterialInputs> materials;
   std::vector<matbase::ImagePixels> images;
 };
 

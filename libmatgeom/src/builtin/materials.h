@@ -27,7 +27,7 @@ constexpr int kBuiltinTextureSize = 256;
 constexpr int kBuiltinTileResolution = 1024;
 
 struct BuiltinMaterial {
-  matmaterial::MaterialDesc material;  // named after its slot; its images appended to the asset's
+  matmaterial::MaterialInputs material;  // named after its slot; its images appended to the asset's
   double tile_size_m = 1.0;  // how long one repeat of its maps is (the UV pass's UVs scale them)
 };
 

@@ -18,7 +18,7 @@ uint32_t ObjectBuilder::add_part(const std::string& name, Finish finish) {
   return static_cast<uint32_t>(asset_.mesh.part_names.size() - 1);
 }
 
-uint32_t ObjectBuilder::add_part(const std::string& name, const matmaterial::MaterialDesc& material) {
+uint32_t ObjectBuilder::add_part(const std::string& name, const matmaterial::MaterialInputs& material) {
   asset_.mesh.part_names.push_back(name);
   asset_.materials.push_back(material);
   return static_cast<uint32_t>(asset_.mesh.part_names.size() - 1);

@@ -23,7 +23,7 @@ class ObjectBuilder {
   // A new part (material slot) named `name` with a material of `finish`; returns its id.
   uint32_t add_part(const std::string& name, Finish finish);
   // A new part with a material of its own (images it names come from add_image); returns its id.
-  uint32_t add_part(const std::string& name, const matmaterial::MaterialDesc& material);
+  uint32_t add_part(const std::string& name, const matmaterial::MaterialInputs& material);
   // An image for materials to name; returns its index.
   int add_image(matbase::ImagePixels image);
 

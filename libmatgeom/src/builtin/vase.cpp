@@ -293,7 +293,7 @@ ObjectAsset make_vase(uint32_t seed) {
   const int glaze_normals = builder.add_image(glaze_normal_map(texture_salt));
 
   using P = matmaterial::MaterialParameter;
-  matmaterial::MaterialDesc body("body");
+  matmaterial::MaterialInputs body("body");
   body.set(P::BaseColor, 1.0).set_image(P::BaseColor, glaze_color);  // factor x texture, as in glTF
   body.set(P::Roughness, 1.0);  // factor x texture.G in [0.2, 0.5]
   body.set(P::Metallic, 0.0);   // factor x texture.B, both 0
@@ -303,7 +303,7 @@ ObjectAsset make_vase(uint32_t seed) {
   body.label_id = matmaterial::label_id(matmaterial::MaterialClass::Ceramic);
   const uint32_t body_part = builder.add_part("body", body);
 
-  matmaterial::MaterialDesc band("glaze_band");
+  matmaterial::MaterialInputs band("glaze_band");
   band.set(P::BaseColor, glm::dvec3(matbase::srgb_to_linear(palette.band.r), matbase::srgb_to_linear(palette.band.g),
                                     matbase::srgb_to_linear(palette.band.b)));
   band.set(P::Metallic, 0.0).set(P::Roughness, 0.12);

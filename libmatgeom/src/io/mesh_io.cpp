@@ -34,7 +34,7 @@ ObjectAsset read_object(const std::string& path) {
   asset.mesh = read_ply(path);
   for (uint32_t part = 0; part < asset.mesh.part_count(); ++part)
     asset.materials.push_back(
-        matmaterial::MaterialDesc(part < asset.mesh.part_names.size() ? asset.mesh.part_names[part] : "default"));
+        matmaterial::MaterialInputs(part < asset.mesh.part_names.size() ? asset.mesh.part_names[part] : "default"));
   return asset;
 }
 

@@ -39,8 +39,8 @@ double texture_repeats(const TriangleMesh& mesh, uint32_t part, double tile_size
   return metres && tile_size_m > 0.0 ? *metres / tile_size_m : 1.0;
 }
 
-matmaterial::MaterialDesc with_texture_repeats(const matmaterial::MaterialDesc& material, double repeats) {
-  matmaterial::MaterialDesc result = material;
+matmaterial::MaterialInputs with_texture_repeats(const matmaterial::MaterialInputs& material, double repeats) {
+  matmaterial::MaterialInputs result = material;
   for (matmaterial::MaterialInput& input : result.inputs)
     if (input.image >= 0) input.transform = repeated(input.transform, repeats);
   if (result.normal_image >= 0) result.normal_transform = repeated(result.normal_transform, repeats);

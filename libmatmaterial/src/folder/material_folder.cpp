@@ -252,7 +252,7 @@ FolderMaterial read_material_folder(const std::string& folder_name, const Materi
   FolderMaterial result;
   const std::string name = folder.filename().empty() ? folder.parent_path().filename().string()
                                                      : folder.filename().string();
-  result.material = MaterialDesc(name);
+  result.material = MaterialInputs(name);
   result.material_class = metadata.material_class ? metadata.material_class : material_class_of_folder(name);
   result.material.label_id = result.material_class ? label_id(*result.material_class) : 0;
   result.tile_size_m = metadata.tile_size_m;
@@ -304,7 +304,7 @@ FolderMaterial read_material_folder(const std::string& folder_name, const Materi
 
 void write_material_folder(const FolderMaterial& material, const std::string& folder_name) {
   const fs::path folder(folder_name);
-  const MaterialDesc& desc = material.material;
+  const MaterialInputs& desc = material.material;
   matbase::AtomicFileSet files(folder / kMetadataFile);
   json parameters = json::object();
   const auto write_map = [&](const FolderMapInfo& info, int image) {

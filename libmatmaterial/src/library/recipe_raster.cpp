@@ -98,7 +98,7 @@ FolderMaterial rasterise_recipe(const Recipe& recipe, const std::string& name, M
       if (!row[m].uniform || row[m].value != uniformity[m].value) uniformity[m].uniform = false;
 
   FolderMaterial result;
-  result.material = MaterialDesc(name);
+  result.material = MaterialInputs(name);
   result.material_class = material_class;
   result.material.label_id = label_id(material_class);
   result.tile_size_m = tile_size_m;

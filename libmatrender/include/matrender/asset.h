@@ -21,6 +21,6 @@ std::vector<uint32_t> add_asset(Scene& scene, const matgeom::ObjectAsset& asset,
 
 // One material of matgeom's, its image indices into `images` (a material folder's, an asset's),
 // as add_asset makes it: each input a constant or its image in the table's colour space.
-Material material_from_desc(const matmaterial::MaterialDesc& desc, const std::vector<matbase::ImagePixels>& images);
+Material material_from_desc(const matmaterial::MaterialInputs& desc, const std::vector<matbase::ImagePixels>& images);
 
 }  // namespace matrender

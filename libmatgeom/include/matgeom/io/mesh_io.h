@@ -12,7 +12,7 @@ namespace matgeom {
 const std::vector<std::string>& object_file_extensions();
 
 // Reads the file with the reader of its format. PLY has no materials: each part gets
-// MaterialDesc(part name), Blender's defaults. Throws std::runtime_error starting with the path.
+// MaterialInputs(part name), Blender's defaults. Throws std::runtime_error starting with the path.
 ObjectAsset read_object(const std::string& path);
 
 // Writes the asset in the format of the extension (PLY keeps the mesh and part names only).

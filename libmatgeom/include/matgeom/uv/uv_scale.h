@@ -26,7 +26,7 @@ double texture_repeats(const TriangleMesh& mesh, uint32_t part, double tile_size
 // T(repeats uv), scaled about the origin of our (Blender's, v-up) UVs as a Blender Mapping node's
 // Scale does and as matrender::with_texture_repeats repeats it. In glTF's terms (v down) that is
 // about (0, 1), so the transform's offset moves too.
-matmaterial::MaterialDesc with_texture_repeats(const matmaterial::MaterialDesc& material, double repeats);
+matmaterial::MaterialInputs with_texture_repeats(const matmaterial::MaterialInputs& material, double repeats);
 
 // Puts every part of `asset` in `material` (its images replace the asset's; the parts keep their
 // names), its maps repeated to their physical size on each part's UVs when it has one.

@@ -725,7 +725,7 @@ struct TextureRef {
   matmaterial::TextureTransform transform;  // KHR_texture_transform's
 };
 
-// MaterialDesc has one wrap mode. Blender 3.4's Image Texture offers REPEAT and EXTEND per image
+// MaterialInputs has one wrap mode. Blender 3.4's Image Texture offers REPEAT and EXTEND per image
 // (its importer emulates mirrored and mixed modes with extra nodes); here a texture clamps only
 // when both axes say CLAMP_TO_EDGE, and MIRRORED_REPEAT is approximated by REPEAT.
 matmaterial::TextureWrap sampler_wrap(const GltfFile& file, int sampler_index, const std::string& what) {
@@ -839,7 +839,7 @@ TextureRef extension_texture(const GltfFile& file, ImageTable& images, const tin
 // `p`; the factor is glTF's default 0 when absent.
 void read_extension_input(const GltfFile& file, ImageTable& images, const tinygltf::Value& extension,
                           const char* factor_member, const char* texture_member, int channel, matmaterial::MaterialParameter p,
-                          matmaterial::MaterialDesc& desc, const std::string& where) {
+                          matmaterial::MaterialInputs& desc, const std::string& where) {
   const double factor = extension_number(file, extension, factor_member, where).value_or(0.0);
   desc.set(p, checked_factor(file, p, factor, matbase::concat(where, " ", factor_member)));
   const TextureRef texture = extension_texture(file, images, extension, texture_member, where);
@@ -849,8 +849,8 @@ void read_extension_input(const GltfFile& file, ImageTable& images, const tinygl
 // KHR_materials_clearcoat as Blender 3.4's importer wires it: Clearcoat = clearcoatFactor x
 // clearcoatTexture.R, Clearcoat Roughness = clearcoatRoughnessFactor x clearcoatRoughnessTexture.G,
 // both factors 0 when absent (so a coat without a roughness is a mirror, not Blender's default
-// 0.03). clearcoatNormalTexture has no MaterialDesc input yet: the coat keeps the smooth normal.
-void read_clearcoat(const GltfFile& file, ImageTable& images, const tinygltf::Value& extension, matmaterial::MaterialDesc& desc,
+// 0.03). clearcoatNormalTexture has no MaterialInputs input yet: the coat keeps the smooth normal.
+void read_clearcoat(const GltfFile& file, ImageTable& images, const tinygltf::Value& extension, matmaterial::MaterialInputs& desc,
                     const std::string& what) {
   const std::string where = matbase::concat(what, " ", gltf::kClearcoat);
   read_extension_input(file, images, extension, "clearcoatFactor", "clearcoatTexture", gltf::kClearcoatChannel,
@@ -863,7 +863,7 @@ void read_clearcoat(const GltfFile& file, ImageTable& images, const tinygltf::Va
 // a Velvet BSDF added to the Principled BSDF, Color = sheenColorFactor x sheenColorTexture.RGB,
 // Sigma = sheenRoughnessFactor x sheenRoughnessTexture.A, both factors 0 when absent. Present
 // with a black colour, the extension adds a velvet that reflects nothing.
-void read_sheen(const GltfFile& file, ImageTable& images, const tinygltf::Value& extension, matmaterial::MaterialDesc& desc,
+void read_sheen(const GltfFile& file, ImageTable& images, const tinygltf::Value& extension, matmaterial::MaterialInputs& desc,
                 const std::string& what) {
   const std::string where = matbase::concat(what, " ", gltf::kSheen);
   glm::dvec3 colour(0.0);
@@ -887,7 +887,7 @@ void read_sheen(const GltfFile& file, ImageTable& images, const tinygltf::Value&
 
 // KHR_materials_transmission as Blender 3.4's importer wires it: Transmission =
 // transmissionFactor x transmissionTexture.R; a factor of 0 (the default) leaves the texture out.
-void read_transmission(const GltfFile& file, ImageTable& images, const tinygltf::Value& extension, matmaterial::MaterialDesc& desc,
+void read_transmission(const GltfFile& file, ImageTable& images, const tinygltf::Value& extension, matmaterial::MaterialInputs& desc,
                        const std::string& what) {
   const std::string where = matbase::concat(what, " ", gltf::kTransmission);
   read_extension_input(file, images, extension, "transmissionFactor", "transmissionTexture",
@@ -902,14 +902,14 @@ void read_transmission(const GltfFile& file, ImageTable& images, const tinygltf:
 // KHR_materials_clearcoat (read_clearcoat), KHR_materials_transmission (read_transmission),
 // KHR_materials_sheen (read_sheen);
 // alphaMode BLEND or MASK: Alpha = baseColorFactor[3] x baseColorTexture.A; specular and
-// specular tint keep Blender's defaults. Occlusion has no MaterialDesc input.
-matmaterial::MaterialDesc convert_material(const GltfFile& file, ImageTable& images, size_t index) {
+// specular tint keep Blender's defaults. Occlusion has no MaterialInputs input.
+matmaterial::MaterialInputs convert_material(const GltfFile& file, ImageTable& images, size_t index) {
   const tinygltf::Material& material = file.model.materials[index];
   const tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
   const std::string what = matbase::concat("material ", index);
 
   using P = matmaterial::MaterialParameter;
-  matmaterial::MaterialDesc desc(material.name.empty() ? matbase::concat("material", index) : material.name);
+  matmaterial::MaterialInputs desc(material.name.empty() ? matbase::concat("material", index) : material.name);
   if (pbr.baseColorFactor.size() != 4) matbase::fail(file.path, what + ": baseColorFactor needs 4 numbers");
   glm::dvec3 base_color;
   for (int c = 0; c < 3; ++c) {
@@ -1045,7 +1045,7 @@ ObjectAsset read_gltf(const std::string& path) {
   for (const auto& [material, part] : part_of_material) {
     asset.materials[part] = material >= 0
                                 ? convert_material(file, images, static_cast<size_t>(material))
-                                : matmaterial::MaterialDesc("default");  // Blender renders them with its default surface
+                                : matmaterial::MaterialInputs("default");  // Blender renders them with its default surface
     asset.mesh.part_names[part] = asset.materials[part].name;
   }
   asset.images = images.take_images();

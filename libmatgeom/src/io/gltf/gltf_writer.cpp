@@ -118,7 +118,7 @@ class TextureTable {
 
   // The texture for glTF's metallicRoughnessTexture (-1 for none); an image packed for it is
   // added once per distinct pair of inputs.
-  int metallic_roughness_texture(const matmaterial::MaterialDesc& desc, const std::string& what) {
+  int metallic_roughness_texture(const matmaterial::MaterialInputs& desc, const std::string& what) {
     const matmaterial::MaterialInput& roughness = desc[matmaterial::MaterialParameter::Roughness];
     const matmaterial::MaterialInput& metallic = desc[matmaterial::MaterialParameter::Metallic];
     const auto key = std::make_tuple(roughness.image, roughness.channel, metallic.image, metallic.channel);
@@ -211,7 +211,7 @@ class TextureTable {
 
 // The one transform of inputs glTF reads through one textureInfo (metallic and roughness, base
 // colour and its alpha); they cannot differ there.
-matmaterial::TextureTransform shared_transform(const matmaterial::MaterialDesc& desc, std::initializer_list<matmaterial::MaterialParameter> inputs,
+matmaterial::TextureTransform shared_transform(const matmaterial::MaterialInputs& desc, std::initializer_list<matmaterial::MaterialParameter> inputs,
                                   const std::string& what) {
   const matmaterial::MaterialInput* first = nullptr;
   for (const matmaterial::MaterialParameter p : inputs) {
@@ -228,7 +228,7 @@ matmaterial::TextureTransform shared_transform(const matmaterial::MaterialDesc& 
 
 // A textureInfo object for image `image` of a scalar that glTF reads from `channel`; the
 // writer does not repack single-channel inputs, so another channel is an error.
-tinygltf::Value::Object texture_info(const matmaterial::MaterialDesc& desc, matmaterial::MaterialParameter p, int channel, TextureTable& textures,
+tinygltf::Value::Object texture_info(const matmaterial::MaterialInputs& desc, matmaterial::MaterialParameter p, int channel, TextureTable& textures,
                                      const std::string& what) {
   const matmaterial::MaterialInput& input = desc[p];
   if (input.channel != channel)
@@ -245,7 +245,7 @@ tinygltf::Value::Object texture_info(const matmaterial::MaterialDesc& desc, matm
 
 // An input as factor x one channel of a texture into `extension`, the inverse of read_gltf's
 // read_extension_input.
-void write_extension_input(const matmaterial::MaterialDesc& desc, matmaterial::MaterialParameter p, const char* factor_member,
+void write_extension_input(const matmaterial::MaterialInputs& desc, matmaterial::MaterialParameter p, const char* factor_member,
                            const char* texture_member, int channel, TextureTable& textures, const std::string& what,
                            tinygltf::Value::Object& extension) {
   extension[factor_member] = tinygltf::Value(desc.scalar(p));
@@ -254,7 +254,7 @@ void write_extension_input(const matmaterial::MaterialDesc& desc, matmaterial::M
 }
 
 // KHR_materials_clearcoat, the inverse of read_gltf's read_clearcoat.
-tinygltf::Value::Object clearcoat_extension(const matmaterial::MaterialDesc& desc, TextureTable& textures, const std::string& what) {
+tinygltf::Value::Object clearcoat_extension(const matmaterial::MaterialInputs& desc, TextureTable& textures, const std::string& what) {
   tinygltf::Value::Object extension;
   write_extension_input(desc, matmaterial::MaterialParameter::Clearcoat, "clearcoatFactor", "clearcoatTexture",
                         gltf::kClearcoatChannel, textures, what, extension);
@@ -264,7 +264,7 @@ tinygltf::Value::Object clearcoat_extension(const matmaterial::MaterialDesc& des
 }
 
 // KHR_materials_transmission, the inverse of read_gltf's read_transmission.
-tinygltf::Value::Object transmission_extension(const matmaterial::MaterialDesc& desc, TextureTable& textures,
+tinygltf::Value::Object transmission_extension(const matmaterial::MaterialInputs& desc, TextureTable& textures,
                                                const std::string& what) {
   tinygltf::Value::Object extension;
   write_extension_input(desc, matmaterial::MaterialParameter::Transmission, "transmissionFactor", "transmissionTexture",
@@ -273,7 +273,7 @@ tinygltf::Value::Object transmission_extension(const matmaterial::MaterialDesc& 
 }
 
 // KHR_materials_sheen, the inverse of read_gltf's read_sheen.
-tinygltf::Value::Object sheen_extension(const matmaterial::MaterialDesc& desc, TextureTable& textures, const std::string& what) {
+tinygltf::Value::Object sheen_extension(const matmaterial::MaterialInputs& desc, TextureTable& textures, const std::string& what) {
   using P = matmaterial::MaterialParameter;
   tinygltf::Value::Object extension;
   const glm::dvec3 colour = desc.color(P::VelvetColor);
@@ -288,7 +288,7 @@ tinygltf::Value::Object sheen_extension(const matmaterial::MaterialDesc& desc, T
 
 // Opacity below 1 as alphaMode BLEND: its constant in baseColorFactor[3], its image (if any)
 // the base colour texture's alpha, the only place glTF keeps it.
-void write_opacity(const matmaterial::MaterialDesc& desc, const std::string& what, tinygltf::Material& material) {
+void write_opacity(const matmaterial::MaterialInputs& desc, const std::string& what, tinygltf::Material& material) {
   using P = matmaterial::MaterialParameter;
   const matmaterial::MaterialInput& opacity = desc[P::Alpha];
   if (opacity.image < 0 && opacity.value.x == 1.0) return;
@@ -302,7 +302,7 @@ void write_opacity(const matmaterial::MaterialDesc& desc, const std::string& wha
 }
 
 // The inverse of read_gltf's mapping (docs/conventions.md: Blender's glTF importer).
-tinygltf::Material make_material(const matmaterial::MaterialDesc& desc, TextureTable& textures) {
+tinygltf::Material make_material(const matmaterial::MaterialInputs& desc, TextureTable& textures) {
   tinygltf::Material material;
   material.name = desc.name;
   tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
@@ -357,7 +357,7 @@ tinygltf::Model make_model(const ObjectAsset& asset) {
   model.asset.generator = "matpredict";
   model.buffers.resize(1);
   TextureTable textures(model, asset.images);
-  for (const matmaterial::MaterialDesc& desc : asset.materials) model.materials.push_back(make_material(desc, textures));
+  for (const matmaterial::MaterialInputs& desc : asset.materials) model.materials.push_back(make_material(desc, textures));
   if (textures.transforms_placed()) model.extensionsUsed.push_back(gltf::kTextureTransform);
   for (const char* extension :
        {gltf::kEmissiveStrength, gltf::kIor, gltf::kClearcoat, gltf::kTransmission, gltf::kSheen})

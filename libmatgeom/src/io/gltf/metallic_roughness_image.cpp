@@ -46,7 +46,7 @@ uint8_t nearest(const matbase::ImagePixels& source, int channel, int x, int y, i
 
 }  // namespace
 
-MetallicRoughnessImage metallic_roughness_image(const matmaterial::MaterialDesc& material, const std::vector<matbase::ImagePixels>& images,
+MetallicRoughnessImage metallic_roughness_image(const matmaterial::MaterialInputs& material, const std::vector<matbase::ImagePixels>& images,
                                                 const std::string& what) {
   const matmaterial::MaterialInput& roughness = material[P::Roughness];
   const matmaterial::MaterialInput& metallic = material[P::Metallic];

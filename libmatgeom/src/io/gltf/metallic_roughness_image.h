@@ -1,6 +1,6 @@
 #pragma once
 // glTF keeps roughness and metallic in one image: roughness = roughnessFactor x G, metallic =
-// metallicFactor x B (glTF 2.0, 3.9.2). A MaterialDesc may read them from any channel of any
+// metallicFactor x B (glTF 2.0, 3.9.2). A MaterialInputs may read them from any channel of any
 // image; this finds or makes the one image glTF needs.
 #include <optional>
 #include <string>
@@ -20,7 +20,7 @@ struct MetallicRoughnessImage {
 // Otherwise G and B are copied from the inputs' channels (nearest texel where the two images
 // differ in size, at the larger size) and a constant's channel is 255. `what` names the material
 // in errors (an image index out of range, a channel the image lacks).
-MetallicRoughnessImage metallic_roughness_image(const matmaterial::MaterialDesc& material, const std::vector<matbase::ImagePixels>& images,
+MetallicRoughnessImage metallic_roughness_image(const matmaterial::MaterialInputs& material, const std::vector<matbase::ImagePixels>& images,
                                                 const std::string& what);
 
 }  // namespace matgeom::gltf

@@ -58,12 +58,12 @@ class MaterialConverter {
   MaterialConverter(const ObjFile& file, TextureTable& textures)
       : file_(file), textures_(textures) {}
 
-  matmaterial::MaterialDesc convert(size_t index) const {
+  matmaterial::MaterialInputs convert(size_t index) const {
     const tinyobj::material_t& material = file_.materials[index];
     const std::string what =
         matbase::concat(file_.material_libraries[index], ": material ", matbase::excerpt(material.name));
     check_finite_values(material, what);
-    matmaterial::MaterialDesc desc(material.name);
+    matmaterial::MaterialInputs desc(material.name);
     set_scalars(material, desc);
     set_textures(material, index, what, desc);
     return desc;
@@ -88,10 +88,10 @@ class MaterialConverter {
   }
 
   // The -1 "not given" markers come from kNotGivenMarkers (obj_text_screening.cpp).
-  static void set_scalars(const tinyobj::material_t& material, matmaterial::MaterialDesc& desc) {
+  static void set_scalars(const tinyobj::material_t& material, matmaterial::MaterialInputs& desc) {
     using P = matmaterial::MaterialParameter;
     const IllumFlags illum = illum_flags(material.illum);
-    // Base colour: Kd when given; otherwise Principled's default grey, which MaterialDesc
+    // Base colour: Kd when given; otherwise Principled's default grey, which MaterialInputs
     // already holds.
     const glm::dvec3 kd(material.diffuse[0], material.diffuse[1], material.diffuse[2]);
     if (given3(material.diffuse)) {
@@ -146,7 +146,7 @@ class MaterialConverter {
   // A connected Image Texture replaces the socket value in Blender, so an input with a map has
   // factor 1 (for metallic-roughness only the mapped channel has, see TextureTable).
   void set_textures(const tinyobj::material_t& material, size_t index, const std::string& what,
-                    matmaterial::MaterialDesc& desc) const {
+                    matmaterial::MaterialInputs& desc) const {
     if (!material.diffuse_texname.empty()) {
       const TextureSource kd = source(material.diffuse_texname, index, what + " map_Kd");
       desc.set_image(matmaterial::MaterialParameter::BaseColor, textures_.color_texture(kd), 0, placement(material.diffuse_texopt, kd));
@@ -169,7 +169,7 @@ class MaterialConverter {
   }
 
   void set_metallic_roughness_texture(const tinyobj::material_t& material, size_t index,
-                                      const std::string& what, matmaterial::MaterialDesc& desc) const {
+                                      const std::string& what, matmaterial::MaterialInputs& desc) const {
     const bool has_roughness = !material.roughness_texname.empty();
     const bool has_metallic = !material.metallic_texname.empty();
     if (!has_roughness && !has_metallic) return;
@@ -192,7 +192,7 @@ class MaterialConverter {
   // (tinyobjloader's) is kept instead. A negative -bm, which would hide the map, is refused
   // (mtl_text_screening.cpp).
   void set_normal_texture(const tinyobj::material_t& material, size_t index,
-                          const std::string& what, matmaterial::MaterialDesc& desc) const {
+                          const std::string& what, matmaterial::MaterialInputs& desc) const {
     const bool bump = !material.bump_texname.empty();
     if (!bump && material.normal_texname.empty()) return;
     const TextureSource normal = bump ? source(material.bump_texname, index, what + " map_Bump")
@@ -234,17 +234,17 @@ class MaterialConverter {
 // ---------------------------------------------------------------------------------------------
 // Assembly of the asset
 
-std::vector<matmaterial::MaterialDesc> part_materials(const ObjFile& file, const PartTable& parts,
+std::vector<matmaterial::MaterialInputs> part_materials(const ObjFile& file, const PartTable& parts,
                                          std::vector<matbase::ImagePixels>& images) {
   TextureTable textures(file.path);
   const MaterialConverter converter(file, textures);
-  std::map<int, matmaterial::MaterialDesc> converted;
-  std::vector<matmaterial::MaterialDesc> materials;
+  std::map<int, matmaterial::MaterialInputs> converted;
+  std::vector<matmaterial::MaterialInputs> materials;
   for (const int material : parts.materials) {
     auto found = converted.find(material);
     if (found == converted.end()) {
-      const matmaterial::MaterialDesc desc =
-          material < 0 ? matmaterial::MaterialDesc("default") : converter.convert(static_cast<size_t>(material));
+      const matmaterial::MaterialInputs desc =
+          material < 0 ? matmaterial::MaterialInputs("default") : converter.convert(static_cast<size_t>(material));
       found = converted.emplace(material, desc).first;
     }
     materials.push_back(found->second);

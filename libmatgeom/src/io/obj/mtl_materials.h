@@ -1,5 +1,5 @@
 #pragma once
-// MTL materials to MaterialDesc: the Principled BSDF Blender's OBJ importer builds from each
+// MTL materials to MaterialInputs: the Principled BSDF Blender's OBJ importer builds from each
 // material the parts use, with its textures.
 #include <vector>
 
@@ -9,8 +9,8 @@
 
 namespace matgeom::obj {
 
-// Every part's MaterialDesc, each file material converted once.
-std::vector<matmaterial::MaterialDesc> part_materials(const ObjFile& file, const PartTable& parts,
+// Every part's MaterialInputs, each file material converted once.
+std::vector<matmaterial::MaterialInputs> part_materials(const ObjFile& file, const PartTable& parts,
                                          std::vector<matbase::ImagePixels>& images);
 
 }  // namespace matgeom::obj

@@ -1,5 +1,5 @@
 #pragma once
-// A map's placement as MTL writes it (-o and -s) and as MaterialDesc holds it (a TextureTransform).
+// A map's placement as MTL writes it (-o and -s) and as MaterialInputs holds it (a TextureTransform).
 // Blender 3.4's importer (io/wavefront_obj/importer/obj_import_mtl.cc) puts a Mapping node of type
 // Point between the UVs and the Image Texture, Location = -o and Scale = -s: out = Location +
 // Scale x in, so the image is looked up at uv' = s uv + o on OBJ's UVs, which are ours (v up).

@@ -71,7 +71,7 @@ void write_obj(const ObjectAsset& asset, const std::string& path) {
   std::vector<obj::NamedMaterial> materials;
   std::vector<std::string> groups;
   for (uint32_t part = 0; part < mesh.part_count(); ++part) {
-    const matmaterial::MaterialDesc& desc = asset.materials[part];
+    const matmaterial::MaterialInputs& desc = asset.materials[part];
     materials.push_back({material_names.claim(obj::obj_safe_name(desc.name, "material")), &desc,
                          images.maps_of(desc)});
     // Groups take the part's name, or else its material's.

@@ -31,7 +31,7 @@ std::string triple(const glm::dvec3& v) {
 // Blender's +Z up to OBJ's +Y up, the inverse of obj_to_blender (obj_parts.cpp).
 glm::dvec3 blender_to_obj(const glm::vec3& v) { return {v.x, v.z, -v.y}; }
 
-void check_image(const ObjectAsset& asset, int image, const matmaterial::MaterialDesc& material) {
+void check_image(const ObjectAsset& asset, int image, const matmaterial::MaterialInputs& material) {
   if (image < 0) return;
   if (static_cast<size_t>(image) >= asset.images.size()) {
     throw std::invalid_argument(matbase::concat("write_obj: material '", material.name, "' refers to image ",
@@ -46,7 +46,7 @@ void check_image(const ObjectAsset& asset, int image, const matmaterial::Materia
 
 // The maps mtl_text writes must be placed as -o and -s can say (mtl_placement.h), and as read_obj
 // reads them back: without rotation, by numbers a float holds, at a scale other than 0.
-void check_placement(const matmaterial::TextureTransform& transform, const matmaterial::MaterialDesc& material, const char* map) {
+void check_placement(const matmaterial::TextureTransform& transform, const matmaterial::MaterialInputs& material, const char* map) {
   const std::optional<MtlPlacement> placed = mtl_placement(transform);
   if (!placed) {
     throw std::invalid_argument(matbase::concat("write_obj: material '", material.name, "' rotates its ", map,
@@ -125,7 +125,7 @@ void check_writable(const ObjectAsset& asset) {
     throw std::invalid_argument(matbase::concat("write_obj: ", asset.mesh.part_count(), " parts but ",
                                        asset.materials.size(), " materials"));
   }
-  for (const matmaterial::MaterialDesc& material : asset.materials) {
+  for (const matmaterial::MaterialInputs& material : asset.materials) {
     std::vector<double> values = {material.normal_strength};
     for (const matmaterial::MaterialInput& input : material.inputs) values.insert(values.end(), {input.value.r, input.value.g, input.value.b});
     if (!std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); })) {
@@ -149,7 +149,7 @@ void check_writable(const ObjectAsset& asset) {
   }
 }
 
-MaterialMaps ImageFiles::maps_of(const matmaterial::MaterialDesc& material) {
+MaterialMaps ImageFiles::maps_of(const matmaterial::MaterialInputs& material) {
   using P = matmaterial::MaterialParameter;
   MaterialMaps maps;
   if (material[P::BaseColor].image >= 0) maps.base_color = image_file(material[P::BaseColor].image);
@@ -181,7 +181,7 @@ std::string ImageFiles::add(const std::string& name, const matbase::ImagePixels&
 std::string mtl_text(const std::vector<NamedMaterial>& materials) {
   std::string text = "# matpredict\n";
   for (const NamedMaterial& material : materials) {
-    const matmaterial::MaterialDesc& desc = *material.desc;
+    const matmaterial::MaterialInputs& desc = *material.desc;
     text += "\nnewmtl " + material.name + "\n";
     using P = matmaterial::MaterialParameter;
     const double roughness = desc.scalar(P::Roughness), metallic = desc.scalar(P::Metallic);

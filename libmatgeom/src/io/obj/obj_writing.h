@@ -46,7 +46,7 @@ class ImageFiles {
   ImageFiles(const std::vector<matbase::ImagePixels>& images, std::string stem)
       : images_(images), stem_(std::move(stem)) {}
 
-  MaterialMaps maps_of(const matmaterial::MaterialDesc& material);
+  MaterialMaps maps_of(const matmaterial::MaterialInputs& material);
 
   const std::vector<ImageFile>& files() const { return files_; }
 
@@ -64,14 +64,14 @@ class ImageFiles {
 // Materials in the order of the asset, with MTL-safe unique names and their map files.
 struct NamedMaterial {
   std::string name;
-  const matmaterial::MaterialDesc* desc;
+  const matmaterial::MaterialInputs* desc;
   MaterialMaps maps;
 };
 
 // The inverse of MaterialConverter, each map placed by -o and -s (check_writable refused what they
 // cannot say). read_obj, like Blender, lets a map replace its factor, so a
 // factor other than 1 beside a map does not survive a round trip (it is still written, for
-// readers that multiply). MaterialDesc's wrap, specular tint, IOR, a specular image and the label
+// readers that multiply). MaterialInputs's wrap, specular tint, IOR, a specular image and the label
 // id are not written: Blender's importer reads no MTL statement for them.
 std::string mtl_text(const std::vector<NamedMaterial>& materials);
 

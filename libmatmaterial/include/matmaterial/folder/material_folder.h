@@ -12,7 +12,7 @@
 
 #include "matbase/image/image_pixels.h"
 #include "matmaterial/material_classes.h"
-#include "matmaterial/material_description.h"
+#include "matmaterial/material_inputs.h"
 
 namespace matmaterial {
 
@@ -26,7 +26,7 @@ constexpr size_t kFolderMapCount = 7;
 
 struct FolderMaterial {
   // Named after the folder, labelled with its class (0 without one); its images index `images`.
-  MaterialDesc material;
+  MaterialInputs material;
   std::vector<matbase::ImagePixels> images;
   // From metadata.json's category, else the folder's name (material_class_of_folder).
   std::optional<MaterialClass> material_class;

@@ -16,7 +16,7 @@ struct ObjReadOptions {
 // (x, -z, y) in matpredict's +Z up frame, and write_obj converts back.
 //
 // Reads positions, normals and UVs (split into one vertex per distinct v/vt/vn triple),
-// triangulates polygons, and maps MTL materials to MaterialDesc (Kd, map_Kd, Pr/map_Pr, Pm/map_Pm,
+// triangulates polygons, and maps MTL materials to MaterialInputs (Kd, map_Kd, Pr/map_Pr, Pm/map_Pm,
 // norm/map_Bump; the conventions are in src/obj/mtl_materials.cpp and mtl_textures.cpp). Faces
 // without a material share a part named "default". Every number is checked where the OBJ or MTL
 // file writes it (src/obj/obj_text_screening.h, mtl_text_screening.h). Throws std::runtime_error

@@ -27,11 +27,11 @@ struct MaterialInput {
 // A material slot: one input per row of the parameter table (matmaterial/material_parameters.h),
 // read in the colour space the table gives, plus a tangent-space normal map. The readers map
 // their formats onto it as Blender's importers do (docs/conventions.md).
-struct MaterialDesc {
+struct MaterialInputs {
   // Every input at Blender's default (the table's), no images: the surface Blender gives geometry
   // without a material.
-  MaterialDesc();
-  explicit MaterialDesc(std::string slot_name) : MaterialDesc() { name = std::move(slot_name); }
+  MaterialInputs();
+  explicit MaterialInputs(std::string slot_name) : MaterialInputs() { name = std::move(slot_name); }
 
   std::string name;
   std::array<MaterialInput, kMaterialParameterCount> inputs;
@@ -44,12 +44,12 @@ struct MaterialDesc {
   MaterialInput& operator[](MaterialParameter p) { return inputs[static_cast<size_t>(p)]; }
   const MaterialInput& operator[](MaterialParameter p) const { return inputs[static_cast<size_t>(p)]; }
   // A constant (or the factor of an image): set(MaterialParameter::Roughness, 0.3).
-  MaterialDesc& set(MaterialParameter p, double value);
-  MaterialDesc& set(MaterialParameter p, const glm::dvec3& value);
+  MaterialInputs& set(MaterialParameter p, double value);
+  MaterialInputs& set(MaterialParameter p, const glm::dvec3& value);
   // The parameter comes from image `image` (times its value); a scalar reads `channel`.
-  MaterialDesc& set_image(MaterialParameter p, int image, int channel = 0, const TextureTransform& transform = {});
+  MaterialInputs& set_image(MaterialParameter p, int image, int channel = 0, const TextureTransform& transform = {});
   // Roughness and metallic from glTF's packed image: its G and B (the table's packed channels).
-  MaterialDesc& set_metallic_roughness_image(int image, const TextureTransform& transform = {});
+  MaterialInputs& set_metallic_roughness_image(int image, const TextureTransform& transform = {});
   glm::dvec3 color(MaterialParameter p) const { return (*this)[p].value; }
   double scalar(MaterialParameter p) const { return (*this)[p].value.x; }
 };
