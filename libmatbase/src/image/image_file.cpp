@@ -18,9 +18,12 @@ namespace {
 
 constexpr const char* kReadFormats = "images are read from PNG, JPEG, BMP or TGA files";
 
-bool starts_with(std::string_view bytes, std::string_view signature) {
-  return bytes.substr(0, signature.size()) == signature;
+// Whether `signature` stands at `offset` of `bytes`; false when they end before it.
+bool has_at(std::string_view bytes, size_t offset, std::string_view signature) {
+  return offset <= bytes.size() && bytes.substr(offset, signature.size()) == signature;
 }
+
+bool starts_with(std::string_view bytes, std::string_view signature) { return has_at(bytes, 0, signature); }
 
 // The formats stb_image decodes that carry a signature (TGA has none).
 const char* decodable_format(std::string_view bytes) {
@@ -46,8 +49,8 @@ std::optional<std::string> unread_image_format(std::string_view bytes) {
   };
   for (const auto& [signature, format] : kSignatures)
     if (starts_with(bytes, signature)) return std::string(format) + "; " + kReadFormats;
-  if (starts_with(bytes, "RIFF") && bytes.substr(8, 4) == "WEBP") return std::string("a WebP image; ") + kReadFormats;
-  if (bytes.substr(4, 4) == "ftyp") return std::string("an AVIF or HEIF image; ") + kReadFormats;
+  if (starts_with(bytes, "RIFF") && has_at(bytes, 8, "WEBP")) return std::string("a WebP image; ") + kReadFormats;
+  if (has_at(bytes, 4, "ftyp")) return std::string("an AVIF or HEIF image; ") + kReadFormats;
   return std::nullopt;
 }
 

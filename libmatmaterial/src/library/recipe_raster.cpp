@@ -116,8 +116,9 @@ FolderMaterial rasterise_recipe(const Recipe& recipe, const std::string& name, M
   map_or_constant(P::Alpha, opacity, uniformity[3]);
 
   if (!uniformity[4].uniform) {
-    const auto [low, high] = std::minmax_element(height.begin(), height.end());
-    const double span = *high - *low;
+    // Named values, not a structured binding: C++17 lambdas cannot capture one (clang refuses).
+    const auto extremes = std::minmax_element(height.begin(), height.end());
+    const double low = *extremes.first, span = *extremes.second - low;
     matbase::ImagePixels height_map = blank_image(name + "#height", resolution, 1);
     matbase::ImagePixels normal_map = blank_image(name + "#normal", resolution, 3);
     // Central differences over two texels of tile_size / resolution metres each; rows run down
@@ -130,7 +131,7 @@ FolderMaterial rasterise_recipe(const Recipe& recipe, const std::string& name, M
     for_each_row(resolution, workers, cancel, [&](int y) {
       for (int x = 0; x < resolution; ++x) {
         const size_t i = static_cast<size_t>(y) * static_cast<size_t>(resolution) + static_cast<size_t>(x);
-        height_map.data[i] = matbase::unorm8((height[i] - *low) / span);
+        height_map.data[i] = matbase::unorm8((height[i] - low) / span);
         const double dh_du = (at(x + 1, y) - at(x - 1, y)) / two_texels_m;
         const double dh_dv = (at(x, y - 1) - at(x, y + 1)) / two_texels_m;
         const glm::dvec3 n = glm::normalize(glm::dvec3(-dh_du, -dh_dv, 1.0));
