@@ -9,10 +9,14 @@ before=$(git -C "$root" rev-parse --verify "$1^{commit}")
 scratch=$(mktemp -d /tmp/same_images.XXXXXX)
 trap 'git -C "$root" worktree remove --force "$scratch/source" >/dev/null 2>&1 || true; rm -rf "$scratch"' EXIT
 
-build_apps() {  # SOURCE BUILD
-  cmake -S "$1" -B "$2" -G Ninja -DCMAKE_BUILD_TYPE=Release -DMATPREDICT_BUILD_TESTS=OFF \
-    -DMATPREDICT_BUILD_BENCH=OFF >/dev/null
-  cmake --build "$2" --target render_object make_dataset -j "$(nproc)" >/dev/null
+build_apps() {  # SOURCE BUILD: the two apps, their output shown only when the build fails
+  if ! { cmake -S "$1" -B "$2" -G Ninja -DCMAKE_BUILD_TYPE=Release -DMATPREDICT_BUILD_TESTS=OFF \
+           -DMATPREDICT_BUILD_BENCH=OFF &&
+         cmake --build "$2" --target render_object make_dataset -j "$(nproc)"; } >"$2.log" 2>&1; then
+    tail -n 30 "$2.log" >&2
+    echo "same_images: the build of $1 failed" >&2
+    exit 1
+  fi
 }
 
 git -C "$root" worktree add --detach "$scratch/source" "$before" >/dev/null 2>&1

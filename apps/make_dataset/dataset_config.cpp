@@ -149,18 +149,18 @@ class Value {
   bool is_text() const { return node_.IsScalar(); }
   int64_t whole(int64_t low, int64_t high) const {
     const std::string t = text();
-    if (const auto problem = app_support::whole_number_problem(t, low, high)) fail(*problem);
-    return *app_support::whole_number(t);
+    if (const auto problem = matbase::whole_number_problem(t, low, high)) fail(*problem);
+    return *matbase::whole_number(t);
   }
   uint64_t seed() const {
     const std::string t = text();
-    if (const auto problem = app_support::seed_problem(t)) fail(*problem);
-    return *app_support::unsigned_whole_number(t);
+    if (const auto problem = matbase::seed_problem(t)) fail(*problem);
+    return *matbase::unsigned_whole_number(t);
   }
   double number(double low, double high, bool low_open = false) const {
     const std::string t = text();
-    if (const auto problem = app_support::number_problem(t, low, high, low_open)) fail(*problem);
-    return *app_support::finite_number(t);
+    if (const auto problem = matbase::number_problem(t, low, high, low_open)) fail(*problem);
+    return *matbase::finite_number(t);
   }
   bool boolean() const {
     const std::string t = text();
@@ -206,7 +206,7 @@ void apply_override(YAML::Node root, const Override& o) {
   std::vector<YAML::Node> path = {root};
   for (size_t k = 0; k + 1 < parts.size(); ++k) {
     YAML::Node& node = path.back();
-    const std::optional<int64_t> index = app_support::whole_number(parts[k]);
+    const std::optional<int64_t> index = matbase::whole_number(parts[k]);
     if (node.IsSequence()) {
       if (!index || *index < 0 || static_cast<size_t>(*index) >= node.size())
         throw matbase::InputError(o.option + ": " + o.key + ": \"" + parts[k] + "\" is not an index of that list");
@@ -220,7 +220,7 @@ void apply_override(YAML::Node root, const Override& o) {
     }
   }
   YAML::Node& parent = path.back();
-  const std::optional<int64_t> index = app_support::whole_number(parts.back());
+  const std::optional<int64_t> index = matbase::whole_number(parts.back());
   if (parent.IsSequence()) {
     if (!index || *index < 0 || static_cast<size_t>(*index) >= parent.size())
       throw matbase::InputError(o.option + ": " + o.key + ": \"" + parts.back() + "\" is not an index of that list");
@@ -417,11 +417,11 @@ void read_render(const Value& v, RenderConfig& render) {
     const std::string text = exposure.text();
     if (text == "auto")
       render.exposure_stops = std::nullopt;
-    else if (app_support::number_problem(text, -matbase::kMaxExposureStops, matbase::kMaxExposureStops, false))
+    else if (matbase::number_problem(text, -matbase::kMaxExposureStops, matbase::kMaxExposureStops, false))
       exposure.fail(fmt::format("expected auto or a number of stops from {} to {}, got {}", -matbase::kMaxExposureStops,
                                 matbase::kMaxExposureStops, text));
     else
-      render.exposure_stops = *app_support::finite_number(text);
+      render.exposure_stops = *matbase::finite_number(text);
   }
   if (const Value b = v.child("bounces"); b.present()) {
     b.check_keys({"max", "diffuse", "glossy", "transmission"});

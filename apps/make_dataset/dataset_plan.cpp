@@ -43,8 +43,8 @@ uint64_t mix(uint64_t x) {
 std::optional<Shard> parse_shard(const std::string& text) {
   const size_t slash = text.find('/');
   if (slash == std::string::npos) return std::nullopt;
-  const auto index = app_support::whole_number(text.substr(0, slash));
-  const auto count = app_support::whole_number(text.substr(slash + 1));
+  const auto index = matbase::whole_number(text.substr(0, slash));
+  const auto count = matbase::whole_number(text.substr(slash + 1));
   if (!index || !count || *count < 1 || *count > 1000000 || *index < 0 || *index >= *count) return std::nullopt;
   return Shard{static_cast<int>(*index), static_cast<int>(*count)};
 }
@@ -67,7 +67,7 @@ DatasetPlan plan_dataset(const DatasetConfig& config) {
   if (frames > static_cast<long double>(kMaxFrames))
     throw matbase::InputError(fmt::format("{}: the plan has {:.4g} frames, more than the {} one dataset may have; cap the "
                                  "variants (variants.max_variants) or the views (camera.grid)",
-                                 config.source, static_cast<double>(frames), app_support::with_thousands(kMaxFrames)));
+                                 config.source, static_cast<double>(frames), matbase::with_thousands(kMaxFrames)));
   for (size_t o = 0; o < config.objects.size(); ++o) {
     try {
       plan.variants.push_back(matgeom::material_variants(slot_candidates(config.objects[o]), config.combination,

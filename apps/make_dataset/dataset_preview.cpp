@@ -28,7 +28,7 @@ constexpr float kGap = 0.06f;         // between cells
 constexpr int kGapPixels = 2;
 constexpr int64_t kMaxSide = 65536;  // a frame side transforms.json may state (16 bits' worth)
 
-using Map = matlearn::Decoded;
+using Map = matlearn::Image;
 
 using Rgb = std::array<float, 3>;
 

@@ -179,7 +179,7 @@ int make(const Options& options) {
   size_t variants = 0;
   for (const auto& object : plan.variants) variants += object.size();
   fmt::print("make_dataset: {} objects, {} variants, {} views each: {} frames of {}x{} at {} spp{} into {}\n",
-             config.objects.size(), variants, plan.views, app_support::with_thousands(static_cast<int64_t>(plan.frames.size())),
+             config.objects.size(), variants, plan.views, matbase::with_thousands(static_cast<int64_t>(plan.frames.size())),
              config.render.width, config.render.height, config.render.samples,
              shard->count > 1 ? fmt::format(" (shard {}/{})", shard->index, shard->count) : "", config.output);
   std::fflush(stdout);

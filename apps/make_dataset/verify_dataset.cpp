@@ -106,7 +106,7 @@ void verify_segmentation_json(const fs::path& file, std::vector<std::string>& pr
   }
   std::map<int, std::string> by_id, inverse;
   for (const auto& [id, name] : names->items()) {
-    const std::optional<int64_t> number = app_support::whole_number(id);
+    const std::optional<int64_t> number = matbase::whole_number(id);
     if (!number || !name.is_string()) {
       problems.push_back(file.string() + ": id_to_material_family." + id + " is not a label id and a name");
       return;
@@ -135,7 +135,7 @@ void verify_segmentation_yaml(const fs::path& file, std::vector<std::string>& pr
       return;
     }
     for (const auto& entry : map) {
-      const std::optional<int64_t> id = app_support::whole_number(entry.second.IsScalar() ? entry.second.Scalar() : "");
+      const std::optional<int64_t> id = matbase::whole_number(entry.second.IsScalar() ? entry.second.Scalar() : "");
       if (!id) {
         problems.push_back(file.string() + ": " + entry.first.Scalar() + " has no label id");
         return;
@@ -210,7 +210,7 @@ std::optional<CameraAxis> camera_axis(const nlohmann::json& matrix) {
 // Depth along the camera axis at the object's pixels: finite, positive, and within the range the
 // object's bounding sphere spans along the axis (with room for rounding); a NaN, a 0 or a depth
 // beyond the object is no depth of it.
-void verify_depth(const fs::path& file, const matlearn::Decoded& depth, const std::optional<Sphere>& bounds,
+void verify_depth(const fs::path& file, const matlearn::Image& depth, const std::optional<Sphere>& bounds,
                   const std::optional<CameraAxis>& camera, std::vector<std::string>& problems) {
   double near = 0.0, far = INFINITY;
   if (bounds && camera) {
@@ -244,7 +244,7 @@ std::optional<int> stated_samples(const nlohmann::json& metadata) {
 }
 
 // A sample count map's problems: pixels without a sample, or with more than the render took.
-void verify_sample_counts(const fs::path& file, const matlearn::Decoded& counts, std::optional<int> samples,
+void verify_sample_counts(const fs::path& file, const matlearn::Image& counts, std::optional<int> samples,
                           std::vector<std::string>& problems) {
   size_t none = 0, beyond = 0;
   for (const float value : counts.values) {
@@ -277,7 +277,7 @@ std::optional<std::string> declared_size_mismatch(const fs::path& file, int widt
 void verify_frame(const fs::path& folder, const std::string& stem, const VariantExpectations& expected,
                   const std::optional<CameraAxis>& camera, std::vector<std::string>& problems) {
   const int width = expected.width, height = expected.height;
-  std::map<DatasetMap, matlearn::Decoded> maps;
+  std::map<DatasetMap, matlearn::Image> maps;
   for (const matlearn::DatasetMapInfo& info : matlearn::dataset_maps()) {
     // Our own maps are checked where the variant has their folder: the repository's datasets
     // have none of them.
@@ -292,7 +292,7 @@ void verify_frame(const fs::path& folder, const std::string& stem, const Variant
       problems.push_back(*problem);
       continue;
     }
-    matlearn::Decoded map;
+    matlearn::Image map;
     try {
       map = matlearn::decode(file);
     } catch (const std::runtime_error& e) {

@@ -77,7 +77,7 @@ void set_resolution(const std::string& text, Options& options) {
   require(x != std::string::npos, "--resolution", "WIDTHxHEIGHT, e.g. 512x512");
   const std::string width = text.substr(0, x), height = text.substr(x + 1);
   for (const std::string* side : {&width, &height})
-    if (const std::optional<std::string> problem = app_support::whole_number_problem(*side, 1, matrender::kMaxImageSide))
+    if (const std::optional<std::string> problem = matbase::whole_number_problem(*side, 1, matrender::kMaxImageSide))
       throw CLI::ValidationError("--resolution", "each side: " + *problem);
   options.width = std::stoi(width);
   options.height = std::stoi(height);
@@ -377,7 +377,7 @@ std::string joined(const std::vector<std::string>& names) {
 
 uint32_t parse_seed(const std::string& text) {
   if (const std::optional<std::string> problem =
-          app_support::whole_number_problem(text, 0, std::numeric_limits<uint32_t>::max()))
+          matbase::whole_number_problem(text, 0, std::numeric_limits<uint32_t>::max()))
     throw matbase::InputError("--object: seed: " + *problem);
   return static_cast<uint32_t>(std::stoul(text));
 }

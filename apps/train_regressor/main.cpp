@@ -45,13 +45,13 @@ void describe(const matlearn::TrainingConfig& config) {
     const std::string paper_text =
         paper > 0 ? fmt::format("{:.1f}M ({:+.2f}%)", paper, 100.0 * (static_cast<double>(count) / (paper * 1e6) - 1.0))
                   : "-";
-    fmt::print("  {:<20} {:>12} {:>15}  {}\n", a.name, app_support::with_thousands(count), paper_text, a.description);
+    fmt::print("  {:<20} {:>12} {:>15}  {}\n", a.name, matbase::with_thousands(count), paper_text, a.description);
   }
   if (config.width_divisor != 1) {
     const auto thin = matlearn::make_regressor(matlearn::architecture_named(config.network).architecture, outputs,
                                                config.width_divisor);
     fmt::print("  {} with widths / {}: {} parameters\n", config.network, config.width_divisor,
-               app_support::with_thousands(matlearn::parameter_count(*thin)));
+               matbase::with_thousands(matlearn::parameter_count(*thin)));
   }
   fmt::print("The paper's counts are for 6 outputs (base colour 3 + roughness 3).\n");
 }

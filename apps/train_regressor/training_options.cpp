@@ -124,9 +124,9 @@ int64_t whole_setting(const std::map<std::string, std::string>& s, const std::st
   const Range& r = setting_named(key).range;
   const std::string& text = s.at(key);
   if (const auto problem =
-          app_support::whole_number_problem(text, static_cast<int64_t>(r.low), static_cast<int64_t>(r.high)))
+          matbase::whole_number_problem(text, static_cast<int64_t>(r.low), static_cast<int64_t>(r.high)))
     throw matbase::InputError(key + ": " + *problem);
-  return *app_support::whole_number(text);
+  return *matbase::whole_number(text);
 }
 
 int int_setting(const std::map<std::string, std::string>& s, const std::string& key) {
@@ -136,15 +136,15 @@ int int_setting(const std::map<std::string, std::string>& s, const std::string& 
 double number_setting(const std::map<std::string, std::string>& s, const std::string& key) {
   const Range& r = setting_named(key).range;
   const std::string& text = s.at(key);
-  if (const auto problem = app_support::number_problem(text, r.low, r.high, r.low_open))
+  if (const auto problem = matbase::number_problem(text, r.low, r.high, r.low_open))
     throw matbase::InputError(key + ": " + *problem);
-  return *app_support::finite_number(text);
+  return *matbase::finite_number(text);
 }
 
 uint64_t seed_setting(const std::map<std::string, std::string>& s, const std::string& key) {
   const std::string& text = s.at(key);
-  if (const auto problem = app_support::seed_problem(text)) throw matbase::InputError(key + ": " + *problem);
-  return *app_support::unsigned_whole_number(text);
+  if (const auto problem = matbase::seed_problem(text)) throw matbase::InputError(key + ": " + *problem);
+  return *matbase::unsigned_whole_number(text);
 }
 
 bool parse_bool(const std::map<std::string, std::string>& s, const std::string& key) {

@@ -51,7 +51,7 @@ void write_material_folder(const fs::path& folder, const std::vector<uint8_t>& b
 }
 
 // The stored 8-bit code of a value libmatlearn's decode read.
-int code(const matlearn::Decoded& map, int x, int y, int c) { return static_cast<int>(std::lround(map.at(x, y, c) * 255.0f)); }
+int code(const matlearn::Image& map, int x, int y, int c) { return static_cast<int>(std::lround(map.at(x, y, c) * 255.0f)); }
 
 // Runs make_dataset; its standard error goes to `errors` when given.
 int run(const std::string& arguments, const fs::path& errors = "/dev/null") {
@@ -127,7 +127,7 @@ TEST_CASE("The tiny dataset has every frame of the plan, and --verify finds no p
 
 // Sets the depth (R, G and B) of the first `values.size()` covered pixels of a depth map.
 void damage_depth(const fs::path& file, const std::vector<float>& values) {
-  const matlearn::Decoded depth = matlearn::decode(file);
+  const matlearn::Image depth = matlearn::decode(file);
   std::vector<float> pixels = depth.values;
   size_t next = 0;
   for (size_t p = 0; p < pixels.size() / 4 && next < values.size(); ++p)
@@ -249,9 +249,9 @@ TEST_CASE("ORM's G is the material's roughness and the label its class at every 
   size_t interior = 0;
   for (const matlearn::SampleId& id : matlearn::index_dataset(root)) {
     const fs::path variant = root / id.object / id.variant;
-    const matlearn::Decoded orm = matlearn::decode(variant / "ORM" / (id.stem + ".png"));
-    const matlearn::Decoded label = matlearn::decode(variant / "label" / (id.stem + ".png"));
-    const matlearn::Decoded depth = matlearn::decode(variant / "depth" / (id.stem + ".exr"));
+    const matlearn::Image orm = matlearn::decode(variant / "ORM" / (id.stem + ".png"));
+    const matlearn::Image label = matlearn::decode(variant / "label" / (id.stem + ".png"));
+    const matlearn::Image depth = matlearn::decode(variant / "depth" / (id.stem + ".exr"));
     REQUIRE((orm.width == kSize && label.width == kSize && depth.width == kSize));
     // The classes metadata.json says the variant uses.
     const nlohmann::json metadata = nlohmann::json::parse(std::ifstream(variant / "metadata.json"));
@@ -287,8 +287,8 @@ TEST_CASE("libmatlearn's reader reads the dataset: roughness is ORM's G, the mas
   settings.size = kSize;  // as stored: no resize
   for (const matlearn::SampleId& id : matlearn::index_dataset(root)) {
     const matlearn::MaterialSample sample = matlearn::read_sample(root, id, settings);
-    const matlearn::Decoded orm = matlearn::decode(root / id.object / id.variant / "ORM" / (id.stem + ".png"));
-    const matlearn::Decoded label = matlearn::decode(root / id.object / id.variant / "label" / (id.stem + ".png"));
+    const matlearn::Image orm = matlearn::decode(root / id.object / id.variant / "ORM" / (id.stem + ".png"));
+    const matlearn::Image label = matlearn::decode(root / id.object / id.variant / "label" / (id.stem + ".png"));
     REQUIRE(sample.has_label);
     size_t mismatches = 0;
     for (int y = 0; y < kSize; ++y)
@@ -340,7 +340,7 @@ TEST_CASE("A folder made with other settings is refused, not mixed with new fram
 
 // A frame's sample counts, decoded from its 16-bit map.
 std::vector<int> sample_counts(const fs::path& variant, const std::string& stem) {
-  const matlearn::Decoded map = matlearn::decode(variant / "sample_count" / (stem + ".png"));
+  const matlearn::Image map = matlearn::decode(variant / "sample_count" / (stem + ".png"));
   REQUIRE(map.channels == 1);
   std::vector<int> counts;
   for (const float v : map.values) counts.push_back(static_cast<int>(std::lround(v * 65535.0f)));
@@ -371,7 +371,7 @@ TEST_CASE("With a noise threshold, pixels stop where the image has converged", "
   double object_samples = 0.0;
   for (const char* stem : {"000", "001"}) {
     const std::vector<int> counts = sample_counts(variant, stem);
-    const matlearn::Decoded depth = matlearn::decode(variant / "depth" / (std::string(stem) + ".exr"));
+    const matlearn::Image depth = matlearn::decode(variant / "depth" / (std::string(stem) + ".exr"));
     for (int y = 1; y + 1 < depth.height; ++y)
       for (int x = 1; x + 1 < depth.width; ++x) {
         const int count = counts[static_cast<size_t>(y * depth.width + x)];
@@ -415,7 +415,7 @@ TEST_CASE("Images are exposed by the grey-card rule unless an exposure is given"
     std::vector<int> codes;
     size_t clipped = 0;
     for (const char* stem : {"000", "001"}) {
-      const matlearn::Decoded image = matlearn::decode(variant / "images" / (std::string(stem) + ".png"));
+      const matlearn::Image image = matlearn::decode(variant / "images" / (std::string(stem) + ".png"));
       for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x) {
           if (image.at(x, y, 3) < 1.0f) continue;
@@ -475,14 +475,14 @@ paper_texture_layout: true
   REQUIRE(samples.size() == 6);
   CHECK(samples.front().str() == "vase/metal_flat/000");
   // The references are the folders' constant maps.
-  const matlearn::Decoded roughness = matlearn::decode(root / "ground_truth_roughness" / "wood_flat.png");
+  const matlearn::Image roughness = matlearn::decode(root / "ground_truth_roughness" / "wood_flat.png");
   CHECK(code(roughness, 0, 0, 0) == kWoodRoughness);
   CHECK(code(roughness, 7, 7, 2) == kWoodRoughness);
   CHECK(code(matlearn::decode(root / "ground_truth_metallic" / "metal_flat.png"), 3, 3, 1) == 255);
   CHECK(code(matlearn::decode(root / "ground_truth_basecolour" / "wood_flat.png"), 0, 0, 0) == 150);
   for (const matlearn::SampleId& id : samples) {
     INFO(id.str());
-    const matlearn::Decoded shot = matlearn::decode(root / "rendered_cropped" / id.object / id.variant / (id.stem + ".png"));
+    const matlearn::Image shot = matlearn::decode(root / "rendered_cropped" / id.object / id.variant / (id.stem + ".png"));
     // Square, cropped (smaller than the frame or the frame itself), white in the corners.
     CHECK(shot.width == shot.height);
     CHECK(shot.width <= 44);

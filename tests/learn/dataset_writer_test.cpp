@@ -48,7 +48,7 @@ std::string output_of(const std::string& command) {
 
 // The stored values of an image file, straight as written, and its size.
 std::vector<float> stored_values(const fs::path& path, int& width, int& height, int& channels) {
-  matlearn::Decoded map = decode(path);
+  matlearn::Image map = decode(path);
   width = map.width;
   height = map.height;
   channels = map.channels;

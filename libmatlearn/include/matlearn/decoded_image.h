@@ -9,25 +9,15 @@
 
 namespace matlearn {
 
-struct Decoded {
-  int width = 0, height = 0, channels = 0;
-  std::vector<float> values;
-
-  float at(int x, int y, int c) const {
-    return values[(static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)) *
-                      static_cast<size_t>(channels) + static_cast<size_t>(c)];
-  }
-};
-
 // Every channel of an image file as floats, colour as stored (not premultiplied by alpha, as
 // OpenImageIO would by default); 8-bit values map to [0, 1]; a float format's NaN and infinities
 // as stored, for checkers that count them. Throws DatasetError (matlearn/dataset_error.h) naming
 // the file: missing, a device, declaring more pixels than memory holds, undecodable.
-Decoded decode(const std::filesystem::path& path);
+Image decode(const std::filesystem::path& path);
 
 // decode(), for a value that becomes a network's input or target: also throws DatasetError
 // naming the file, the pixel and the channel of the first NaN or infinity (EXR holds them).
-Decoded decode_finite(const std::filesystem::path& path);
+Image decode_finite(const std::filesystem::path& path);
 
 // A label map: one id per pixel, row by row.
 struct DecodedIds {
@@ -43,14 +33,14 @@ DecodedIds decode_ids(const std::filesystem::path& path);
 
 // The first `channels` channels from `first` on (a grey image repeated), as PIL's
 // convert("RGB") or convert("L").
-Image channels_of(const Decoded& d, int first, int channels);
+Image channels_of(const Image& d, int first, int channels);
 
 // Throws DatasetError naming `path` when its size (width x height) differs from the sample
 // image's.
-void check_same_size(int width, int height, const Decoded& image, const std::filesystem::path& path);
+void check_same_size(int width, int height, const Image& image, const std::filesystem::path& path);
 
 // Throws DatasetError naming `path` when d has fewer than `channels` channels; `what` says what
 // they hold ("roughness in G, metallic in B").
-void check_channels(const Decoded& d, int channels, const char* what, const std::filesystem::path& path);
+void check_channels(const Image& d, int channels, const char* what, const std::filesystem::path& path);
 
 }  // namespace matlearn

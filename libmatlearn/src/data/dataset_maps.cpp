@@ -165,7 +165,7 @@ bool frame_is_complete(const fs::path& variant_folder, const std::string& stem, 
     std::error_code error;
     if (!fs::is_regular_file(file, error)) return false;
     try {
-      const Decoded map = decode(file);
+      const Image map = decode(file);
       if (map.width != width || map.height != height || map.channels != info.channels) return false;
     } catch (const std::runtime_error&) {
       return false;  // damaged or cut short: the frame is rendered again

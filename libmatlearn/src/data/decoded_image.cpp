@@ -39,7 +39,7 @@ std::unique_ptr<OIIO::ImageInput> open_image(const std::filesystem::path& path, 
   } catch (const DatasetError&) {
     throw;
   } catch (const std::runtime_error& e) {
-    throw DatasetError(e.what());  // matgeom's sentences already name the file
+    throw DatasetError(e.what());  // matbase's sentences already name the file
   }
   return in;
 }
@@ -50,17 +50,17 @@ size_t value_count(const OIIO::ImageSpec& spec) {
 
 }  // namespace
 
-Decoded decode(const std::filesystem::path& path) {
+Image decode(const std::filesystem::path& path) {
   const std::unique_ptr<OIIO::ImageInput> in = open_image(path, sizeof(float));
   const OIIO::ImageSpec& spec = in->spec();
-  Decoded d{spec.width, spec.height, spec.nchannels, std::vector<float>(value_count(spec))};
+  Image d(spec.width, spec.height, spec.nchannels);
   if (!in->read_image(0, 0, 0, d.channels, OIIO::TypeDesc::FLOAT, d.values.data()))
     throw DatasetError("cannot decode " + path.string() + ": " + in->geterror());
   return d;
 }
 
-Decoded decode_finite(const std::filesystem::path& path) {
-  Decoded d = decode(path);
+Image decode_finite(const std::filesystem::path& path) {
+  Image d = decode(path);
   for (size_t i = 0; i < d.values.size(); ++i)
     if (!std::isfinite(d.values[i])) {
       const size_t pixel = i / static_cast<size_t>(d.channels);
@@ -95,7 +95,7 @@ DecodedIds decode_ids(const std::filesystem::path& path) {
   return d;
 }
 
-Image channels_of(const Decoded& d, int first, int channels) {
+Image channels_of(const Image& d, int first, int channels) {
   Image image(d.width, d.height, channels);
   for (size_t p = 0; p < image.pixel_count(); ++p)
     for (int c = 0; c < channels; ++c)
@@ -104,13 +104,13 @@ Image channels_of(const Decoded& d, int first, int channels) {
   return image;
 }
 
-void check_same_size(int width, int height, const Decoded& image, const std::filesystem::path& path) {
+void check_same_size(int width, int height, const Image& image, const std::filesystem::path& path) {
   if (width != image.width || height != image.height)
     throw DatasetError(path.string() + " is " + size_text(width, height) + " but the sample's image is " +
                        size_text(image.width, image.height));
 }
 
-void check_channels(const Decoded& d, int channels, const char* what, const std::filesystem::path& path) {
+void check_channels(const Image& d, int channels, const char* what, const std::filesystem::path& path) {
   if (d.channels < channels)
     throw DatasetError(path.string() + " has " + std::to_string(d.channels) + " channel" + (d.channels == 1 ? "" : "s") +
                        ", not the " + std::to_string(channels) + " that hold " + what);

@@ -24,7 +24,7 @@ fs::path frame_file(const fs::path& root, const SampleId& id, const char* map) {
 }
 
 // The label's ids at full resolution, each checked against the network's classes.
-std::vector<int32_t> label_ids(const fs::path& path, const Decoded& image, int64_t material_classes) {
+std::vector<int32_t> label_ids(const fs::path& path, const Image& image, int64_t material_classes) {
   DecodedIds label = decode_ids(path);
   check_same_size(label.width, label.height, image, path);
   if (material_classes > 0)
@@ -78,9 +78,9 @@ MaterialSample read_sample(const fs::path& root, const SampleId& id, const Sampl
   if (settings.size < 1) throw std::invalid_argument("read_sample: size must be at least 1");
   if (dataset_layout(root) == DatasetLayout::paper_textures) return read_texture_target_sample(root, id, settings);
   const fs::path albedo_path = frame_file(root, id, "albedo"), orm_path = frame_file(root, id, "ORM");
-  const Decoded image = decode_finite(frame_file(root, id, "images"));
-  const Decoded albedo = decode_finite(albedo_path);
-  const Decoded orm = decode_finite(orm_path);
+  const Image image = decode_finite(frame_file(root, id, "images"));
+  const Image albedo = decode_finite(albedo_path);
+  const Image orm = decode_finite(orm_path);
   check_same_size(albedo.width, albedo.height, image, albedo_path);
   check_same_size(orm.width, orm.height, image, orm_path);
   check_channels(orm, 3, "roughness in G and metallic in B", orm_path);
@@ -106,7 +106,7 @@ MaterialSample read_sample(const fs::path& root, const SampleId& id, const Sampl
   sample.metallic = resize_bilinear_weighted(channels_of(orm, 2, 1), weights, s, s);
   if (settings.read_normal) {
     const fs::path normal_path = frame_file(root, id, "normal_obj");
-    const Decoded normal = decode_finite(normal_path);
+    const Image normal = decode_finite(normal_path);
     check_same_size(normal.width, normal.height, image, normal_path);
     check_channels(normal, 3, "the normal's x, y and z", normal_path);
     sample.normal = resize_unit_vectors(channels_of(normal, 0, 3), weights, s, s);
@@ -119,10 +119,10 @@ MaterialSample read_sample(const fs::path& root, const SampleId& id, const Sampl
 
 InputImage read_input_image(const fs::path& image_path, const fs::path& mask_path, int size) {
   if (size < 1) throw std::invalid_argument("read_input_image: size must be at least 1");
-  const Decoded image = decode_finite(image_path);
+  const Image image = decode_finite(image_path);
   std::vector<int32_t> object(static_cast<size_t>(image.width) * static_cast<size_t>(image.height), 1);
   if (!mask_path.empty()) {
-    const Decoded mask = decode_finite(mask_path);
+    const Image mask = decode_finite(mask_path);
     check_same_size(mask.width, mask.height, image, mask_path);
     for (size_t p = 0; p < object.size(); ++p) object[p] = mask.values[p * static_cast<size_t>(mask.channels)] > 0.0f;
   } else if (image.channels == 4 || image.channels == 2) {

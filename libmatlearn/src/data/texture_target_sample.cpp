@@ -25,7 +25,7 @@ Image reference_map(const fs::path& path, ReferenceKind kind, int size) {
     const auto found = cache.find(key);
     if (found != cache.end()) return found->second;
   }
-  const Decoded decoded = decode_finite(path);
+  const Image decoded = decode_finite(path);
   Image map = channels_of(decoded, 0, kind == ReferenceKind::grey ? 1 : 3);
   if (kind == ReferenceKind::linear_colour)
     for (float& v : map.values) v = matbase::srgb_to_linear(v);
