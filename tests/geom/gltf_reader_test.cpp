@@ -8,10 +8,10 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <vector>
-#include <random>
 
 #include <catch2/catch.hpp>
 #include <glm/gtc/matrix_transform.hpp>
