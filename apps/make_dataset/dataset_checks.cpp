@@ -9,8 +9,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "common/output_folder.h"
 #include "dataset_folders.h"
+#include "matbase/file/output_folder.h"
 #include "matbase/image/image_header.h"
 #include "matbase/memory_limit.h"
 #include "matbase/pi.h"
@@ -88,7 +88,7 @@ void check_object_in_view(const DatasetConfig& config, size_t o, const matgeom::
 }
 
 void check_before_writing(const DatasetConfig& config) {
-  if (const std::optional<std::string> problem = app_support::output_folder_problem(config.output))
+  if (const std::optional<std::string> problem = matbase::output_folder_problem(config.output))
     throw matbase::InputError("output: " + *problem + "; give --output a folder you can write to");
   // A frame's buffers, and the maps the writer encodes from them (about as much again).
   const int w = config.render.width, h = config.render.height;

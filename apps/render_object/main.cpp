@@ -13,8 +13,8 @@
 
 #include "common/exit_codes.h"
 #include "common/interrupt.h"
-#include "common/output_folder.h"
 #include "matbase/cancellation.h"
+#include "matbase/file/output_folder.h"
 #include "matbase/memory_limit.h"
 #include "matgeom/builtin/builtin_objects.h"
 #include "matmaterial/library/material_library.h"
@@ -80,7 +80,7 @@ void report_textures() {
 }
 
 int render_and_write(const Options& options) {
-  if (const std::optional<std::string> problem = app_support::output_folder_problem(options.output_folder))
+  if (const std::optional<std::string> problem = matbase::output_folder_problem(options.output_folder))
     throw matbase::InputError("--output: " + *problem);
   const std::atomic<bool>* cancel = app_support::cancel_on_interrupt();
   matrender::set_texture_memory_limit(options.texture_memory_mib << 20);

@@ -1,4 +1,4 @@
-#include "common/output_folder.h"
+#include "matbase/file/output_folder.h"
 
 #include <unistd.h>
 
@@ -6,7 +6,7 @@
 #include <cstring>
 #include <filesystem>
 
-namespace app_support {
+namespace matbase {
 
 std::optional<std::string> output_folder_problem(const std::string& folder) {
   namespace fs = std::filesystem;
@@ -23,4 +23,4 @@ std::optional<std::string> output_folder_problem(const std::string& folder) {
   return std::nullopt;
 }
 
-}  // namespace app_support
+}  // namespace matbase
