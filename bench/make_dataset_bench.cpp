@@ -55,14 +55,14 @@
 #include <fmt/format.h>
 
 #include "image_error.h"
-#include "make_dataset/dataset_config.h"
-#include "make_dataset/dataset_plan.h"
-#include "make_dataset/object_renderer.h"
 #include "matbase/image/image_writing.h"
 #include "matbase/memory_limit.h"
 #include "matbase/threads.h"
+#include "matdataset/format/dataset_writer.h"
+#include "matdataset/maker/dataset_config.h"
+#include "matdataset/maker/dataset_plan.h"
+#include "matdataset/maker/object_renderer.h"
 #include "matgeom/io/gltf/gltf_writer.h"
-#include "matlearn/dataset_writer.h"
 #include "shaders_ref/cycles_reference.h"
 
 namespace fs = std::filesystem;
@@ -82,7 +82,7 @@ uint64_t bytes_under(const fs::path& folder) {
 // A way of rendering the configuration: its name and the keys it overrides.
 struct Mode {
   std::string name;
-  std::vector<make_dataset::Override> overrides;
+  std::vector<matdataset::Override> overrides;
 };
 
 // Ways of rendering that differ in one key's value: the points of one error-against-time curve.
@@ -92,7 +92,7 @@ struct Series {
 };
 
 // "KEY=VALUE", given with `option`.
-make_dataset::Override parse_override(const std::string& text, const std::string& option) {
+matdataset::Override parse_override(const std::string& text, const std::string& option) {
   const size_t equals = text.find('=');
   if (equals == std::string::npos) throw std::runtime_error(option + ": expected KEY=VALUE, got " + text);
   return {text.substr(0, equals), text.substr(equals + 1), option};
@@ -115,11 +115,11 @@ Series parse_series(const std::string& text) {
   const size_t colon = text.find(':');
   series.name = text.substr(0, colon);
   const std::string option = "--mode " + series.name;
-  std::vector<make_dataset::Override> overrides;
+  std::vector<matdataset::Override> overrides;
   if (colon != std::string::npos)
     for (const std::string& item : split(text.substr(colon + 1), ','))
       overrides.push_back(parse_override(item, option));
-  const auto listed = [](const make_dataset::Override& o) { return o.value.find('|') != std::string::npos; };
+  const auto listed = [](const matdataset::Override& o) { return o.value.find('|') != std::string::npos; };
   const auto swept = std::find_if(overrides.begin(), overrides.end(), listed);
   if (swept == overrides.end()) return {series.name, {{series.name, overrides}}};
   if (std::count_if(overrides.begin(), overrides.end(), listed) > 1)
@@ -162,11 +162,11 @@ double image_error(const std::vector<float>& image, const std::vector<float>& re
 
 // An object of the configuration, and the variant "NAME:VARIANT" gives (else the object's index
 // modulo its variants).
-std::pair<size_t, size_t> object_and_variant(const std::string& spec, const make_dataset::DatasetConfig& config,
-                                             const make_dataset::DatasetPlan& plan) {
+std::pair<size_t, size_t> object_and_variant(const std::string& spec, const matdataset::DatasetConfig& config,
+                                             const matdataset::DatasetPlan& plan) {
   const std::string name = spec.substr(0, spec.find(':'));
   const auto it = std::find_if(config.objects.begin(), config.objects.end(),
-                               [&](const make_dataset::ObjectConfig& o) { return o.name == name; });
+                               [&](const matdataset::ObjectConfig& o) { return o.name == name; });
   if (it == config.objects.end()) throw std::runtime_error("--objects: the configuration has no object " + name);
   const size_t object = static_cast<size_t>(it - config.objects.begin());
   const std::string given = spec.find(':') == std::string::npos ? "" : spec.substr(spec.find(':') + 1);
@@ -196,8 +196,8 @@ struct CyclesOptions {
 };
 
 // The frame as a Blender user builds it (see the top of this file).
-shaders_ref::CyclesScene cycles_scene(const make_dataset::ObjectRenderer& renderer, size_t view,
-                                      const std::string& gltf, const make_dataset::RenderConfig& r) {
+shaders_ref::CyclesScene cycles_scene(const matdataset::ObjectRenderer& renderer, size_t view,
+                                      const std::string& gltf, const matdataset::RenderConfig& r) {
   shaders_ref::CyclesScene scene;
   scene.gltf_path = gltf;
   scene.lamps = renderer.scene().lights();
@@ -224,7 +224,7 @@ std::vector<shaders_ref::CyclesRender> render_with_cycles(const shaders_ref::Cyc
 
 // What every measurement of a run shares.
 struct Run {
-  const make_dataset::DatasetPlan& plan;
+  const matdataset::DatasetPlan& plan;
   int workers, reference_factor, reference_samples;
   fs::path scratch;    // frames are written here, as make_dataset writes them
   std::string images;  // the references go here as PNGs; empty: nowhere
@@ -235,10 +235,10 @@ struct Frame {
   std::string object;
   size_t view;
   uint32_t seed;
-  std::optional<matlearn::FrameMaps> truth;
+  std::optional<matdataset::FrameMaps> truth;
 };
 
-void render_reference(const Run& run, make_dataset::ObjectRenderer& renderer, Frame& frame) {
+void render_reference(const Run& run, matdataset::ObjectRenderer& renderer, Frame& frame) {
   const Clock::time_point start = Clock::now();
   renderer.render(frame.view, frame.seed + 1, run.workers, nullptr, frame.truth.emplace());
   fmt::print("{} view {} reference, {} spp: {:.2f} s\n", frame.object, frame.view, run.reference_samples,
@@ -250,22 +250,22 @@ void render_reference(const Run& run, make_dataset::ObjectRenderer& renderer, Fr
 }
 
 // Renders and writes the frames as make_dataset does, into `f`.
-void measure_mode(const Run& run, make_dataset::ObjectRenderer& renderer, const std::string& mode,
+void measure_mode(const Run& run, matdataset::ObjectRenderer& renderer, const std::string& mode,
                   const std::vector<Frame>& frames, ModeFigures& f) {
   for (const Frame& frame : frames) {
-    matlearn::FrameMaps maps;
+    matdataset::FrameMaps maps;
     matrender::RenderStats stats;
     const Clock::time_point start = Clock::now();
     renderer.render(frame.view, frame.seed, run.workers, nullptr, maps, &stats);
     const double seconds = seconds_since(start);
     const Clock::time_point written = Clock::now();
-    matlearn::write_frame_maps(run.scratch / mode / frame.object, make_dataset::view_stem(run.plan, frame.view), maps);
+    matdataset::write_frame_maps(run.scratch / mode / frame.object, matdataset::view_stem(run.plan, frame.view), maps);
     f.write_seconds += seconds_since(written);
     f.render_seconds += seconds;
     f.samples += static_cast<double>(stats.camera_samples) / (static_cast<double>(maps.width) * maps.height);
     ++f.frames;
     std::string error;
-    if (const std::optional<matlearn::FrameMaps>& truth = frame.truth) {
+    if (const std::optional<matdataset::FrameMaps>& truth = frame.truth) {
       // The reference's own noise taken out of the AO error as of the image's.
       const double own = std::sqrt(1.0 + 1.0 / run.reference_factor);
       f.referenced_seconds.push_back(seconds);
@@ -288,8 +288,8 @@ void measure_mode(const Run& run, make_dataset::ObjectRenderer& renderer, const 
 // Renders the referenced frames with Cycles (a Blender run each: its reference, one sample, a
 // render per threshold), their figures into `figures` (a threshold each). The object goes to
 // Blender as glTF, written once.
-void measure_cycles(const Run& run, const CyclesOptions& cycles, const make_dataset::ObjectRenderer& renderer,
-                    const make_dataset::RenderConfig& r, const std::vector<Frame>& frames,
+void measure_cycles(const Run& run, const CyclesOptions& cycles, const matdataset::ObjectRenderer& renderer,
+                    const matdataset::RenderConfig& r, const std::vector<Frame>& frames,
                     std::vector<ModeFigures>& figures) {
   const fs::path folder = run.scratch / "cycles" / frames.front().object;
   fs::create_directories(folder);
@@ -297,7 +297,7 @@ void measure_cycles(const Run& run, const CyclesOptions& cycles, const make_data
   matgeom::write_gltf(renderer.variant_asset(), gltf);
   for (const Frame& frame : frames) {
     if (!frame.truth) continue;
-    const matlearn::FrameMaps& truth = *frame.truth;
+    const matdataset::FrameMaps& truth = *frame.truth;
     const std::vector<shaders_ref::CyclesRender> renders =
         render_with_cycles(cycles_scene(renderer, frame.view, gltf, r), cycles, run.reference_samples, run.workers,
                            folder / ("view" + std::to_string(frame.view)));
@@ -354,7 +354,7 @@ std::string ratio_text(const std::optional<Reach>& cycles, const std::optional<R
 }
 
 // Whether two configurations sample a frame alike: the point that renders as the configuration does.
-bool same_sampling(const make_dataset::RenderConfig& a, const make_dataset::RenderConfig& b) {
+bool same_sampling(const matdataset::RenderConfig& a, const matdataset::RenderConfig& b) {
   return a.samples == b.samples && a.noise_threshold == b.noise_threshold && a.min_samples == b.min_samples &&
          a.denoise == b.denoise;
 }
@@ -544,30 +544,30 @@ int main(int argc, char** argv) {
   app.add_option("--threads", threads, "render threads, 0 every hardware thread")->capture_default_str()->check(CLI::NonNegativeNumber);
   CLI11_PARSE(app, argc, argv);
   try {
-    std::vector<make_dataset::Override> sets;
+    std::vector<matdataset::Override> sets;
     for (const std::string& text : set_texts) sets.push_back(parse_override(text, "--set"));
     std::vector<Series> series;
     for (const std::string& text : mode_texts) series.push_back(parse_series(text));
     std::vector<Mode> modes;  // every series' points, in order
     for (const Series& s : series) modes.insert(modes.end(), s.points.begin(), s.points.end());
-    std::vector<make_dataset::DatasetConfig> configs;
+    std::vector<matdataset::DatasetConfig> configs;
     for (const Mode& mode : modes) {
-      std::vector<make_dataset::Override> overrides = sets;
+      std::vector<matdataset::Override> overrides = sets;
       overrides.insert(overrides.end(), mode.overrides.begin(), mode.overrides.end());
-      configs.push_back(make_dataset::load_config(config_file, overrides));
+      configs.push_back(matdataset::load_config(config_file, overrides));
     }
-    const make_dataset::DatasetConfig config = make_dataset::load_config(config_file, sets);
-    const make_dataset::DatasetPlan plan = make_dataset::plan_dataset(config);
+    const matdataset::DatasetConfig config = matdataset::load_config(config_file, sets);
+    const matdataset::DatasetPlan plan = matdataset::plan_dataset(config);
     // The reference: the configuration's fixed samples times reference_factor, and its AO error
     // bound over sqrt(reference_factor).
-    std::vector<make_dataset::Override> reference_overrides = sets;
+    std::vector<matdataset::Override> reference_overrides = sets;
     const int reference_samples = config.render.samples * reference_factor;
     reference_overrides.push_back({"render.samples", std::to_string(reference_samples), "--reference-factor"});
     reference_overrides.push_back({"render.ambient_occlusion.error",
                                    fmt::format("{}", config.render.ambient_occlusion_error /
                                                          std::sqrt(static_cast<double>(reference_factor))),
                                    "--reference-factor"});
-    const make_dataset::DatasetConfig reference = make_dataset::load_config(config_file, reference_overrides);
+    const matdataset::DatasetConfig reference = matdataset::load_config(config_file, reference_overrides);
     if (cycles.enabled && !shaders_ref::cycles_available(cycles.blender))
       throw std::runtime_error("--cycles: " + cycles.blender + " --version does not report Blender 3.4");
     const int workers = matbase::worker_threads(threads);
@@ -594,12 +594,12 @@ int main(int argc, char** argv) {
       std::vector<Frame> frames;
       for (const size_t view : spread_views(views, plan.views))
         frames.push_back(
-            {config.objects[object].name, view, make_dataset::frame_seed(config.seed, {object, variant, view}), {}});
+            {config.objects[object].name, view, matdataset::frame_seed(config.seed, {object, variant, view}), {}});
       // The references first, then one renderer at a time: each holds its own scene and materials.
-      std::unique_ptr<make_dataset::ObjectRenderer> reference_renderer;
+      std::unique_ptr<matdataset::ObjectRenderer> reference_renderer;
       for (size_t k = 0; k < frames.size() && referenced < reference_frames; ++k, ++referenced) {
         if (!reference_renderer) {
-          reference_renderer = std::make_unique<make_dataset::ObjectRenderer>(reference, object);
+          reference_renderer = std::make_unique<matdataset::ObjectRenderer>(reference, object);
           reference_renderer->select_variant(plan.variants[object][variant]);
         }
         frame_names.push_back(fmt::format("{} view {} ({})", frames[k].object, frames[k].view,
@@ -608,7 +608,7 @@ int main(int argc, char** argv) {
       }
       for (size_t m = 0; m < modes.size(); ++m) {
         const Clock::time_point setup = Clock::now();
-        make_dataset::ObjectRenderer renderer(configs[m], object);
+        matdataset::ObjectRenderer renderer(configs[m], object);
         renderer.select_variant(plan.variants[object][variant]);
         setup_seconds += seconds_since(setup) / static_cast<double>(modes.size());
         if (m == 0)
@@ -643,7 +643,7 @@ int main(int argc, char** argv) {
     // reaches on each frame; what each of Cycles' does.
     std::vector<ErrorLevel> levels = {{fmt::format("{:.2f} % on every frame", target_percent),
                                        std::vector<double>(static_cast<size_t>(referenced), target_percent / 100.0)}};
-    const auto as_configured = [&](const make_dataset::DatasetConfig& c) {
+    const auto as_configured = [&](const matdataset::DatasetConfig& c) {
       return same_sampling(c.render, config.render);
     };
     const size_t configured =

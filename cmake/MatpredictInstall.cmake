@@ -1,12 +1,12 @@
 # `cmake --install` exports matpredict::matbase, matpredict::matmaterial, matpredict::matgeom, matpredict::matrender, matpredict::matlearn_metrics,
-# matpredict::matlearn_data and matpredict::matlearn (libtorch) for find_package(matpredict).
+# matpredict::matdataset_format, matpredict::matdataset_maker and matpredict::matlearn (libtorch) for find_package(matpredict).
 include(CMakePackageConfigHelpers)
-install(TARGETS matbase matmaterial matgeom matrender matlearn_metrics matlearn_data matlearn EXPORT matpredictTargets
+install(TARGETS matbase matmaterial matgeom matrender matdataset_format matdataset_maker matlearn_metrics matlearn EXPORT matpredictTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-install(DIRECTORY libmatbase/include/matbase libmatmaterial/include/matmaterial libmatgeom/include/matgeom libmatrender/include/matrender libmatlearn/include/matlearn
+install(DIRECTORY libmatbase/include/matbase libmatmaterial/include/matmaterial libmatgeom/include/matgeom libmatrender/include/matrender libmatdataset/include/matdataset libmatlearn/include/matlearn
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(EXPORT matpredictTargets NAMESPACE matpredict::
         DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/matpredict)

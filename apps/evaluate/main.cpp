@@ -7,20 +7,20 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "matbase/input_error.h"
 #include "common/exit_codes.h"
 #include "common/number_options.h"
 #include "common/progress_bar.h"
 #include "common/thread_count.h"
 #include "matbase/file/atomic_file.h"
-#include "matlearn/dataset_error.h"
-#include "matlearn/dataset_index.h"
+#include "matbase/input_error.h"
+#include "matdataset/format/dataset_error.h"
+#include "matdataset/format/dataset_index.h"
+#include "matdataset/format/sample_loader.h"
+#include "matdataset/format/sample_reader.h"
 #include "matlearn/evaluation/evaluator.h"
 #include "matlearn/evaluation/inference.h"
 #include "matlearn/evaluation/panels.h"
 #include "matlearn/evaluation/report.h"
-#include "matlearn/sample_loader.h"
-#include "matlearn/sample_reader.h"
 #include "matlearn/training/checkpoint.h"
 #include "matmaterial/material_classes.h"
 
@@ -40,19 +40,19 @@ struct Options {
   std::filesystem::path mask;
 };
 
-std::vector<matlearn::SampleId> samples_to_score(const Options& o) {
+std::vector<matdataset::SampleId> samples_to_score(const Options& o) {
   if (!o.split_file.empty()) {
-    return matlearn::split_samples(matlearn::read_split_file(o.split_file), o.split, o.dataset_root);
+    return matdataset::split_samples(matdataset::read_split_file(o.split_file), o.split, o.dataset_root);
   }
   // train_regressor's split without a split file: whole variant folders, 80/20 by the seed.
-  const auto parts = matlearn::split_by_variant(matlearn::index_dataset(o.dataset_root), matlearn::SplitRatios{}, o.seed);
+  const auto parts = matdataset::split_by_variant(matdataset::index_dataset(o.dataset_root), matdataset::SplitRatios{}, o.seed);
   return o.split == "train" ? parts[0] : parts[1];
 }
 
 // How many samples were not scored for having no object pixel, and which (the first `named`, or
 // all when `named` is 0); empty when every sample was scored.
 std::string unscored_text(const matlearn::EvaluationResult& result, size_t total, int image_size, size_t named) {
-  const std::vector<matlearn::SampleId>& empty = result.empty_samples;
+  const std::vector<matdataset::SampleId>& empty = result.empty_samples;
   if (empty.empty()) return "";
   std::string text = fmt::format("{} of {} samples {} not scored: the object covers no pixel of {} at {} x {} px, "
                                  "where the metrics are undefined:",
@@ -73,9 +73,9 @@ std::string file_name(const std::string& text) {
 
 // Inference: the image resized to the network's size, its maps and a strip of them.
 int predict(const Options& o, const matlearn::CheckpointHeader& header, matlearn::RegressorImpl& model) {
-  matlearn::InputImage input;
+  matdataset::InputImage input;
   try {
-    input = matlearn::read_input_image(o.image, o.mask, header.image_size);
+    input = matdataset::read_input_image(o.image, o.mask, header.image_size);
   } catch (const std::runtime_error& e) {
     throw matbase::InputError(e.what());
   }
@@ -113,7 +113,7 @@ int run(const Options& o) {
   if (header.layout.regression_channels() == 0) throw matbase::InputError(checkpoint.string() + " predicts no maps");
   if (!o.image.empty()) return predict(o, header, *model);
   if (o.dataset_root.empty()) throw matbase::InputError("give --dataset-root to score a split, or --image to predict one image");
-  std::vector<matlearn::SampleId> samples;
+  std::vector<matdataset::SampleId> samples;
   try {
     samples = samples_to_score(o);
   } catch (const std::runtime_error& e) {
@@ -223,7 +223,7 @@ int main(int argc, char** argv) {
     return run(o);
   } catch (const matbase::InputError& e) {
     return app_support::report_error("evaluate", e.what(), app_support::kInputError);
-  } catch (const matlearn::DatasetError& e) {
+  } catch (const matdataset::DatasetError& e) {
     return app_support::report_error("evaluate", e.what(), app_support::kInputError);
   } catch (const std::exception& e) {
     return app_support::report_error("evaluate", e.what(), app_support::kRuntimeFailure);

@@ -15,16 +15,16 @@
 #include "common/number_options.h"
 #include "common/progress_bar.h"
 #include "common/thread_count.h"
-#include "dataset_config.h"
-#include "dataset_plan.h"
-#include "dataset_preview.h"
-#include "dataset_run.h"
-#include "verify_dataset.h"
 #include "matbase/memory_limit.h"
-#include "matlearn/dataset_writer.h"
+#include "matdataset/format/dataset_writer.h"
+#include "matdataset/format/verify_dataset.h"
+#include "matdataset/maker/dataset_config.h"
+#include "matdataset/maker/dataset_plan.h"
+#include "matdataset/maker/dataset_preview.h"
+#include "matdataset/maker/dataset_run.h"
 
-using make_dataset::InputError;
-using make_dataset::Override;
+using matbase::InputError;
+using matdataset::Override;
 
 namespace {
 
@@ -147,7 +147,7 @@ std::vector<Override> overrides(const Options& options) {
 }
 
 int verify(const std::string& folder) {
-  const make_dataset::VerifyReport report = make_dataset::verify_dataset(folder);
+  const matdataset::VerifyReport report = matdataset::verify_dataset(folder);
   constexpr size_t kShown = 50;
   for (size_t k = 0; k < std::min(report.problems.size(), kShown); ++k) fmt::print("{}\n", report.problems[k]);
   if (report.problems.size() > kShown) fmt::print("... and {} more\n", report.problems.size() - kShown);
@@ -157,7 +157,7 @@ int verify(const std::string& folder) {
 }
 
 int preview(const std::string& folder) {
-  const make_dataset::PreviewSummary summary = make_dataset::write_preview(folder);
+  const matdataset::PreviewSummary summary = matdataset::write_preview(folder);
   fmt::print("wrote {} contact sheets and {}: open it in a browser\n", summary.sheets, summary.index.string());
   if (summary.damaged.empty()) return 0;
   for (const std::string& problem : summary.damaged) fmt::print("{}\n", problem);
@@ -168,14 +168,14 @@ int preview(const std::string& folder) {
 }
 
 int make(const Options& options) {
-  const std::optional<make_dataset::Shard> shard = make_dataset::parse_shard(options.shard);
+  const std::optional<matdataset::Shard> shard = matdataset::parse_shard(options.shard);
   if (!shard) throw matbase::InputError("--shard: expected K/N with 0 <= K < N, got " + options.shard);
-  const make_dataset::DatasetConfig config = make_dataset::load_config(options.config_file, overrides(options));
+  const matdataset::DatasetConfig config = matdataset::load_config(options.config_file, overrides(options));
   if (options.print_config) {
     fmt::print("# output: {}\n{}", config.output, config.canonical_yaml);
     return 0;
   }
-  const make_dataset::DatasetPlan plan = make_dataset::plan_dataset(config);
+  const matdataset::DatasetPlan plan = matdataset::plan_dataset(config);
   size_t variants = 0;
   for (const auto& object : plan.variants) variants += object.size();
   fmt::print("make_dataset: {} objects, {} variants, {} views each: {} frames of {}x{} at {} spp{} into {}\n",
@@ -184,7 +184,7 @@ int make(const Options& options) {
              shard->count > 1 ? fmt::format(" (shard {}/{})", shard->index, shard->count) : "", config.output);
   std::fflush(stdout);
 
-  make_dataset::RunOptions run;
+  matdataset::RunOptions run;
   run.shard = *shard;
   run.threads = app_support::announced_worker_threads("make_dataset", "--threads", options.threads);
   run.cancel = app_support::cancel_on_interrupt();
@@ -195,7 +195,7 @@ int make(const Options& options) {
     bar.update(static_cast<double>(done) / static_cast<double>(std::max<size_t>(total, 1)),
                fmt::format("{}/{} frames, {:.2f} frames/s", done, total, rendered / std::max(seconds, 1e-9)));
   };
-  const make_dataset::RunSummary summary = make_dataset::run_dataset(config, plan, run);
+  const matdataset::RunSummary summary = matdataset::run_dataset(config, plan, run);
   bar.finish();
   const double rate = summary.rendered / std::max(summary.render_seconds, 1e-9);
   fmt::print("rendered {} frames and found {} complete, of {} in this shard, in {:.1f} s ({:.2f} frames/s, "
@@ -205,16 +205,16 @@ int make(const Options& options) {
     return report_error(fmt::format("interrupted: {} of {} frames are done; run the same command again to resume",
                                     summary.rendered + summary.skipped, summary.frames),
                         app_support::interrupted_exit_code());
-  for (const matlearn::SplitFile& split : summary.splits)
+  for (const matdataset::SplitFile& split : summary.splits)
     fmt::print("split {}: {} train, {} val, {} test{}\n", split.name, split.train.size(), split.val.size(),
                split.test.size(),
                split.train.empty() || split.test.empty() || (split.val.empty() && split.strategy != "random")
                    ? " (too few groups to fill every split)"
                    : "");
   std::string folders;
-  for (const matlearn::DatasetMapInfo& map : matlearn::dataset_maps()) folders += std::string(map.folder) + "/, ";
+  for (const matdataset::DatasetMapInfo& map : matdataset::dataset_maps()) folders += std::string(map.folder) + "/, ";
   fmt::print("wrote {} ({}): per object and variant {}transforms.json, metadata.json; config/ holds the split files\n",
-             config.output, matbase::byte_size_text(static_cast<double>(make_dataset::folder_bytes(config.output))),
+             config.output, matbase::byte_size_text(static_cast<double>(matdataset::folder_bytes(config.output))),
              folders);
   // Written, as rendered, but a frame without the object trains to a loss of 0: not a success.
   if (!summary.empty_frames.empty())

@@ -2,9 +2,9 @@
 
 #include <fmt/format.h>
 
-#include "make_dataset/dataset_config.h"
-#include "make_dataset/dataset_plan.h"
-#include "make_dataset/dataset_run.h"
+#include "matdataset/maker/dataset_config.h"
+#include "matdataset/maker/dataset_plan.h"
+#include "matdataset/maker/dataset_run.h"
 
 namespace train_regressor {
 
@@ -23,15 +23,15 @@ camera:
 render: {{resolution: {}, samples: {}, material_resolution: 64}}
 )",
                                        size.views, size.resolution, size.samples);
-  const make_dataset::DatasetConfig config =
-      make_dataset::parse_config(yaml, "train_regressor's example dataset", std::filesystem::current_path(),
-                                 {{"output", "\"" + root.string() + "\"", "train_regressor"}});
-  const make_dataset::DatasetPlan plan = make_dataset::plan_dataset(config);
-  make_dataset::RunOptions run;
+  const matdataset::DatasetConfig config =
+      matdataset::parse_config(yaml, "train_regressor's example dataset", std::filesystem::current_path(),
+                               {{"output", "\"" + root.string() + "\"", "train_regressor"}});
+  const matdataset::DatasetPlan plan = matdataset::plan_dataset(config);
+  matdataset::RunOptions run;
   run.progress = [&progress](size_t done, size_t total, size_t) {
     if (progress) progress(static_cast<int>(done), static_cast<int>(total));
   };
-  make_dataset::run_dataset(config, plan, run);
+  matdataset::run_dataset(config, plan, run);
   return static_cast<int>(plan.frames.size());
 }
 

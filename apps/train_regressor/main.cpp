@@ -14,7 +14,7 @@
 #include "common/thread_count.h"
 #include "example_dataset.h"
 #include "matbase/file/atomic_file.h"
-#include "matlearn/dataset_error.h"
+#include "matdataset/format/dataset_error.h"
 #include "matlearn/models/regressor.h"
 #include "matlearn/training/trainer.h"
 #include "training_options.h"
@@ -182,7 +182,7 @@ int main(int argc, char** argv) {
     return train(options, /*example=*/argc == 1);
   } catch (const matbase::InputError& e) {
     return app_support::report_error("train_regressor", e.what(), app_support::kInputError);
-  } catch (const matlearn::DatasetError& e) {
+  } catch (const matdataset::DatasetError& e) {
     return app_support::report_error("train_regressor", e.what(), app_support::kInputError);
   } catch (const std::exception& e) {
     return app_support::report_error("train_regressor", e.what(), app_support::kRuntimeFailure);

@@ -10,8 +10,8 @@
 #include <fmt/format.h>
 
 #include "common/number_options.h"
-#include "common/yaml_checks.h"
-#include "matlearn/sample_loader.h"
+#include "matbase/document/yaml_checks.h"
+#include "matdataset/format/sample_loader.h"
 
 namespace train_regressor {
 namespace {
@@ -218,7 +218,7 @@ std::map<std::string, std::string> resolve_settings(const Options& options) {
     }
     if (!root.IsMap()) throw matbase::InputError(file + ": expected a mapping of settings");
     // yaml-cpp keeps both entries of a repeated key, and this loop would take the last.
-    if (const std::optional<std::string> problem = app_support::repeated_key_problem(root))
+    if (const std::optional<std::string> problem = matbase::repeated_key_problem(root))
       throw matbase::InputError(file + ": " + *problem);
     for (const auto& entry : root) {
       const std::string key = entry.first.as<std::string>();
@@ -294,14 +294,14 @@ matlearn::TrainingConfig training_config(const std::map<std::string, std::string
   c.dataset_root = s.at("dataset_root");
   try {
     if (!s.at("split_file").empty()) {
-      const matlearn::SplitFile split = matlearn::read_split_file(s.at("split_file"));
-      c.train_samples = matlearn::split_samples(split, "train", c.dataset_root);
-      c.validation_samples = matlearn::split_samples(split, "val", c.dataset_root);
+      const matdataset::SplitFile split = matdataset::read_split_file(s.at("split_file"));
+      c.train_samples = matdataset::split_samples(split, "train", c.dataset_root);
+      c.validation_samples = matdataset::split_samples(split, "val", c.dataset_root);
       if (c.train_samples.empty()) throw matbase::InputError(s.at("split_file") + ": its train list is empty");
     } else {
-      const std::vector<matlearn::SampleId> all = matlearn::index_dataset(c.dataset_root);
+      const std::vector<matdataset::SampleId> all = matdataset::index_dataset(c.dataset_root);
       if (all.empty()) throw matbase::InputError(c.dataset_root.string() + ": no samples in the MatPredict layout");
-      const auto parts = matlearn::split_by_variant(all, matlearn::SplitRatios{}, c.seed);
+      const auto parts = matdataset::split_by_variant(all, matdataset::SplitRatios{}, c.seed);
       c.train_samples = parts[0];
       c.validation_samples = parts[1];
     }

@@ -19,9 +19,9 @@
 #include <nlohmann/json.hpp>
 
 #include "matbase/pi.h"
-#include "matlearn/dataset_index.h"
-#include "matlearn/decoded_image.h"
-#include "matlearn/sample_reader.h"
+#include "matdataset/format/dataset_index.h"
+#include "matdataset/format/decoded_image.h"
+#include "matdataset/format/sample_reader.h"
 
 namespace fs = std::filesystem;
 
@@ -51,7 +51,7 @@ void write_material_folder(const fs::path& folder, const std::vector<uint8_t>& b
 }
 
 // The stored 8-bit code of a value libmatlearn's decode read.
-int code(const matlearn::Image& map, int x, int y, int c) { return static_cast<int>(std::lround(map.at(x, y, c) * 255.0f)); }
+int code(const matbase::FloatImage& map, int x, int y, int c) { return static_cast<int>(std::lround(map.at(x, y, c) * 255.0f)); }
 
 // Runs make_dataset; its standard error goes to `errors` when given.
 int run(const std::string& arguments, const fs::path& errors = "/dev/null") {
@@ -114,20 +114,20 @@ render: {resolution: 48, samples: 8}
 TEST_CASE("The tiny dataset has every frame of the plan, and --verify finds no problem", "[dataset]") {
   const fs::path& root = tiny_dataset();
   // chair: 1 x 2 variants, vase: 1; 2 x 3 views each.
-  const std::vector<matlearn::SampleId> samples = matlearn::index_dataset(root);
+  const std::vector<matdataset::SampleId> samples = matdataset::index_dataset(root);
   CHECK(samples.size() == 18);
   CHECK(samples.front().str() == "chair/var000/000");
   CHECK(samples.back().str() == "vase/var000/005");
   CHECK(run("--verify " + root.string()) == 0);
   for (const char* split : {"object_disjoint_v1", "variance_disjoint_v1", "material_disjoint_v1", "paper_random_v1"}) {
-    const matlearn::SplitFile file = matlearn::read_split_file(root / "config" / (std::string(split) + ".yaml"));
+    const matdataset::SplitFile file = matdataset::read_split_file(root / "config" / (std::string(split) + ".yaml"));
     CHECK(file.train.size() + file.val.size() + file.test.size() == 18);
   }
 }
 
 // Sets the depth (R, G and B) of the first `values.size()` covered pixels of a depth map.
 void damage_depth(const fs::path& file, const std::vector<float>& values) {
-  const matlearn::Image depth = matlearn::decode(file);
+  const matbase::FloatImage depth = matdataset::decode(file);
   std::vector<float> pixels = depth.values;
   size_t next = 0;
   for (size_t p = 0; p < pixels.size() / 4 && next < values.size(); ++p)
@@ -247,11 +247,11 @@ TEST_CASE("A second run with other objects or fewer variants into a folder is re
 TEST_CASE("ORM's G is the material's roughness and the label its class at every covered pixel", "[dataset]") {
   const fs::path& root = tiny_dataset();
   size_t interior = 0;
-  for (const matlearn::SampleId& id : matlearn::index_dataset(root)) {
+  for (const matdataset::SampleId& id : matdataset::index_dataset(root)) {
     const fs::path variant = root / id.object / id.variant;
-    const matlearn::Image orm = matlearn::decode(variant / "ORM" / (id.stem + ".png"));
-    const matlearn::Image label = matlearn::decode(variant / "label" / (id.stem + ".png"));
-    const matlearn::Image depth = matlearn::decode(variant / "depth" / (id.stem + ".exr"));
+    const matbase::FloatImage orm = matdataset::decode(variant / "ORM" / (id.stem + ".png"));
+    const matbase::FloatImage label = matdataset::decode(variant / "label" / (id.stem + ".png"));
+    const matbase::FloatImage depth = matdataset::decode(variant / "depth" / (id.stem + ".exr"));
     REQUIRE((orm.width == kSize && label.width == kSize && depth.width == kSize));
     // The classes metadata.json says the variant uses.
     const nlohmann::json metadata = nlohmann::json::parse(std::ifstream(variant / "metadata.json"));
@@ -283,12 +283,12 @@ TEST_CASE("ORM's G is the material's roughness and the label its class at every 
 
 TEST_CASE("libmatlearn's reader reads the dataset: roughness is ORM's G, the mask is the label", "[dataset]") {
   const fs::path& root = tiny_dataset();
-  matlearn::SampleSettings settings;
+  matdataset::SampleSettings settings;
   settings.size = kSize;  // as stored: no resize
-  for (const matlearn::SampleId& id : matlearn::index_dataset(root)) {
-    const matlearn::MaterialSample sample = matlearn::read_sample(root, id, settings);
-    const matlearn::Image orm = matlearn::decode(root / id.object / id.variant / "ORM" / (id.stem + ".png"));
-    const matlearn::Image label = matlearn::decode(root / id.object / id.variant / "label" / (id.stem + ".png"));
+  for (const matdataset::SampleId& id : matdataset::index_dataset(root)) {
+    const matdataset::MaterialSample sample = matdataset::read_sample(root, id, settings);
+    const matbase::FloatImage orm = matdataset::decode(root / id.object / id.variant / "ORM" / (id.stem + ".png"));
+    const matbase::FloatImage label = matdataset::decode(root / id.object / id.variant / "label" / (id.stem + ".png"));
     REQUIRE(sample.has_label);
     size_t mismatches = 0;
     for (int y = 0; y < kSize; ++y)
@@ -340,7 +340,7 @@ TEST_CASE("A folder made with other settings is refused, not mixed with new fram
 
 // A frame's sample counts, decoded from its 16-bit map.
 std::vector<int> sample_counts(const fs::path& variant, const std::string& stem) {
-  const matlearn::Image map = matlearn::decode(variant / "sample_count" / (stem + ".png"));
+  const matbase::FloatImage map = matdataset::decode(variant / "sample_count" / (stem + ".png"));
   REQUIRE(map.channels == 1);
   std::vector<int> counts;
   for (const float v : map.values) counts.push_back(static_cast<int>(std::lround(v * 65535.0f)));
@@ -349,7 +349,7 @@ std::vector<int> sample_counts(const fs::path& variant, const std::string& stem)
 
 TEST_CASE("Every pixel of a fixed-sample dataset took the samples the render states", "[dataset]") {
   const fs::path& root = tiny_dataset();
-  for (const matlearn::SampleId& id : matlearn::index_dataset(root))
+  for (const matdataset::SampleId& id : matdataset::index_dataset(root))
     for (const int count : sample_counts(root / id.object / id.variant, id.stem)) REQUIRE(count == 8);
 }
 
@@ -371,7 +371,7 @@ TEST_CASE("With a noise threshold, pixels stop where the image has converged", "
   double object_samples = 0.0;
   for (const char* stem : {"000", "001"}) {
     const std::vector<int> counts = sample_counts(variant, stem);
-    const matlearn::Image depth = matlearn::decode(variant / "depth" / (std::string(stem) + ".exr"));
+    const matbase::FloatImage depth = matdataset::decode(variant / "depth" / (std::string(stem) + ".exr"));
     for (int y = 1; y + 1 < depth.height; ++y)
       for (int x = 1; x + 1 < depth.width; ++x) {
         const int count = counts[static_cast<size_t>(y * depth.width + x)];
@@ -415,7 +415,7 @@ TEST_CASE("Images are exposed by the grey-card rule unless an exposure is given"
     std::vector<int> codes;
     size_t clipped = 0;
     for (const char* stem : {"000", "001"}) {
-      const matlearn::Image image = matlearn::decode(variant / "images" / (std::string(stem) + ".png"));
+      const matbase::FloatImage image = matdataset::decode(variant / "images" / (std::string(stem) + ".png"));
       for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x) {
           if (image.at(x, y, 3) < 1.0f) continue;
@@ -470,32 +470,32 @@ paper_texture_layout: true
 )";
   REQUIRE(run("--config " + (dir / "paper.yaml").string() + " --output " + (dir / "out").string()) == 0);
   const fs::path root = dir / "out" / "paper_textures";
-  REQUIRE(matlearn::dataset_layout(root) == matlearn::DatasetLayout::paper_textures);
-  const std::vector<matlearn::SampleId> samples = matlearn::index_dataset(root);
+  REQUIRE(matdataset::dataset_layout(root) == matdataset::DatasetLayout::paper_textures);
+  const std::vector<matdataset::SampleId> samples = matdataset::index_dataset(root);
   REQUIRE(samples.size() == 6);
   CHECK(samples.front().str() == "vase/metal_flat/000");
   // The references are the folders' constant maps.
-  const matlearn::Image roughness = matlearn::decode(root / "ground_truth_roughness" / "wood_flat.png");
+  const matbase::FloatImage roughness = matdataset::decode(root / "ground_truth_roughness" / "wood_flat.png");
   CHECK(code(roughness, 0, 0, 0) == kWoodRoughness);
   CHECK(code(roughness, 7, 7, 2) == kWoodRoughness);
-  CHECK(code(matlearn::decode(root / "ground_truth_metallic" / "metal_flat.png"), 3, 3, 1) == 255);
-  CHECK(code(matlearn::decode(root / "ground_truth_basecolour" / "wood_flat.png"), 0, 0, 0) == 150);
-  for (const matlearn::SampleId& id : samples) {
+  CHECK(code(matdataset::decode(root / "ground_truth_metallic" / "metal_flat.png"), 3, 3, 1) == 255);
+  CHECK(code(matdataset::decode(root / "ground_truth_basecolour" / "wood_flat.png"), 0, 0, 0) == 150);
+  for (const matdataset::SampleId& id : samples) {
     INFO(id.str());
-    const matlearn::Image shot = matlearn::decode(root / "rendered_cropped" / id.object / id.variant / (id.stem + ".png"));
+    const matbase::FloatImage shot = matdataset::decode(root / "rendered_cropped" / id.object / id.variant / (id.stem + ".png"));
     // Square, cropped (smaller than the frame or the frame itself), white in the corners.
     CHECK(shot.width == shot.height);
     CHECK(shot.width <= 44);
     CHECK(shot.channels == 3);
     CHECK(code(shot, 0, 0, 0) == 255);
     CHECK(code(shot, shot.width - 1, shot.height - 1, 1) == 255);
-    matlearn::SampleSettings settings;
+    matdataset::SampleSettings settings;
     settings.size = 16;
-    const matlearn::MaterialSample sample = matlearn::read_sample(root, id, settings);
+    const matdataset::MaterialSample sample = matdataset::read_sample(root, id, settings);
     CHECK(sample.roughness.values[0] == Approx((id.variant == "wood_flat" ? kWoodRoughness : kMetalRoughness) / 255.0));
   }
   // The repository layout is there as well, and the resumed run finds every frame whole.
-  CHECK(matlearn::index_dataset(dir / "out").size() == 6);
+  CHECK(matdataset::index_dataset(dir / "out").size() == 6);
   CHECK(run("--verify " + (dir / "out").string()) == 0);
   fs::remove(root / "rendered_cropped" / "vase" / "wood_flat" / "001.png");
   REQUIRE(run("--config " + (dir / "paper.yaml").string() + " --output " + (dir / "out").string()) == 0);

@@ -51,7 +51,7 @@ CATCH_TEST_CASE("Evaluation scores the sigmoid maps against the truth, whole and
   const CheckpointHeader& header = file.header;
   const auto model = load_model(file);
   const fs::path root = training_dataset::four_image_dataset();
-  const std::vector<SampleId> samples = index_dataset(root);
+  const std::vector<matdataset::SampleId> samples = matdataset::index_dataset(root);
   EvaluationSettings settings;
   settings.threads = 1;
   const EvaluationResult result = evaluate_samples(*model, header, root, samples, settings);
@@ -120,7 +120,7 @@ CATCH_TEST_CASE("A sample the object is in no pixel of is not scored, and named;
                         [](int, int, int) -> uint8_t { return 0; });
   };
   empty_label("object_1/var000");
-  const std::vector<SampleId> samples = index_dataset(root);
+  const std::vector<matdataset::SampleId> samples = matdataset::index_dataset(root);
   EvaluationSettings settings;
   settings.threads = 1;
   const EvaluationResult result = evaluate_samples(*model, file.header, root, samples, settings);
@@ -137,16 +137,16 @@ CATCH_TEST_CASE("Inference predicts every map of one image at the network's size
   const Checkpoint file = read_checkpoint(checkpoint);
   const CheckpointHeader& header = file.header;
   const auto model = load_model(file);
-  const Image rgb(training_dataset::kSize, training_dataset::kSize, 3, 0.3f);
+  const matbase::FloatImage rgb(training_dataset::kSize, training_dataset::kSize, 3, 0.3f);
   const PredictedMaps predicted = predict_maps(*model, header, rgb);
   CATCH_REQUIRE(predicted.names == std::vector<std::string>{"base_color", "roughness"});
   CATCH_CHECK(predicted.maps[1].channels == 3);
-  for (const Image& map : predicted.maps) {
+  for (const matbase::FloatImage& map : predicted.maps) {
     CATCH_CHECK(map.width == training_dataset::kSize);
     CATCH_CHECK(std::all_of(map.values.begin(), map.values.end(), [](float v) { return v == 0.5f; }));
   }
   const fs::path strip = fs::temp_directory_path() / "matpredict_inference_strip.png";
-  write_prediction_strip(strip, rgb, Mask(rgb.pixel_count(), 1), predicted);
+  write_prediction_strip(strip, rgb, matbase::Mask(rgb.pixel_count(), 1), predicted);
   auto in = OIIO::ImageInput::open(strip.string());
   CATCH_REQUIRE(in);
   CATCH_CHECK(in->spec().width == 3 * training_dataset::kSize);

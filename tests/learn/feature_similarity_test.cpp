@@ -6,9 +6,9 @@
 #include <random>
 
 #include "matlearn/image_metrics.h"
-#include "noisy_image.h"
 #include "matlearn/paper_compat_metrics.h"
 #include "metrics/phase_congruency.h"
+#include "noisy_image.h"
 
 using namespace matlearn;
 
@@ -28,10 +28,10 @@ std::vector<double> step_image(double dark, double bright) {
   return v;
 }
 
-Image textured_image(uint32_t seed) {
+matbase::FloatImage textured_image(uint32_t seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> frequency(0.05f, 0.4f), phase(0.0f, 6.28f);
-  Image image(kSize, kSize, 3);
+  matbase::FloatImage image(kSize, kSize, 3);
   for (int c = 0; c < 3; ++c) {
     const float f1 = frequency(rng), f2 = frequency(rng), p = phase(rng);
     for (int y = 0; y < kSize; ++y)
@@ -71,7 +71,7 @@ TEST_CASE("Phase congruency marks a thin line as well as an edge", "[learn]") {
 }
 
 TEST_CASE("Phase congruency ignores brightness and contrast", "[learn]") {
-  const Image image = textured_image(1);
+  const matbase::FloatImage image = textured_image(1);
   std::vector<double> v(kSize * kSize), scaled(kSize * kSize);
   for (size_t p = 0; p < v.size(); ++p) {
     v[p] = image.values[3 * p];
@@ -86,7 +86,7 @@ TEST_CASE("Phase congruency ignores brightness and contrast", "[learn]") {
 }
 
 TEST_CASE("FSIM is 1 for identical images and falls as noise grows", "[learn]") {
-  const Image image = textured_image(2);
+  const matbase::FloatImage image = textured_image(2);
   CHECK(fsim(image, image, 1.0) == Approx(1.0).epsilon(1e-12));
   double previous = 1.0;
   for (float sigma : {0.01f, 0.03f, 0.1f}) {
@@ -96,21 +96,21 @@ TEST_CASE("FSIM is 1 for identical images and falls as noise grows", "[learn]") 
     CHECK(value > 0.0);
     previous = value;
   }
-  CHECK(std::isnan(fsim(Image(kSize, kSize, 1, 0.5f), Image(kSize, kSize, 1, 0.5f), 1.0)));
+  CHECK(std::isnan(fsim(matbase::FloatImage(kSize, kSize, 1, 0.5f), matbase::FloatImage(kSize, kSize, 1, 0.5f), 1.0)));
 }
 
 TEST_CASE("FSIM does not depend on the units of the data range", "[learn]") {
   // Gradients scale with the values and T2 with the square of the range; phase congruency
   // does not scale at all.
-  const Image truth = textured_image(3), prediction = plus_noise(truth, 0.03f, 8);
-  Image truth_255 = truth, prediction_255 = prediction;
+  const matbase::FloatImage truth = textured_image(3), prediction = plus_noise(truth, 0.03f, 8);
+  matbase::FloatImage truth_255 = truth, prediction_255 = prediction;
   for (float& v : truth_255.values) v *= 255.0f;
   for (float& v : prediction_255.values) v *= 255.0f;
   CHECK(fsim(truth_255, prediction_255, 255.0) == Approx(fsim(truth, prediction, 1.0)).margin(2e-3));
 }
 
 TEST_CASE("Paper-compatible FSIM is 1 for identical images and below 1 otherwise", "[learn]") {
-  const Image truth = textured_image(4), prediction = plus_noise(truth, 0.03f, 9);
+  const matbase::FloatImage truth = textured_image(4), prediction = plus_noise(truth, 0.03f, 9);
   const paper_compat::Image8 truth8 = paper_compat::quantize_8bit(truth);
   const paper_compat::Image8 prediction8 = paper_compat::quantize_8bit(prediction);
   CHECK(paper_compat::fsim(truth8, truth8) == Approx(1.0).epsilon(1e-12));

@@ -12,8 +12,8 @@ using namespace matlearn;
 
 namespace {
 
-Image ramp(int channels) {
-  Image image(24, 24, channels);
+matbase::FloatImage ramp(int channels) {
+  matbase::FloatImage image(24, 24, channels);
   for (int y = 0; y < 24; ++y)
     for (int x = 0; x < 24; ++x)
       for (int c = 0; c < channels; ++c) image.at(x, y, c) = 0.2f + 0.02f * static_cast<float>(x) + 0.1f * static_cast<float>(c);
@@ -23,7 +23,7 @@ Image ramp(int channels) {
 }  // namespace
 
 TEST_CASE("A map scored against itself is perfect on every metric", "[learn]") {
-  const Image a = ramp(3);
+  const matbase::FloatImage a = ramp(3);
   const MetricScores s = score_map(a, a, {}, MetricConvention::correct);
   CHECK(s[Metric::rmse] == 0.0);
   CHECK(std::isinf(s[Metric::psnr]));
@@ -36,10 +36,10 @@ TEST_CASE("A map scored against itself is perfect on every metric", "[learn]") {
 }
 
 TEST_CASE("The paper-compatible convention cuts the object out and quantises to 8 bits", "[learn]") {
-  const Image truth = ramp(3);
-  Image prediction = truth;
+  const matbase::FloatImage truth = ramp(3);
+  matbase::FloatImage prediction = truth;
   // Off the mask the prediction is wrong; cut out, that does not count.
-  Mask mask(truth.pixel_count(), 1);
+  matbase::Mask mask(truth.pixel_count(), 1);
   for (int y = 0; y < 24; ++y) {
     mask[static_cast<size_t>(y * 24)] = 0;
     for (int c = 0; c < 3; ++c) prediction.at(0, y, c) = 1.0f;

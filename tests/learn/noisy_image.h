@@ -3,12 +3,12 @@
 #include <cstdint>
 #include <random>
 
-#include "matlearn/image.h"
+#include "matbase/image/float_image.h"
 
-inline matlearn::Image plus_noise(const matlearn::Image& image, float sigma, uint32_t seed) {
+inline matbase::FloatImage plus_noise(const matbase::FloatImage& image, float sigma, uint32_t seed) {
   std::mt19937 rng(seed);
   std::normal_distribution<float> noise(0.0f, sigma);
-  matlearn::Image noisy = image;
+  matbase::FloatImage noisy = image;
   for (float& v : noisy.values) v += noise(rng);
   return noisy;
 }

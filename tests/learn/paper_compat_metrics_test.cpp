@@ -22,13 +22,13 @@ compat::Image8 image8(int width, int height, int channels, std::vector<uint8_t> 
 // A smooth 8-bit RGB image and the same plus Gaussian noise of `sigma` grey levels, as floats in
 // [0, 1] (the correct metrics) and quantised (the compatible ones).
 struct NoisyPair {
-  Image truth, prediction;
+  matbase::FloatImage truth, prediction;
 };
 
 NoisyPair smooth_and_noisy(int size, float sigma_grey_levels) {
   std::mt19937 rng(42);
   std::normal_distribution<float> noise(0.0f, sigma_grey_levels);
-  NoisyPair pair{Image(size, size, 3), Image(size, size, 3)};
+  NoisyPair pair{matbase::FloatImage(size, size, 3), matbase::FloatImage(size, size, 3)};
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x)
       for (int c = 0; c < 3; ++c) {
@@ -42,7 +42,7 @@ NoisyPair smooth_and_noisy(int size, float sigma_grey_levels) {
 }  // namespace
 
 TEST_CASE("Quantising to 8 bits rounds and clamps", "[learn]") {
-  Image image(6, 1, 1);
+  matbase::FloatImage image(6, 1, 1);
   image.values = {0.0f, 1.0f, 0.5f, -0.2f, 1.7f, std::nanf("")};
   CHECK(compat::quantize_8bit(image).values == std::vector<uint8_t>{0, 255, 128, 0, 255, 0});
 }
@@ -83,7 +83,7 @@ TEST_CASE("Paper-compatible ISSM is 0 on 8-bit images, the correct one in (0, 1]
 
 TEST_CASE("Paper-compatible UIQ scores equal flat windows 0", "[learn]") {
   const compat::Image8 flat = image8(8, 8, 1, std::vector<uint8_t>(64, 90));
-  Image flat_float(8, 8, 1, 90.0f);
+  matbase::FloatImage flat_float(8, 8, 1, 90.0f);
   CHECK(compat::uiq(flat, flat) == 0.0);
   CHECK(uiq(flat_float, flat_float) == 1.0);
 }

@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <string>
 
-#include "matlearn/dataset_index.h"
+#include "matdataset/format/dataset_index.h"
 #include "matlearn/training/trainer.h"
-#include "synthetic_png.h"
+#include "support/synthetic_png.h"
 
 namespace training_dataset {
 
@@ -25,7 +25,7 @@ inline uint8_t encoded_normal(int k, int c) {
 
 inline bool inside_disc(int x, int y) { return (x - 15.5) * (x - 15.5) + (y - 15.5) * (y - 15.5) < 120.0; }
 
-inline int sample_index(const matlearn::SampleId& id) {
+inline int sample_index(const matdataset::SampleId& id) {
   return 2 * (id.variant.back() - '0') + (id.object.back() - '0');
 }
 
@@ -64,7 +64,7 @@ inline std::filesystem::path four_image_dataset() {
 inline matlearn::TrainingConfig quick_config(const std::string& output) {
   matlearn::TrainingConfig c;
   c.dataset_root = four_image_dataset();
-  c.train_samples = matlearn::index_dataset(c.dataset_root);
+  c.train_samples = matdataset::index_dataset(c.dataset_root);
   c.network = "unet_no_skip";
   c.width_divisor = 4;
   c.image_size = kSize;

@@ -12,7 +12,7 @@
 #include <random>
 #include <string>
 
-#include "matlearn/dataset_index.h"
+#include "matdataset/format/dataset_index.h"
 #include "matlearn/training/batch.h"
 #include "matlearn/training/checkpoint.h"
 #include "matlearn/training/learning_rate_schedule.h"
@@ -90,11 +90,11 @@ CATCH_TEST_CASE("Batches stack each output group's map in the layout's order", "
   OutputLayout layout = OutputLayout::paper();  // base colour 3 + roughness 3
   layout.groups.push_back({MapKind::normal, 3, 1.0});
   const fs::path root = training_dataset::four_image_dataset();
-  const std::vector<SampleId> ids = index_dataset(root);
-  const SampleSettings settings = sample_settings(layout, training_dataset::kSize, false);
+  const std::vector<matdataset::SampleId> ids = matdataset::index_dataset(root);
+  const matdataset::SampleSettings settings = sample_settings(layout, training_dataset::kSize, false);
   CATCH_CHECK(settings.read_normal);
-  std::vector<MaterialSample> samples;
-  for (const SampleId& id : ids) samples.push_back(read_sample(root, id, settings));
+  std::vector<matdataset::MaterialSample> samples;
+  for (const matdataset::SampleId& id : ids) samples.push_back(matdataset::read_sample(root, id, settings));
   const Batch batch = make_batch(samples, layout, InputNormalization::none);
   CATCH_REQUIRE(batch.target.sizes() == torch::IntArrayRef({4, 9, 32, 32}));
   for (size_t i = 0; i < ids.size(); ++i) {
@@ -107,7 +107,7 @@ CATCH_TEST_CASE("Batches stack each output group's map in the layout's order", "
     }
   }
   // Samples read without their normal maps do not make a batch that needs them.
-  std::vector<MaterialSample> without = {read_sample(root, ids[0], sample_settings(OutputLayout::paper(), 32, false))};
+  std::vector<matdataset::MaterialSample> without = {matdataset::read_sample(root, ids[0], sample_settings(OutputLayout::paper(), 32, false))};
   CATCH_CHECK_THROWS_WITH(make_batch(without, layout, InputNormalization::none), Catch::Contains("normal"));
 }
 
@@ -127,7 +127,7 @@ CATCH_TEST_CASE("Training reads the paper's texture-target layout too", "[learn]
   }
   TrainingConfig c = quick_config("matpredict_paper_layout_output");
   c.dataset_root = root;
-  c.train_samples = index_dataset(root);
+  c.train_samples = matdataset::index_dataset(root);
   CATCH_REQUIRE(c.train_samples.size() == 4);
   c.epochs = 60;
   c.learning_rate = 3e-3;

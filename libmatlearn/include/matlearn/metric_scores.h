@@ -4,7 +4,7 @@
 #include <array>
 #include <string>
 
-#include "matlearn/image.h"
+#include "matbase/image/float_image.h"
 
 namespace matlearn {
 
@@ -32,7 +32,7 @@ enum class MetricConvention {
 // maps. In the paper-compatible one pixels outside the mask are set to 0 in both images (the
 // object cut out, as on the dataset's black background), then both are quantised to 8 bits and
 // compared whole, as the package does.
-MetricScores score_map(const Image& truth, const Image& prediction, const Mask& mask, MetricConvention convention);
+MetricScores score_map(const matbase::FloatImage& truth, const matbase::FloatImage& prediction, const matbase::Mask& mask, MetricConvention convention);
 
 // The mean of many maps' scores, metric by metric: NaN entries are skipped (a mean of none is
 // NaN); an infinite PSNR (a perfect map) makes the mean infinite.

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "matlearn/image.h"
+#include "matbase/image/float_image.h"
 
 namespace matlearn::paper_compat {
 
@@ -20,9 +20,9 @@ struct Image8 {
 };
 
 // Values in [0, 1] to 8 bits: round(255 v), clamped.
-Image8 quantize_8bit(const Image& image);
+Image8 quantize_8bit(const matbase::FloatImage& image);
 // The 8-bit values as floats 0..255, what numpy computes with once an array is cast.
-Image widen(const Image8& image);
+matbase::FloatImage widen(const Image8& image);
 
 // Its 12-bit default max_p = 4095, whatever the images' real range (an 8-bit image's RMSE comes
 // out 16 times too small, its PSNR 24 dB too high).

@@ -1,8 +1,8 @@
 #include "matlearn/evaluation/evaluator.h"
 
 #include "matbase/threads.h"
-#include "matlearn/dataset_error.h"
-#include "matlearn/sample_loader.h"
+#include "matdataset/format/dataset_error.h"
+#include "matdataset/format/sample_loader.h"
 #include "matlearn/training/batch.h"
 #include "matlearn/training/loss.h"
 #include "matlearn/training/tensor_memory_cache.h"
@@ -10,7 +10,7 @@
 namespace matlearn {
 namespace {
 
-int count(const Mask& mask) {
+int count(const matbase::Mask& mask) {
   int n = 0;
   for (uint8_t m : mask) n += m != 0;
   return n;
@@ -19,18 +19,18 @@ int count(const Mask& mask) {
 }  // namespace
 
 EvaluationResult evaluate_samples(RegressorImpl& model, const CheckpointHeader& header, const std::filesystem::path& root,
-                                  const std::vector<SampleId>& samples, const EvaluationSettings& settings,
+                                  const std::vector<matdataset::SampleId>& samples, const EvaluationSettings& settings,
                                   const std::function<void(size_t, size_t)>& progress) {
   const int threads = matbase::worker_threads(settings.threads);
   use_tensor_memory_cache();
   torch::set_num_threads(threads);
-  LoaderSettings loader_settings;
+  matdataset::LoaderSettings loader_settings;
   loader_settings.sample = sample_settings(header.layout, header.image_size, header.linear_albedo);
   loader_settings.batch_size = settings.batch_size;
   loader_settings.shuffle = false;
   loader_settings.threads = threads;
-  require_sample_files(root, samples, loader_settings.sample, "the samples to score under " + root.string());
-  const SampleLoader loader(root, samples, loader_settings);
+  matdataset::require_sample_files(root, samples, loader_settings.sample, "the samples to score under " + root.string());
+  const matdataset::SampleLoader loader(root, samples, loader_settings);
   const InputNormalization normalization = info(architecture_named(header.network).architecture).input_normalization;
   const OutputLayout& layout = header.layout;
 
@@ -39,12 +39,12 @@ EvaluationResult evaluate_samples(RegressorImpl& model, const CheckpointHeader& 
   torch::NoGradGuard no_grad;
   size_t done = 0;
   for (size_t b = 0; b < loader.batch_count(); ++b) {
-    const std::vector<MaterialSample> batch_samples = loader.batch(0, b);
+    const std::vector<matdataset::MaterialSample> batch_samples = loader.batch(0, b);
     const Batch batch = make_batch(batch_samples, layout, normalization);
     const torch::Tensor maps = predicted_maps(model.forward(batch.input), layout);
     for (size_t i = 0; i < batch_samples.size(); ++i) {
-      const MaterialSample& s = batch_samples[i];
-      const SampleId& id = loader.samples()[done + i];
+      const matdataset::MaterialSample& s = batch_samples[i];
+      const matdataset::SampleId& id = loader.samples()[done + i];
       if (count(s.mask) == 0) {
         result.empty_samples.push_back(id);
         continue;
@@ -56,11 +56,11 @@ EvaluationResult evaluate_samples(RegressorImpl& model, const CheckpointHeader& 
         predictions.predictions.push_back(to_hwc(maps[static_cast<int64_t>(i)].narrow(0, layout.first_channel(g), layout.groups[g].channels)));
       }
       // The whole object, then each family present in the label.
-      std::map<int32_t, Mask> regions = {{kWholeObject, s.mask}};
+      std::map<int32_t, matbase::Mask> regions = {{kWholeObject, s.mask}};
       if (s.has_label)
         for (size_t p = 0; p < s.material_id.size(); ++p)
           if (s.mask[p] && s.material_id[p] > 0) {
-            Mask& region = regions[s.material_id[p]];
+            matbase::Mask& region = regions[s.material_id[p]];
             if (region.empty()) region.assign(s.mask.size(), 0);
             region[p] = 1;
           }
@@ -80,9 +80,9 @@ EvaluationResult evaluate_samples(RegressorImpl& model, const CheckpointHeader& 
     if (progress) progress(done, loader.sample_count());
   }
   if (result.scores.empty())
-    throw DatasetError("none of the " + std::to_string(samples.size()) + " samples under " + root.string() +
-                       " has an object pixel at " + std::to_string(header.image_size) + " x " +
-                       std::to_string(header.image_size) + " px: nothing to score");
+    throw matdataset::DatasetError("none of the " + std::to_string(samples.size()) + " samples under " +
+                                   root.string() + " has an object pixel at " + std::to_string(header.image_size) +
+                                   " x " + std::to_string(header.image_size) + " px: nothing to score");
   return result;
 }
 

@@ -5,7 +5,7 @@
 
 namespace matlearn {
 
-PredictedMaps predict_maps(RegressorImpl& model, const CheckpointHeader& header, const Image& rgb) {
+PredictedMaps predict_maps(RegressorImpl& model, const CheckpointHeader& header, const matbase::FloatImage& rgb) {
   const InputNormalization normalization = info(architecture_named(header.network).architecture).input_normalization;
   model.eval();
   torch::NoGradGuard no_grad;

@@ -19,7 +19,7 @@ class Canvas {
         pixels_(static_cast<size_t>(width_) * static_cast<size_t>(tiles_y * tile_height) * 3, 0) {}
 
   // `image` at tile (x, y), values times `scale`, pixels off `mask` (when given) black.
-  void put(int tile_x, int tile_y, const Image& image, float scale, const Mask& mask = {}) {
+  void put(int tile_x, int tile_y, const matbase::FloatImage& image, float scale, const matbase::Mask& mask = {}) {
     for (int y = 0; y < tile_height_; ++y)
       for (int x = 0; x < tile_width_; ++x) {
         const size_t pixel = static_cast<size_t>(y) * static_cast<size_t>(tile_width_) + static_cast<size_t>(x);
@@ -58,9 +58,9 @@ void write_panel(const std::filesystem::path& path, const SamplePredictions& sam
   Canvas canvas(4, rows, sample.input.width, sample.input.height);
   canvas.put(0, 0, sample.input, 1.0f);
   for (size_t m = 0; m < sample.maps.size(); ++m) {
-    const Image& truth = sample.truths[m];
-    const Image& prediction = sample.predictions[m];
-    Image error(truth.width, truth.height, truth.channels);
+    const matbase::FloatImage& truth = sample.truths[m];
+    const matbase::FloatImage& prediction = sample.predictions[m];
+    matbase::FloatImage error(truth.width, truth.height, truth.channels);
     for (size_t i = 0; i < error.values.size(); ++i) error.values[i] = std::abs(truth.values[i] - prediction.values[i]);
     const int row = static_cast<int>(m);
     canvas.put(1, row, truth, 1.0f);
@@ -70,7 +70,7 @@ void write_panel(const std::filesystem::path& path, const SamplePredictions& sam
   canvas.write(path, set);
 }
 
-void write_prediction_strip(const std::filesystem::path& path, const Image& input, const Mask& mask,
+void write_prediction_strip(const std::filesystem::path& path, const matbase::FloatImage& input, const matbase::Mask& mask,
                             const PredictedMaps& predicted, matbase::AtomicFileSet* set) {
   Canvas canvas(1 + static_cast<int>(predicted.maps.size()), 1, input.width, input.height);
   canvas.put(0, 0, input, 1.0f);
@@ -78,7 +78,7 @@ void write_prediction_strip(const std::filesystem::path& path, const Image& inpu
   canvas.write(path, set);
 }
 
-void write_map_png(const std::filesystem::path& path, const Image& map, const Mask& mask,
+void write_map_png(const std::filesystem::path& path, const matbase::FloatImage& map, const matbase::Mask& mask,
                    matbase::AtomicFileSet* set) {
   Canvas canvas(1, 1, map.width, map.height);
   canvas.put(0, 0, map, 1.0f, mask);

@@ -14,7 +14,7 @@
 namespace matlearn {
 namespace {
 
-std::vector<double> channel_of(const Image& image, int c) {
+std::vector<double> channel_of(const matbase::FloatImage& image, int c) {
   std::vector<double> values(image.pixel_count());
   for (size_t p = 0; p < values.size(); ++p)
     values[p] = image.values[p * static_cast<size_t>(image.channels) + static_cast<size_t>(c)];
@@ -27,7 +27,7 @@ double similarity(double a, double b, double t) { return (2.0 * a * b + t) / (a 
 // The FSIM sum of one channel: sum S_PC S_G PC_m / sum PC_m over the covered pixels (eq. 7).
 double fsim_of_channel(const std::vector<double>& pc_x, const std::vector<double>& pc_y,
                        const std::vector<double>& gm_x, const std::vector<double>& gm_y, double t1, double t2,
-                       const Mask& mask) {
+                       const matbase::Mask& mask) {
   double weighted = 0.0, weights = 0.0;
   for (size_t p = 0; p < pc_x.size(); ++p) {
     if (!inside(mask, p)) continue;
@@ -60,7 +60,7 @@ std::vector<double> scharr_magnitude(const std::vector<double>& v, int width, in
 
 }  // namespace
 
-double fsim(const Image& truth, const Image& prediction, double data_range, const Mask& mask) {
+double fsim(const matbase::FloatImage& truth, const matbase::FloatImage& prediction, double data_range, const matbase::Mask& mask) {
   check_image_pair("FSIM", truth, prediction, mask);
   check_data_range("FSIM", data_range);
   // The reference code's phase congruency: 4 scales, 4 orientations, shortest wavelength 6,
@@ -112,7 +112,7 @@ std::vector<double> wrapped_scharr_magnitude(const std::vector<double>& v, int w
 }  // namespace
 
 double fsim(const Image8& truth, const Image8& prediction) {
-  const Image x = widen(truth), y = widen(prediction);
+  const matbase::FloatImage x = widen(truth), y = widen(prediction);
   check_image_pair("FSIM (paper compat)", x, y, {});
   // phasepack's phasecong as the package calls it: 6 orientations, nscale 4, minWaveLength 6,
   // mult 2, sigmaOnf 0.5978; the six orientations' PC maps summed; T1 = 0.85, T2 = 160.

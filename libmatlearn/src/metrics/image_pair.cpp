@@ -8,13 +8,13 @@
 namespace matlearn {
 namespace {
 
-std::string shape(const Image& image) {
+std::string shape(const matbase::FloatImage& image) {
   return std::to_string(image.width) + "x" + std::to_string(image.height) + "x" + std::to_string(image.channels);
 }
 
 }  // namespace
 
-void check_image_pair(const char* metric, const Image& truth, const Image& prediction, const Mask& mask) {
+void check_image_pair(const char* metric, const matbase::FloatImage& truth, const matbase::FloatImage& prediction, const matbase::Mask& mask) {
   const std::string name(metric);
   if (truth.width < 1 || truth.height < 1 || truth.channels < 1 ||
       truth.values.size() != truth.pixel_count() * static_cast<size_t>(truth.channels))

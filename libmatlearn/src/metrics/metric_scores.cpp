@@ -10,9 +10,9 @@
 namespace matlearn {
 namespace {
 
-Image cut_out(const Image& image, const Mask& mask) {
+matbase::FloatImage cut_out(const matbase::FloatImage& image, const matbase::Mask& mask) {
   if (mask.empty()) return image;
-  Image out = image;
+  matbase::FloatImage out = image;
   for (size_t p = 0; p < image.pixel_count(); ++p)
     if (!mask[p])
       for (int c = 0; c < image.channels; ++c) out.values[p * static_cast<size_t>(image.channels) + static_cast<size_t>(c)] = 0.0f;
@@ -37,7 +37,7 @@ std::string metric_name(Metric metric) {
 
 bool higher_is_better(Metric metric) { return metric != Metric::rmse && metric != Metric::sam; }
 
-MetricScores score_map(const Image& truth, const Image& prediction, const Mask& mask, MetricConvention convention) {
+MetricScores score_map(const matbase::FloatImage& truth, const matbase::FloatImage& prediction, const matbase::Mask& mask, MetricConvention convention) {
   MetricScores s;
   if (convention == MetricConvention::paper_compat) {
     namespace pc = paper_compat;

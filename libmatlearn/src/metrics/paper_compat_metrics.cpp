@@ -10,8 +10,8 @@
 
 namespace matlearn::paper_compat {
 
-Image widen(const Image8& image) {
-  Image wide;
+matbase::FloatImage widen(const Image8& image) {
+  matbase::FloatImage wide;
   wide.width = image.width;
   wide.height = image.height;
   wide.channels = image.channels;
@@ -19,7 +19,7 @@ Image widen(const Image8& image) {
   return wide;
 }
 
-Image8 quantize_8bit(const Image& image) {
+Image8 quantize_8bit(const matbase::FloatImage& image) {
   Image8 narrow;
   narrow.width = image.width;
   narrow.height = image.height;
@@ -33,7 +33,7 @@ Image8 quantize_8bit(const Image& image) {
 }
 
 double rmse(const Image8& truth, const Image8& prediction) {
-  const Image x = widen(truth), y = widen(prediction);
+  const matbase::FloatImage x = widen(truth), y = widen(prediction);
   check_image_pair("RMSE (paper compat)", x, y, {});
   const size_t channels = static_cast<size_t>(x.channels);
   double total = 0.0;
@@ -54,7 +54,7 @@ double psnr(const Image8& truth, const Image8& prediction) { return matlearn::ps
 double ssim(const Image8& truth, const Image8& prediction) { return matlearn::ssim(widen(truth), widen(prediction), kMaxP); }
 
 double sre(const Image8& truth, const Image8& prediction) {
-  const Image x = widen(truth), y = widen(prediction);
+  const matbase::FloatImage x = widen(truth), y = widen(prediction);
   check_image_pair("SRE (paper compat)", x, y, {});
   const size_t channels = static_cast<size_t>(x.channels);
   const double n = static_cast<double>(x.pixel_count());
@@ -73,7 +73,7 @@ double sre(const Image8& truth, const Image8& prediction) {
 }
 
 double uiq(const Image8& truth, const Image8& prediction) {
-  const Image x = widen(truth), y = widen(prediction);
+  const matbase::FloatImage x = widen(truth), y = widen(prediction);
   check_image_pair("UIQ (paper compat)", x, y, {});
   constexpr int kWindow = 8;
   check_window_fits("UIQ (paper compat)", x, kWindow);

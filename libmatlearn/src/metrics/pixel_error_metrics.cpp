@@ -16,7 +16,7 @@ struct PooledSums {
   size_t values = 0;
 };
 
-PooledSums pooled_sums(const Image& truth, const Image& prediction, const Mask& mask) {
+PooledSums pooled_sums(const matbase::FloatImage& truth, const matbase::FloatImage& prediction, const matbase::Mask& mask) {
   const size_t channels = static_cast<size_t>(truth.channels);
   PooledSums sums;
   for (size_t p = 0; p < truth.pixel_count(); ++p) {
@@ -34,14 +34,14 @@ PooledSums pooled_sums(const Image& truth, const Image& prediction, const Mask& 
 
 }  // namespace
 
-double rmse(const Image& truth, const Image& prediction, double data_range, const Mask& mask) {
+double rmse(const matbase::FloatImage& truth, const matbase::FloatImage& prediction, double data_range, const matbase::Mask& mask) {
   check_image_pair("RMSE", truth, prediction, mask);
   check_data_range("RMSE", data_range);
   const PooledSums sums = pooled_sums(truth, prediction, mask);
   return std::sqrt(sums.squared_error / static_cast<double>(sums.values)) / data_range;
 }
 
-double psnr(const Image& truth, const Image& prediction, double data_range, const Mask& mask) {
+double psnr(const matbase::FloatImage& truth, const matbase::FloatImage& prediction, double data_range, const matbase::Mask& mask) {
   check_image_pair("PSNR", truth, prediction, mask);
   check_data_range("PSNR", data_range);
   const PooledSums sums = pooled_sums(truth, prediction, mask);
@@ -49,14 +49,14 @@ double psnr(const Image& truth, const Image& prediction, double data_range, cons
   return 10.0 * std::log10(data_range * data_range * static_cast<double>(sums.values) / sums.squared_error);
 }
 
-double sre(const Image& truth, const Image& prediction, const Mask& mask) {
+double sre(const matbase::FloatImage& truth, const matbase::FloatImage& prediction, const matbase::Mask& mask) {
   check_image_pair("SRE", truth, prediction, mask);
   const PooledSums sums = pooled_sums(truth, prediction, mask);
   if (sums.squared_error == 0.0) return std::numeric_limits<double>::infinity();
   return 10.0 * std::log10(sums.truth_energy / sums.squared_error);
 }
 
-double issm(const Image& truth, const Image& prediction, const Mask& mask) {
+double issm(const matbase::FloatImage& truth, const matbase::FloatImage& prediction, const matbase::Mask& mask) {
   check_image_pair("ISSM", truth, prediction, mask);
   const PooledSums sums = pooled_sums(truth, prediction, mask);
   if (sums.squared_error == 0.0) return 1.0;

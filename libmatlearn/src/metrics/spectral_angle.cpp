@@ -8,7 +8,7 @@
 
 namespace matlearn {
 
-double sam_degrees(const Image& truth, const Image& prediction, const Mask& mask) {
+double sam_degrees(const matbase::FloatImage& truth, const matbase::FloatImage& prediction, const matbase::Mask& mask) {
   check_image_pair("SAM", truth, prediction, mask);
   const size_t channels = static_cast<size_t>(truth.channels);
   double total = 0.0;

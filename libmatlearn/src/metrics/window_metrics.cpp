@@ -5,7 +5,7 @@
 
 namespace matlearn {
 
-double ssim(const Image& truth, const Image& prediction, double data_range, const Mask& mask) {
+double ssim(const matbase::FloatImage& truth, const matbase::FloatImage& prediction, double data_range, const matbase::Mask& mask) {
   check_image_pair("SSIM", truth, prediction, mask);
   check_data_range("SSIM", data_range);
   constexpr int kWindow = 7;
@@ -22,7 +22,7 @@ double ssim(const Image& truth, const Image& prediction, double data_range, cons
   });
 }
 
-double uiq(const Image& truth, const Image& prediction, const Mask& mask) {
+double uiq(const matbase::FloatImage& truth, const matbase::FloatImage& prediction, const matbase::Mask& mask) {
   check_image_pair("UIQ", truth, prediction, mask);
   constexpr int kWindow = 8;
   check_window_fits("UIQ", truth, kWindow);

@@ -4,7 +4,7 @@
 
 namespace matlearn {
 
-WindowMoments window_moments(const Image& truth, const Image& prediction, int c, int x0, int y0, int size) {
+WindowMoments window_moments(const matbase::FloatImage& truth, const matbase::FloatImage& prediction, int c, int x0, int y0, int size) {
   double sum_x = 0.0, sum_y = 0.0;
   for (int y = y0; y < y0 + size; ++y)
     for (int x = x0; x < x0 + size; ++x) {
@@ -26,7 +26,7 @@ WindowMoments window_moments(const Image& truth, const Image& prediction, int c,
   return m;
 }
 
-void check_window_fits(const char* metric, const Image& image, int size) {
+void check_window_fits(const char* metric, const matbase::FloatImage& image, int size) {
   if (image.width < size || image.height < size)
     throw std::invalid_argument(std::string(metric) + ": the images are " + std::to_string(image.width) + "x" +
                                 std::to_string(image.height) + ", smaller than its " + std::to_string(size) + "x" +

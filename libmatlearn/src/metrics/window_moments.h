@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <stdexcept>
 
-#include "matlearn/image.h"
+#include "matbase/image/float_image.h"
 #include "metrics/image_pair.h"
 
 namespace matlearn {
@@ -17,15 +17,15 @@ struct WindowMoments {
 };
 
 // Moments of channel c over the size x size window whose top-left pixel is (x0, y0).
-WindowMoments window_moments(const Image& truth, const Image& prediction, int c, int x0, int y0, int size);
+WindowMoments window_moments(const matbase::FloatImage& truth, const matbase::FloatImage& prediction, int c, int x0, int y0, int size);
 
 // Throws std::invalid_argument, naming `metric`, when the image is smaller than the window.
-void check_window_fits(const char* metric, const Image& image, int size);
+void check_window_fits(const char* metric, const matbase::FloatImage& image, int size);
 
 // The mean over channels of `per_window` averaged over the windows whose anchor pixel, at
 // offset (anchor, anchor) from the top-left, lies in the mask.
 template <class PerWindow>
-double average_over_windows(const Image& truth, const Image& prediction, const Mask& mask, int size, int anchor,
+double average_over_windows(const matbase::FloatImage& truth, const matbase::FloatImage& prediction, const matbase::Mask& mask, int size, int anchor,
                             PerWindow per_window) {
   double total = 0.0;
   size_t count = 0;

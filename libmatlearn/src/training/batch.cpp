@@ -4,16 +4,16 @@
 
 namespace matlearn {
 
-torch::Tensor to_chw(const Image& image) {
+torch::Tensor to_chw(const matbase::FloatImage& image) {
   return torch::from_blob(const_cast<float*>(image.values.data()), {image.height, image.width, image.channels},
                           torch::kFloat32)
       .permute({2, 0, 1})
       .clone();
 }
 
-Image to_hwc(const torch::Tensor& chw) {
+matbase::FloatImage to_hwc(const torch::Tensor& chw) {
   const torch::Tensor hwc = chw.permute({1, 2, 0}).contiguous().to(torch::kFloat32);
-  Image image(static_cast<int>(hwc.size(1)), static_cast<int>(hwc.size(0)), static_cast<int>(hwc.size(2)));
+  matbase::FloatImage image(static_cast<int>(hwc.size(1)), static_cast<int>(hwc.size(0)), static_cast<int>(hwc.size(2)));
   std::copy(hwc.data_ptr<float>(), hwc.data_ptr<float>() + hwc.numel(), image.values.begin());
   return image;
 }
@@ -28,7 +28,7 @@ torch::Tensor normalize_input(const torch::Tensor& rgb, InputNormalization norma
 
 namespace {
 
-const Image& stored_map(const MaterialSample& sample, MapKind map) {
+const matbase::FloatImage& stored_map(const matdataset::MaterialSample& sample, MapKind map) {
   switch (map) {
     case MapKind::base_color: return sample.albedo;
     case MapKind::roughness: return sample.roughness;
@@ -40,8 +40,8 @@ const Image& stored_map(const MaterialSample& sample, MapKind map) {
 
 }  // namespace
 
-SampleSettings sample_settings(const OutputLayout& layout, int image_size, bool linear_albedo) {
-  SampleSettings settings;
+matdataset::SampleSettings sample_settings(const OutputLayout& layout, int image_size, bool linear_albedo) {
+  matdataset::SampleSettings settings;
   settings.size = image_size;
   settings.linear_albedo = linear_albedo;
   settings.read_normal = layout.predicts(MapKind::normal);
@@ -50,24 +50,24 @@ SampleSettings sample_settings(const OutputLayout& layout, int image_size, bool 
   return settings;
 }
 
-Image target_map(const MaterialSample& sample, const OutputGroup& group) {
-  const Image& map = stored_map(sample, group.map);
+matbase::FloatImage target_map(const matdataset::MaterialSample& sample, const OutputGroup& group) {
+  const matbase::FloatImage& map = stored_map(sample, group.map);
   if (map.values.empty()) throw std::invalid_argument("the sample has no " + map_name(group.map) + " map");
   if (map.channels == group.channels) return map;
   if (map.channels != 1)
     throw std::invalid_argument("the sample's " + map_name(group.map) + " map has " + std::to_string(map.channels) +
                                 " channels, not " + std::to_string(group.channels));
-  Image repeated(map.width, map.height, static_cast<int>(group.channels));
+  matbase::FloatImage repeated(map.width, map.height, static_cast<int>(group.channels));
   for (size_t p = 0; p < map.pixel_count(); ++p)
     for (int c = 0; c < repeated.channels; ++c) repeated.values[p * static_cast<size_t>(repeated.channels) + static_cast<size_t>(c)] = map.values[p];
   return repeated;
 }
 
-Batch make_batch(const std::vector<MaterialSample>& samples, const OutputLayout& layout,
+Batch make_batch(const std::vector<matdataset::MaterialSample>& samples, const OutputLayout& layout,
                  InputNormalization normalization) {
   if (samples.empty()) throw std::invalid_argument("make_batch: no samples");
   std::vector<torch::Tensor> inputs, targets, masks, labels;
-  for (const MaterialSample& s : samples) {
+  for (const matdataset::MaterialSample& s : samples) {
     inputs.push_back(to_chw(s.input));
     std::vector<torch::Tensor> maps;
     for (const OutputGroup& group : layout.groups) maps.push_back(to_chw(target_map(s, group)));

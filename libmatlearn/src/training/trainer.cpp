@@ -9,8 +9,8 @@
 
 #include "matbase/file/atomic_file.h"
 #include "matbase/threads.h"
+#include "matdataset/format/sample_loader.h"
 #include "matlearn/models/state_dict.h"
-#include "matlearn/sample_loader.h"
 #include "matlearn/training/batch.h"
 #include "matlearn/training/checkpoint.h"
 #include "matlearn/training/tensor_memory_cache.h"
@@ -31,8 +31,8 @@ uint64_t step_seed(uint64_t seed, int epoch, size_t step) {
   return mix(mix(seed ^ mix(static_cast<uint64_t>(epoch))) ^ static_cast<uint64_t>(step));
 }
 
-LoaderSettings loader_settings(const TrainingConfig& c, bool shuffle) {
-  LoaderSettings s;
+matdataset::LoaderSettings loader_settings(const TrainingConfig& c, bool shuffle) {
+  matdataset::LoaderSettings s;
   s.sample = sample_settings(c.layout, c.image_size, c.linear_albedo);
   s.batch_size = c.batch_size;
   s.shuffle = shuffle;
@@ -110,10 +110,10 @@ Trainer::Trainer(TrainingConfig config) : config_(std::move(config)) {
   optimizer_ = make_optimizer(config_, *model_);
   schedule_ = start_schedule(config_.learning_rate);
   // Every map the network needs, before the first step: an epoch never stops on a missing file.
-  std::vector<SampleId> samples = config_.train_samples;
+  std::vector<matdataset::SampleId> samples = config_.train_samples;
   samples.insert(samples.end(), config_.validation_samples.begin(), config_.validation_samples.end());
-  require_sample_files(config_.dataset_root, samples, loader_settings(config_, false).sample,
-                       "the training and validation samples of " + config_.dataset_root.string());
+  matdataset::require_sample_files(config_.dataset_root, samples, loader_settings(config_, false).sample,
+                                   "the training and validation samples of " + config_.dataset_root.string());
 }
 
 void Trainer::resume(const std::filesystem::path& path) {
@@ -148,7 +148,7 @@ void Trainer::resume(const std::filesystem::path& path) {
 
 double Trainer::validation_loss() {
   if (config_.validation_samples.empty()) return 0.0;
-  const SampleLoader loader(config_.dataset_root, config_.validation_samples, loader_settings(config_, false));
+  const matdataset::SampleLoader loader(config_.dataset_root, config_.validation_samples, loader_settings(config_, false));
   const InputNormalization normalization = info(architecture_named(config_.network).architecture).input_normalization;
   model_->eval();
   torch::NoGradGuard no_grad;
@@ -177,7 +177,7 @@ void Trainer::append_log(const EpochReport& report) {
 }
 
 bool Trainer::train(const TrainingCallbacks& callbacks) {
-  const SampleLoader loader(config_.dataset_root, config_.train_samples, loader_settings(config_, true));
+  const matdataset::SampleLoader loader(config_.dataset_root, config_.train_samples, loader_settings(config_, true));
   const InputNormalization normalization = info(architecture_named(config_.network).architecture).input_normalization;
   const size_t steps = loader.batch_count();
   model_->train();

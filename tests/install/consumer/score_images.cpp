@@ -6,7 +6,7 @@
 #include <matlearn/image_metrics.h>
 
 int main() {
-  matlearn::Image truth(16, 16, 3, 0.5f), prediction(16, 16, 3, 0.6f);
+  matbase::FloatImage truth(16, 16, 3, 0.5f), prediction(16, 16, 3, 0.6f);
   const double rmse = matlearn::rmse(truth, prediction, 1.0);
   const double ssim_same = matlearn::ssim(truth, truth, 1.0);
   std::printf("RMSE %f, SSIM of an image with itself %f\n", rmse, ssim_same);

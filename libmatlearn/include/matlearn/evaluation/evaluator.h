@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "matlearn/dataset_index.h"
-#include "matlearn/image.h"
+#include "matbase/image/float_image.h"
+#include "matdataset/format/dataset_index.h"
 #include "matlearn/metric_scores.h"
 #include "matlearn/models/regressor.h"
 #include "matlearn/training/checkpoint.h"
@@ -27,7 +27,7 @@ struct EvaluationSettings {
 constexpr int32_t kWholeObject = -1;
 
 struct ScoredMap {
-  SampleId sample;
+  matdataset::SampleId sample;
   std::string map;  // map_name of the output group
   int32_t material = kWholeObject;
   int pixels = 0;  // pixels scored
@@ -36,11 +36,11 @@ struct ScoredMap {
 
 // One sample's input, truths and predictions (values in [0, 1]), for panels.
 struct SamplePredictions {
-  SampleId sample;
-  Image input;
-  Mask mask;
+  matdataset::SampleId sample;
+  matbase::FloatImage input;
+  matbase::Mask mask;
   std::vector<std::string> maps;
-  std::vector<Image> truths, predictions;
+  std::vector<matbase::FloatImage> truths, predictions;
 };
 
 struct EvaluationResult {
@@ -50,7 +50,7 @@ struct EvaluationResult {
   // Samples whose object covers no pixel at the network's size (an empty label map, or an
   // object too small to survive the resize): the metrics of an empty region are undefined, so
   // they are not scored, and a report must say so.
-  std::vector<SampleId> empty_samples;
+  std::vector<matdataset::SampleId> empty_samples;
 };
 
 // A family's part of an object must have at least this many pixels to be scored on its own
@@ -61,11 +61,11 @@ constexpr int kMinimumMaterialPixels = 49;
 // are the sigmoid of the regression channels, as in training. Samples without a label file are
 // scored over the whole image; samples whose object covers no pixel are listed in
 // empty_samples instead. Uses matlearn's tensor memory cache (training/tensor_memory_cache.h).
-// progress(done, total) follows each batch. Throws DatasetError (matlearn/dataset_error.h)
+// progress(done, total) follows each batch. Throws DatasetError (matdataset/format/dataset_error.h)
 // naming the files when the samples lack a map the network needs (require_sample_files) or a
 // map cannot be read, and when no sample has an object pixel.
 EvaluationResult evaluate_samples(RegressorImpl& model, const CheckpointHeader& header, const std::filesystem::path& root,
-                                  const std::vector<SampleId>& samples, const EvaluationSettings& settings,
+                                  const std::vector<matdataset::SampleId>& samples, const EvaluationSettings& settings,
                                   const std::function<void(size_t, size_t)>& progress = {});
 
 }  // namespace matlearn

@@ -16,11 +16,11 @@ void write_panel(const std::filesystem::path& path, const SamplePredictions& sam
                  matbase::AtomicFileSet* set = nullptr);
 
 // The input, then each predicted map, in one row; map pixels off the mask are black.
-void write_prediction_strip(const std::filesystem::path& path, const Image& input, const Mask& mask,
+void write_prediction_strip(const std::filesystem::path& path, const matbase::FloatImage& input, const matbase::Mask& mask,
                             const PredictedMaps& predicted, matbase::AtomicFileSet* set = nullptr);
 
 // One map as a PNG (RGB, or grey for one channel), black off the mask.
-void write_map_png(const std::filesystem::path& path, const Image& map, const Mask& mask,
+void write_map_png(const std::filesystem::path& path, const matbase::FloatImage& map, const matbase::Mask& mask,
                    matbase::AtomicFileSet* set = nullptr);
 
 }  // namespace matlearn

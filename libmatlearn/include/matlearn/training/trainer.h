@@ -17,7 +17,7 @@
 
 #include <torch/torch.h>
 
-#include "matlearn/dataset_index.h"
+#include "matdataset/format/dataset_index.h"
 #include "matlearn/models/regressor.h"
 #include "matlearn/training/learning_rate_schedule.h"
 #include "matlearn/training/loss.h"
@@ -29,7 +29,7 @@ enum class OptimizerKind { adam, adamw };
 
 struct TrainingConfig {
   std::filesystem::path dataset_root;
-  std::vector<SampleId> train_samples, validation_samples;
+  std::vector<matdataset::SampleId> train_samples, validation_samples;
   std::string network = "unet_no_skip";
   int64_t width_divisor = 1;
   std::filesystem::path encoder_weights;  // converted torchvision weights for the trunk, optional

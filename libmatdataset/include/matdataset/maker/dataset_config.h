@@ -1,0 +1,120 @@
+#pragma once
+// make_dataset's configuration (docs/make_dataset.md, "Configuration"): what to render (objects,
+// their material slots and candidates, how variants combine), how (resolution, samples,
+// bounces, ambient occlusion's error), from where (the paper's camera grid and a radius rule)
+// and under what light (the paper's rig and its illuminance). It comes from the embedded default
+// or a YAML/JSON file, then command-line overrides (--set KEY=VALUE and the named options, which
+// set the same keys); every value is checked, and an error names the file or option and the key.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "matdataset/format/dataset_splits.h"
+#include "matdataset/maker/material_variants.h"
+#include "matmaterial/library/material_library.h"
+#include "matrender/paper_setup.h"
+#include "matrender/scene_description.h"
+
+namespace matdataset {
+
+using matbase::InputError;
+
+// A candidate material of a slot: a library material or a MatSynth-style material folder.
+struct MaterialCandidate {
+  std::string spelled;  // as the configuration gives it ("wood/raw:3", "materials/oak_01")
+  std::variant<matmaterial::LibraryMaterialSpec, std::string> source;  // the folder path, resolved
+  std::string name;  // its name in the dataset: "wood_raw_3" (library), the folder's name
+};
+
+struct SlotConfig {
+  std::string key;                 // "all", "mat1", ...: the variant_map key
+  std::vector<std::string> parts;  // the object's part names in this slot; empty: every part
+  std::vector<MaterialCandidate> candidates;
+};
+
+struct ObjectConfig {
+  std::string name;  // the dataset's object folder
+  std::variant<matrender::MeshFile, matrender::BuiltinObject> source;
+  matrender::UvPassMode uv_pass = matrender::UvPassMode::WhenMissing;
+  std::vector<SlotConfig> slots;
+};
+
+// How far the cameras are from the object's centroid.
+enum class RadiusRule {
+  Fit,          // the object's bounding sphere fills `fill` of the vertical field of view
+  Fixed,        // radius_m
+  BoundingBox,  // the repository's: max(min_radius_m, box_factor x the largest side of the box)
+};
+
+struct CameraConfig {
+  int n_phi = 16, n_theta = 32;  // the paper's grid
+  double phi_min_deg = 0.0, phi_max_deg = 90.0;
+  double theta_min_deg = -90.0, theta_max_deg = 90.0;
+  double vertical_fov_deg = 39.597752;  // Blender's 50 mm lens on its 36 mm sensor
+  RadiusRule radius_rule = RadiusRule::Fit;
+  double fill = 0.9;
+  double radius_m = 1.0;
+  double box_factor = 2.2, min_radius_m = 1.0;
+};
+
+struct RenderConfig {
+  int width = 512, height = 512;
+  int samples = 64;  // per pixel; with a noise threshold the most a pixel takes
+  // Adaptive sampling as Cycles 3.4 (matrender::RenderSettings): 0 = off.
+  double noise_threshold = 0.0;
+  int min_samples = 0;  // 0: Cycles' automatic rule
+  bool denoise = false;  // matrender::RenderSettings::denoise
+  // Applied to the images; none: the grey-card rule (matrender::grey_card_exposure), one value
+  // per object for all its views and variants.
+  std::optional<double> exposure_stops;
+  int max_bounces = 12, max_diffuse_bounces = 4, max_glossy_bounces = 4, max_transmission_bounces = 12;
+  // ORM's R: the standard error its estimate may have at most (ambient occlusion rays per
+  // camera sample follow from it and the samples), and Cycles' AO distance.
+  double ambient_occlusion_error = 0.02;
+  double ambient_occlusion_distance_m = 1.0;
+  int material_resolution = 1024;  // texels per side of the library's maps
+};
+
+struct DatasetConfig {
+  std::string source;  // the file it came from, or "the embedded default"
+  std::string output = "dataset_out";
+  uint64_t seed = 0;  // of every frame's samples (each frame's own seed follows from it)
+  VariantCombination combination = VariantCombination::Cartesian;
+  std::optional<uint64_t> max_variants;
+  uint64_t variant_seed = 42;  // of the uniform cap
+  std::vector<ObjectConfig> objects;
+  CameraConfig camera;
+  RenderConfig render;
+  double illuminance_lux = matrender::kPaperTargetIlluminanceLux;
+  uint64_t split_seed = 42;
+  SplitRatios split_ratios;
+  double paper_train_fraction = 0.8;
+  bool paper_texture_layout = false;
+  // The configuration after overrides, as YAML: recorded in every variant's metadata.
+  std::string canonical_yaml;
+};
+
+// One override: a dotted key ("render.samples", "camera.radius.fill") and its value as YAML
+// ("128", "[wood, metal:2]"), and the option that gave it (named in errors).
+struct Override {
+  std::string key;
+  std::string value;
+  std::string option;
+};
+
+// The embedded default: six built-in objects in three library materials, 2 x 4 views at 128 px.
+const std::string& embedded_default_yaml();
+
+// Reads `file` (YAML or JSON; empty: the embedded default), applies the overrides in order and
+// checks every value. Throws matbase::InputError naming the file or option and the key.
+DatasetConfig load_config(const std::string& file, const std::vector<Override>& overrides);
+// The same from YAML text; `source` names it in errors and relative paths resolve against `base`.
+DatasetConfig parse_config(const std::string& yaml, const std::string& source, const std::filesystem::path& base,
+                           const std::vector<Override>& overrides);
+
+}  // namespace matdataset

@@ -1,0 +1,85 @@
+#pragma once
+// One object of the dataset, built once and rendered in all its variants from all its views:
+// its scene (one BVH) holds every candidate material, a variant only changes which material
+// each part uses, and the grid's cameras are placed by the radius rule around the object.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "matdataset/format/dataset_writer.h"
+#include "matdataset/maker/dataset_config.h"
+#include "matdataset/maker/dataset_plan.h"
+#include "matgeom/bounding_sphere.h"
+#include "matgeom/object_asset.h"
+#include "matrender/render.h"
+#include "matrender/scene_builder.h"
+
+namespace matdataset {
+
+// The AOVs a dataset frame needs: coverage, normals, depth, label, ambient occlusion, the
+// sample count, base colour, roughness and metallic.
+uint32_t dataset_aovs();
+
+// How far the cameras are from the grid's centre `centre` by the configuration's radius rule, for
+// an object with `mesh` and bounding sphere `bounds` seen in a frame of width / height `aspect`.
+double camera_grid_radius(const CameraConfig& camera, const matgeom::TriangleMesh& mesh, const matgeom::Sphere& bounds,
+                          const glm::dvec3& centre, double aspect);
+
+class ObjectRenderer {
+ public:
+  // Loads the object and builds its scene; throws matbase::InputError naming the configuration's key
+  // when the object cannot be loaded or a part is in no slot.
+  ObjectRenderer(const DatasetConfig& config, size_t object);
+
+  // Puts the object in the variant's materials (loading those not used before); throws
+  // matbase::InputError for a material that cannot be loaded or has no material class, and
+  // matbase::Cancelled soon after `cancel` (when given) is set.
+  void select_variant(const MaterialVariant& variant, const std::atomic<bool>* cancel = nullptr);
+
+  // The materials of the selected variant, slot by slot.
+  const std::vector<SlotMaterial>& slot_materials() const { return slot_materials_; }
+
+  // The selected variant as an asset a glTF writer takes (for another renderer to get the same
+  // object): the object's surface in world space, each part in its slot's material with the maps
+  // repeated per UV unit as this renderer repeats them. The materials are loaded (generated)
+  // again.
+  matgeom::ObjectAsset variant_asset() const;
+
+  // The scene the views are rendered in: its lamps and background.
+  const matrender::Scene& scene() const { return built_.scene; }
+  // The scene material each part of the object renders with in the selected variant.
+  const std::vector<uint32_t>& part_materials() const {
+    return built_.scene.part_materials(built_.object_meshes.front());
+  }
+
+  matrender::Camera view_camera(size_t view) const;
+  FramePose view_pose(size_t view, const std::string& stem) const;
+  CameraIntrinsics intrinsics() const;
+
+  // The fewest camera samples a pixel takes (adaptive sampling may stop pixels early).
+  int fewest_samples() const;
+
+  // Renders one view with `seed`, its figures into *stats when given; false when cancelled (the
+  // maps are then incomplete).
+  bool render(size_t view, uint32_t seed, int threads, const std::atomic<bool>* cancel, FrameMaps& maps,
+              matrender::RenderStats* stats = nullptr);
+
+  // Everything needed to render a frame of the selected variant again, as a JSON object.
+  std::string provenance_json(const DatasetPlan& plan, size_t variant) const;
+
+ private:
+  // The configuration's sampling: samples per pixel, adaptive sampling, the denoiser.
+  matrender::RenderSettings sampling_settings() const;
+
+  const DatasetConfig& config_;
+  size_t object_index_;
+  const ObjectConfig& object_;
+  matrender::BuiltScene built_;
+  matgeom::CameraGridSpec grid_;
+  double exposure_stops_ = 0.0;  // the configuration's, or the grey-card rule's for this object
+  MaterialVariant variant_;  // the selected one
+  std::vector<SlotMaterial> slot_materials_;
+  std::vector<std::vector<uint32_t>> slot_parts_;  // the parts of each slot
+};
+
+}  // namespace matdataset
