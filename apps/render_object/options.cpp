@@ -17,16 +17,14 @@
 #include "matrender/paper_setup.h"
 #include "matrender/render.h"
 #include "matrender/scene_file.h"
+#include "matrender/scene_overrides.h"
 
 namespace render_object {
 namespace {
 
 using matrender::BuiltinObject;
-using matrender::CameraDescription;
 using matrender::GridPlacement;
 using matbase::InputError;
-using matrender::LightRigDescription;
-using matrender::LightsDescription;
 using matrender::LookAtPlacement;
 using matrender::MeshFile;
 using matrender::ObjectDescription;
@@ -400,35 +398,6 @@ SceneDescription chosen_scene(const Options& options) {
   return matrender::default_scene();
 }
 
-void apply_camera_options(const Options& o, CameraDescription& camera) {
-  if (o.camera_position) {
-    if (*o.camera_position == *o.look_at)
-      throw matbase::InputError("--look-at: expected a point different from --camera-position");
-    camera.placement = LookAtPlacement{*o.camera_position, *o.look_at, glm::dvec3(0.0, 0.0, 1.0)};
-  }
-  // Any grid option makes the camera a grid camera: the scene's own grid if it has one, else the
-  // paper's grid around the centroid.
-  if (o.cell || o.grid || o.radius) {
-    if (!std::holds_alternative<GridPlacement>(camera.placement)) camera.placement = matrender::paper_grid_placement();
-    auto& grid = std::get<GridPlacement>(camera.placement);
-    if (o.grid) {
-      grid.spec.n_phi = (*o.grid)[0];
-      grid.spec.n_theta = (*o.grid)[1];
-    }
-    if (o.radius) grid.spec.radius = *o.radius;
-    if (o.cell) {
-      grid.i = (*o.cell)[0];
-      grid.j = (*o.cell)[1];
-    }
-    if (grid.i >= grid.spec.n_phi || grid.j >= grid.spec.n_theta)
-      throw matbase::InputError(fmt::format("{}: camera cell {},{} is outside the {} x {} grid", o.cell ? "--cell" : "--grid",
-                                   grid.i, grid.j, grid.spec.n_phi, grid.spec.n_theta));
-  }
-  if (o.fov_deg) camera.vertical_fov = glm::radians(*o.fov_deg);
-  if (o.width) camera.width = *o.width;
-  if (o.height) camera.height = *o.height;
-}
-
 void apply_render_options(const Options& o, SceneDescription& scene) {
   matrender::RenderSettings& s = scene.settings;
   if (o.spp) s.samples_per_pixel = *o.spp;
@@ -447,51 +416,45 @@ void apply_render_options(const Options& o, SceneDescription& scene) {
   s.aovs = o.aovs;
 }
 
-void apply_environment_options(const Options& o, matrender::BackgroundDescription& background) {
+// The scene changes the options ask for, each named by its option.
+matrender::SceneOverrides scene_overrides(const Options& o) {
+  matrender::SceneOverrides overrides;
+  if (o.camera_position) {
+    if (*o.camera_position == *o.look_at)
+      throw matbase::InputError("--look-at: expected a point different from --camera-position");
+    overrides.placement = LookAtPlacement{*o.camera_position, *o.look_at, glm::dvec3(0.0, 0.0, 1.0)};
+  }
+  if (o.grid) overrides.grid = {*o.grid, "--grid"};
+  if (o.radius) overrides.grid_radius = {*o.radius, "--radius"};
+  if (o.cell) overrides.cell = {*o.cell, "--cell"};
+  if (o.fov_deg) overrides.vertical_fov = glm::radians(*o.fov_deg);
+  overrides.width = o.width;
+  overrides.height = o.height;
+  overrides.rig_at_given_powers = o.paper_powers;
+  if (o.illuminance_lux) overrides.illuminance_lux = {*o.illuminance_lux, "--illuminance"};
   if (o.environment) {
     matrender::EnvironmentDescription environment;
     environment.path = *o.environment;
     environment.origin = Origin{"--environment", std::nullopt};
-    background = environment;
+    overrides.environment = environment;
   }
-  if (!o.environment_strength && !o.environment_rotation_deg) return;
-  auto* environment = std::get_if<matrender::EnvironmentDescription>(&background);
-  if (!environment)
-    throw matbase::InputError(std::string(o.environment_strength ? "--environment-strength" : "--environment-rotation") +
-                     ": the scene has no environment map (give --environment or a scene file with one)");
-  if (o.environment_strength) environment->strength = *o.environment_strength;
-  if (o.environment_rotation_deg) environment->rotation_z = glm::radians(*o.environment_rotation_deg);
-}
-
-// --material-dir or --material: one scene material, the folder's or the library's, on every part
-// of every object.
-void apply_material_options(const Options& o, SceneDescription& scene) {
-  if (!o.material_dir && !o.material) return;
-  const std::string name = o.material_dir ? "--material-dir" : "--material";
-  matrender::MaterialDescription material;
-  material.constants.name = name;
-  if (o.material_dir) {
-    material.folder = matrender::MaterialFolderFile{*o.material_dir, Origin{name, std::nullopt}};
-  } else {
-    material.library = matrender::LibraryMaterialRequest{*o.material, o.material_resolution, Origin{name, std::nullopt}};
+  if (o.environment_strength) overrides.environment_strength = {*o.environment_strength, "--environment-strength"};
+  if (o.environment_rotation_deg)
+    overrides.environment_rotation_z = {glm::radians(*o.environment_rotation_deg), "--environment-rotation"};
+  // --material-dir or --material: one scene material, the folder's or the library's, on every
+  // part of every object.
+  if (o.material_dir || o.material) {
+    const std::string name = o.material_dir ? "--material-dir" : "--material";
+    matrender::MaterialDescription material;
+    material.constants.name = name;
+    if (o.material_dir)
+      material.folder = matrender::MaterialFolderFile{*o.material_dir, Origin{name, std::nullopt}};
+    else
+      material.library = matrender::LibraryMaterialRequest{*o.material, o.material_resolution, Origin{name, std::nullopt}};
+    overrides.materials[name] = material;
+    overrides.material_everywhere = name;
   }
-  scene.materials[name] = material;
-  for (matrender::ObjectDescription& object : scene.objects) {
-    object.material = name;
-    object.part_materials.clear();
-  }
-}
-
-void apply_illuminance(const Options& o, LightsDescription& lights) {
-  if (o.paper_powers) {
-    if (auto* rig = std::get_if<LightRigDescription>(&lights)) rig->target_illuminance_lux.reset();
-    return;
-  }
-  if (!o.illuminance_lux) return;
-  auto* rig = std::get_if<LightRigDescription>(&lights);
-  if (!rig)
-    throw matbase::InputError("--illuminance: rescales only the paper's light rig, and the scene file lists its own lights");
-  rig->target_illuminance_lux = o.illuminance_lux;
+  return overrides;
 }
 
 }  // namespace
@@ -505,11 +468,8 @@ void add_options(CLI::App& app, Options& options) {
 
 SceneDescription describe_scene(const Options& options) {
   SceneDescription scene = chosen_scene(options);
-  apply_camera_options(options, scene.camera);
+  matrender::apply_scene_overrides(scene_overrides(options), scene);
   apply_render_options(options, scene);
-  apply_illuminance(options, scene.lights);
-  apply_environment_options(options, scene.background);
-  apply_material_options(options, scene);
   return scene;
 }
 

@@ -16,6 +16,7 @@
 #include "matmaterial/library/material_library.h"
 #include "matmaterial/material_classes.h"
 #include "matrender/paper_setup.h"
+#include "matrender/scene_overrides.h"
 
 namespace matdataset {
 namespace {
@@ -23,9 +24,20 @@ namespace {
 using nlohmann::ordered_json;
 constexpr double kDegree = matbase::kPi / 180.0;
 
+// The paper's scene of the object (its rig at the configured illuminance), with every candidate
+// material of its slots among the scene's materials; each frame places the camera itself.
 matrender::SceneDescription object_scene(const DatasetConfig& config, size_t index) {
   const ObjectConfig& object = config.objects[index];
-  matrender::SceneDescription scene;
+  matrender::ObjectDescription description;
+  description.source = object.source;
+  description.uv_pass = object.uv_pass;
+  description.origin = matrender::Origin{config.source, "/objects/" + std::to_string(index)};
+  matrender::SceneDescription scene = matrender::paper_object_scene(std::move(description));
+  matrender::SceneOverrides overrides;
+  overrides.placement = matrender::MatrixPlacement{};
+  overrides.width = config.render.width;
+  overrides.height = config.render.height;
+  overrides.illuminance_lux = {config.illuminance_lux, config.source + ": lights.illuminance_lux"};
   for (size_t s = 0; s < object.slots.size(); ++s)
     for (size_t k = 0; k < object.slots[s].candidates.size(); ++k) {
       const MaterialCandidate& candidate = object.slots[s].candidates[k];
@@ -36,17 +48,9 @@ matrender::SceneDescription object_scene(const DatasetConfig& config, size_t ind
         material.library = matrender::LibraryMaterialRequest{*spec, config.render.material_resolution, origin};
       else
         material.folder = matrender::MaterialFolderFile{std::get<std::string>(candidate.source), origin};
-      scene.materials.emplace(candidate.name, std::move(material));
+      overrides.materials.emplace(candidate.name, std::move(material));
     }
-  matrender::ObjectDescription description;
-  description.source = object.source;
-  description.uv_pass = object.uv_pass;
-  description.origin = matrender::Origin{config.source, "/objects/" + std::to_string(index)};
-  scene.objects.push_back(std::move(description));
-  scene.lights = matrender::LightRigDescription{config.illuminance_lux};
-  scene.camera.placement = matrender::MatrixPlacement{};
-  scene.camera.width = config.render.width;
-  scene.camera.height = config.render.height;
+  matrender::apply_scene_overrides(overrides, scene);
   return scene;
 }
 

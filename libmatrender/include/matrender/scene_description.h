@@ -132,8 +132,10 @@ struct MatrixPlacement {
   glm::dmat4 camera_to_world{1.0};
 };
 
+using CameraPlacement = std::variant<LookAtPlacement, GridPlacement, MatrixPlacement>;
+
 struct CameraDescription {
-  std::variant<LookAtPlacement, GridPlacement, MatrixPlacement> placement;
+  CameraPlacement placement;
   double vertical_fov = Camera{}.vertical_fov;
   int width = Camera{}.width;
   int height = Camera{}.height;
