@@ -22,25 +22,32 @@ RectLight rect_at(double x) {
 
 }  // namespace
 
-TEST_CASE("The distribution holds rectangles, disks, delta lamps and suns, not the uniform background", "[render]") {
+TEST_CASE("The distribution holds the lights by type: area, delta, infinite, not the uniform background", "[render]") {
   PointLight soft_point;
   soft_point.radius = 0.1;
   SpotLight soft_spot;
   soft_spot.radius = 0.2;
-  const std::vector<Light> lights = {PointLight{}, SunLight{}, rect_at(0.0), soft_spot, SpotLight{}, rect_at(2.0),
-                                     soft_point};
+  SunLight soft_sun;
+  soft_sun.angle = 0.01;
+  const std::vector<Light> lights = {PointLight{}, soft_sun, SunLight{}, rect_at(0.0), soft_spot, SpotLight{},
+                                     rect_at(2.0), soft_point};
   const LightSampler sampler(lights, UniformBackground(glm::vec3(0.1f, 0.2f, 0.3f)));
-  REQUIRE(sampler.sampled_count() == 7);
+  REQUIRE(sampler.sampled_count() == 8);
   CHECK(std::holds_alternative<PreparedRectLight>(sampler.light(0)));
   CHECK(std::holds_alternative<PreparedRectLight>(sampler.light(1)));
   CHECK(std::holds_alternative<PreparedDiskLamp>(sampler.light(2)));
   CHECK(std::holds_alternative<PreparedDiskLamp>(sampler.light(3)));
   CHECK(light_type(sampler.light(3)) == LightType::Area);
-  CHECK(light_type(sampler.light(4)) == LightType::DeltaPosition);
+  CHECK(std::holds_alternative<PreparedPointLight>(sampler.light(4)));
+  CHECK(std::holds_alternative<PreparedSpotLight>(sampler.light(5)));
   CHECK(light_type(sampler.light(5)) == LightType::DeltaPosition);
-  CHECK(std::holds_alternative<PreparedSunLight>(sampler.light(6)));
-  // The background is an eighth light, outside the distribution.
-  CHECK(std::holds_alternative<UniformBackground>(sampler.light(7)));
+  // A sun of angle 0 is one direction, one with an angle a disk of directions rays see.
+  CHECK(std::holds_alternative<PreparedDistantLight>(sampler.light(6)));
+  CHECK(light_type(sampler.light(6)) == LightType::DeltaDirection);
+  CHECK(std::holds_alternative<PreparedSunLight>(sampler.light(7)));
+  CHECK(light_type(sampler.light(7)) == LightType::Infinite);
+  // The background is a ninth light, outside the distribution.
+  CHECK(std::holds_alternative<UniformBackground>(sampler.light(8)));
   CHECK(sampler.has_area_lights());
 }
 
@@ -94,7 +101,7 @@ TEST_CASE("An importance pick chooses each light in proportion to its importance
   CHECK(site.total_importance == Approx(near + far).epsilon(1e-5));
   REQUIRE(std::holds_alternative<PreparedRectLight>(sampler.light(0)));
   CHECK(sampler.pick_probability(0, site) == 0.0f);
-  REQUIRE(std::holds_alternative<PreparedDeltaLight>(sampler.light(1)));
+  REQUIRE(std::holds_alternative<PreparedPointLight>(sampler.light(1)));
   CHECK(sampler.pick_probability(1, site) == Approx(16.0 / 17.0));
   for (double within : {0.0, 0.3, 0.9}) {
     float u = static_cast<float>(within * 16.0 / 17.0);

@@ -8,11 +8,25 @@
 namespace matrender {
 namespace {
 
-std::vector<PreparedRectLight> prepare_rect_lights(const std::vector<Light>& lights) {
-  std::vector<PreparedRectLight> rects;
-  for (const Light& light : lights)
-    if (const auto* rect = std::get_if<RectLight>(&light)) rects.emplace_back(*rect);
-  return rects;
+// The implementation each described light renders with (scene_light.h): its own, or for lamps
+// with a size, the shape they take.
+SceneLight prepare(const RectLight& light) { return PreparedRectLight(light); }
+SceneLight prepare(const PointLight& light) {
+  return light.radius > 0.0 ? SceneLight(PreparedDiskLamp(light)) : SceneLight(PreparedPointLight(light));
+}
+SceneLight prepare(const SpotLight& light) {
+  return light.radius > 0.0 ? SceneLight(PreparedDiskLamp(light)) : SceneLight(PreparedSpotLight(light));
+}
+SceneLight prepare(const SunLight& light) {
+  return PreparedSunLight::has_disk(light) ? SceneLight(PreparedSunLight(light)) : SceneLight(PreparedDistantLight(light));
+}
+
+// The lights of one type among `prepared`, in scene order.
+std::vector<SceneLight> of_type(const std::vector<SceneLight>& prepared, LightType type) {
+  std::vector<SceneLight> lights;
+  for (const SceneLight& light : prepared)
+    if (light_type(light) == type) lights.push_back(light);
+  return lights;
 }
 
 }  // namespace
@@ -20,49 +34,38 @@ std::vector<PreparedRectLight> prepare_rect_lights(const std::vector<Light>& lig
 LightSampler::LightSampler(const std::vector<Light>& lights, const WorldLight& world, LightSelection selection,
                            const std::vector<PreparedMeshEmitter>& emitters)
     : selection_(selection) {
-  const std::vector<PreparedRectLight> rects = prepare_rect_lights(lights);
+  std::vector<SceneLight> prepared;
+  for (const Light& light : lights) prepared.push_back(std::visit([](const auto& l) { return prepare(l); }, light));
+  // Area lamps first, rectangles before the others: the lamp-hit query and light selection
+  // treat the rectangles together, and rays find the others (disks) by their own intersect().
+  std::vector<PreparedRectLight> rects;
+  for (const SceneLight& light : prepared)
+    if (const auto* rect = std::get_if<PreparedRectLight>(&light)) rects.push_back(*rect);
   area_hits_ = RectLightHits(rects);
   rect_importance_ = RectLampImportance(rects);
   lights_.assign(rects.begin(), rects.end());
   rect_count_ = rects.size();
   for (const PreparedRectLight& rect : rects) camera_visible_lamps_ = camera_visible_lamps_ || rect.visible_to_camera();
-  for (const Light& light : lights) {
-    if (const auto* point = std::get_if<PointLight>(&light); point && point->radius > 0.0)
-      lights_.emplace_back(PreparedDiskLamp(*point));
-    if (const auto* spot = std::get_if<SpotLight>(&light); spot && spot->radius > 0.0)
-      lights_.emplace_back(PreparedDiskLamp(*spot));
-  }
+  for (const SceneLight& light : of_type(prepared, LightType::Area))
+    if (!std::holds_alternative<PreparedRectLight>(light)) lights_.push_back(light);
   disk_count_ = lights_.size() - rect_count_;
+  // Then the meshes' emitting triangles, which rays find by hitting the mesh.
   for (const PreparedMeshEmitter& emitter : emitters) {
     if (emitter.mesh() >= emitter_of_mesh_.size()) emitter_of_mesh_.resize(emitter.mesh() + 1, -1);
     emitter_of_mesh_[emitter.mesh()] = static_cast<int32_t>(lights_.size());
     lights_.emplace_back(emitter);
   }
-  for (const Light& light : lights) {
-    if (const auto* point = std::get_if<PointLight>(&light); point && point->radius == 0.0)
-      lights_.emplace_back(PreparedDeltaLight(*point));
-    if (const auto* spot = std::get_if<SpotLight>(&light); spot && spot->radius == 0.0)
-      lights_.emplace_back(PreparedDeltaLight(*spot));
-  }
-  for (const Light& light : lights) {
-    if (const auto* sun = std::get_if<SunLight>(&light)) {
-      infinite_.push_back(lights_.size());
-      lights_.emplace_back(PreparedSunLight(*sun));
-    }
-  }
-  if (const auto* map = std::get_if<PreparedEnvironmentLight>(&world)) {
-    if (!map->black()) {
-      infinite_.push_back(lights_.size());
-      lights_.emplace_back(*map);
-    }
-  }
+  // Then the lights only light sampling reaches, and those rays that leave the scene see.
+  for (const LightType type : {LightType::DeltaPosition, LightType::DeltaDirection, LightType::Infinite})
+    for (const SceneLight& light : of_type(prepared, type)) lights_.push_back(light);
+  if (const auto* map = std::get_if<PreparedEnvironmentLight>(&world); map && !map->black()) lights_.emplace_back(*map);
   sampled_count_ = lights_.size();
-  if (const auto* uniform = std::get_if<UniformBackground>(&world)) {
-    if (uniform->radiance(glm::vec3(0.0f, 0.0f, 1.0f)) != glm::vec3(0.0f)) {
-      infinite_.push_back(lights_.size());
-      lights_.emplace_back(*uniform);
-    }
-  }
+  // A uniform background is no light to sample (uniform_background.h), only one to see.
+  if (const auto* uniform = std::get_if<UniformBackground>(&world);
+      uniform && uniform->radiance(glm::vec3(0.0f, 0.0f, 1.0f)) != glm::vec3(0.0f))
+    lights_.emplace_back(*uniform);
+  for (size_t i = 0; i < lights_.size(); ++i)
+    if (light_type(lights_[i]) == LightType::Infinite) infinite_.push_back(i);
 }
 
 PickSite LightSampler::site(const glm::vec3& p, const ReceivingDirections& receiving) const {

@@ -44,9 +44,12 @@ class LightSampler {
                LightSelection selection = LightSelection::Importance,
                const std::vector<PreparedMeshEmitter>& emitters = {});
 
-  // The lights next-event estimation draws from are lights(0 .. sampled_count() - 1): rectangles
-  // first, then point and spot lamps with a radius (disks), emissive meshes, radius-0 lamps,
-  // suns, each in scene order, then an environment map.
+  // The lights next-event estimation draws from are lights(0 .. sampled_count() - 1), placed by
+  // their LightType, each kind in scene order: the area lamps (rectangles, then the disks of
+  // point and spot lamps with a radius), emissive meshes, then the delta lights (DeltaPosition:
+  // point and spot lamps; DeltaDirection: suns of angle 0), then the infinite ones (suns with an
+  // angle, then an environment map). After them, outside the distribution, a uniform background
+  // that is not black.
   size_t sampled_count() const { return sampled_count_; }
   bool empty() const { return sampled_count_ == 0; }
   const SceneLight& light(size_t i) const { return lights_[i]; }

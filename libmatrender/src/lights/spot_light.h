@@ -1,7 +1,8 @@
 #pragma once
-// Radius-0 point and spot lamps, Cycles 3.4 conventions: intensity I = P c / (4 pi) W/sr; a spot
-// multiplies it by cos t * smoothstep((cos t - cos_half) / ((1 - cos_half) blend)) inside its cone
-// (intern/cycles/kernel/light/spot.h, spot_attenuation; docs/conventions.md, Lamps).
+// A spot lamp of radius 0, Cycles 3.4's conventions: a point lamp's intensity I = P c / (4 pi)
+// W/sr (point_light.h) times cos t * smoothstep((cos t - cos_half) / ((1 - cos_half) blend))
+// inside its cone (intern/cycles/kernel/light/spot.h, spot_attenuation; docs/conventions.md,
+// Lamps), reached only by light sampling. With a radius it is a disk lamp instead (disk_lamp.h).
 #include <cmath>
 #include <optional>
 
@@ -25,20 +26,15 @@ inline float spot_attenuation(float cos_t, float cos_half_angle, float blend) {
   return cos_t * edge;
 }
 
-class PreparedDeltaLight {
+class PreparedSpotLight {
  public:
-  explicit PreparedDeltaLight(const PointLight& light)
-      : position_(light.position),
-        intensity_(light.power * light.color / (4.0 * matbase::kPi)),
-        mean_intensity_(channel_average(intensity_)) {}
-  explicit PreparedDeltaLight(const SpotLight& light)
+  explicit PreparedSpotLight(const SpotLight& light)
       : position_(light.position),
         intensity_(light.power * light.color / (4.0 * matbase::kPi)),
         mean_intensity_(channel_average(intensity_)),
         axis_(glm::normalize(light.direction)),
         cos_half_angle_(static_cast<float>(std::cos(0.5 * light.spot_angle))),
-        blend_(static_cast<float>(light.blend)),
-        is_spot_(true) {}
+        blend_(static_cast<float>(light.blend)) {}
 
   static constexpr LightType type() { return LightType::DeltaPosition; }
 
@@ -49,7 +45,7 @@ class PreparedDeltaLight {
     if (!(dist2 > 0.0f)) return 0.0f;
     const glm::vec3 wi = to_light / std::sqrt(dist2);
     const float cosine = receiving.every_direction ? 1.0f : std::max(0.0f, glm::dot(wi, receiving.normal));
-    const float cone = is_spot_ ? spot_attenuation(glm::dot(-wi, axis_), cos_half_angle_, blend_) : 1.0f;
+    const float cone = spot_attenuation(glm::dot(-wi, axis_), cos_half_angle_, blend_);
     return mean_intensity_ * cone * cosine / dist2;
   }
 
@@ -64,7 +60,7 @@ class PreparedDeltaLight {
     s.wi = to_light / dist;
     s.distance = dist;
     float factor = 1.0f / dist2;
-    if (is_spot_) factor *= spot_attenuation(glm::dot(-s.wi, axis_), cos_half_angle_, blend_);
+    factor *= spot_attenuation(glm::dot(-s.wi, axis_), cos_half_angle_, blend_);
     if (!(factor > 0.0f)) return std::nullopt;
     s.radiance = intensity_ * factor;
     s.pdf = 1.0f;
@@ -76,10 +72,9 @@ class PreparedDeltaLight {
   glm::vec3 position_;
   glm::vec3 intensity_;
   float mean_intensity_;
-  glm::vec3 axis_{0.0f, 0.0f, -1.0f};
-  float cos_half_angle_ = -1.0f;
-  float blend_ = 0.0f;
-  bool is_spot_ = false;
+  glm::vec3 axis_;
+  float cos_half_angle_;
+  float blend_;
 };
 
 }  // namespace matrender

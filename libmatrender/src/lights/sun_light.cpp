@@ -11,11 +11,13 @@
 
 namespace matrender {
 
+bool PreparedSunLight::has_disk(const SunLight& light) { return static_cast<float>(std::tan(0.5 * light.angle)) > 0.0f; }
+
 PreparedSunLight::PreparedSunLight(const SunLight& light)
     : to_sun_(-glm::normalize(light.direction)), irradiance_(light.strength * light.color) {
   const double radius = std::tan(0.5 * light.angle);
   disk_radius_ = static_cast<float>(radius);
-  inverse_disk_area_ = radius > 0.0 ? static_cast<float>(1.0 / (matbase::kPi * radius * radius)) : 0.0f;
+  inverse_disk_area_ = static_cast<float>(1.0 / (matbase::kPi * radius * radius));
   cos_half_angle_ = static_cast<float>(std::cos(0.5 * light.angle));
   sin_half_angle_ = static_cast<float>(std::sin(0.5 * light.angle));
   mean_irradiance_ = channel_average(irradiance_);
@@ -35,18 +37,10 @@ float PreparedSunLight::density(const glm::vec3& direction) const {
   return inverse_disk_area_ / (cos_t * cos_t * cos_t);
 }
 
-std::optional<LightSample> PreparedSunLight::sample(const glm::vec3& /*p*/, const ReceivingDirections& receiving,
+std::optional<LightSample> PreparedSunLight::sample(const glm::vec3& /*p*/, const ReceivingDirections& /*receiving*/,
                                                     glm::vec2 u) const {
   LightSample s;
   s.distance = std::numeric_limits<float>::infinity();
-  if (disk_radius_ == 0.0f) {
-    if (!receiving.every_direction && !(glm::dot(to_sun_, receiving.normal) > 0.0f)) return std::nullopt;
-    s.wi = to_sun_;
-    s.radiance = irradiance_;
-    s.pdf = 1.0f;
-    s.delta = true;
-    return s;
-  }
   const ShadingFrame disk = ShadingFrame::from_normal(to_sun_);
   const glm::vec2 on_disk = disk_radius_ * sample_uniform_disk_concentric(u);
   s.wi = glm::normalize(to_sun_ + disk.x * on_disk.x + disk.y * on_disk.y);
@@ -56,12 +50,8 @@ std::optional<LightSample> PreparedSunLight::sample(const glm::vec3& /*p*/, cons
   return s;
 }
 
-float PreparedSunLight::pdf(const glm::vec3& direction) const {
-  return disk_radius_ > 0.0f ? density(direction) : 0.0f;
-}
+float PreparedSunLight::pdf(const glm::vec3& direction) const { return density(direction); }
 
-glm::vec3 PreparedSunLight::radiance(const glm::vec3& direction) const {
-  return disk_radius_ > 0.0f ? irradiance_ * density(direction) : glm::vec3(0.0f);
-}
+glm::vec3 PreparedSunLight::radiance(const glm::vec3& direction) const { return irradiance_ * density(direction); }
 
 }  // namespace matrender

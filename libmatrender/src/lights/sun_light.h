@@ -1,11 +1,11 @@
 #pragma once
-// The sun, Cycles 3.4's distant lamp (scene/light.cpp and kernel/light/light.h, LIGHT_DISTANT):
-// parallel light of irradiance E = S c. With an angular diameter a > 0 it is a disk of radius
-// r = tan(a / 2) seen at distance 1: directions are drawn uniformly over that disk, so the
-// solid-angle pdf is 1 / (pi r^2 cos^3 t) at angle t off the axis, and the radiance is E times the
-// same, which makes every light sample carry exactly E. Rays that leave the scene inside the cone
-// see it, weighed against light sampling by MIS; camera rays do not (lamps are invisible to them).
-// Of angle 0 it is one direction (a delta light): light sampling is then its only strategy.
+// The sun with an angular diameter a > 0, Cycles 3.4's soft distant lamp (scene/light.cpp and
+// kernel/light/light.h, LIGHT_DISTANT): a disk of radius r = tan(a / 2) seen at distance 1, of
+// irradiance E = S c. Directions are drawn uniformly over that disk, so the solid-angle pdf is
+// 1 / (pi r^2 cos^3 t) at angle t off the axis, and the radiance is E times the same, which makes
+// every light sample carry exactly E. Rays that leave the scene inside the cone see it, weighed
+// against light sampling by MIS; camera rays do not (lamps are invisible to them). A sun whose
+// disk is too small for a float (angle 0) is one direction instead (distant_light.h).
 #include <optional>
 
 #include <glm/glm.hpp>
@@ -19,9 +19,10 @@ namespace matrender {
 class PreparedSunLight {
  public:
   explicit PreparedSunLight(const SunLight& light);
+  // Whether the sun's disk of directions has a radius a float holds; else it is a distant light.
+  static bool has_disk(const SunLight& light);
 
-  // What rays that leave the scene may see; a sun of angle 0 gives them nothing and samples as a
-  // delta light.
+  // What rays that leave the scene may see.
   static constexpr LightType type() { return LightType::Infinite; }
   static constexpr bool visible_to_camera() { return false; }
   static constexpr bool same_radiance_everywhere() { return false; }
