@@ -37,15 +37,22 @@ using SceneLight = std::variant<PreparedRectLight, PreparedDiskLamp, PreparedMes
                                 PreparedSpotLight, PreparedDistantLight, PreparedSunLight, UniformBackground,
                                 PreparedEnvironmentLight>;
 
-// f(the light as its own type). Tests of the index, not std::visit, so that the lights' methods
-// inline (GCC calls std::visit's alternatives through a table).
-template <size_t kIndex = 0, class F>
+// f(the light as its own type). A switch, not std::visit, so that the lights' methods inline
+// (GCC calls std::visit's alternatives through a table); the variant above and its cases here
+// change together.
+template <class F>
 decltype(auto) with_light(const SceneLight& light, F&& f) {
-  if constexpr (kIndex + 1 == std::variant_size_v<SceneLight>) {
-    return f(*std::get_if<kIndex>(&light));
-  } else {
-    if (light.index() == kIndex) return f(*std::get_if<kIndex>(&light));
-    return with_light<kIndex + 1>(light, std::forward<F>(f));
+  static_assert(std::variant_size_v<SceneLight> == 9, "a new light needs its case here");
+  switch (light.index()) {
+    case 0: return f(*std::get_if<0>(&light));
+    case 1: return f(*std::get_if<1>(&light));
+    case 2: return f(*std::get_if<2>(&light));
+    case 3: return f(*std::get_if<3>(&light));
+    case 4: return f(*std::get_if<4>(&light));
+    case 5: return f(*std::get_if<5>(&light));
+    case 6: return f(*std::get_if<6>(&light));
+    case 7: return f(*std::get_if<7>(&light));
+    default: return f(*std::get_if<8>(&light));
   }
 }
 
