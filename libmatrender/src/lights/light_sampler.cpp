@@ -2,24 +2,12 @@
 
 #include <algorithm>
 #include <type_traits>
+#include <variant>
 
 #include "sampling/warp.h"
 
 namespace matrender {
 namespace {
-
-// The implementation each described light renders with (scene_light.h): its own, or for lamps
-// with a size, the shape they take.
-SceneLight prepare(const RectLight& light) { return PreparedRectLight(light); }
-SceneLight prepare(const PointLight& light) {
-  return light.radius > 0.0 ? SceneLight(PreparedDiskLamp(light)) : SceneLight(PreparedPointLight(light));
-}
-SceneLight prepare(const SpotLight& light) {
-  return light.radius > 0.0 ? SceneLight(PreparedDiskLamp(light)) : SceneLight(PreparedSpotLight(light));
-}
-SceneLight prepare(const SunLight& light) {
-  return PreparedSunLight::has_disk(light) ? SceneLight(PreparedSunLight(light)) : SceneLight(PreparedDistantLight(light));
-}
 
 // The lights of one type among `prepared`, in scene order.
 std::vector<SceneLight> of_type(const std::vector<SceneLight>& prepared, LightType type) {
@@ -35,7 +23,15 @@ LightSampler::LightSampler(const std::vector<Light>& lights, const WorldLight& w
                            const std::vector<PreparedMeshEmitter>& emitters)
     : selection_(selection) {
   std::vector<SceneLight> prepared;
-  for (const Light& light : lights) prepared.push_back(std::visit([](const auto& l) { return prepare(l); }, light));
+  // Each described light as the implementation it renders with (its LightKind's prepare).
+  for (const Light& light : lights)
+    std::visit(
+        [&](const auto& described) {
+          using Description = std::decay_t<decltype(described)>;
+          LightKind<Description>::prepare(described,
+                                          [&](auto implementation) { prepared.emplace_back(implementation); });
+        },
+        light);
   // Area lamps first, rectangles before the others: the lamp-hit query and light selection
   // treat the rectangles together, and rays find the others (disks) by their own intersect().
   std::vector<PreparedRectLight> rects;

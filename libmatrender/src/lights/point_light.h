@@ -4,13 +4,18 @@
 // light sampling. With a radius it is a disk lamp instead (disk_lamp.h).
 #include <cmath>
 #include <optional>
+#include <utility>
 
 #include <glm/glm.hpp>
 
+#include "lights/disk_lamp.h"
+#include "lights/light_checks.h"
+#include "lights/light_kind.h"
 #include "lights/light_sample.h"
 #include "lights/light_type.h"
 #include "matbase/pi.h"
 #include "matrender/light.h"
+#include "scene_description/scene_file_node.h"
 #include "util/channel_average.h"
 
 namespace matrender {
@@ -56,6 +61,32 @@ class PreparedPointLight {
   glm::vec3 position_;
   glm::vec3 intensity_;
   float mean_intensity_;
+};
+
+// The scene file's "point" lamp: position, power, color, radius. With a radius it renders as a
+// disk lamp.
+template <>
+struct LightKind<PointLight> {
+  static constexpr const char* kSceneFileType = "point";
+  static PointLight read(const SceneFileNode& node) {
+    node.expect_keys({"type", "position", "power", "color", "radius"});
+    PointLight light;
+    light.position = read_vec3(node.required("position"));
+    light.power = node.required("power").non_negative();
+    if (auto color = node.find("color")) light.color = read_color(*color);
+    if (auto radius = node.find("radius")) light.radius = radius->non_negative();
+    return light;
+  }
+  static void check(const PointLight& light) {
+    check_point_lamp(light.position, light.power, light.color, light.radius);
+  }
+  template <class Add>
+  static void prepare(const PointLight& light, Add&& add) {
+    if (light.radius > 0.0)
+      std::forward<Add>(add)(PreparedDiskLamp(light));
+    else
+      std::forward<Add>(add)(PreparedPointLight(light));
+  }
 };
 
 }  // namespace matrender

@@ -1,9 +1,17 @@
 #include "lights/rect_light.h"
 
 #include <cmath>
+#include <stdexcept>
 
+#include <fmt/format.h>
+
+#include "lights/light_checks.h"
 #include "lights/light_importance.h"
+#include "matgeom/camera_grid.h"
+#include "matrender/scene_limits.h"
+#include "scene_description/scene_file_node.h"
 #include "util/channel_average.h"
+#include "util/finite.h"
 
 namespace matrender {
 namespace {
@@ -85,6 +93,52 @@ float PreparedRectLight::pdf(const glm::vec3& p, const glm::vec3& wi, float t) c
   const float cos_light = glm::dot(wi, rect_.z);
   if (!(cos_light > 0.0f)) return 0.0f;
   return t * t / (cos_light * area_);
+}
+
+RectLight LightKind<RectLight>::read(const SceneFileNode& node) {
+  node.expect_keys({"type", "position", "look_at", "up", "size", "power", "color", "visible_to_camera"});
+  RectLight light;
+  const glm::dvec3 position = read_vec3(node.required("position"));
+  const glm::dvec3 target = read_target(node, position);
+  const glm::dvec3 up = node.has("up") ? read_direction(node.required("up")) : glm::dvec3(0.0, 0.0, 1.0);
+  // A lamp emits down its -Z like a camera looks down its -Z, so the same frame aims both.
+  try {
+    light.light_to_world = matgeom::look_at_camera_to_world(position, target, up);
+  } catch (const std::invalid_argument& e) {
+    node.required("look_at").fail(e.what());
+  }
+  const SceneFileNode size = node.required("size");
+  if (size.is_number()) {
+    light.size_x = light.size_y = size.positive();
+  } else {
+    size.expect_array(2, "a positive number or [size_x, size_y]");
+    light.size_x = size.item(0).positive();
+    light.size_y = size.item(1).positive();
+  }
+  light.power = node.required("power").non_negative();
+  if (auto color = node.find("color")) light.color = read_color(*color);
+  if (auto visible = node.find("visible_to_camera")) light.visible_to_camera = visible->boolean();
+  return light;
+}
+
+void LightKind<RectLight>::check(const RectLight& light) {
+  if (!is_finite(light.light_to_world)) refuse("its transform has a non-finite entry");
+  check_point_within_limit(glm::dvec3(light.light_to_world[3]), "centre");
+  const glm::dvec3 axis_x(light.light_to_world[0]), axis_y(light.light_to_world[1]);
+  if (!(glm::length(glm::cross(axis_x, axis_y)) > 0.0))
+    refuse("its transform's X and Y axes are zero or parallel, so the rectangle has no plane");
+  for (const double size : {light.size_x, light.size_y}) {
+    if (!(std::isfinite(size) && size > 0.0)) refuse(fmt::format("size {} m must be finite and positive", size));
+    if (size > 2.0 * kMaxSceneCoordinate)
+      refuse(fmt::format("size {} m exceeds the scene's {} m", size, 2.0 * kMaxSceneCoordinate));
+  }
+  const double area = light.size_x * light.size_y;
+  if (!(area >= kMinNormalFloat))
+    refuse(fmt::format("its area {:g} m^2 ({} x {} m) is below the {:g} single precision holds", area, light.size_x,
+                       light.size_y, kMinNormalFloat));
+  check_color(light.color);
+  check_power(light.power);
+  check_emission(light.power * light.color / (4.0 * area), "radiance", "lower the power or enlarge the lamp");
 }
 
 }  // namespace matrender

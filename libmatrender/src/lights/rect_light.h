@@ -3,9 +3,11 @@
 // toward the lamp's local -Z (docs/conventions.md, Lamps). Sampled by solid angle.
 #include <array>
 #include <optional>
+#include <utility>
 
 #include <glm/glm.hpp>
 
+#include "lights/light_kind.h"
 #include "lights/light_sample.h"
 #include "lights/light_type.h"
 #include "lights/spherical_rectangle.h"
@@ -53,6 +55,20 @@ class PreparedRectLight {
   float power_ = 0.0f;            // channel mean of radiance times area
   glm::vec3 radiance_{0.0f};
   bool visible_to_camera_ = false;
+};
+
+class SceneFileNode;
+
+// The scene file's "area" lamp: position, look_at, up, size, power, color, visible_to_camera.
+template <>
+struct LightKind<RectLight> {
+  static constexpr const char* kSceneFileType = "area";
+  static RectLight read(const SceneFileNode& node);
+  static void check(const RectLight& light);
+  template <class Add>
+  static void prepare(const RectLight& light, Add&& add) {
+    std::forward<Add>(add)(PreparedRectLight(light));
+  }
 };
 
 }  // namespace matrender

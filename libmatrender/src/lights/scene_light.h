@@ -1,8 +1,9 @@
 #pragma once
 // The lights of a scene, prepared for rendering, behind one interface, as the lobes of a BSDF are.
-// A described light (matrender/light.h) becomes one of these (prepare_light in light_sampler.cpp):
-// a point lamp a PreparedPointLight, or a PreparedDiskLamp when it has a radius; a sun a
-// PreparedDistantLight, or a PreparedSunLight when it has an angle.
+// A described light (matrender/light.h) becomes one of these by its LightKind's prepare
+// (light_kind.h), declared in the light's own file: a point lamp a PreparedPointLight, or a
+// PreparedDiskLamp when it has a radius; a sun a PreparedDistantLight, or a PreparedSunLight when
+// it has an angle. Including this header includes every light's file, and so every LightKind.
 //
 // Every light:
 //   static constexpr LightType type();   what it is (light_type.h), which decides how the

@@ -5,14 +5,20 @@
 // Lamps), reached only by light sampling. With a radius it is a disk lamp instead (disk_lamp.h).
 #include <cmath>
 #include <optional>
+#include <utility>
 
+#include <fmt/format.h>
 #include <glm/glm.hpp>
 
+#include "lights/disk_lamp.h"
+#include "lights/light_checks.h"
+#include "lights/light_kind.h"
 #include "lights/light_sample.h"
 #include "lights/light_type.h"
 #include "matbase/pi.h"
 #include "matbase/smoothstep.h"
 #include "matrender/light.h"
+#include "scene_description/scene_file_node.h"
 #include "sampling/warp.h"
 #include "util/channel_average.h"
 
@@ -75,6 +81,41 @@ class PreparedSpotLight {
   glm::vec3 axis_;
   float cos_half_angle_;
   float blend_;
+};
+
+// The scene file's "spot" lamp: position, look_at, spot_angle_deg, blend, power, color, radius.
+// With a radius it renders as a disk lamp.
+template <>
+struct LightKind<SpotLight> {
+  static constexpr const char* kSceneFileType = "spot";
+  static SpotLight read(const SceneFileNode& node) {
+    node.expect_keys({"type", "position", "look_at", "spot_angle_deg", "blend", "power", "color", "radius"});
+    SpotLight light;
+    light.position = read_vec3(node.required("position"));
+    light.direction = glm::normalize(read_target(node, light.position) - light.position);
+    if (auto angle = node.find("spot_angle_deg"))
+      light.spot_angle = glm::radians(
+          angle->number_where([](double v) { return v > 0.0 && v <= 180.0; }, "an angle in (0, 180] degrees"));
+    if (auto blend = node.find("blend")) light.blend = blend->unit_interval();
+    light.power = node.required("power").non_negative();
+    if (auto color = node.find("color")) light.color = read_color(*color);
+    if (auto radius = node.find("radius")) light.radius = radius->non_negative();
+    return light;
+  }
+  static void check(const SpotLight& spot) {
+    check_point_lamp(spot.position, spot.power, spot.color, spot.radius);
+    check_direction(spot.direction);
+    if (!(spot.spot_angle > 0.0 && spot.spot_angle <= matbase::kPi))
+      refuse(fmt::format("spot angle {} rad must lie in (0, pi]", spot.spot_angle));
+    if (!(spot.blend >= 0.0 && spot.blend <= 1.0)) refuse(fmt::format("blend {} must lie in [0, 1]", spot.blend));
+  }
+  template <class Add>
+  static void prepare(const SpotLight& light, Add&& add) {
+    if (light.radius > 0.0)
+      std::forward<Add>(add)(PreparedDiskLamp(light));
+    else
+      std::forward<Add>(add)(PreparedSpotLight(light));
+  }
 };
 
 }  // namespace matrender

@@ -3,15 +3,21 @@
 #include <cmath>
 #include <limits>
 
+#include <fmt/format.h>
+
 #include "matbase/pi.h"
 #include "bsdf/shading_frame.h"
+#include "lights/light_checks.h"
 #include "lights/light_importance.h"
+#include "scene_description/scene_file_node.h"
 #include "util/channel_average.h"
 #include "sampling/warp.h"
 
 namespace matrender {
 
-bool PreparedSunLight::has_disk(const SunLight& light) { return static_cast<float>(std::tan(0.5 * light.angle)) > 0.0f; }
+bool PreparedSunLight::has_disk(const SunLight& light) {
+  return static_cast<float>(std::tan(0.5 * light.angle)) > 0.0f;
+}
 
 PreparedSunLight::PreparedSunLight(const SunLight& light)
     : to_sun_(-glm::normalize(light.direction)), irradiance_(light.strength * light.color) {
@@ -53,5 +59,36 @@ std::optional<LightSample> PreparedSunLight::sample(const glm::vec3& /*p*/, cons
 float PreparedSunLight::pdf(const glm::vec3& direction) const { return density(direction); }
 
 glm::vec3 PreparedSunLight::radiance(const glm::vec3& direction) const { return irradiance_ * density(direction); }
+
+SunLight LightKind<SunLight>::read(const SceneFileNode& node) {
+  node.expect_keys({"type", "position", "look_at", "strength", "color", "angle_deg"});
+  SunLight light;
+  const glm::dvec3 position = read_vec3(node.required("position"));
+  light.direction = glm::normalize(read_target(node, position) - position);
+  light.strength = node.required("strength").non_negative();
+  if (auto color = node.find("color")) light.color = read_color(*color);
+  if (auto angle = node.find("angle_deg"))
+    light.angle = glm::radians(
+        angle->number_where([](double v) { return v >= 0.0 && v <= glm::degrees(kMaxSunAngle); },
+                            fmt::format("an angle in [0, {:g}] degrees", glm::degrees(kMaxSunAngle))));
+  return light;
+}
+
+void LightKind<SunLight>::check(const SunLight& sun) {
+  check_direction(sun.direction);
+  check_color(sun.color);
+  if (!(std::isfinite(sun.strength) && sun.strength >= 0.0))
+    refuse(fmt::format("strength {} W/m^2 must be finite and non-negative", sun.strength));
+  check_emission(sun.strength * sun.color, "irradiance", "lower the strength");
+  if (!(sun.angle >= 0.0 && sun.angle <= kMaxSunAngle))
+    refuse(fmt::format("angle {} rad must lie in [0, {}]", sun.angle, kMaxSunAngle));
+  if (sun.angle == 0.0) return;
+  // The radiance E / (pi tan^2(angle / 2)) at the centre of the disk of directions.
+  const double tangent = std::tan(0.5 * sun.angle);
+  if (!(matbase::kPi * tangent * tangent >= kMinNormalFloat))
+    refuse(fmt::format("angle {:g} rad is too small for single precision; use 0 for a single direction", sun.angle));
+  check_emission(sun.strength * sun.color / (matbase::kPi * tangent * tangent), "radiance",
+                 "lower the strength or widen the angle");
+}
 
 }  // namespace matrender

@@ -7,9 +7,12 @@
 // against light sampling by MIS; camera rays do not (lamps are invisible to them). A sun whose
 // disk is too small for a float (angle 0) is one direction instead (distant_light.h).
 #include <optional>
+#include <utility>
 
 #include <glm/glm.hpp>
 
+#include "lights/distant_light.h"
+#include "lights/light_kind.h"
 #include "lights/light_sample.h"
 #include "lights/light_type.h"
 #include "matrender/light.h"
@@ -44,6 +47,24 @@ class PreparedSunLight {
   float inverse_disk_area_ = 0.0f;
   float cos_half_angle_ = 1.0f, sin_half_angle_ = 0.0f;
   float mean_irradiance_ = 0.0f;
+};
+
+class SceneFileNode;
+
+// The scene file's "sun": position, look_at (only the direction between them matters), strength,
+// color, angle_deg. Of angle 0 it renders as a distant light.
+template <>
+struct LightKind<SunLight> {
+  static constexpr const char* kSceneFileType = "sun";
+  static SunLight read(const SceneFileNode& node);
+  static void check(const SunLight& sun);
+  template <class Add>
+  static void prepare(const SunLight& light, Add&& add) {
+    if (PreparedSunLight::has_disk(light))
+      std::forward<Add>(add)(PreparedSunLight(light));
+    else
+      std::forward<Add>(add)(PreparedDistantLight(light));
+  }
 };
 
 }  // namespace matrender

@@ -17,6 +17,8 @@
 #include <nlohmann/json.hpp>
 
 #include "lights/light_checks.h"
+#include "lights/scene_light.h"
+#include "scene_description/scene_file_node.h"
 #include "matbase/file/input_file.h"
 #include "matbase/text.h"
 #include "matgeom/builtin/builtin_objects.h"
@@ -32,163 +34,11 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-constexpr long long kMaxUint32 = std::numeric_limits<uint32_t>::max();
-constexpr long long kMaxInt = std::numeric_limits<int>::max();
-
-std::string quoted_list(const std::vector<std::string>& names) {
-  std::string list;
-  for (const std::string& name : names) list += (list.empty() ? "\"" : ", \"") + name + "\"";
-  return list;
-}
-
-// RFC 6901: "~" is written "~0" and "/" is written "~1" inside a pointer token.
-std::string pointer_token(const std::string& key) {
-  std::string token;
-  for (char c : key) {
-    if (c == '~') token += "~0";
-    else if (c == '/') token += "~1";
-    else token += c;
-  }
-  return token;
-}
-
-// A JSON value together with its file and JSON pointer, so that every check can name the value
-// it rejects.
-class Node {
- public:
-  Node(const json& value, std::string pointer, const std::string& file)
-      : value_(value), pointer_(std::move(pointer)), file_(file) {}
-
-  Origin origin() const { return {file_, pointer_}; }
-  [[noreturn]] void fail(const std::string& message) const { throw origin().error("", message); }
-
-  // This must be an object whose keys are all in `allowed`: a misspelt key is an error rather
-  // than a silently ignored setting.
-  void expect_keys(std::initializer_list<const char*> allowed) const {
-    expect_keys(std::vector<const char*>(allowed));
-  }
-  void expect_keys(const std::vector<const char*>& allowed) const {
-    if (!value_.is_object()) fail("expected an object");
-    for (const auto& item : value_.items()) {
-      const bool known = std::any_of(allowed.begin(), allowed.end(),
-                                     [&](const char* key) { return item.key() == key; });
-      if (!known) {
-        std::vector<std::string> names(allowed.begin(), allowed.end());
-        member_node(item.key()).fail("unknown key (allowed here: " + quoted_list(names) + ")");
-      }
-    }
-  }
-
-  bool has(const char* key) const { return value_.is_object() && value_.contains(key); }
-  Node required(const char* key) const {
-    if (!value_.is_object()) fail("expected an object");
-    if (!has(key)) fail(fmt::format("missing key \"{}\"", key));
-    return member_node(key);
-  }
-  std::optional<Node> find(const char* key) const {
-    if (!has(key)) return std::nullopt;
-    return member_node(key);
-  }
-  Node item(size_t index) const {
-    return Node(value_.at(index), pointer_ + "/" + std::to_string(index), file_);
-  }
-  // Members of an object, in file order.
-  std::vector<std::pair<std::string, Node>> members() const {
-    if (!value_.is_object()) fail("expected an object");
-    std::vector<std::pair<std::string, Node>> result;
-    for (const auto& item : value_.items()) result.emplace_back(item.key(), member_node(item.key()));
-    return result;
-  }
-
-  bool is_array() const { return value_.is_array(); }
-  bool is_object() const { return value_.is_object(); }
-  bool is_string() const { return value_.is_string(); }
-  bool is_number() const { return value_.is_number(); }
-  size_t array_size(const std::string& expectation) const {
-    if (!value_.is_array()) fail("expected " + expectation);
-    return value_.size();
-  }
-  void expect_array(size_t count, const std::string& expectation) const {
-    if (array_size(expectation) != count) fail("expected " + expectation);
-  }
-
-  double number() const {
-    if (!value_.is_number()) fail("expected a number");
-    return value_.get<double>();
-  }
-  double number_where(const std::function<bool(double)>& accept, const std::string& expectation) const {
-    if (!value_.is_number() || !accept(value_.get<double>())) fail("expected " + expectation);
-    return value_.get<double>();
-  }
-  double positive() const { return number_where([](double v) { return v > 0.0; }, "a positive number"); }
-  double non_negative() const { return number_where([](double v) { return v >= 0.0; }, "a number >= 0"); }
-  double unit_interval() const {
-    return number_where([](double v) { return v >= 0.0 && v <= 1.0; }, "a number in [0, 1]");
-  }
-  int integer_in(int lo, int hi) const {
-    return static_cast<int>(checked_integer(lo, hi, fmt::format("an integer in [{}, {}]", lo, hi)));
-  }
-  int integer_at_least(int lo) const {
-    return static_cast<int>(checked_integer(lo, kMaxInt, fmt::format("an integer in [{}, {}]", lo, kMaxInt)));
-  }
-  uint32_t uint32() const {
-    return static_cast<uint32_t>(checked_integer(0, kMaxUint32, "an integer in [0, 4294967295]"));
-  }
-  std::string string() const {
-    if (!value_.is_string()) fail("expected a string");
-    return value_.get<std::string>();
-  }
-  bool boolean() const {
-    if (!value_.is_boolean()) fail("expected true or false");
-    return value_.get<bool>();
-  }
-  // Index of the string among `choices`.
-  size_t choice(const std::vector<std::string>& choices) const {
-    const auto it = value_.is_string() ? std::find(choices.begin(), choices.end(), value_.get<std::string>())
-                                       : choices.end();
-    if (it == choices.end()) fail("expected one of " + quoted_list(choices));
-    return static_cast<size_t>(it - choices.begin());
-  }
-
- private:
-  // 3 and 3.0 are the same number to JSON writers, so both count as integers.
-  long long checked_integer(long long lo, long long hi, const std::string& expectation) const {
-    const bool integral = value_.is_number_integer() ||
-                          (value_.is_number_float() && std::trunc(value_.get<double>()) == value_.get<double>());
-    const double v = integral ? value_.get<double>() : 0.0;
-    if (!integral || v < static_cast<double>(lo) || v > static_cast<double>(hi)) fail("expected " + expectation);
-    return static_cast<long long>(v);
-  }
-
-  Node member_node(const std::string& key) const {
-    return Node(value_.at(key), pointer_ + "/" + pointer_token(key), file_);
-  }
-
-  const json& value_;
-  std::string pointer_;
-  const std::string& file_;
-};
-
 // ---- small value types ----------------------------------------------------------------------
 
-glm::dvec3 read_vec3(const Node& node) {
-  node.expect_array(3, "an array of 3 numbers");
-  return {node.item(0).number(), node.item(1).number(), node.item(2).number()};
-}
-
-glm::dvec3 read_color(const Node& node) {
-  node.expect_array(3, "[r, g, b] with components >= 0");
-  return {node.item(0).non_negative(), node.item(1).non_negative(), node.item(2).non_negative()};
-}
-
-glm::dvec3 read_direction(const Node& node) {
-  const glm::dvec3 v = read_vec3(node);
-  if (glm::length(v) == 0.0) node.fail("expected a non-zero vector");
-  return v;
-}
-
 // [min, max] with min < max, both accepted by `element`.
-std::pair<double, double> read_range(const Node& node, const std::function<double(const Node&)>& element) {
+std::pair<double, double> read_range(const SceneFileNode& node,
+                                     const std::function<double(const SceneFileNode&)>& element) {
   node.expect_array(2, "[min, max]");
   const double lo = element(node.item(0)), hi = element(node.item(1));
   if (!(lo < hi)) node.fail("expected [min, max] with min < max");
@@ -196,11 +46,11 @@ std::pair<double, double> read_range(const Node& node, const std::function<doubl
 }
 
 // 4 rows of 4 numbers, row-major as written; glm stores columns.
-glm::dmat4 read_matrix(const Node& node) {
+glm::dmat4 read_matrix(const SceneFileNode& node) {
   node.expect_array(4, "a 4x4 matrix as 4 rows of 4 numbers");
   glm::dmat4 m(1.0);
   for (size_t r = 0; r < 4; ++r) {
-    const Node row = node.item(r);
+    const SceneFileNode row = node.item(r);
     row.expect_array(4, "a row of 4 numbers");
     for (size_t c = 0; c < 4; ++c) m[static_cast<int>(c)][static_cast<int>(r)] = row.item(c).number();
   }
@@ -211,7 +61,7 @@ glm::dmat4 read_matrix(const Node& node) {
 
 // A camera matrix must be a rotation and a translation: any scale or shear would silently change
 // the field of view or skew the image.
-glm::dmat4 read_rigid_matrix(const Node& node) {
+glm::dmat4 read_rigid_matrix(const SceneFileNode& node) {
   const glm::dmat4 m = read_matrix(node);
   const glm::dmat3 r(m);
   const glm::dmat3 should_be_identity = glm::transpose(r) * r;
@@ -222,7 +72,7 @@ glm::dmat4 read_rigid_matrix(const Node& node) {
   return m;
 }
 
-std::string read_existing_file(const Node& node, const fs::path& folder) {
+std::string read_existing_file(const SceneFileNode& node, const fs::path& folder) {
   const std::string text = node.string();
   if (text.empty()) node.fail("expected a file path");
   const fs::path path = fs::path(text).is_absolute() ? fs::path(text) : (folder / text).lexically_normal();
@@ -234,7 +84,7 @@ std::string read_existing_file(const Node& node, const fs::path& folder) {
 
 // ---- camera ---------------------------------------------------------------------------------
 
-GridPlacement read_grid(const Node& node) {
+GridPlacement read_grid(const SceneFileNode& node) {
   node.expect_keys({"cell", "n_phi", "n_theta", "radius", "phi_range_deg", "theta_range_deg", "center"});
   GridPlacement grid;
   matgeom::CameraGridSpec& spec = grid.spec;
@@ -242,14 +92,14 @@ GridPlacement read_grid(const Node& node) {
   if (auto n = node.find("n_theta")) spec.n_theta = n->integer_at_least(1);
   if (auto r = node.find("radius")) spec.radius = r->positive();
   if (auto range = node.find("phi_range_deg")) {
-    const auto [lo, hi] = read_range(*range, [](const Node& n) {
+    const auto [lo, hi] = read_range(*range, [](const SceneFileNode& n) {
       return n.number_where([](double v) { return v >= 0.0 && v <= 180.0; }, "an angle in [0, 180] degrees");
     });
     spec.phi_min = glm::radians(lo);
     spec.phi_max = glm::radians(hi);
   }
   if (auto range = node.find("theta_range_deg")) {
-    const auto [lo, hi] = read_range(*range, [](const Node& n) { return n.number(); });
+    const auto [lo, hi] = read_range(*range, [](const SceneFileNode& n) { return n.number(); });
     spec.theta_min = glm::radians(lo);
     spec.theta_max = glm::radians(hi);
   }
@@ -261,14 +111,14 @@ GridPlacement read_grid(const Node& node) {
       spec.center = read_vec3(*center);
     }
   }
-  const Node cell = node.required("cell");
+  const SceneFileNode cell = node.required("cell");
   cell.expect_array(2, "[i, j]");
   grid.i = cell.item(0).integer_in(0, spec.n_phi - 1);
   grid.j = cell.item(1).integer_in(0, spec.n_theta - 1);
   return grid;
 }
 
-LookAtPlacement read_look_at(const Node& node) {
+LookAtPlacement read_look_at(const SceneFileNode& node) {
   LookAtPlacement look;
   look.position = read_vec3(node.required("position"));
   look.target = read_vec3(node.required("look_at"));
@@ -277,7 +127,7 @@ LookAtPlacement read_look_at(const Node& node) {
   return look;
 }
 
-CameraDescription read_camera(const Node& node) {
+CameraDescription read_camera(const SceneFileNode& node) {
   if (!node.is_object()) node.fail("expected an object");
   const int kinds = int{node.has("position")} + int{node.has("grid")} + int{node.has("matrix")};
   if (kinds != 1) node.fail("expected exactly one of \"position\" (with \"look_at\"), \"grid\" or \"matrix\"");
@@ -302,82 +152,27 @@ CameraDescription read_camera(const Node& node) {
 
 // ---- lights ---------------------------------------------------------------------------------
 
-glm::dvec3 read_target(const Node& node, const glm::dvec3& position) {
-  const glm::dvec3 target = read_vec3(node.required("look_at"));
-  if (target == position) node.required("look_at").fail("expected a point different from \"position\"");
-  return target;
+// Each kind of light reads its own keys (lights/light_kind.h): the kinds are `Light`'s
+// alternatives, in its order.
+template <size_t... kKinds>
+std::vector<std::string> light_types(std::index_sequence<kKinds...>) {
+  return {LightKind<std::variant_alternative_t<kKinds, Light>>::kSceneFileType...};
+}
+std::vector<std::string> light_types() { return light_types(std::make_index_sequence<std::variant_size_v<Light>>()); }
+
+template <size_t kKind = 0>
+Light read_light(size_t kind, const SceneFileNode& node) {
+  using Description = std::variant_alternative_t<kKind, Light>;
+  if constexpr (kKind + 1 < std::variant_size_v<Light>)
+    if (kind != kKind) return read_light<kKind + 1>(kind, node);
+  return LightKind<Description>::read(node);
 }
 
-Light read_area_light(const Node& node) {
-  node.expect_keys({"type", "position", "look_at", "up", "size", "power", "color", "visible_to_camera"});
-  RectLight light;
-  const glm::dvec3 position = read_vec3(node.required("position"));
-  const glm::dvec3 target = read_target(node, position);
-  const glm::dvec3 up = node.has("up") ? read_direction(node.required("up")) : glm::dvec3(0.0, 0.0, 1.0);
-  // A lamp emits down its -Z like a camera looks down its -Z, so the same frame aims both.
-  try {
-    light.light_to_world = matgeom::look_at_camera_to_world(position, target, up);
-  } catch (const std::invalid_argument& e) {
-    node.required("look_at").fail(e.what());
-  }
-  const Node size = node.required("size");
-  if (size.is_number()) {
-    light.size_x = light.size_y = size.positive();
-  } else {
-    size.expect_array(2, "a positive number or [size_x, size_y]");
-    light.size_x = size.item(0).positive();
-    light.size_y = size.item(1).positive();
-  }
-  light.power = node.required("power").non_negative();
-  if (auto color = node.find("color")) light.color = read_color(*color);
-  if (auto visible = node.find("visible_to_camera")) light.visible_to_camera = visible->boolean();
-  return light;
-}
-
-Light read_point_light(const Node& node) {
-  node.expect_keys({"type", "position", "power", "color", "radius"});
-  PointLight light;
-  light.position = read_vec3(node.required("position"));
-  light.power = node.required("power").non_negative();
-  if (auto color = node.find("color")) light.color = read_color(*color);
-  if (auto radius = node.find("radius")) light.radius = radius->non_negative();
-  return light;
-}
-
-Light read_spot_light(const Node& node) {
-  node.expect_keys({"type", "position", "look_at", "spot_angle_deg", "blend", "power", "color", "radius"});
-  SpotLight light;
-  light.position = read_vec3(node.required("position"));
-  light.direction = glm::normalize(read_target(node, light.position) - light.position);
-  if (auto angle = node.find("spot_angle_deg"))
-    light.spot_angle = glm::radians(
-        angle->number_where([](double v) { return v > 0.0 && v <= 180.0; }, "an angle in (0, 180] degrees"));
-  if (auto blend = node.find("blend")) light.blend = blend->unit_interval();
-  light.power = node.required("power").non_negative();
-  if (auto color = node.find("color")) light.color = read_color(*color);
-  if (auto radius = node.find("radius")) light.radius = radius->non_negative();
-  return light;
-}
-
-// A sun shines from `position` toward `look_at`: only the direction between them matters.
-Light read_sun_light(const Node& node) {
-  node.expect_keys({"type", "position", "look_at", "strength", "color", "angle_deg"});
-  SunLight light;
-  const glm::dvec3 position = read_vec3(node.required("position"));
-  light.direction = glm::normalize(read_target(node, position) - position);
-  light.strength = node.required("strength").non_negative();
-  if (auto color = node.find("color")) light.color = read_color(*color);
-  if (auto angle = node.find("angle_deg"))
-    light.angle = glm::radians(angle->number_where([](double v) { return v >= 0.0 && v <= glm::degrees(kMaxSunAngle); },
-                                                   fmt::format("an angle in [0, {:g}] degrees", glm::degrees(kMaxSunAngle))));
-  return light;
-}
-
-LightsDescription read_lights(const Node& node) {
+LightsDescription read_lights(const SceneFileNode& node) {
   if (!node.is_array()) {
     if (!node.is_object()) node.fail("expected an array of lights or {\"rig\": {...}}");
     node.expect_keys({"rig"});
-    const Node rig_node = node.required("rig");
+    const SceneFileNode rig_node = node.required("rig");
     rig_node.expect_keys({"target_illuminance_lux"});
     LightRigDescription rig;
     if (auto lux = rig_node.find("target_illuminance_lux")) rig.target_illuminance_lux = lux->positive();
@@ -385,13 +180,8 @@ LightsDescription read_lights(const Node& node) {
   }
   std::vector<Light> lights;
   for (size_t k = 0; k < node.array_size("an array of lights"); ++k) {
-    const Node light = node.item(k);
-    switch (light.required("type").choice({"area", "point", "spot", "sun"})) {
-      case 0: lights.push_back(read_area_light(light)); break;
-      case 1: lights.push_back(read_point_light(light)); break;
-      case 2: lights.push_back(read_spot_light(light)); break;
-      default: lights.push_back(read_sun_light(light)); break;
-    }
+    const SceneFileNode light = node.item(k);
+    lights.push_back(read_light(light.required("type").choice(light_types()), light));
     // Values each valid alone may still not render: a lamp 1e-300 m wide, a power of 1e308 W.
     if (const std::optional<std::string> problem = light_problem(lights.back())) light.fail(*problem);
   }
@@ -399,7 +189,7 @@ LightsDescription read_lights(const Node& node) {
 }
 
 // [r, g, b], or {"environment": path, "strength", "rotation_z_deg", "color_space"}.
-BackgroundDescription read_background(const Node& node, const fs::path& folder) {
+BackgroundDescription read_background(const SceneFileNode& node, const fs::path& folder) {
   if (!node.is_object()) return glm::vec3(read_color(node));
   node.expect_keys({"environment", "strength", "rotation_z_deg", "color_space"});
   EnvironmentDescription environment;
@@ -418,7 +208,7 @@ BackgroundDescription read_background(const Node& node, const fs::path& folder) 
 // {"texture": path, ...}: the keys every texture reference shares.
 // A texture file, or a UDIM set's pattern (name.<UDIM>.png), whose folder must exist; its tiles
 // are found when it is loaded.
-std::string read_texture_path(const Node& node, const fs::path& folder) {
+std::string read_texture_path(const SceneFileNode& node, const fs::path& folder) {
   const std::string text = node.string();
   if (text.find("<UDIM>") == std::string::npos) return read_existing_file(node, folder);
   const fs::path path = fs::path(text).is_absolute() ? fs::path(text) : (folder / text).lexically_normal();
@@ -428,7 +218,7 @@ std::string read_texture_path(const Node& node, const fs::path& folder) {
   return path.string();
 }
 
-TextureFile read_texture_file(const Node& node, const fs::path& folder, ColorSpace default_space) {
+TextureFile read_texture_file(const SceneFileNode& node, const fs::path& folder, ColorSpace default_space) {
   TextureFile file;
   file.path = read_texture_path(node.required("texture"), folder);
   file.origin = node.origin();
@@ -443,10 +233,10 @@ TextureFile read_texture_file(const Node& node, const fs::path& folder, ColorSpa
 
 // {"offset": [u, v], "rotation_deg": r, "scale": [u, v]}: glTF's KHR_texture_transform (in
 // glTF's UVs, v down; matmaterial/texture_transform.h), each key optional.
-matmaterial::UvAffine read_texture_transform(const Node& node) {
+matmaterial::UvAffine read_texture_transform(const SceneFileNode& node) {
   node.expect_keys({"offset", "rotation_deg", "scale"});
   constexpr double kLargest = 1e6;  // a texture repeated a million times is already noise
-  const auto bounded = [](const Node& n) {
+  const auto bounded = [](const SceneFileNode& n) {
     return n.number_where([](double v) { return std::abs(v) <= kLargest; }, "a number in [-1e6, 1e6]");
   };
   const auto pair = [&](const char* key, glm::dvec2 fallback) {
@@ -464,13 +254,13 @@ matmaterial::UvAffine read_texture_transform(const Node& node) {
 
 // A value of `info` within its range: [r, g, b] for a colour, a number for a scalar. `or_else`
 // completes the message when something else would also do.
-glm::vec3 read_parameter_constant(const Node& node, const matmaterial::MaterialParameterInfo& info,
+glm::vec3 read_parameter_constant(const SceneFileNode& node, const matmaterial::MaterialParameterInfo& info,
                                   const std::string& or_else = "") {
   const std::string range = fmt::format("[{}, {}]", info.min, info.max);
   if (info.kind == matmaterial::ParameterKind::Scalar)
     return glm::vec3(static_cast<float>(node.number_where([&](double v) { return v >= info.min && v <= info.max; },
                                                           "a number in " + range + or_else)));
-  const auto in_range = [&](const Node& n) {
+  const auto in_range = [&](const SceneFileNode& n) {
     return n.number_where([&](double v) { return v >= info.min && v <= info.max; }, "a number in " + range);
   };
   node.expect_array(3, "[r, g, b] with components in " + range + or_else);
@@ -479,7 +269,7 @@ glm::vec3 read_parameter_constant(const Node& node, const matmaterial::MaterialP
 
 // A constant, or (where the table allows it) a texture times an optional factor: a colour takes
 // the texture's RGB, a scalar one channel of it (R unless "channel" says otherwise).
-void read_parameter(const Node& node, const matmaterial::MaterialParameterInfo& info, const fs::path& folder,
+void read_parameter(const SceneFileNode& node, const matmaterial::MaterialParameterInfo& info, const fs::path& folder,
                     ParameterValue& value, std::optional<TextureFile>& texture) {
   const bool color = info.kind == matmaterial::ParameterKind::Color;
   if (!node.is_object() || !info.texturable) {
@@ -496,7 +286,7 @@ void read_parameter(const Node& node, const matmaterial::MaterialParameterInfo& 
 
 // A material class's name ("wood", matmaterial/material_classes.h) or any integer a 16-bit label
 // PNG holds.
-int read_label_id(const Node& node) {
+int read_label_id(const SceneFileNode& node) {
   if (!node.is_string()) return node.integer_in(0, 65535);
   const std::string name = node.string();
   if (const std::optional<matmaterial::MaterialClass> c = matmaterial::material_class_named(name)) return matmaterial::label_id(*c);
@@ -506,11 +296,11 @@ int read_label_id(const Node& node) {
 }
 
 // {"matsynth": folder}: a material folder, optionally with its label.
-MaterialDescription read_folder_material(const Node& node, const std::string& name, const fs::path& folder) {
+MaterialDescription read_folder_material(const SceneFileNode& node, const std::string& name, const fs::path& folder) {
   node.expect_keys({"matsynth", "label_id"});
   MaterialDescription material;
   material.constants.name = name;
-  const Node path_node = node.required("matsynth");
+  const SceneFileNode path_node = node.required("matsynth");
   const fs::path path = folder / path_node.string();
   std::error_code error;
   if (!fs::is_directory(path, error))
@@ -522,12 +312,12 @@ MaterialDescription read_folder_material(const Node& node, const std::string& na
 
 // {"class": "wood", "style": "wicker", "seed": 3, "resolution": 1024}: a material of the
 // procedural library, optionally with its label.
-MaterialDescription read_library_material(const Node& node, const std::string& name) {
+MaterialDescription read_library_material(const SceneFileNode& node, const std::string& name) {
   node.expect_keys({"class", "style", "seed", "resolution", "label_id"});
   MaterialDescription material;
   material.constants.name = name;
   LibraryMaterialRequest request;
-  const Node class_node = node.required("class");
+  const SceneFileNode class_node = node.required("class");
   const std::optional<matmaterial::MaterialClass> material_class = matmaterial::material_class_named(class_node.string());
   if (!material_class || *material_class == matmaterial::MaterialClass::Background) {
     std::vector<std::string> names;
@@ -553,7 +343,7 @@ MaterialDescription read_library_material(const Node& node, const std::string& n
   return material;
 }
 
-MaterialDescription read_material(const Node& node, const std::string& name, const fs::path& folder) {
+MaterialDescription read_material(const SceneFileNode& node, const std::string& name, const fs::path& folder) {
   if (node.has("matsynth")) return read_folder_material(node, name, folder);
   if (node.has("class")) return read_library_material(node, name);
   std::vector<const char*> keys = {"normal_map", "label_id", "diffuse_model", "distribution"};
@@ -581,7 +371,7 @@ MaterialDescription read_material(const Node& node, const std::string& name, con
   return material;
 }
 
-std::map<std::string, MaterialDescription> read_materials(const Node& node, const fs::path& folder) {
+std::map<std::string, MaterialDescription> read_materials(const SceneFileNode& node, const fs::path& folder) {
   std::map<std::string, MaterialDescription> materials;
   for (const auto& [name, material] : node.members()) materials[name] = read_material(material, name, folder);
   return materials;
@@ -598,7 +388,7 @@ glm::dmat4 euler_xyz_degrees(const glm::dvec3& degrees) {
 }
 
 // {"matrix": ...} or Blender's translate * rotate * scale.
-glm::dmat4 read_transform(const Node& node) {
+glm::dmat4 read_transform(const SceneFileNode& node) {
   if (node.has("matrix")) {
     node.expect_keys({"matrix"});
     const glm::dmat4 m = read_matrix(node.required("matrix"));
@@ -622,7 +412,7 @@ glm::dmat4 read_transform(const Node& node) {
          glm::scale(glm::dmat4(1.0), scale);
 }
 
-std::string read_material_name(const Node& node, const std::map<std::string, MaterialDescription>& materials) {
+std::string read_material_name(const SceneFileNode& node, const std::map<std::string, MaterialDescription>& materials) {
   const std::string name = node.string();
   if (materials.count(name) == 0) {
     std::vector<std::string> defined;
@@ -637,7 +427,7 @@ std::string read_material_name(const Node& node, const std::map<std::string, Mat
 // An object's "material": a name from "materials", or a material given in place (a folder,
 // {"matsynth": folder}, or the library's, {"class": ...}), added to the scene's materials under
 // its JSON pointer.
-std::string read_object_material(const Node& node, const fs::path& folder,
+std::string read_object_material(const SceneFileNode& node, const fs::path& folder,
                                  std::map<std::string, MaterialDescription>& materials) {
   if (!node.is_object()) return read_material_name(node, materials);
   if (!node.has("matsynth") && !node.has("class"))
@@ -647,7 +437,7 @@ std::string read_object_material(const Node& node, const fs::path& folder,
   return name;
 }
 
-ObjectDescription read_object(const Node& node, const fs::path& folder,
+ObjectDescription read_object(const SceneFileNode& node, const fs::path& folder,
                               std::map<std::string, MaterialDescription>& materials) {
   if (!node.is_object()) node.fail("expected an object");
   if (node.has("mesh") == node.has("builtin")) node.fail("expected exactly one of \"mesh\" or \"builtin\"");
@@ -680,7 +470,7 @@ ObjectDescription read_object(const Node& node, const fs::path& folder,
   return object;
 }
 
-std::vector<ObjectDescription> read_objects(const Node& node, const fs::path& folder,
+std::vector<ObjectDescription> read_objects(const SceneFileNode& node, const fs::path& folder,
                                             std::map<std::string, MaterialDescription>& materials) {
   const size_t count = node.array_size("a non-empty array of objects");
   if (count == 0) node.fail("expected a non-empty array of objects");
@@ -691,7 +481,7 @@ std::vector<ObjectDescription> read_objects(const Node& node, const fs::path& fo
 
 // ---- render settings ------------------------------------------------------------------------
 
-void read_render(const Node& node, SceneDescription& scene) {
+void read_render(const SceneFileNode& node, SceneDescription& scene) {
   node.expect_keys({"spp", "noise_threshold", "min_samples", "seed", "max_bounces", "max_diffuse_bounces", "max_glossy_bounces",
                     "max_transmission_bounces", "max_transparent_bounces", "exposure",
                     "transparent_background", "cycles_parity", "light_selection", "mipmaps", "denoise"});
@@ -784,7 +574,7 @@ json parse_json_file(const std::string& path) {
 
 SceneDescription read_scene_file(const std::string& path) {
   const json document = parse_json_file(path);
-  const Node root(document, "", path);
+  const SceneFileNode root(document, "", path);
   root.expect_keys({"description", "camera", "lights", "background", "materials", "objects", "render"});
   const fs::path folder = fs::path(path).parent_path();
 
