@@ -39,7 +39,6 @@ class PreparedDistantLight {
     s.wi = to_sun_;
     s.radiance = irradiance_;
     s.pdf = 1.0f;
-    s.delta = true;
     return s;
   }
 

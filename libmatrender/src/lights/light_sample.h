@@ -18,7 +18,7 @@ struct LightSample {
   float distance = 0.0f;     // to the sampled point (shadow ray length)
   glm::vec3 radiance{0.0f};  // area lamp: emitted radiance; delta lamp: intensity / distance^2
   float pdf = 0.0f;          // solid-angle pdf (area lamp) or 1 (delta lamp), before selection
-  bool delta = false;
+  bool delta = false;        // from a delta light (light_type.h), set by LightSampler::sample from its type
 };
 
 }  // namespace matrender

@@ -122,8 +122,12 @@ std::optional<LightSampler::Pick> LightSampler::pick(const PickSite& site, float
 std::optional<LightSample> LightSampler::sample(const PickSite& site, glm::vec2 u) const {
   const std::optional<Pick> picked = pick(site, &u.x);
   if (!picked) return std::nullopt;
-  std::optional<LightSample> s = with_light(lights_[picked->index],
-                                            [&](const auto& light) { return light.sample(site.p, site.receiving, u); });
+  std::optional<LightSample> s = with_light(lights_[picked->index], [&](const auto& light) {
+    std::optional<LightSample> drawn = light.sample(site.p, site.receiving, u);
+    // Only light sampling reaches a delta light: the integrator weighs its samples by no MIS.
+    if (drawn) drawn->delta = is_delta(std::decay_t<decltype(light)>::type());
+    return drawn;
+  });
   if (s) s->pdf *= picked->probability;
   return s;
 }

@@ -82,7 +82,6 @@ std::optional<LightSample> PreparedRectLight::sample(const glm::vec3& p, const R
   s.distance = dist;
   s.radiance = radiance_;
   s.pdf = pdf;
-  s.delta = false;
   return s;
 }
 

@@ -70,7 +70,6 @@ class PreparedSpotLight {
     if (!(factor > 0.0f)) return std::nullopt;
     s.radiance = intensity_ * factor;
     s.pdf = 1.0f;
-    s.delta = true;
     return s;
   }
 
