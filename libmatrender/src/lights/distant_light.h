@@ -34,12 +34,7 @@ class PreparedDistantLight {
   std::optional<LightSample> sample(const glm::vec3& /*p*/, const ReceivingDirections& receiving,
                                     glm::vec2 /*u*/) const {
     if (!receiving.every_direction && !(glm::dot(to_sun_, receiving.normal) > 0.0f)) return std::nullopt;
-    LightSample s;
-    s.distance = std::numeric_limits<float>::infinity();
-    s.wi = to_sun_;
-    s.radiance = irradiance_;
-    s.pdf = 1.0f;
-    return s;
+    return delta_light_sample(to_sun_, std::numeric_limits<float>::infinity(), irradiance_);
   }
 
  private:

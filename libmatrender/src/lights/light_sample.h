@@ -21,4 +21,15 @@ struct LightSample {
   bool delta = false;        // from a delta light (light_type.h), set by LightSampler::sample from its type
 };
 
+// The one sample of a delta light: toward it along wi, `distance` away (infinite for a direction),
+// delivering `radiance` (intensity / distance^2 for a lamp, irradiance for a sun), pdf 1.
+inline LightSample delta_light_sample(const glm::vec3& wi, float distance, const glm::vec3& radiance) {
+  LightSample s;
+  s.wi = wi;
+  s.distance = distance;
+  s.radiance = radiance;
+  s.pdf = 1.0f;
+  return s;
+}
+
 }  // namespace matrender

@@ -20,40 +20,55 @@
 
 namespace matrender {
 
+// A lamp at a point seen from p: the unit direction toward it, the distance and its square;
+// nothing from the lamp's own position.
+struct DirectionToLamp {
+  glm::vec3 wi;
+  float distance;
+  float distance2;
+};
+inline std::optional<DirectionToLamp> direction_to_lamp(const glm::vec3& position, const glm::vec3& p) {
+  const glm::vec3 to_light = position - p;
+  const float distance2 = glm::dot(to_light, to_light);
+  if (!(distance2 > 0.0f)) return std::nullopt;
+  const float distance = std::sqrt(distance2);
+  return DirectionToLamp{to_light / distance, distance, distance2};
+}
+
+// The cosine at which the receiving side takes light from wi: 1 for a BSDF that transmits.
+inline float receiving_cosine(const ReceivingDirections& receiving, const glm::vec3& wi) {
+  return receiving.every_direction ? 1.0f : std::max(0.0f, glm::dot(wi, receiving.normal));
+}
+
+// A point lamp's intensity I = P c / (4 pi), W/sr.
+inline glm::vec3 point_lamp_intensity(double power, const glm::dvec3& color) {
+  return power * color / (4.0 * matbase::kPi);
+}
+
 class PreparedPointLight {
  public:
   explicit PreparedPointLight(const PointLight& light)
       : position_(light.position),
-        intensity_(light.power * light.color / (4.0 * matbase::kPi)),
+        intensity_(point_lamp_intensity(light.power, light.color)),
         mean_intensity_(channel_average(intensity_)) {}
 
   static constexpr LightType type() { return LightType::DeltaPosition; }
 
   // Light selection's weight at p: the irradiance I cos / d^2 it gives, exactly (light_importance.h).
   float importance(const glm::vec3& p, const ReceivingDirections& receiving) const {
-    const glm::vec3 to_light = position_ - p;
-    const float dist2 = glm::dot(to_light, to_light);
-    if (!(dist2 > 0.0f)) return 0.0f;
-    const glm::vec3 wi = to_light / std::sqrt(dist2);
-    const float cosine = receiving.every_direction ? 1.0f : std::max(0.0f, glm::dot(wi, receiving.normal));
-    return mean_intensity_ * cosine / dist2;
+    const std::optional<DirectionToLamp> toward = direction_to_lamp(position_, p);
+    if (!toward) return 0.0f;
+    return mean_intensity_ * receiving_cosine(receiving, toward->wi) / toward->distance2;
   }
 
   // The one direction toward the lamp; `receiving` and u play no part.
   std::optional<LightSample> sample(const glm::vec3& p, const ReceivingDirections& /*receiving*/,
                                     glm::vec2 /*u*/) const {
-    const glm::vec3 to_light = position_ - p;
-    const float dist2 = glm::dot(to_light, to_light);
-    if (!(dist2 > 0.0f)) return std::nullopt;
-    const float dist = std::sqrt(dist2);
-    LightSample s;
-    s.wi = to_light / dist;
-    s.distance = dist;
-    const float factor = 1.0f / dist2;
+    const std::optional<DirectionToLamp> toward = direction_to_lamp(position_, p);
+    if (!toward) return std::nullopt;
+    const float factor = 1.0f / toward->distance2;
     if (!(factor > 0.0f)) return std::nullopt;
-    s.radiance = intensity_ * factor;
-    s.pdf = 1.0f;
-    return s;
+    return delta_light_sample(toward->wi, toward->distance, intensity_ * factor);
   }
 
  private:

@@ -15,11 +15,12 @@
 #include "lights/light_kind.h"
 #include "lights/light_sample.h"
 #include "lights/light_type.h"
+#include "lights/point_light.h"
 #include "matbase/pi.h"
 #include "matbase/smoothstep.h"
 #include "matrender/light.h"
-#include "scene_description/scene_file_node.h"
 #include "sampling/warp.h"
+#include "scene_description/scene_file_node.h"
 #include "util/channel_average.h"
 
 namespace matrender {
@@ -36,7 +37,7 @@ class PreparedSpotLight {
  public:
   explicit PreparedSpotLight(const SpotLight& light)
       : position_(light.position),
-        intensity_(light.power * light.color / (4.0 * matbase::kPi)),
+        intensity_(point_lamp_intensity(light.power, light.color)),
         mean_intensity_(channel_average(intensity_)),
         axis_(glm::normalize(light.direction)),
         cos_half_angle_(static_cast<float>(std::cos(0.5 * light.spot_angle))),
@@ -46,31 +47,22 @@ class PreparedSpotLight {
 
   // Light selection's weight at p: the irradiance I a(w) cos / d^2 it gives, exactly (light_importance.h).
   float importance(const glm::vec3& p, const ReceivingDirections& receiving) const {
-    const glm::vec3 to_light = position_ - p;
-    const float dist2 = glm::dot(to_light, to_light);
-    if (!(dist2 > 0.0f)) return 0.0f;
-    const glm::vec3 wi = to_light / std::sqrt(dist2);
-    const float cosine = receiving.every_direction ? 1.0f : std::max(0.0f, glm::dot(wi, receiving.normal));
-    const float cone = spot_attenuation(glm::dot(-wi, axis_), cos_half_angle_, blend_);
-    return mean_intensity_ * cone * cosine / dist2;
+    const std::optional<DirectionToLamp> toward = direction_to_lamp(position_, p);
+    if (!toward) return 0.0f;
+    const float cosine = receiving_cosine(receiving, toward->wi);
+    const float cone = spot_attenuation(glm::dot(-toward->wi, axis_), cos_half_angle_, blend_);
+    return mean_intensity_ * cone * cosine / toward->distance2;
   }
 
   // The one direction toward the lamp; `receiving` and u play no part.
   std::optional<LightSample> sample(const glm::vec3& p, const ReceivingDirections& /*receiving*/,
                                     glm::vec2 /*u*/) const {
-    const glm::vec3 to_light = position_ - p;
-    const float dist2 = glm::dot(to_light, to_light);
-    if (!(dist2 > 0.0f)) return std::nullopt;
-    const float dist = std::sqrt(dist2);
-    LightSample s;
-    s.wi = to_light / dist;
-    s.distance = dist;
-    float factor = 1.0f / dist2;
-    factor *= spot_attenuation(glm::dot(-s.wi, axis_), cos_half_angle_, blend_);
+    const std::optional<DirectionToLamp> toward = direction_to_lamp(position_, p);
+    if (!toward) return std::nullopt;
+    float factor = 1.0f / toward->distance2;
+    factor *= spot_attenuation(glm::dot(-toward->wi, axis_), cos_half_angle_, blend_);
     if (!(factor > 0.0f)) return std::nullopt;
-    s.radiance = intensity_ * factor;
-    s.pdf = 1.0f;
-    return s;
+    return delta_light_sample(toward->wi, toward->distance, intensity_ * factor);
   }
 
  private:
