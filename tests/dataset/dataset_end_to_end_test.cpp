@@ -1,6 +1,6 @@
 // make_dataset end to end on a tiny dataset: the built app run on a configuration with two
 // MatSynth-style material folders of constant maps (written here as real PNGs), its output read
-// back map by map with OpenImageIO and with libmatlearn's reader, and checked by --verify.
+// back map by map with OpenImageIO and with libmatdataset's reader, and checked by --verify.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -281,7 +281,7 @@ TEST_CASE("ORM's G is the material's roughness and the label its class at every 
   CHECK(interior > 1000);
 }
 
-TEST_CASE("libmatlearn's reader reads the dataset: roughness is ORM's G, the mask is the label", "[dataset]") {
+TEST_CASE("libmatdataset's reader reads the dataset: roughness is ORM's G, the mask is the label", "[dataset]") {
   const fs::path& root = tiny_dataset();
   matdataset::SampleSettings settings;
   settings.size = kSize;  // as stored: no resize

@@ -3,7 +3,7 @@
 // docs/dataset_format.md): screenshots cropped to the object on white,
 // <root>/rendered_cropped/<object>/<material>/<stem>.png, and one reference map per material and
 // parameter, <root>/ground_truth_basecolour/<material>.png, ground_truth_roughness/,
-// ground_truth_metallic/ and ground_truth_normal/, which libmatlearn's reader loads
+// ground_truth_metallic/ and ground_truth_normal/, which libmatdataset's reader loads
 // (matdataset/format/dataset_index.h). Every file is written under a temporary name and renamed.
 #include <filesystem>
 #include <optional>
