@@ -33,7 +33,8 @@ LightSampler::LightSampler(const std::vector<Light>& lights, const WorldLight& w
         },
         light);
   // Area lamps first, rectangles before the others: the lamp-hit query and light selection
-  // treat the rectangles together, and rays find the others (disks) by their own intersect().
+  // treat the rectangles together, and rays find the others (is_shaped_lamp) by their own
+  // intersect().
   std::vector<PreparedRectLight> rects;
   for (const SceneLight& light : prepared)
     if (const auto* rect = std::get_if<PreparedRectLight>(&light)) rects.push_back(*rect);
@@ -44,7 +45,7 @@ LightSampler::LightSampler(const std::vector<Light>& lights, const WorldLight& w
   for (const PreparedRectLight& rect : rects) camera_visible_lamps_ = camera_visible_lamps_ || rect.visible_to_camera();
   for (const SceneLight& light : of_type(prepared, LightType::Area))
     if (!std::holds_alternative<PreparedRectLight>(light)) lights_.push_back(light);
-  disk_count_ = lights_.size() - rect_count_;
+  shaped_lamp_count_ = lights_.size() - rect_count_;
   // Then the meshes' emitting triangles, which rays find by hitting the mesh.
   for (const PreparedMeshEmitter& emitter : emitters) {
     if (emitter.mesh() >= emitter_of_mesh_.size()) emitter_of_mesh_.resize(emitter.mesh() + 1, -1);

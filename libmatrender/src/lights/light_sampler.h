@@ -9,6 +9,7 @@
 #include <array>
 #include <cstddef>
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -36,6 +37,14 @@ struct PickSite {
   float total_importance = 0.0f;
   std::array<float, kKeptWeights> weights;  // filled when the distribution has at most kKeptWeights
 };
+
+// An area lamp other than a rectangle: rays find it by its own intersect(). Rectangles are
+// found together (rect_light_hits.h), emissive meshes by the rays' hits on the mesh.
+template <class Prepared>
+constexpr bool is_shaped_lamp() {
+  return Prepared::type() == LightType::Area && !std::is_same_v<Prepared, PreparedRectLight> &&
+         !std::is_same_v<Prepared, PreparedMeshEmitter>;
+}
 
 class LightSampler {
  public:
@@ -74,7 +83,7 @@ class LightSampler {
   // the pick. Lights wholly outside the site's receiving directions give no sample.
   std::optional<LightSample> sample(const PickSite& site, glm::vec2 u) const;
 
-  bool has_area_lights() const { return !area_hits_.empty() || disk_count_ > 0; }
+  bool has_area_lights() const { return !area_hits_.empty() || shaped_lamp_count_ > 0; }
   // The index of the light that is a mesh's emitting triangles (a PreparedMeshEmitter), or
   // nothing.
   std::optional<size_t> emitter_index(uint32_t mesh) const {
@@ -84,18 +93,20 @@ class LightSampler {
   // Some area lamp is visible to camera rays (most scenes have none, and their camera rays then
   // look for no lamp).
   bool has_camera_visible_lamps() const { return camera_visible_lamps_; }
-  // Calls visit(index, area_light, t) for each area light (a PreparedRectLight or a
-  // PreparedDiskLamp, light(index)) whose emitting side the ray meets at a distance t in
-  // (0, t_max), in order.
+  // Calls visit(index, area_light, t) for each area lamp (light(index): a rectangle, or a lamp of
+  // another shape, such as the disk of a point lamp with a radius) whose emitting side the ray
+  // meets at a distance t in (0, t_max), in order. Emissive meshes are not lamps: rays find them
+  // by hitting the mesh.
   template <class Visit>
   void for_each_area_hit(const glm::vec3& origin, const glm::vec3& dir, float t_max, Visit&& visit) const {
     area_hits_.for_each_hit(origin, dir, t_max, [&](size_t index, float t) {
       visit(index, *std::get_if<PreparedRectLight>(&lights_[index]), t);
     });
-    for (size_t i = rect_count_; i < rect_count_ + disk_count_; ++i) {
-      const PreparedDiskLamp& disk = *std::get_if<PreparedDiskLamp>(&lights_[i]);
-      if (const std::optional<float> t = disk.intersect(origin, dir, t_max)) visit(i, disk, *t);
-    }
+    for (size_t i = rect_count_; i < rect_count_ + shaped_lamp_count_; ++i)
+      with_light(lights_[i], [&](const auto& lamp) {
+        if constexpr (is_shaped_lamp<std::decay_t<decltype(lamp)>>())
+          if (const std::optional<float> t = lamp.intersect(origin, dir, t_max)) visit(i, lamp, *t);
+      });
   }
 
   // What a ray leaving the scene along dir sees of the infinite lights, each MIS-weighted
@@ -118,7 +129,7 @@ class LightSampler {
   RectLightHits area_hits_;       // over lights(0 .. rect_count_ - 1)
   RectLampImportance rect_importance_;  // the same
   size_t rect_count_ = 0;
-  size_t disk_count_ = 0;         // lights(rect_count_ .. rect_count_ + disk_count_ - 1)
+  size_t shaped_lamp_count_ = 0;  // lights(rect_count_ .. rect_count_ + shaped_lamp_count_ - 1)
   std::vector<int32_t> emitter_of_mesh_;  // index into lights_ by mesh, -1 for none
   bool camera_visible_lamps_ = false;
   LightSelection selection_ = LightSelection::Importance;
