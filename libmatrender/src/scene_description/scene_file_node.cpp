@@ -33,7 +33,9 @@ std::string pointer_token(const std::string& key) {
 
 [[noreturn]] void SceneFileNode::fail(const std::string& message) const { throw origin().error("", message); }
 
-void SceneFileNode::expect_keys(std::initializer_list<const char*> allowed) const { expect_keys(std::vector<const char*>(allowed)); }
+void SceneFileNode::expect_keys(std::initializer_list<const char*> allowed) const {
+  expect_keys(std::vector<const char*>(allowed));
+}
 
 void SceneFileNode::expect_keys(const std::vector<const char*>& allowed) const {
   if (!value_.is_object()) fail("expected an object");
@@ -84,7 +86,9 @@ size_t SceneFileNode::array_size(const std::string& expectation) const {
   return value_.size();
 }
 
-void SceneFileNode::expect_array(size_t count, const std::string& expectation) const { if (array_size(expectation) != count) fail("expected " + expectation); }
+void SceneFileNode::expect_array(size_t count, const std::string& expectation) const {
+  if (array_size(expectation) != count) fail("expected " + expectation);
+}
 
 double SceneFileNode::number() const {
   if (!value_.is_number()) fail("expected a number");
@@ -96,9 +100,13 @@ double SceneFileNode::number_where(const std::function<bool(double)>& accept, co
   return value_.get<double>();
 }
 
-double SceneFileNode::positive() const { return number_where([](double v) { return v > 0.0; }, "a positive number"); }
+double SceneFileNode::positive() const {
+  return number_where([](double v) { return v > 0.0; }, "a positive number");
+}
 
-double SceneFileNode::non_negative() const { return number_where([](double v) { return v >= 0.0; }, "a number >= 0"); }
+double SceneFileNode::non_negative() const {
+  return number_where([](double v) { return v >= 0.0; }, "a number >= 0");
+}
 
 double SceneFileNode::unit_interval() const {
   return number_where([](double v) { return v >= 0.0 && v <= 1.0; }, "a number in [0, 1]");
@@ -141,7 +149,9 @@ long long SceneFileNode::checked_integer(long long lo, long long hi, const std::
   return static_cast<long long>(v);
 }
 
-SceneFileNode SceneFileNode::member_node(const std::string& key) const { return SceneFileNode(value_.at(key), pointer_ + "/" + pointer_token(key), file_); }
+SceneFileNode SceneFileNode::member_node(const std::string& key) const {
+  return SceneFileNode(value_.at(key), pointer_ + "/" + pointer_token(key), file_);
+}
 
 glm::dvec3 read_vec3(const SceneFileNode& node) {
   node.expect_array(3, "an array of 3 numbers");
