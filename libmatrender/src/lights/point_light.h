@@ -77,6 +77,24 @@ class PreparedPointLight {
   float mean_intensity_;
 };
 
+// What the scene file gives every lamp at a point, after its own keys: "power" (required),
+// "color" and "radius".
+template <class LampAtPoint>
+void read_lamp_at_point_emission(const SceneFileNode& node, LampAtPoint& light) {
+  light.power = node.required("power").non_negative();
+  if (auto color = node.find("color")) light.color = read_color(*color);
+  if (auto radius = node.find("radius")) light.radius = radius->non_negative();
+}
+
+// A lamp at a point renders as a disk lamp when it has a radius, else as `Delta`.
+template <class Delta, class LampAtPoint, class Add>
+void prepare_lamp_at_point(const LampAtPoint& light, Add&& add) {
+  if (light.radius > 0.0)
+    std::forward<Add>(add)(PreparedDiskLamp(light));
+  else
+    std::forward<Add>(add)(Delta(light));
+}
+
 // The scene file's "point" lamp: position, power, color, radius. With a radius it renders as a
 // disk lamp.
 template <>
@@ -86,9 +104,7 @@ struct LightKind<PointLight> {
     node.expect_keys({"type", "position", "power", "color", "radius"});
     PointLight light;
     light.position = read_vec3(node.required("position"));
-    light.power = node.required("power").non_negative();
-    if (auto color = node.find("color")) light.color = read_color(*color);
-    if (auto radius = node.find("radius")) light.radius = radius->non_negative();
+    read_lamp_at_point_emission(node, light);
     return light;
   }
   static void check(const PointLight& light) {
@@ -96,10 +112,7 @@ struct LightKind<PointLight> {
   }
   template <class Add>
   static void prepare(const PointLight& light, Add&& add) {
-    if (light.radius > 0.0)
-      std::forward<Add>(add)(PreparedDiskLamp(light));
-    else
-      std::forward<Add>(add)(PreparedPointLight(light));
+    prepare_lamp_at_point<PreparedPointLight>(light, std::forward<Add>(add));
   }
 };
 

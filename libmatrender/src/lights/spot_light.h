@@ -10,7 +10,6 @@
 #include <fmt/format.h>
 #include <glm/glm.hpp>
 
-#include "lights/disk_lamp.h"
 #include "lights/light_checks.h"
 #include "lights/light_kind.h"
 #include "lights/light_sample.h"
@@ -88,9 +87,7 @@ struct LightKind<SpotLight> {
       light.spot_angle = glm::radians(
           angle->number_where([](double v) { return v > 0.0 && v <= 180.0; }, "an angle in (0, 180] degrees"));
     if (auto blend = node.find("blend")) light.blend = blend->unit_interval();
-    light.power = node.required("power").non_negative();
-    if (auto color = node.find("color")) light.color = read_color(*color);
-    if (auto radius = node.find("radius")) light.radius = radius->non_negative();
+    read_lamp_at_point_emission(node, light);
     return light;
   }
   static void check(const SpotLight& spot) {
@@ -102,10 +99,7 @@ struct LightKind<SpotLight> {
   }
   template <class Add>
   static void prepare(const SpotLight& light, Add&& add) {
-    if (light.radius > 0.0)
-      std::forward<Add>(add)(PreparedDiskLamp(light));
-    else
-      std::forward<Add>(add)(PreparedSpotLight(light));
+    prepare_lamp_at_point<PreparedSpotLight>(light, std::forward<Add>(add));
   }
 };
 
