@@ -81,7 +81,7 @@ void add_options(CLI::App& app, Options& options) {
     app.add_option_function<std::string>(
            flags,
            [&options, key, option, to_yaml](const std::string& value) {
-             options.named.push_back({key, to_yaml(value, option), option});
+             options.named.push_back({key, to_yaml(value, option), option, true});
            },
            help + " (" + key + ")")
         ->type_name("VALUE");

@@ -10,7 +10,8 @@
 #include <fmt/format.h>
 
 #include "common/number_options.h"
-#include "matbase/document/yaml_checks.h"
+#include "matbase/document/document_node.h"
+#include "matbase/document/yaml_document.h"
 #include "matdataset/format/sample_loader.h"
 
 namespace train_regressor {
@@ -217,16 +218,15 @@ std::map<std::string, std::string> resolve_settings(const Options& options) {
       throw matbase::InputError(file + ": not valid YAML: " + e.what());
     }
     if (!root.IsMap()) throw matbase::InputError(file + ": expected a mapping of settings");
-    // yaml-cpp keeps both entries of a repeated key, and this loop would take the last.
-    if (const std::optional<std::string> problem = matbase::repeated_key_problem(root))
-      throw matbase::InputError(file + ": " + *problem);
-    for (const auto& entry : root) {
-      const std::string key = entry.first.as<std::string>();
+    // Refuses a repeated key, of which yaml-cpp keeps both entries and this loop would take the last.
+    const matbase::DocumentValue document = matbase::yaml_document_value(root, file);
+    const matbase::DocumentSource source(file, matbase::PathStyle::DottedKeys);
+    for (const auto& [key, value] : matbase::DocumentNode(document, source).members()) {
       const bool ignored = std::count(ignored_repository_keys().begin(), ignored_repository_keys().end(), key) > 0;
       if (ignored) continue;
-      if (!settings.count(key)) throw matbase::InputError(file + ": unknown key \"" + key + "\"");
-      if (!entry.second.IsScalar() && !entry.second.IsNull()) throw matbase::InputError(file + ": " + key + ": expected a single value");
-      settings[key] = entry.second.IsNull() ? "" : entry.second.as<std::string>();
+      if (!settings.count(key)) value.fail("unknown key (the settings are train_regressor's options, --help)");
+      if (!value.is_null() && !value.is_text()) value.fail_expected("a single value");
+      settings[key] = value.is_null() ? "" : value.text();
     }
   }
   for (const auto& [key, value] : options.command_line) settings[key] = value;

@@ -223,16 +223,17 @@ TEST_CASE("Each kind of broken material folder gets its own message", "[geom]") 
   const std::string metadata = (folder / "metadata.json").string();
   for (const auto& [text, problem] :
        {std::pair{"{\"category\": ", "not valid JSON"}, std::pair{"[1, 2]", "expected a JSON object"},
-        std::pair{R"({"physical_size": -3})", "physical_size: expected a positive number of centimetres"},
-        std::pair{R"({"normal_convention": "metal"})", "normal_convention: expected \"opengl\" or \"directx\""},
-        std::pair{R"({"parameters": {"shininess": 3}})", "parameters: unknown material parameter \"shininess\""},
-        std::pair{R"({"parameters": {"ior": 0.5}})", "parameters/ior: 0.5 is outside [1, 1000]"},
-        std::pair{R"({"parameters": {"base_color": 0.5}})", "parameters/base_color: expected [r, g, b]"},
+        std::pair{R"({"physical_size": -3})", "/physical_size: expected a number greater than 0, got -3"},
+        std::pair{R"({"normal_convention": "metal"})", "/normal_convention: expected one of \"opengl\", \"directx\", got \"metal\""},
+        std::pair{R"({"parameters": {"shininess": 3}})", "/parameters/shininess: unknown material parameter"},
+        std::pair{R"({"parameters": {"ior": 0.5}})", "/parameters/ior: expected a number from 1 to 1000, got 0.5"},
+        std::pair{R"({"parameters": {"base_color": 0.5}})", "/parameters/base_color: expected [r, g, b], got 0.5"},
         // A misspelt class used to give the folder label 0 without a word.
         std::pair{R"({"category": "Wod"})",
-                  "category: unknown category \"Wod\" (known: concrete, fabric, leather, metal, plastic, stone, wood, "
+                  "/category: unknown category \"Wod\" (known: concrete, fabric, leather, metal, plastic, stone, wood, "
                   "marble, ceramic, terracotta, plaster, rubber, paper, glass, ground, misc, blends)"},
-        std::pair{R"({"category": "background"})", "category: unknown category \"background\""}}) {
+        std::pair{R"({"category": "background"})", "/category: unknown category \"background\""},
+        std::pair{R"({"category": "wood", "category": "metal"})", "/category: given twice; say it once"}}) {
     CAPTURE(text);
     write_text(metadata, text);
     CHECK_THAT(read_error(folder.string()), Contains(metadata + ": " + problem));

@@ -5,12 +5,15 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <sstream>
 #include <string_view>
 #include <system_error>
 
 #include <nlohmann/json.hpp>
 #include <stb_image_resize.h>
 
+#include "matbase/document/document_node.h"
+#include "matbase/document/json_document.h"
 #include "matbase/file/atomic_file.h"
 #include "matbase/file/file_error.h"
 #include "matbase/file/input_file.h"
@@ -119,23 +122,13 @@ struct Metadata {
   std::vector<std::pair<MaterialParameter, glm::dvec3>> parameters;
 };
 
-glm::dvec3 parameter_value(const fs::path& file, const MaterialParameterInfo& info, const json& value) {
-  const std::string what = std::string("parameters/") + info.name;
-  glm::dvec3 v;
-  if (info.kind == ParameterKind::Color) {
-    if (!value.is_array() || value.size() != 3 || !std::all_of(value.begin(), value.end(), [](const json& c) {
-          return c.is_number();
-        }))
-      matbase::fail(file.string(), what + ": expected [r, g, b]");
-    v = glm::dvec3(value[0].get<double>(), value[1].get<double>(), value[2].get<double>());
-  } else {
-    if (!value.is_number()) matbase::fail(file.string(), what + ": expected a number");
-    v = glm::dvec3(value.get<double>());
-  }
-  for (int c = 0; c < 3; ++c)
-    if (!(v[c] >= info.min && v[c] <= info.max))
-      matbase::fail(file.string(), matbase::concat(what, ": ", v[c], " is outside [", info.min, ", ", info.max, "]"));
-  return v;
+// A table constant as metadata.json gives it: [r, g, b] for a colour, a number for a scalar,
+// within the parameter's range.
+glm::dvec3 parameter_value(const MaterialParameterInfo& info, const matbase::DocumentNode& value) {
+  if (info.kind == ParameterKind::Scalar) return glm::dvec3(value.number_in(info.min, info.max));
+  const std::vector<matbase::DocumentNode> rgb = value.items(3, "[r, g, b]");
+  return {rgb[0].number_in(info.min, info.max), rgb[1].number_in(info.min, info.max),
+          rgb[2].number_in(info.min, info.max)};
 }
 
 // MatSynth's categories that are no class of ours: the folder's name decides for them.
@@ -143,7 +136,8 @@ constexpr std::array<const char*, 3> kCategoriesWithoutClass = {"ground", "misc"
 
 // The class a metadata.json category names (case-insensitively), none for MatSynth's categories
 // without one; any other word is refused (a misspelt class would otherwise label the material 0).
-std::optional<MaterialClass> category_class(const fs::path& file, const std::string& category) {
+std::optional<MaterialClass> category_class(const matbase::DocumentNode& node) {
+  const std::string category = node.text();
   const std::string name = matbase::lowercase(category);
   const std::optional<MaterialClass> named = material_class_named(name);
   if (named && named != MaterialClass::Background) return named;
@@ -153,43 +147,34 @@ std::optional<MaterialClass> category_class(const fs::path& file, const std::str
   for (const MaterialClassInfo& info : kMaterialClasses)
     if (info.id != MaterialClass::Background) known += std::string(known.empty() ? "" : ", ") + info.name;
   for (const char* without_class : kCategoriesWithoutClass) known += std::string(", ") + without_class;
-  matbase::fail(file.string(), "category: unknown category " + matbase::excerpt(category) + " (known: " + known + ")");
+  node.fail("unknown category " + matbase::excerpt(category) + " (known: " + known + ")");
 }
 
+// MatSynth's metadata.json holds more keys than these (name, tags, license...), which are left
+// alone.
 Metadata read_metadata(const fs::path& file) {
   Metadata metadata;
   std::error_code missing;
   if (!fs::exists(file, missing)) return metadata;
   std::string text;
   if (const std::optional<std::string> problem = matbase::read_whole_file(file, text)) matbase::fail(file.string(), *problem);
-  const json doc = json::parse(text, nullptr, false);
-  if (doc.is_discarded()) matbase::fail(file.string(), "not valid JSON");
-  if (!doc.is_object()) matbase::fail(file.string(), "expected a JSON object");
-  if (const auto category = doc.find("category"); category != doc.end()) {
-    if (!category->is_string()) matbase::fail(file.string(), "category: expected a string");
-    metadata.material_class = category_class(file, category->get<std::string>());
-  }
-  if (const auto size = doc.find("physical_size"); size != doc.end() && !size->is_null()) {
-    if (!size->is_number() || !(size->get<double>() > 0.0) || !std::isfinite(size->get<double>()))
-      matbase::fail(file.string(), "physical_size: expected a positive number of centimetres");
-    metadata.tile_size_m = size->get<double>() / 100.0;
-  }
-  if (const auto convention = doc.find("normal_convention"); convention != doc.end()) {
-    if (*convention == "opengl")
-      metadata.normal_convention = NormalConvention::OpenGL;
-    else if (*convention == "directx")
-      metadata.normal_convention = NormalConvention::DirectX;
-    else
-      matbase::fail(file.string(), "normal_convention: expected \"opengl\" or \"directx\"");
-  }
-  if (const auto parameters = doc.find("parameters"); parameters != doc.end()) {
-    if (!parameters->is_object()) matbase::fail(file.string(), "parameters: expected an object");
-    for (const auto& [key, value] : parameters->items()) {
+  std::istringstream in(text);
+  const matbase::DocumentValue document = matbase::parse_json_document(in, file.string());
+  const matbase::DocumentSource source(file.string(), matbase::PathStyle::JsonPointer);
+  const matbase::DocumentNode root(document, source);
+  if (!root.is_mapping()) root.fail_expected("a JSON object");
+  if (const auto category = root.find("category")) metadata.material_class = category_class(*category);
+  if (!root.is_null_at("physical_size"))
+    if (const auto size = root.find("physical_size")) metadata.tile_size_m = size->positive() / 100.0;  // centimetres
+  if (const auto convention = root.find("normal_convention"))
+    metadata.normal_convention =
+        convention->choice({"opengl", "directx"}) == 0 ? NormalConvention::OpenGL : NormalConvention::DirectX;
+  if (const auto parameters = root.find("parameters"))
+    for (const auto& [key, value] : parameters->members()) {
       const std::optional<MaterialParameter> p = material_parameter_named(key);
-      if (!p) matbase::fail(file.string(), "parameters: unknown material parameter \"" + key + "\"");
-      metadata.parameters.emplace_back(*p, parameter_value(file, material_parameter(*p), value));
+      if (!p) value.fail("unknown material parameter");
+      metadata.parameters.emplace_back(*p, parameter_value(material_parameter(*p), value));
     }
-  }
   return metadata;
 }
 

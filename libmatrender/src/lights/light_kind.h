@@ -4,7 +4,7 @@
 // manner of pbrt-v4's Create from a parameter dictionary:
 //
 //   static constexpr const char* kSceneFileType;      its "type" among a scene file's lights
-//   static Description read(const SceneFileNode&);     its keys in a scene file, each checked
+//   static Description read(const matbase::DocumentNode&);     its keys in a scene file, each checked
 //                                                     (docs/scene_format.md, "Lights")
 //   static void check(const Description&);            what single precision needs of its values
 //                                                     to render it, refused with refuse()

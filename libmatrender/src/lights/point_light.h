@@ -15,7 +15,7 @@
 #include "lights/light_type.h"
 #include "matbase/pi.h"
 #include "matrender/light.h"
-#include "scene_description/scene_file_node.h"
+#include "scene_description/scene_file_values.h"
 #include "util/channel_average.h"
 
 namespace matrender {
@@ -80,7 +80,7 @@ class PreparedPointLight {
 // What the scene file gives every lamp at a point, after its own keys: "power" (required),
 // "color" and "radius".
 template <class LampAtPoint>
-void read_lamp_at_point_emission(const SceneFileNode& node, LampAtPoint& light) {
+void read_lamp_at_point_emission(const matbase::DocumentNode& node, LampAtPoint& light) {
   light.power = node.required("power").non_negative();
   if (auto color = node.find("color")) light.color = read_color(*color);
   if (auto radius = node.find("radius")) light.radius = radius->non_negative();
@@ -100,7 +100,7 @@ void prepare_lamp_at_point(const LampAtPoint& light, Add&& add) {
 template <>
 struct LightKind<PointLight> {
   static constexpr const char* kSceneFileType = "point";
-  static PointLight read(const SceneFileNode& node) {
+  static PointLight read(const matbase::DocumentNode& node) {
     node.expect_keys({"type", "position", "power", "color", "radius"});
     PointLight light;
     light.position = read_vec3(node.required("position"));

@@ -9,7 +9,7 @@
 #include "lights/light_importance.h"
 #include "matgeom/camera_grid.h"
 #include "matrender/scene_limits.h"
-#include "scene_description/scene_file_node.h"
+#include "scene_description/scene_file_values.h"
 #include "util/channel_average.h"
 #include "util/finite.h"
 
@@ -94,7 +94,7 @@ float PreparedRectLight::pdf(const glm::vec3& p, const glm::vec3& wi, float t) c
   return t * t / (cos_light * area_);
 }
 
-RectLight LightKind<RectLight>::read(const SceneFileNode& node) {
+RectLight LightKind<RectLight>::read(const matbase::DocumentNode& node) {
   node.expect_keys({"type", "position", "look_at", "up", "size", "power", "color", "visible_to_camera"});
   RectLight light;
   const glm::dvec3 position = read_vec3(node.required("position"));
@@ -106,13 +106,13 @@ RectLight LightKind<RectLight>::read(const SceneFileNode& node) {
   } catch (const std::invalid_argument& e) {
     node.required("look_at").fail(e.what());
   }
-  const SceneFileNode size = node.required("size");
+  const matbase::DocumentNode size = node.required("size");
   if (size.is_number()) {
     light.size_x = light.size_y = size.positive();
   } else {
-    size.expect_array(2, "a positive number or [size_x, size_y]");
-    light.size_x = size.item(0).positive();
-    light.size_y = size.item(1).positive();
+    const std::vector<matbase::DocumentNode> sides = size.items(2, "a positive number or [size_x, size_y]");
+    light.size_x = sides[0].positive();
+    light.size_y = sides[1].positive();
   }
   light.power = node.required("power").non_negative();
   if (auto color = node.find("color")) light.color = read_color(*color);

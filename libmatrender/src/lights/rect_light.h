@@ -13,6 +13,10 @@
 #include "lights/spherical_rectangle.h"
 #include "matrender/light.h"
 
+namespace matbase {
+class DocumentNode;
+}  // namespace matbase
+
 namespace matrender {
 
 class PreparedRectLight {
@@ -57,13 +61,12 @@ class PreparedRectLight {
   bool visible_to_camera_ = false;
 };
 
-class SceneFileNode;
 
 // The scene file's "area" lamp: position, look_at, up, size, power, color, visible_to_camera.
 template <>
 struct LightKind<RectLight> {
   static constexpr const char* kSceneFileType = "area";
-  static RectLight read(const SceneFileNode& node);
+  static RectLight read(const matbase::DocumentNode& node);
   static void check(const RectLight& light);
   template <class Add>
   static void prepare(const RectLight& light, Add&& add) {

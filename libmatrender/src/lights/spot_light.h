@@ -19,7 +19,7 @@
 #include "matbase/smoothstep.h"
 #include "matrender/light.h"
 #include "sampling/warp.h"
-#include "scene_description/scene_file_node.h"
+#include "scene_description/scene_file_values.h"
 #include "util/channel_average.h"
 
 namespace matrender {
@@ -78,14 +78,14 @@ class PreparedSpotLight {
 template <>
 struct LightKind<SpotLight> {
   static constexpr const char* kSceneFileType = "spot";
-  static SpotLight read(const SceneFileNode& node) {
+  static SpotLight read(const matbase::DocumentNode& node) {
     node.expect_keys({"type", "position", "look_at", "spot_angle_deg", "blend", "power", "color", "radius"});
     SpotLight light;
     light.position = read_vec3(node.required("position"));
     light.direction = glm::normalize(read_target(node, light.position) - light.position);
     if (auto angle = node.find("spot_angle_deg"))
       light.spot_angle = glm::radians(
-          angle->number_where([](double v) { return v > 0.0 && v <= 180.0; }, "an angle in (0, 180] degrees"));
+          angle->number_in(0.0, 180.0, true));
     if (auto blend = node.find("blend")) light.blend = blend->unit_interval();
     read_lamp_at_point_emission(node, light);
     return light;

@@ -5,13 +5,13 @@
 
 #include <fmt/format.h>
 
-#include "matbase/pi.h"
 #include "bsdf/shading_frame.h"
 #include "lights/light_checks.h"
 #include "lights/light_importance.h"
-#include "scene_description/scene_file_node.h"
-#include "util/channel_average.h"
+#include "matbase/pi.h"
 #include "sampling/warp.h"
+#include "scene_description/scene_file_values.h"
+#include "util/channel_average.h"
 
 namespace matrender {
 
@@ -60,7 +60,7 @@ float PreparedSunLight::pdf(const glm::vec3& direction) const { return density(d
 
 glm::vec3 PreparedSunLight::radiance(const glm::vec3& direction) const { return irradiance_ * density(direction); }
 
-SunLight LightKind<SunLight>::read(const SceneFileNode& node) {
+SunLight LightKind<SunLight>::read(const matbase::DocumentNode& node) {
   node.expect_keys({"type", "position", "look_at", "strength", "color", "angle_deg"});
   SunLight light;
   const glm::dvec3 position = read_vec3(node.required("position"));
@@ -69,8 +69,7 @@ SunLight LightKind<SunLight>::read(const SceneFileNode& node) {
   if (auto color = node.find("color")) light.color = read_color(*color);
   if (auto angle = node.find("angle_deg"))
     light.angle = glm::radians(
-        angle->number_where([](double v) { return v >= 0.0 && v <= glm::degrees(kMaxSunAngle); },
-                            fmt::format("an angle in [0, {:g}] degrees", glm::degrees(kMaxSunAngle))));
+        angle->number_in(0.0, glm::degrees(kMaxSunAngle)));
   return light;
 }
 

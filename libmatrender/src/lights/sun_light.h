@@ -17,6 +17,10 @@
 #include "lights/light_type.h"
 #include "matrender/light.h"
 
+namespace matbase {
+class DocumentNode;
+}  // namespace matbase
+
 namespace matrender {
 
 class PreparedSunLight {
@@ -49,14 +53,13 @@ class PreparedSunLight {
   float mean_irradiance_ = 0.0f;
 };
 
-class SceneFileNode;
 
 // The scene file's "sun": position, look_at (only the direction between them matters), strength,
 // color, angle_deg. Of angle 0 it renders as a distant light.
 template <>
 struct LightKind<SunLight> {
   static constexpr const char* kSceneFileType = "sun";
-  static SunLight read(const SceneFileNode& node);
+  static SunLight read(const matbase::DocumentNode& node);
   static void check(const SunLight& sun);
   template <class Add>
   static void prepare(const SunLight& light, Add&& add) {

@@ -1,25 +1,18 @@
 #include "matrender/scene_file.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <functional>
-#include <initializer_list>
-#include <limits>
 #include <optional>
-#include <set>
 
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
-#include <nlohmann/json.hpp>
 
 #include "lights/light_checks.h"
 #include "lights/scene_light.h"
-#include "scene_description/scene_file_node.h"
-#include "matbase/file/input_file.h"
+#include "matbase/document/json_document.h"
+#include "matbase/number_text.h"
 #include "matbase/text.h"
 #include "matgeom/builtin/builtin_objects.h"
 #include "matgeom/camera_grid.h"
@@ -27,32 +20,33 @@
 #include "matmaterial/material_classes.h"
 #include "matmaterial/material_parameters.h"
 #include "matrender/image_io.h"
+#include "scene_description/scene_file_values.h"
 
 namespace matrender {
 namespace {
 
 namespace fs = std::filesystem;
-using nlohmann::json;
+using matbase::DocumentNode;
+using matbase::quoted_list;
 
 // ---- small value types ----------------------------------------------------------------------
 
 // [min, max] with min < max, both accepted by `element`.
-std::pair<double, double> read_range(const SceneFileNode& node,
-                                     const std::function<double(const SceneFileNode&)>& element) {
-  node.expect_array(2, "[min, max]");
-  const double lo = element(node.item(0)), hi = element(node.item(1));
+std::pair<double, double> read_range(const DocumentNode& node,
+                                     const std::function<double(const DocumentNode&)>& element) {
+  const std::vector<DocumentNode> ends = node.items(2, "[min, max]");
+  const double lo = element(ends[0]), hi = element(ends[1]);
   if (!(lo < hi)) node.fail("expected [min, max] with min < max");
   return {lo, hi};
 }
 
 // 4 rows of 4 numbers, row-major as written; glm stores columns.
-glm::dmat4 read_matrix(const SceneFileNode& node) {
-  node.expect_array(4, "a 4x4 matrix as 4 rows of 4 numbers");
+glm::dmat4 read_matrix(const DocumentNode& node) {
+  const std::vector<DocumentNode> rows = node.items(4, "a 4x4 matrix as 4 rows of 4 numbers");
   glm::dmat4 m(1.0);
   for (size_t r = 0; r < 4; ++r) {
-    const SceneFileNode row = node.item(r);
-    row.expect_array(4, "a row of 4 numbers");
-    for (size_t c = 0; c < 4; ++c) m[static_cast<int>(c)][static_cast<int>(r)] = row.item(c).number();
+    const std::vector<DocumentNode> row = rows[r].items(4, "a row of 4 numbers");
+    for (size_t c = 0; c < 4; ++c) m[static_cast<int>(c)][static_cast<int>(r)] = row[c].number();
   }
   if (m[0][3] != 0.0 || m[1][3] != 0.0 || m[2][3] != 0.0 || m[3][3] != 1.0)
     node.fail("expected an affine matrix (last row 0, 0, 0, 1)");
@@ -61,7 +55,7 @@ glm::dmat4 read_matrix(const SceneFileNode& node) {
 
 // A camera matrix must be a rotation and a translation: any scale or shear would silently change
 // the field of view or skew the image.
-glm::dmat4 read_rigid_matrix(const SceneFileNode& node) {
+glm::dmat4 read_rigid_matrix(const DocumentNode& node) {
   const glm::dmat4 m = read_matrix(node);
   const glm::dmat3 r(m);
   const glm::dmat3 should_be_identity = glm::transpose(r) * r;
@@ -72,8 +66,8 @@ glm::dmat4 read_rigid_matrix(const SceneFileNode& node) {
   return m;
 }
 
-std::string read_existing_file(const SceneFileNode& node, const fs::path& folder) {
-  const std::string text = node.string();
+std::string read_existing_file(const DocumentNode& node, const fs::path& folder) {
+  const std::string text = node.text();
   if (text.empty()) node.fail("expected a file path");
   const fs::path path = fs::path(text).is_absolute() ? fs::path(text) : (folder / text).lexically_normal();
   std::error_code ec;
@@ -84,7 +78,7 @@ std::string read_existing_file(const SceneFileNode& node, const fs::path& folder
 
 // ---- camera ---------------------------------------------------------------------------------
 
-GridPlacement read_grid(const SceneFileNode& node) {
+GridPlacement read_grid(const DocumentNode& node) {
   node.expect_keys({"cell", "n_phi", "n_theta", "radius", "phi_range_deg", "theta_range_deg", "center"});
   GridPlacement grid;
   matgeom::CameraGridSpec& spec = grid.spec;
@@ -92,33 +86,33 @@ GridPlacement read_grid(const SceneFileNode& node) {
   if (auto n = node.find("n_theta")) spec.n_theta = n->integer_at_least(1);
   if (auto r = node.find("radius")) spec.radius = r->positive();
   if (auto range = node.find("phi_range_deg")) {
-    const auto [lo, hi] = read_range(*range, [](const SceneFileNode& n) {
-      return n.number_where([](double v) { return v >= 0.0 && v <= 180.0; }, "an angle in [0, 180] degrees");
+    const auto [lo, hi] = read_range(*range, [](const DocumentNode& n) {
+      return n.number_in(0.0, 180.0);
     });
     spec.phi_min = glm::radians(lo);
     spec.phi_max = glm::radians(hi);
   }
   if (auto range = node.find("theta_range_deg")) {
-    const auto [lo, hi] = read_range(*range, [](const SceneFileNode& n) { return n.number(); });
+    const auto [lo, hi] = read_range(*range, [](const DocumentNode& n) { return n.number(); });
     spec.theta_min = glm::radians(lo);
     spec.theta_max = glm::radians(hi);
   }
   if (auto center = node.find("center")) {
-    if (center->is_string()) {
-      if (center->string() != "centroid") center->fail("expected \"centroid\" or [x, y, z]");
+    if (center->is_text()) {
+      if (center->text() != "centroid") center->fail("expected \"centroid\" or [x, y, z]");
     } else {
       grid.center_on_centroid = false;
       spec.center = read_vec3(*center);
     }
   }
-  const SceneFileNode cell = node.required("cell");
-  cell.expect_array(2, "[i, j]");
-  grid.i = cell.item(0).integer_in(0, spec.n_phi - 1);
-  grid.j = cell.item(1).integer_in(0, spec.n_theta - 1);
+  const DocumentNode cell = node.required("cell");
+  const std::vector<DocumentNode> ij = cell.items(2, "[i, j]");
+  grid.i = ij[0].integer_in(0, spec.n_phi - 1);
+  grid.j = ij[1].integer_in(0, spec.n_theta - 1);
   return grid;
 }
 
-LookAtPlacement read_look_at(const SceneFileNode& node) {
+LookAtPlacement read_look_at(const DocumentNode& node) {
   LookAtPlacement look;
   look.position = read_vec3(node.required("position"));
   look.target = read_vec3(node.required("look_at"));
@@ -127,8 +121,8 @@ LookAtPlacement read_look_at(const SceneFileNode& node) {
   return look;
 }
 
-CameraDescription read_camera(const SceneFileNode& node) {
-  if (!node.is_object()) node.fail("expected an object");
+CameraDescription read_camera(const DocumentNode& node) {
+  if (!node.is_mapping()) node.fail_expected("a mapping of keys");
   const int kinds = int{node.has("position")} + int{node.has("grid")} + int{node.has("matrix")};
   if (kinds != 1) node.fail("expected exactly one of \"position\" (with \"look_at\"), \"grid\" or \"matrix\"");
   CameraDescription camera;
@@ -144,7 +138,7 @@ CameraDescription read_camera(const SceneFileNode& node) {
   }
   if (auto fov = node.find("fov_deg"))
     camera.vertical_fov = glm::radians(
-        fov->number_where([](double v) { return v > 0.0 && v < 180.0; }, "an angle in (0, 180) degrees"));
+        fov->number_where([](double v) { return v > 0.0 && v < 180.0; }, "a number greater than 0 and less than 180"));
   if (auto w = node.find("width")) camera.width = w->integer_in(1, kMaxImageSide);
   if (auto h = node.find("height")) camera.height = h->integer_in(1, kMaxImageSide);
   return camera;
@@ -161,26 +155,25 @@ std::vector<std::string> light_types(std::index_sequence<kKinds...>) {
 std::vector<std::string> light_types() { return light_types(std::make_index_sequence<std::variant_size_v<Light>>()); }
 
 template <size_t kKind = 0>
-Light read_light(size_t kind, const SceneFileNode& node) {
+Light read_light(size_t kind, const DocumentNode& node) {
   using Description = std::variant_alternative_t<kKind, Light>;
   if constexpr (kKind + 1 < std::variant_size_v<Light>)
     if (kind != kKind) return read_light<kKind + 1>(kind, node);
   return LightKind<Description>::read(node);
 }
 
-LightsDescription read_lights(const SceneFileNode& node) {
-  if (!node.is_array()) {
-    if (!node.is_object()) node.fail("expected an array of lights or {\"rig\": {...}}");
+LightsDescription read_lights(const DocumentNode& node) {
+  if (!node.is_list()) {
+    if (!node.is_mapping()) node.fail_expected("a list of lights or {\"rig\": {...}}");
     node.expect_keys({"rig"});
-    const SceneFileNode rig_node = node.required("rig");
+    const DocumentNode rig_node = node.required("rig");
     rig_node.expect_keys({"target_illuminance_lux"});
     LightRigDescription rig;
     if (auto lux = rig_node.find("target_illuminance_lux")) rig.target_illuminance_lux = lux->positive();
     return rig;
   }
   std::vector<Light> lights;
-  for (size_t k = 0; k < node.array_size("an array of lights"); ++k) {
-    const SceneFileNode light = node.item(k);
+  for (const DocumentNode& light : node.items("a list of lights")) {
     lights.push_back(read_light(light.required("type").choice(light_types()), light));
     // Values each valid alone may still not render: a lamp 1e-300 m wide, a power of 1e308 W.
     if (const std::optional<std::string> problem = light_problem(lights.back())) light.fail(*problem);
@@ -189,12 +182,12 @@ LightsDescription read_lights(const SceneFileNode& node) {
 }
 
 // [r, g, b], or {"environment": path, "strength", "rotation_z_deg", "color_space"}.
-BackgroundDescription read_background(const SceneFileNode& node, const fs::path& folder) {
-  if (!node.is_object()) return glm::vec3(read_color(node));
+BackgroundDescription read_background(const DocumentNode& node, const fs::path& folder) {
+  if (!node.is_mapping()) return glm::vec3(read_color(node));
   node.expect_keys({"environment", "strength", "rotation_z_deg", "color_space"});
   EnvironmentDescription environment;
   environment.path = read_existing_file(node.required("environment"), folder);
-  environment.origin = node.origin();
+  environment.origin = origin_of(node);
   if (auto strength = node.find("strength"))
     environment.strength = strength->non_negative();
   if (auto rotation = node.find("rotation_z_deg")) environment.rotation_z = glm::radians(rotation->number());
@@ -208,8 +201,8 @@ BackgroundDescription read_background(const SceneFileNode& node, const fs::path&
 // {"texture": path, ...}: the keys every texture reference shares.
 // A texture file, or a UDIM set's pattern (name.<UDIM>.png), whose folder must exist; its tiles
 // are found when it is loaded.
-std::string read_texture_path(const SceneFileNode& node, const fs::path& folder) {
-  const std::string text = node.string();
+std::string read_texture_path(const DocumentNode& node, const fs::path& folder) {
+  const std::string text = node.text();
   if (text.find("<UDIM>") == std::string::npos) return read_existing_file(node, folder);
   const fs::path path = fs::path(text).is_absolute() ? fs::path(text) : (folder / text).lexically_normal();
   std::error_code ec;
@@ -218,10 +211,10 @@ std::string read_texture_path(const SceneFileNode& node, const fs::path& folder)
   return path.string();
 }
 
-TextureFile read_texture_file(const SceneFileNode& node, const fs::path& folder, ColorSpace default_space) {
+TextureFile read_texture_file(const DocumentNode& node, const fs::path& folder, ColorSpace default_space) {
   TextureFile file;
   file.path = read_texture_path(node.required("texture"), folder);
-  file.origin = node.origin();
+  file.origin = origin_of(node);
   file.color_space = default_space;
   if (auto space = node.find("color_space"))
     file.color_space = space->choice({"sRGB", "non-color"}) == 0 ? ColorSpace::SRGB
@@ -233,17 +226,17 @@ TextureFile read_texture_file(const SceneFileNode& node, const fs::path& folder,
 
 // {"offset": [u, v], "rotation_deg": r, "scale": [u, v]}: glTF's KHR_texture_transform (in
 // glTF's UVs, v down; matmaterial/texture_transform.h), each key optional.
-matmaterial::UvAffine read_texture_transform(const SceneFileNode& node) {
+matmaterial::UvAffine read_texture_transform(const DocumentNode& node) {
   node.expect_keys({"offset", "rotation_deg", "scale"});
   constexpr double kLargest = 1e6;  // a texture repeated a million times is already noise
-  const auto bounded = [](const SceneFileNode& n) {
-    return n.number_where([](double v) { return std::abs(v) <= kLargest; }, "a number in [-1e6, 1e6]");
+  const auto bounded = [](const DocumentNode& n) {
+    return n.number_in(-kLargest, kLargest);
   };
   const auto pair = [&](const char* key, glm::dvec2 fallback) {
     const auto n = node.find(key);
     if (!n) return fallback;
-    n->expect_array(2, "[u, v]");
-    return glm::dvec2(bounded(n->item(0)), bounded(n->item(1)));
+    const std::vector<DocumentNode> uv = n->items(2, "[u, v]");
+    return glm::dvec2(bounded(uv[0]), bounded(uv[1]));
   };
   matmaterial::TextureTransform transform;
   transform.offset = pair("offset", transform.offset);
@@ -254,25 +247,23 @@ matmaterial::UvAffine read_texture_transform(const SceneFileNode& node) {
 
 // A value of `info` within its range: [r, g, b] for a colour, a number for a scalar. `or_else`
 // completes the message when something else would also do.
-glm::vec3 read_parameter_constant(const SceneFileNode& node, const matmaterial::MaterialParameterInfo& info,
+glm::vec3 read_parameter_constant(const DocumentNode& node, const matmaterial::MaterialParameterInfo& info,
                                   const std::string& or_else = "") {
-  const std::string range = fmt::format("[{}, {}]", info.min, info.max);
+  const double low = info.min, high = info.max;
   if (info.kind == matmaterial::ParameterKind::Scalar)
-    return glm::vec3(static_cast<float>(node.number_where([&](double v) { return v >= info.min && v <= info.max; },
-                                                          "a number in " + range + or_else)));
-  const auto in_range = [&](const SceneFileNode& n) {
-    return n.number_where([&](double v) { return v >= info.min && v <= info.max; }, "a number in " + range);
-  };
-  node.expect_array(3, "[r, g, b] with components in " + range + or_else);
-  return glm::vec3(glm::dvec3(in_range(node.item(0)), in_range(node.item(1)), in_range(node.item(2))));
+    return glm::vec3(static_cast<float>(node.number_where([&](double v) { return v >= low && v <= high; },
+                                                          matbase::number_expectation(low, high, false) + or_else)));
+  const std::vector<DocumentNode> rgb =
+      node.items(3, fmt::format("[r, g, b] with components from {:g} to {:g}", low, high) + or_else);
+  return glm::vec3(glm::dvec3(rgb[0].number_in(low, high), rgb[1].number_in(low, high), rgb[2].number_in(low, high)));
 }
 
 // A constant, or (where the table allows it) a texture times an optional factor: a colour takes
 // the texture's RGB, a scalar one channel of it (R unless "channel" says otherwise).
-void read_parameter(const SceneFileNode& node, const matmaterial::MaterialParameterInfo& info, const fs::path& folder,
+void read_parameter(const DocumentNode& node, const matmaterial::MaterialParameterInfo& info, const fs::path& folder,
                     ParameterValue& value, std::optional<TextureFile>& texture) {
   const bool color = info.kind == matmaterial::ParameterKind::Color;
-  if (!node.is_object() || !info.texturable) {
+  if (!node.is_mapping() || !info.texturable) {
     value.value = read_parameter_constant(node, info, info.texturable ? " or {\"texture\": ...}" : "");
     return;
   }
@@ -286,9 +277,9 @@ void read_parameter(const SceneFileNode& node, const matmaterial::MaterialParame
 
 // A material class's name ("wood", matmaterial/material_classes.h) or any integer a 16-bit label
 // PNG holds.
-int read_label_id(const SceneFileNode& node) {
-  if (!node.is_string()) return node.integer_in(0, 65535);
-  const std::string name = node.string();
+int read_label_id(const DocumentNode& node) {
+  if (!node.is_text()) return node.integer_in(0, 65535);
+  const std::string name = node.text();
   if (const std::optional<matmaterial::MaterialClass> c = matmaterial::material_class_named(name)) return matmaterial::label_id(*c);
   std::vector<std::string> names;
   for (const matmaterial::MaterialClassInfo& info : matmaterial::kMaterialClasses) names.push_back(info.name);
@@ -296,39 +287,39 @@ int read_label_id(const SceneFileNode& node) {
 }
 
 // {"matsynth": folder}: a material folder, optionally with its label.
-MaterialDescription read_folder_material(const SceneFileNode& node, const std::string& name, const fs::path& folder) {
+MaterialDescription read_folder_material(const DocumentNode& node, const std::string& name, const fs::path& folder) {
   node.expect_keys({"matsynth", "label_id"});
   MaterialDescription material;
   material.constants.name = name;
-  const SceneFileNode path_node = node.required("matsynth");
-  const fs::path path = folder / path_node.string();
+  const DocumentNode path_node = node.required("matsynth");
+  const fs::path path = folder / path_node.text();
   std::error_code error;
   if (!fs::is_directory(path, error))
     path_node.fail("expected a material folder (matgeom's MatSynth layout), found no folder at " + path.string());
-  material.folder = MaterialFolderFile{path.string(), path_node.origin()};
+  material.folder = MaterialFolderFile{path.string(), origin_of(path_node)};
   if (auto n = node.find("label_id")) material.label_id = read_label_id(*n);
   return material;
 }
 
 // {"class": "wood", "style": "wicker", "seed": 3, "resolution": 1024}: a material of the
 // procedural library, optionally with its label.
-MaterialDescription read_library_material(const SceneFileNode& node, const std::string& name) {
+MaterialDescription read_library_material(const DocumentNode& node, const std::string& name) {
   node.expect_keys({"class", "style", "seed", "resolution", "label_id"});
   MaterialDescription material;
   material.constants.name = name;
   LibraryMaterialRequest request;
-  const SceneFileNode class_node = node.required("class");
-  const std::optional<matmaterial::MaterialClass> material_class = matmaterial::material_class_named(class_node.string());
+  const DocumentNode class_node = node.required("class");
+  const std::optional<matmaterial::MaterialClass> material_class = matmaterial::material_class_named(class_node.text());
   if (!material_class || *material_class == matmaterial::MaterialClass::Background) {
     std::vector<std::string> names;
     for (const matmaterial::MaterialClassInfo& info : matmaterial::kMaterialClasses)
       if (info.id != matmaterial::MaterialClass::Background) names.push_back(info.name);
-    class_node.fail("unknown material class \"" + class_node.string() + "\" (known: " + quoted_list(names) + ")");
+    class_node.fail("unknown material class \"" + class_node.text() + "\" (known: " + quoted_list(names) + ")");
   }
   request.spec.material_class = *material_class;
   if (auto n = node.find("seed")) request.spec.seed = n->uint32();
   if (auto n = node.find("style")) {
-    request.spec.style = n->string();
+    request.spec.style = n->text();
     try {
       matmaterial::resolved_style(request.spec);
     } catch (const std::invalid_argument& e) {
@@ -337,13 +328,13 @@ MaterialDescription read_library_material(const SceneFileNode& node, const std::
   }
   if (auto n = node.find("resolution"))
     request.resolution = n->integer_in(matmaterial::kMinLibraryResolution, matmaterial::kMaxLibraryResolution);
-  request.origin = node.origin();
+  request.origin = origin_of(node);
   material.library = request;
   if (auto n = node.find("label_id")) material.label_id = read_label_id(*n);
   return material;
 }
 
-MaterialDescription read_material(const SceneFileNode& node, const std::string& name, const fs::path& folder) {
+MaterialDescription read_material(const DocumentNode& node, const std::string& name, const fs::path& folder) {
   if (node.has("matsynth")) return read_folder_material(node, name, folder);
   if (node.has("class")) return read_library_material(node, name);
   std::vector<const char*> keys = {"normal_map", "label_id", "diffuse_model", "distribution"};
@@ -371,7 +362,7 @@ MaterialDescription read_material(const SceneFileNode& node, const std::string& 
   return material;
 }
 
-std::map<std::string, MaterialDescription> read_materials(const SceneFileNode& node, const fs::path& folder) {
+std::map<std::string, MaterialDescription> read_materials(const DocumentNode& node, const fs::path& folder) {
   std::map<std::string, MaterialDescription> materials;
   for (const auto& [name, material] : node.members()) materials[name] = read_material(material, name, folder);
   return materials;
@@ -388,7 +379,7 @@ glm::dmat4 euler_xyz_degrees(const glm::dvec3& degrees) {
 }
 
 // {"matrix": ...} or Blender's translate * rotate * scale.
-glm::dmat4 read_transform(const SceneFileNode& node) {
+glm::dmat4 read_transform(const DocumentNode& node) {
   if (node.has("matrix")) {
     node.expect_keys({"matrix"});
     const glm::dmat4 m = read_matrix(node.required("matrix"));
@@ -402,8 +393,8 @@ glm::dmat4 read_transform(const SceneFileNode& node) {
     if (s->is_number()) {
       scale = glm::dvec3(s->positive());
     } else {
-      s->expect_array(3, "a positive number or [x, y, z]");
-      scale = {s->item(0).positive(), s->item(1).positive(), s->item(2).positive()};
+      const std::vector<DocumentNode> xyz = s->items(3, "a positive number or [x, y, z]");
+      scale = {xyz[0].positive(), xyz[1].positive(), xyz[2].positive()};
     }
   }
   const glm::dvec3 translate = node.has("translate") ? read_vec3(node.required("translate")) : glm::dvec3(0.0);
@@ -412,8 +403,8 @@ glm::dmat4 read_transform(const SceneFileNode& node) {
          glm::scale(glm::dmat4(1.0), scale);
 }
 
-std::string read_material_name(const SceneFileNode& node, const std::map<std::string, MaterialDescription>& materials) {
-  const std::string name = node.string();
+std::string read_material_name(const DocumentNode& node, const std::map<std::string, MaterialDescription>& materials) {
+  const std::string name = node.text();
   if (materials.count(name) == 0) {
     std::vector<std::string> defined;
     for (const auto& entry : materials) defined.push_back(entry.first);
@@ -427,22 +418,22 @@ std::string read_material_name(const SceneFileNode& node, const std::map<std::st
 // An object's "material": a name from "materials", or a material given in place (a folder,
 // {"matsynth": folder}, or the library's, {"class": ...}), added to the scene's materials under
 // its JSON pointer.
-std::string read_object_material(const SceneFileNode& node, const fs::path& folder,
+std::string read_object_material(const DocumentNode& node, const fs::path& folder,
                                  std::map<std::string, MaterialDescription>& materials) {
-  if (!node.is_object()) return read_material_name(node, materials);
+  if (!node.is_mapping()) return read_material_name(node, materials);
   if (!node.has("matsynth") && !node.has("class"))
     node.fail("expected a material name, {\"matsynth\": folder} or {\"class\": CLASS, \"seed\": SEED}");
-  const std::string name = *node.origin().pointer;
+  const std::string name = *origin_of(node).pointer;
   materials[name] = node.has("matsynth") ? read_folder_material(node, name, folder) : read_library_material(node, name);
   return name;
 }
 
-ObjectDescription read_object(const SceneFileNode& node, const fs::path& folder,
+ObjectDescription read_object(const DocumentNode& node, const fs::path& folder,
                               std::map<std::string, MaterialDescription>& materials) {
-  if (!node.is_object()) node.fail("expected an object");
+  if (!node.is_mapping()) node.fail_expected("a mapping of keys");
   if (node.has("mesh") == node.has("builtin")) node.fail("expected exactly one of \"mesh\" or \"builtin\"");
   ObjectDescription object;
-  object.origin = node.origin();
+  object.origin = origin_of(node);
   if (node.has("mesh")) {
     node.expect_keys({"mesh", "transform", "material", "materials", "shadow_terminator_geometry_offset"});
     const std::string path = read_existing_file(node.required("mesh"), folder);
@@ -462,7 +453,7 @@ ObjectDescription read_object(const SceneFileNode& node, const fs::path& folder,
   if (auto transform = node.find("transform")) object.object_to_world = read_transform(*transform);
   if (auto offset = node.find("shadow_terminator_geometry_offset"))
     object.shadow_terminator_geometry_offset = static_cast<float>(
-        offset->number_where([](double v) { return v >= 0.0 && v <= 1.0; }, "a number in [0, 1]"));
+        offset->unit_interval());
   if (node.has("material") && node.has("materials")) node.fail("give either \"material\" or \"materials\", not both");
   if (auto material = node.find("material")) object.material = read_object_material(*material, folder, materials);
   if (auto parts = node.find("materials"))
@@ -470,25 +461,25 @@ ObjectDescription read_object(const SceneFileNode& node, const fs::path& folder,
   return object;
 }
 
-std::vector<ObjectDescription> read_objects(const SceneFileNode& node, const fs::path& folder,
+std::vector<ObjectDescription> read_objects(const DocumentNode& node, const fs::path& folder,
                                             std::map<std::string, MaterialDescription>& materials) {
-  const size_t count = node.array_size("a non-empty array of objects");
-  if (count == 0) node.fail("expected a non-empty array of objects");
+  const std::vector<DocumentNode> items = node.items("a non-empty list of objects");
+  if (items.empty()) node.fail_expected("a non-empty list of objects");
   std::vector<ObjectDescription> objects;
-  for (size_t k = 0; k < count; ++k) objects.push_back(read_object(node.item(k), folder, materials));
+  for (const DocumentNode& item : items) objects.push_back(read_object(item, folder, materials));
   return objects;
 }
 
 // ---- render settings ------------------------------------------------------------------------
 
-void read_render(const SceneFileNode& node, SceneDescription& scene) {
+void read_render(const DocumentNode& node, SceneDescription& scene) {
   node.expect_keys({"spp", "noise_threshold", "min_samples", "seed", "max_bounces", "max_diffuse_bounces", "max_glossy_bounces",
                     "max_transmission_bounces", "max_transparent_bounces", "exposure",
                     "transparent_background", "cycles_parity", "light_selection", "mipmaps", "denoise"});
   RenderSettings& s = scene.settings;
   if (auto n = node.find("spp")) s.samples_per_pixel = n->integer_at_least(1);
   if (auto n = node.find("noise_threshold"))
-    s.noise_threshold = n->number_where([](double v) { return v >= 0.0 && v <= 1.0; }, "a number in [0, 1] (0: off)");
+    s.noise_threshold = n->number_where([](double v) { return v >= 0.0 && v <= 1.0; }, "a number from 0 to 1 (0: off)");
   if (auto n = node.find("min_samples")) s.min_samples = n->integer_at_least(0);
   if (auto n = node.find("seed")) s.seed = n->uint32();
   if (auto n = node.find("max_bounces")) s.max_bounces = n->integer_at_least(0);
@@ -498,7 +489,7 @@ void read_render(const SceneFileNode& node, SceneDescription& scene) {
   if (auto n = node.find("max_transparent_bounces")) s.max_transparent_bounces = n->integer_at_least(0);
   if (auto n = node.find("exposure"))
     scene.exposure_stops = n->number_where([](double v) { return std::abs(v) <= matbase::kMaxExposureStops; },
-                                           fmt::format("a number of stops in [{}, {}]", -matbase::kMaxExposureStops, matbase::kMaxExposureStops));
+                                           fmt::format("a number of stops from {} to {}", -matbase::kMaxExposureStops, matbase::kMaxExposureStops));
   if (auto n = node.find("transparent_background")) s.transparent_background = n->boolean();
   if (auto n = node.find("cycles_parity")) s.cycles_parity = n->boolean();
   if (auto n = node.find("mipmaps")) s.mipmaps = n->boolean();
@@ -508,78 +499,17 @@ void read_render(const SceneFileNode& node, SceneDescription& scene) {
     s.light_selection = n->choice({"importance", "uniform"}) == 0 ? LightSelection::Importance : LightSelection::Uniform;
 }
 
-json parse_json_file(const std::string& path) {
-  if (const std::optional<std::string> problem = matbase::input_file_problem(path)) throw matbase::InputError(path + ": " + *problem);
-  std::ifstream in(path);
-  if (!in) throw matbase::InputError(path + ": cannot open: " + std::strerror(errno));
-  // nlohmann keeps the last of two equal keys in an object; a scene file that says a value twice
-  // is a mistake to report, not to resolve. The parser's events are followed with one frame per
-  // open object or array, enough to name the repeated key's JSON pointer.
-  struct OpenContainer {
-    bool array = false;
-    size_t index = 0;  // arrays: the element being read
-    std::string key;   // objects: the member being read
-    std::set<std::string> keys;
-  };
-  std::vector<OpenContainer> open;
-  std::string duplicate_pointer;
-  const auto pointer_to_member = [&](const std::string& key) {
-    std::string pointer;
-    for (size_t k = 0; k + 1 < open.size(); ++k)
-      pointer += "/" + (open[k].array ? std::to_string(open[k].index) : pointer_token(open[k].key));
-    return pointer + "/" + pointer_token(key);
-  };
-  const auto element_done = [&] {
-    if (!open.empty() && open.back().array) ++open.back().index;
-  };
-  const json::parser_callback_t find_duplicates = [&](int /*depth*/, json::parse_event_t event, json& parsed) {
-    switch (event) {
-      case json::parse_event_t::object_start: open.push_back({false, 0, "", {}}); break;
-      case json::parse_event_t::array_start: open.push_back({true, 0, "", {}}); break;
-      case json::parse_event_t::object_end:
-      case json::parse_event_t::array_end:
-        open.pop_back();
-        element_done();
-        break;
-      case json::parse_event_t::key:
-        open.back().key = parsed.get<std::string>();
-        if (!open.back().keys.insert(open.back().key).second && duplicate_pointer.empty())
-          duplicate_pointer = pointer_to_member(open.back().key);
-        break;
-      case json::parse_event_t::value: element_done(); break;
-    }
-    return true;
-  };
-  try {
-    json document = json::parse(in, find_duplicates);
-    if (!duplicate_pointer.empty()) throw matbase::InputError(path + ": " + duplicate_pointer + ": this key appears twice in its object");
-    return document;
-  } catch (const json::out_of_range& e) {
-    // A number beyond a double ("1e309"): nlohmann says "number overflow parsing '1e309'".
-    const std::string what = e.what();
-    const size_t quote = what.find('\'');
-    throw matbase::InputError(path + ": not valid JSON: the number " +
-                     (quote == std::string::npos ? std::string("") : what.substr(quote) + " ") +
-                     "is too large for a double");
-  } catch (const json::parse_error& e) {
-    // Drop nlohmann's "[json.exception.parse_error.101] " prefix; the rest names line and column.
-    const std::string what = e.what();
-    const size_t end_of_tag = what.find("] ");
-    throw matbase::InputError(path + ": not valid JSON: " +
-                     (end_of_tag == std::string::npos ? what : what.substr(end_of_tag + 2)));
-  }
-}
-
 }  // namespace
 
 SceneDescription read_scene_file(const std::string& path) {
-  const json document = parse_json_file(path);
-  const SceneFileNode root(document, "", path);
+  const matbase::DocumentValue document = matbase::read_json_document(path);
+  const matbase::DocumentSource source(path, matbase::PathStyle::JsonPointer);
+  const DocumentNode root(document, source);
   root.expect_keys({"description", "camera", "lights", "background", "materials", "objects", "render"});
   const fs::path folder = fs::path(path).parent_path();
 
   SceneDescription scene;
-  if (auto description = root.find("description")) description->string();  // free text; only its type matters
+  if (auto description = root.find("description")) description->text();  // free text; only its type matters
   scene.camera = read_camera(root.required("camera"));
   scene.lights = read_lights(root.required("lights"));
   if (auto background = root.find("background")) scene.background = read_background(*background, folder);

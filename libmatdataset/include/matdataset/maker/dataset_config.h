@@ -105,6 +105,9 @@ struct Override {
   std::string key;
   std::string value;
   std::string option;
+  // A named option's value quotes its scalars only to keep each one whole ("--output 'a: b'"):
+  // each is then read as its key needs, as an unquoted YAML scalar is, and not only as text.
+  bool untyped_scalars = false;
 };
 
 // The embedded default: six built-in objects in three library materials, 2 x 4 views at 128 px.
