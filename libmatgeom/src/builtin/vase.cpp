@@ -273,10 +273,11 @@ matbase::ImagePixels glaze_metallic_roughness(uint32_t salt) {
   });
 }
 
-// Tangent-space normal map of small glaze bumps: about 5 degrees of tilt at the steepest.
+// Tangent-space normal map of small glaze bumps, noise in [0, 1] over texels a quarter apart:
+// about 5 degrees of tilt at the steepest.
 matbase::ImagePixels glaze_normal_map(uint32_t salt) {
   return normal_map_image("vase#normal", kTextureSize, [&](double u, double v) { return fractal_noise(u, v, 16, salt + 3u); },
-                          4.0);
+                          0.25);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "matbase/image/srgb.h"
 #include "matbase/image/unorm.h"
 #include "matbase/threads.h"
+#include "matmaterial/library/height_normals.h"
 
 namespace matmaterial::library {
 namespace {
@@ -121,22 +122,12 @@ FolderMaterial rasterise_recipe(const Recipe& recipe, const std::string& name, M
     const double low = *extremes.first, span = *extremes.second - low;
     matbase::ImagePixels height_map = blank_image(name + "#height", resolution, 1);
     matbase::ImagePixels normal_map = blank_image(name + "#normal", resolution, 3);
-    // Central differences over two texels of tile_size / resolution metres each; rows run down
-    // the image and v up it.
-    const double two_texels_m = 2.0 * tile_size_m / resolution;
-    const auto at = [&](int x, int y) {
-      const int wx = (x + resolution) % resolution, wy = (y + resolution) % resolution;
-      return height[static_cast<size_t>(wy) * static_cast<size_t>(resolution) + static_cast<size_t>(wx)];
-    };
+    const double texel_m = tile_size_m / resolution;
     for_each_row(resolution, workers, cancel, [&](int y) {
-      for (int x = 0; x < resolution; ++x) {
-        const size_t i = static_cast<size_t>(y) * static_cast<size_t>(resolution) + static_cast<size_t>(x);
+      const size_t row = static_cast<size_t>(y) * static_cast<size_t>(resolution);
+      for (size_t i = row; i < row + static_cast<size_t>(resolution); ++i)
         height_map.data[i] = matbase::unorm8((height[i] - low) / span);
-        const double dh_du = (at(x + 1, y) - at(x - 1, y)) / two_texels_m;
-        const double dh_dv = (at(x, y - 1) - at(x, y + 1)) / two_texels_m;
-        const glm::dvec3 n = glm::normalize(glm::dvec3(-dh_du, -dh_dv, 1.0));
-        for (int c = 0; c < 3; ++c) normal_map.data[3 * i + static_cast<size_t>(c)] = matbase::unorm8(0.5 * n[c] + 0.5);
-      }
+      normal_map_row(height, resolution, texel_m, y, &normal_map.data[3 * row]);
     });
     result.material.normal_image = static_cast<int>(result.images.size());
     result.images.push_back(std::move(normal_map));

@@ -16,13 +16,20 @@ double hash_to_unit(uint32_t x);
 // A hash of a wrapped lattice point and a salt.
 uint32_t lattice_hash(int ix, int iy, glm::ivec2 period, uint32_t salt);
 
-// Value noise in [0, 1] on a lattice of period.x x period.y cells across the tile, with
-// quintic (C2) interpolation so its normals have no creases at cell borders.
-double value_noise(glm::dvec2 uv, glm::ivec2 period, uint32_t salt);
+// How value noise blends its lattice. The library's materials use Perlin's quintic fade (C2, so
+// their normals have no creases at cell borders) between corners hashed twice. The built-in
+// vase's glaze (matgeom) was drawn with the cubic smoothstep between corners hashed once, and
+// keeps that so its images stay what they were.
+enum class ValueNoiseBlend { Quintic, CubicOnceHashed };
+
+// Value noise in [0, 1] on a lattice of period.x x period.y cells across the tile.
+double value_noise(glm::dvec2 uv, glm::ivec2 period, uint32_t salt,
+                   ValueNoiseBlend blend = ValueNoiseBlend::Quintic);
 
 // `octaves` octaves of value noise from `base_period` cells up, halving in amplitude, normalised
 // back into [0, 1]. Unequal periods along u and v stretch it into streaks.
-double fractal_noise(glm::dvec2 uv, glm::ivec2 base_period, int octaves, uint32_t salt);
+double fractal_noise(glm::dvec2 uv, glm::ivec2 base_period, int octaves, uint32_t salt,
+                     ValueNoiseBlend blend = ValueNoiseBlend::Quintic);
 
 // The same folded about its middle: 1 - |2n - 1| per octave, ridges along the zero crossings
 // (Musgrave's ridged multifractal, without the spectral weighting), in [0, 1].
