@@ -1,6 +1,18 @@
 #include "matbase/image/image_pixels.h"
 
+#include <utility>
+
 namespace matbase {
+
+ImagePixels blank_image(std::string name, int width, int height, int channels) {
+  ImagePixels image;
+  image.name = std::move(name);
+  image.width = width;
+  image.height = height;
+  image.channels = channels;
+  image.data.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * static_cast<size_t>(channels));
+  return image;
+}
 
 bool is_well_formed(const ImagePixels& image) {
   return image.width > 0 && image.height > 0 && image.channels >= 1 && image.channels <= 4 &&

@@ -3,6 +3,7 @@
 #include <exception>
 #include <set>
 
+#include "matbase/image/image_pixels.h"
 #include "matbase/image/srgb.h"
 #include "matbase/image/unorm.h"
 #include "matdataset/format/dataset_folders.h"
@@ -21,13 +22,9 @@ matbase::ImagePixels reference(const matmaterial::FolderMaterial& folder, Materi
   const matbase::ImagePixels* image =
       input.image >= 0 && static_cast<size_t>(input.image) < folder.images.size() ? &folder.images[static_cast<size_t>(input.image)]
                                                                                   : nullptr;
-  matbase::ImagePixels out;
-  out.name = matmaterial::material_parameter(parameter).name;
-  out.width = image ? image->width : kSwatch;
-  out.height = image ? image->height : kSwatch;
-  out.channels = 3;
+  matbase::ImagePixels out = matbase::blank_image(matmaterial::material_parameter(parameter).name,
+                                                  image ? image->width : kSwatch, image ? image->height : kSwatch, 3);
   const size_t texels = static_cast<size_t>(out.width) * static_cast<size_t>(out.height);
-  out.data.resize(3 * texels);
   for (size_t t = 0; t < texels; ++t)
     for (int c = 0; c < 3; ++c) {
       const double factor = input.value[colour ? c : 0];

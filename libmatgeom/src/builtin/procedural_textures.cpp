@@ -1,26 +1,19 @@
 #include "builtin/procedural_textures.h"
 
-#include "matbase/image/srgb.h"
-#include "matbase/image/unorm.h"
-#include "matmaterial/library/height_normals.h"
-
-#include <algorithm>
-#include <cmath>
 #include <utility>
 #include <vector>
+
+#include "matbase/image/unorm.h"
+#include "matmaterial/library/height_normals.h"
 
 namespace matgeom::builtin {
 
 matbase::ImagePixels rgb_image(std::string name, int size, const std::function<glm::dvec3(double, double)>& texel) {
-  matbase::ImagePixels image;
-  image.name = std::move(name);
-  image.width = image.height = size;
-  image.channels = 3;
-  image.data.reserve(static_cast<size_t>(size) * static_cast<size_t>(size) * 3);
+  matbase::ImagePixels image = matbase::blank_image(std::move(name), size, size, 3);
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x) {
       const glm::dvec3 rgb = texel((x + 0.5) / size, 1.0 - (y + 0.5) / size);
-      for (int c = 0; c < 3; ++c) image.data.push_back(matbase::unorm8(rgb[c]));
+      for (int c = 0; c < 3; ++c) image.data[3 * (static_cast<size_t>(y) * size + x) + c] = matbase::unorm8(rgb[c]);
     }
   return image;
 }
@@ -31,11 +24,7 @@ matbase::ImagePixels normal_map_image(std::string name, int size, const std::fun
   heights.reserve(static_cast<size_t>(size) * static_cast<size_t>(size));
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x) heights.push_back(height((x + 0.5) / size, 1.0 - (y + 0.5) / size));
-  matbase::ImagePixels image;
-  image.name = std::move(name);
-  image.width = image.height = size;
-  image.channels = 3;
-  image.data.resize(static_cast<size_t>(size) * static_cast<size_t>(size) * 3);
+  matbase::ImagePixels image = matbase::blank_image(std::move(name), size, size, 3);
   for (int y = 0; y < size; ++y)
     matmaterial::library::normal_map_row(heights, size, texel_size, y, &image.data[static_cast<size_t>(3 * y * size)]);
   return image;

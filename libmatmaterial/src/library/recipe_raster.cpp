@@ -39,15 +39,6 @@ void for_each_row(int rows, int threads, const std::atomic<bool>* cancel, const 
     if (error) std::rethrow_exception(error);
 }
 
-matbase::ImagePixels blank_image(std::string name, int resolution, int channels) {
-  matbase::ImagePixels image;
-  image.name = std::move(name);
-  image.width = image.height = resolution;
-  image.channels = channels;
-  image.data.resize(static_cast<size_t>(resolution) * static_cast<size_t>(resolution) * static_cast<size_t>(channels));
-  return image;
-}
-
 // Whether every texel of a map held the first texel's value, and that value.
 struct Uniformity {
   bool uniform = true;
@@ -65,10 +56,10 @@ FolderMaterial rasterise_recipe(const Recipe& recipe, const std::string& name, M
   using P = MaterialParameter;
   const int workers = matbase::worker_threads(threads);
   const size_t texels = static_cast<size_t>(resolution) * static_cast<size_t>(resolution);
-  matbase::ImagePixels base_color = blank_image(name + "#basecolor", resolution, 3);
-  matbase::ImagePixels roughness = blank_image(name + "#roughness", resolution, 1);
-  matbase::ImagePixels metallic = blank_image(name + "#metallic", resolution, 1);
-  matbase::ImagePixels opacity = blank_image(name + "#opacity", resolution, 1);
+  matbase::ImagePixels base_color = matbase::blank_image(name + "#basecolor", resolution, resolution, 3);
+  matbase::ImagePixels roughness = matbase::blank_image(name + "#roughness", resolution, resolution, 1);
+  matbase::ImagePixels metallic = matbase::blank_image(name + "#metallic", resolution, resolution, 1);
+  matbase::ImagePixels opacity = matbase::blank_image(name + "#opacity", resolution, resolution, 1);
   std::vector<double> height(texels);
   // Per row, so threads never share one: base colour, roughness, metallic, opacity, height.
   std::vector<std::array<Uniformity, 5>> row_uniformity(static_cast<size_t>(resolution));
@@ -120,8 +111,8 @@ FolderMaterial rasterise_recipe(const Recipe& recipe, const std::string& name, M
     // Named values, not a structured binding: C++17 lambdas cannot capture one (clang refuses).
     const auto extremes = std::minmax_element(height.begin(), height.end());
     const double low = *extremes.first, span = *extremes.second - low;
-    matbase::ImagePixels height_map = blank_image(name + "#height", resolution, 1);
-    matbase::ImagePixels normal_map = blank_image(name + "#normal", resolution, 3);
+    matbase::ImagePixels height_map = matbase::blank_image(name + "#height", resolution, resolution, 1);
+    matbase::ImagePixels normal_map = matbase::blank_image(name + "#normal", resolution, resolution, 3);
     const double texel_m = tile_size_m / resolution;
     for_each_row(resolution, workers, cancel, [&](int y) {
       const size_t row = static_cast<size_t>(y) * static_cast<size_t>(resolution);

@@ -17,6 +17,9 @@ struct ImagePixels {
   std::vector<uint8_t> data;
 };
 
+// A width x height image of `channels` channels, every byte 0, for a rasteriser to fill.
+ImagePixels blank_image(std::string name, int width, int height, int channels);
+
 // Positive size, 1 to 4 channels, and exactly width x height x channels bytes.
 bool is_well_formed(const ImagePixels& image);
 

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "matbase/image/image_pixels.h"
+
 namespace matgeom::gltf {
 namespace {
 
@@ -62,12 +64,10 @@ MetallicRoughnessImage metallic_roughness_image(const matmaterial::MaterialInput
   if (metallic_in_place && !roughness_image && channel_is_one(*metallic_image, gltf_channel(P::Roughness)))
     return {metallic.image, {}};
 
-  matbase::ImagePixels packed;
-  packed.name = (roughness_image ? roughness_image->name : "") + "+" + (metallic_image ? metallic_image->name : "");
-  packed.width = std::max(roughness_image ? roughness_image->width : 0, metallic_image ? metallic_image->width : 0);
-  packed.height = std::max(roughness_image ? roughness_image->height : 0, metallic_image ? metallic_image->height : 0);
-  packed.channels = 3;
-  packed.data.assign(static_cast<size_t>(packed.width) * static_cast<size_t>(packed.height) * 3, 0);
+  matbase::ImagePixels packed = matbase::blank_image(
+      (roughness_image ? roughness_image->name : "") + "+" + (metallic_image ? metallic_image->name : ""),
+      std::max(roughness_image ? roughness_image->width : 0, metallic_image ? metallic_image->width : 0),
+      std::max(roughness_image ? roughness_image->height : 0, metallic_image ? metallic_image->height : 0), 3);
   for (int y = 0; y < packed.height; ++y) {
     for (int x = 0; x < packed.width; ++x) {
       uint8_t* texel = &packed.data[(static_cast<size_t>(y) * static_cast<size_t>(packed.width) + static_cast<size_t>(x)) * 3];

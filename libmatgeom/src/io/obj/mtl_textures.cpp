@@ -4,10 +4,11 @@
 #include <cstdint>
 #include <optional>
 
+#include "io/obj/obj_loading.h"
 #include "matbase/file/file_error.h"
 #include "matbase/image/image_file.h"
+#include "matbase/image/image_pixels.h"
 #include "matbase/text.h"
-#include "io/obj/obj_loading.h"
 
 namespace matgeom::obj {
 namespace {
@@ -58,14 +59,9 @@ matbase::ImagePixels TextureTable::pack_metallic_roughness(const TextureSource* 
                            ") differ in size; they cannot be packed into one image"));
   }
   const matbase::ImagePixels& shape = roughness_source ? roughness : metallic;
-  matbase::ImagePixels packed;
-  packed.name =
-      (roughness_source ? roughness.name : "") + "+" + (metallic_source ? metallic.name : "");
-  packed.width = shape.width;
-  packed.height = shape.height;
-  packed.channels = 3;
+  matbase::ImagePixels packed = matbase::blank_image(
+      (roughness_source ? roughness.name : "") + "+" + (metallic_source ? metallic.name : ""), shape.width, shape.height, 3);
   const size_t pixel_count = static_cast<size_t>(shape.width) * static_cast<size_t>(shape.height);
-  packed.data.resize(3 * pixel_count);
   for (size_t i = 0; i < pixel_count; ++i) {
     packed.data[3 * i + 1] = roughness_source ? matbase::data_luminance(roughness, i) : 255;
     packed.data[3 * i + 2] = metallic_source ? matbase::data_luminance(metallic, i) : 255;

@@ -11,8 +11,9 @@
 
 #include <glm/glm.hpp>
 
-#include "matbase/file/file_error.h"
 #include "io/obj/mtl_placement.h"
+#include "matbase/file/file_error.h"
+#include "matbase/image/image_pixels.h"
 
 namespace matgeom::obj {
 namespace {
@@ -72,11 +73,7 @@ std::string placement_options(const matmaterial::TextureTransform& transform) {
 
 // One channel of every pixel as a grey image; grey and grey-alpha images give their grey.
 matbase::ImagePixels channel_image(const matbase::ImagePixels& image, int channel) {
-  matbase::ImagePixels grey;
-  grey.width = image.width;
-  grey.height = image.height;
-  grey.channels = 1;
-  grey.data.resize(image.data.size() / static_cast<size_t>(image.channels));
+  matbase::ImagePixels grey = matbase::blank_image("", image.width, image.height, 1);
   for (size_t i = 0; i < grey.data.size(); ++i) grey.data[i] = matbase::texel_channel(image, i, channel);
   return grey;
 }
