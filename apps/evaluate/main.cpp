@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "common/command_line.h"
 #include "common/exit_codes.h"
 #include "common/number_options.h"
 #include "common/progress_bar.h"
@@ -212,13 +213,7 @@ int main(int argc, char** argv) {
   app.add_option("--threads", o.threads, "torch and decoding threads (0: all cores; more than the machine has are capped)")
       ->check(app_support::whole_number_in(0, app_support::kMaxThreadRequest))
       ->capture_default_str();
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    // --help exits 0; a bad option is a bad input, exit 2 (CLI11's own codes run past 100).
-    const int help = app.exit(e);
-    return e.get_exit_code() == 0 ? help : app_support::kInputError;
-  }
+  if (const std::optional<int> exit_code = app_support::parse_command_line(app, argc, argv, "evaluate")) return *exit_code;
   try {
     return run(o);
   } catch (const matbase::InputError& e) {

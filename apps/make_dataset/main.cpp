@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "common/command_line.h"
 #include "common/exit_codes.h"
 #include "common/interrupt.h"
 #include "common/number_options.h"
@@ -238,11 +239,9 @@ int main(int argc, char** argv) {
   Options options;
   add_options(app, options);
   try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e);  // --help
-    return report_error(e.what(), kInputError);
-  } catch (const matbase::InputError& e) {
+    if (const std::optional<int> exit_code = app_support::parse_command_line(app, argc, argv, "make_dataset"))
+      return *exit_code;
+  } catch (const matbase::InputError& e) {  // a value an option refuses as it reads it (--grid 4)
     return report_error(e.what(), kInputError);
   }
   try {

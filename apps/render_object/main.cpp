@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "common/command_line.h"
 #include "common/exit_codes.h"
 #include "common/interrupt.h"
 #include "matbase/cancellation.h"
@@ -129,12 +130,7 @@ int main(int argc, char** argv) {
              "1 render or write failure, 2 bad option or input, 130 or 143 interrupted by Ctrl-C or SIGTERM (nothing is written).");
   Options options;
   add_options(app, options);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e);  // --help
-    return report_error(e.what(), kInputError);
-  }
+  if (const std::optional<int> exit_code = app_support::parse_command_line(app, argc, argv, "render_object")) return *exit_code;
 
   try {
     if (options.list_objects) {

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "common/command_line.h"
 #include "common/exit_codes.h"
 #include "common/interrupt.h"
 #include "common/number_options.h"
@@ -171,13 +172,8 @@ int main(int argc, char** argv) {
       "train_regressor"};
   Options options;
   add_options(app, options);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    // --help exits 0; a bad option is a bad input, exit 2 (CLI11's own codes run past 100).
-    const int help = app.exit(e);
-    return e.get_exit_code() == 0 ? help : app_support::kInputError;
-  }
+  if (const std::optional<int> exit_code = app_support::parse_command_line(app, argc, argv, "train_regressor"))
+    return *exit_code;
   try {
     return train(options, /*example=*/argc == 1);
   } catch (const matbase::InputError& e) {
