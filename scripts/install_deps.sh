@@ -2,9 +2,10 @@
 # Installs exactly the Debian 12 packages matpredict builds and tests with.
 set -euo pipefail
 
-# What the CMake build finds (cmake/MatpredictDependencies.cmake), and the toolchain; the tests'
-# independent references (Python's scikit-image, Pillow, torchvision; a real browser for
-# make_dataset's preview page).
+# What the CMake build finds (cmake/MatpredictDependencies.cmake, MatpredictPython.cmake), and the
+# toolchain; the Python package's build and tests (pybind11, numpy, pytest); the tests'
+# independent references (Python's scikit-image, Pillow, torchvision, OpenImageIO's EXR reader; a
+# real browser for make_dataset's preview page).
 packages=(
   build-essential cmake ninja-build pkg-config
   libembree-dev libtbb-dev libglm-dev libeigen3-dev
@@ -13,6 +14,7 @@ packages=(
   libtorch-dev libopenblas0-openmp zlib1g-dev
   catch2
   python3-skimage python3-pil python3-torch python3-torchvision
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-openimageio
   chromium
 )
 # Blender 3.4 is a reference for the optional tests against Cycles, never a build dependency.

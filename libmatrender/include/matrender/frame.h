@@ -107,4 +107,13 @@ struct FrameBuffers {
   static double bytes_for(int w, int h, uint32_t aov_mask);
 };
 
+// One buffer of a frame: the colour's (AOV bit 0) or an AOV's, float or int32, with its channels
+// per pixel; the pointer of the other type is null.
+struct FrameBufferView {
+  std::vector<float>* floats = nullptr;
+  std::vector<int32_t>* ints = nullptr;
+  int channels = 0;
+};
+FrameBufferView frame_buffer(FrameBuffers& frame, uint32_t aov_bit);
+
 }  // namespace matrender

@@ -1,6 +1,7 @@
 #include "matrender/frame.h"
 
 #include <cstddef>
+#include <type_traits>
 
 namespace matrender {
 namespace {
@@ -66,6 +67,17 @@ void FrameBuffers::resize(int w, int h, uint32_t aov_mask) {
   visit_buffers(*this, [&](auto& buffer, uint32_t aov, std::size_t channels, auto fill) {
     buffer.assign(aov == kAlways || (aov_mask & aov) ? n * channels : 0, fill);
   });
+}
+
+FrameBufferView frame_buffer(FrameBuffers& frame, uint32_t aov_bit) {
+  FrameBufferView view;
+  visit_buffers(frame, [&](auto& buffer, uint32_t aov, std::size_t channels, auto fill) {
+    if (aov != aov_bit) return;
+    if constexpr (std::is_same_v<decltype(fill), float>) view.floats = &buffer;
+    else view.ints = &buffer;
+    view.channels = static_cast<int>(channels);
+  });
+  return view;
 }
 
 double FrameBuffers::bytes_for(int w, int h, uint32_t aov_mask) {

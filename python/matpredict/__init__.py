@@ -1,0 +1,14 @@
+"""matpredict from Python: render material scenes to numpy arrays.
+
+    import matpredict
+    scene = matpredict.load_scene("scene.json")
+    frame = matpredict.render(scene, spp=64, aovs="all")
+    frame["color"].shape, frame["roughness"].dtype   # (H, W, 3), float32
+
+Every array is (height, width, channels), row 0 at the top; see help(matpredict.render) for each
+one's dtype, colour space and frame. Errors in a scene file raise matpredict.InputError (a
+ValueError) naming the file, the JSON pointer and the problem.
+"""
+from ._core import InputError, Scene, aov_names, load_scene, render
+
+__all__ = ["InputError", "Scene", "aov_names", "load_scene", "render"]

@@ -1,0 +1,38 @@
+"""Type stubs of matpredict's extension module."""
+from typing import Callable, Dict, List, Optional, Sequence, Union
+
+import numpy as np
+import numpy.typing as npt
+
+class InputError(ValueError):
+    """A bad file, key or value; the message names the file, the JSON pointer or key, and the problem."""
+
+class Scene:
+    """A scene loaded and built, ready to render (load_scene)."""
+    @property
+    def width(self) -> int: ...
+    @property
+    def height(self) -> int: ...
+    @property
+    def spp(self) -> int: ...
+    @property
+    def seed(self) -> int: ...
+    @property
+    def exposure_stops(self) -> float: ...
+
+def load_scene(path: str) -> Scene:
+    """Reads a JSON scene file (docs/scene_format.md) and builds it."""
+
+def render(
+    scene: Scene,
+    *,
+    spp: Optional[int] = None,
+    seed: Optional[int] = None,
+    threads: int = 0,
+    aovs: Union[None, str, Sequence[str]] = None,
+    progress: Optional[Callable[[float], object]] = None,
+) -> Dict[str, npt.NDArray[Union[np.float32, np.int32]]]:
+    """Renders the scene; a dict of (height, width, channels) arrays: 'color' and the AOVs asked for."""
+
+def aov_names() -> List[str]:
+    """Every AOV's name, in the order render() returns them."""

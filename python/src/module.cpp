@@ -1,0 +1,11 @@
+// matpredict._core: the extension the matpredict package (python/matpredict/__init__.py) exports.
+#include <pybind11/pybind11.h>
+
+#include "python_errors.h"
+#include "render_bindings.h"
+
+PYBIND11_MODULE(_core, module) {
+  module.doc() = "matpredict's libraries from Python: rendering to numpy arrays.";
+  matpredict_python::bind_errors(module);
+  matpredict_python::bind_render(module);
+}

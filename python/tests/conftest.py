@@ -1,0 +1,32 @@
+"""Fixtures of the Python package's tests: small scene files, written where each test runs."""
+import json
+import os
+
+import pytest
+
+# The render_object binary and the example scenes, from the CMake build (python/CMakeLists.txt).
+RENDER_OBJECT = os.environ.get("MATPREDICT_RENDER_OBJECT", "")
+EXAMPLES = os.environ.get("MATPREDICT_EXAMPLES", "")
+
+
+def write_scene(folder, width=48, height=36, spp=4, **render):
+    """The built-in vase under the sun and a soft lamp, small enough to render in a blink."""
+    scene = {
+        "camera": {"position": [0.9, -0.9, 0.45], "look_at": [0, 0, 0.15], "width": width, "height": height},
+        "background": [0.05, 0.06, 0.08],
+        "lights": [
+            {"type": "sun", "position": [2, -1, 1], "look_at": [0, 0, 0], "strength": 4, "angle_deg": 3},
+            {"type": "point", "position": [-0.6, -0.8, 0.5], "power": 8, "radius": 0.2},
+        ],
+        "objects": [{"builtin": "vase"}],
+        "render": {"spp": spp, **render},
+    }
+    path = os.path.join(folder, "scene.json")
+    with open(path, "w") as f:
+        json.dump(scene, f)
+    return path
+
+
+@pytest.fixture
+def small_scene(tmp_path):
+    return write_scene(str(tmp_path))

@@ -1,0 +1,163 @@
+"""matpredict.render: the CLI's images bit for bit, arrays as documented, Python free to run."""
+import gc
+import os
+import signal
+import subprocess
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import matpredict
+from conftest import EXAMPLES, RENDER_OBJECT, write_scene
+
+
+def read_exr(path):
+    """An EXR as OpenImageIO reads it, (height, width, channels) float32: the reference reader."""
+    import OpenImageIO as oiio
+
+    image = oiio.ImageInput.open(path)
+    assert image is not None, oiio.geterror()
+    pixels = image.read_image(format="float")
+    image.close()
+    return pixels
+
+
+INT_AOVS = {"label", "part_id", "sample_count"}
+
+
+def test_render_equals_the_cli_bit_for_bit(tmp_path, small_scene):
+    out = tmp_path / "cli"
+    subprocess.run([RENDER_OBJECT, "--scene", small_scene, "--aovs", "all", "--output", str(out), "--threads", "2"],
+                   check=True, stdout=subprocess.DEVNULL)
+    frame = matpredict.render(matpredict.load_scene(small_scene), aovs="all", threads=1)
+    assert set(frame) == {"color"} | set(matpredict.aov_names())
+    compared = 0
+    for name, array in frame.items():
+        exr = out / f"view_{name}.exr"
+        if name == "alpha":  # written as a PNG only
+            continue
+        reference = read_exr(str(exr))
+        if name == "color":
+            np.testing.assert_array_equal(reference[:, :, 3], 1.0)  # opaque background
+            reference = reference[:, :, :3]
+        expected = array.astype(np.float32) if name in INT_AOVS else array
+        assert reference.shape == expected.shape, name
+        assert np.array_equal(reference, expected), name
+        compared += 1
+    assert compared == len(frame) - 1
+
+
+def test_arrays_have_the_documented_shapes_dtypes_and_owner(small_scene):
+    scene = matpredict.load_scene(small_scene)
+    assert (scene.width, scene.height, scene.spp) == (48, 36, 4)
+    frame = matpredict.render(scene, aovs="all")
+    channels = {"color": 3, "base_color": 3, "normal_world": 3, "normal_camera": 3, "normal_tangent": 3,
+                "roughness": 1, "metallic": 1, "depth": 1, "alpha": 1, "label": 1, "part_id": 1}
+    for name, c in channels.items():
+        assert frame[name].shape == (36, 48, c), name
+    for name, array in frame.items():
+        assert array.dtype == (np.int32 if name in INT_AOVS else np.float32), name
+        assert array.flags.c_contiguous and array.flags.aligned, name
+        assert np.all(np.isfinite(array)), name
+    # The arrays view one frame's buffers, which outlive the scene and the dict.
+    depth = frame["depth"]
+    assert depth.base is not None and not depth.flags.owndata
+    expected = depth.copy()
+    del scene, frame
+    gc.collect()
+    np.testing.assert_array_equal(depth, expected)
+    # Hits have a depth and unit normals; misses are 0 and part -1.
+    hit = depth[:, :, 0] > 0
+    assert 0 < hit.sum() < hit.size
+
+
+def test_the_image_is_the_same_whatever_the_threads(small_scene):
+    scene = matpredict.load_scene(small_scene)
+    one = matpredict.render(scene, threads=1, seed=7)
+    two = matpredict.render(scene, threads=2, seed=7)
+    for name in one:
+        assert np.array_equal(one[name], two[name]), name
+    other_seed = matpredict.render(scene, threads=2, seed=8)
+    assert not np.array_equal(one["color"], other_seed["color"])
+
+
+def test_progress_is_reported_on_the_calling_thread(small_scene):
+    fractions, threads = [], set()
+
+    def progress(fraction):
+        fractions.append(fraction)
+        threads.add(threading.get_ident())
+
+    matpredict.render(matpredict.load_scene(small_scene), spp=64, progress=progress)
+    assert fractions and fractions[-1] == 1.0
+    assert fractions == sorted(fractions)
+    assert threads == {threading.get_ident()}
+
+
+def test_the_gil_is_released_while_rendering(tmp_path):
+    scene = matpredict.load_scene(write_scene(str(tmp_path), width=96, height=96, spp=256))
+    counted, stop = [0], threading.Event()
+
+    def count():
+        while not stop.is_set():
+            counted[0] += 1
+
+    counter = threading.Thread(target=count)
+    counter.start()
+    started = time.monotonic()
+    matpredict.render(scene, threads=1)
+    seconds = time.monotonic() - started
+    stop.set()
+    counter.join()
+    # Holding the GIL, the render would leave the counter a 5 ms switch interval now and then; a
+    # released GIL lets it count all along (millions a second).
+    assert seconds > 0.2
+    assert counted[0] > 100_000 * seconds
+
+
+def test_ctrl_c_stops_a_render_within_a_second(tmp_path):
+    scene = matpredict.load_scene(write_scene(str(tmp_path), spp=65535))
+    timer = threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    started = time.monotonic()
+    with pytest.raises(KeyboardInterrupt):
+        matpredict.render(scene, threads=1)
+    assert time.monotonic() - started < 1.5  # 0.5 s before the signal, then at most a second
+    timer.join()
+
+
+def test_an_exception_in_the_progress_callback_stops_the_render(small_scene):
+    def progress(fraction):
+        raise RuntimeError("enough")
+
+    with pytest.raises(RuntimeError, match="enough"):
+        matpredict.render(matpredict.load_scene(small_scene), spp=4096, progress=progress)
+
+
+def test_bad_input_raises_clear_exceptions(tmp_path, small_scene):
+    with pytest.raises(matpredict.InputError, match="no_such.json"):
+        matpredict.load_scene(str(tmp_path / "no_such.json"))
+    broken = tmp_path / "broken.json"
+    broken.write_text(open(small_scene).read().replace('"spp": 4', '"spp": "4"'))
+    with pytest.raises(matpredict.InputError, match=r"broken\.json: /render/spp: expected a whole number"):
+        matpredict.load_scene(str(broken))
+    assert issubclass(matpredict.InputError, ValueError)
+    scene = matpredict.load_scene(small_scene)
+    with pytest.raises(ValueError, match='unknown AOV "roughnes"'):
+        matpredict.render(scene, aovs=["roughnes"])
+    with pytest.raises(ValueError, match="spp"):
+        matpredict.render(scene, spp=0)
+    with pytest.raises(TypeError):
+        matpredict.render(scene, spp="many")
+    with pytest.raises(TypeError, match="progress"):
+        matpredict.render(scene, progress=5)
+    with pytest.raises(TypeError):
+        matpredict.render("scene.json")
+
+
+def test_an_example_scene_loads_as_the_cli_reads_it():
+    scene = matpredict.load_scene(os.path.join(EXAMPLES, "vase_in_the_sun.json"))
+    assert (scene.width, scene.height, scene.spp) == (256, 256, 64)
+    assert repr(scene) == "<matpredict.Scene 256x256>"
