@@ -6,9 +6,15 @@
     frame["color"].shape, frame["roughness"].dtype   # (H, W, 3), float32
 
 Every array is (height, width, channels), row 0 at the top; see help(matpredict.render) for each
-one's dtype, colour space and frame. Errors in a scene file raise matpredict.InputError (a
+one's dtype, colour space and frame. The paper's eight image metrics take numpy arrays too:
+
+    matpredict.ssim(truth, prediction, data_range=1.0, mask=object_mask)
+    matpredict.score_map(truth, prediction, mask=object_mask)   # {"RMSE": ..., "PSNR": ..., ...}
+ Errors in a scene file raise matpredict.InputError (a
 ValueError) naming the file, the JSON pointer and the problem.
 """
-from ._core import InputError, Scene, aov_names, load_scene, render
+from ._core import (InputError, Scene, aov_names, fsim, issm, load_scene, psnr, render, rmse, sam_degrees, score_map, sre,
+                    ssim, uiq)
 
-__all__ = ["InputError", "Scene", "aov_names", "load_scene", "render"]
+__all__ = ["InputError", "Scene", "aov_names", "fsim", "issm", "load_scene", "psnr", "render", "rmse", "sam_degrees",
+           "score_map", "sre", "ssim", "uiq"]

@@ -1,11 +1,13 @@
 // matpredict._core: the extension the matpredict package (python/matpredict/__init__.py) exports.
 #include <pybind11/pybind11.h>
 
+#include "metric_bindings.h"
 #include "python_errors.h"
 #include "render_bindings.h"
 
 PYBIND11_MODULE(_core, module) {
-  module.doc() = "matpredict's libraries from Python: rendering to numpy arrays.";
+  module.doc() = "matpredict's libraries from Python: rendering to numpy arrays, the image metrics.";
   matpredict_python::bind_errors(module);
   matpredict_python::bind_render(module);
+  matpredict_python::bind_metrics(module);
 }
