@@ -10,11 +10,14 @@ one's dtype, colour space and frame. The paper's eight image metrics take numpy 
 
     matpredict.ssim(truth, prediction, data_range=1.0, mask=object_mask)
     matpredict.score_map(truth, prediction, mask=object_mask)   # {"RMSE": ..., "PSNR": ..., ...}
+
+and datasets are read as dicts of arrays (matpredict.DatasetReader), or as a torch Dataset
+(matpredict.torch_data.MaterialDataset, which imports torch).
  Errors in a scene file raise matpredict.InputError (a
 ValueError) naming the file, the JSON pointer and the problem.
 """
-from ._core import (InputError, Scene, aov_names, fsim, issm, load_scene, psnr, render, rmse, sam_degrees, score_map, sre,
-                    ssim, uiq)
+from ._core import (DatasetError, DatasetReader, InputError, Scene, aov_names, fsim, issm, load_scene, psnr, render,
+                    rmse, sam_degrees, score_map, sre, ssim, uiq, verify_dataset)
 
-__all__ = ["InputError", "Scene", "aov_names", "fsim", "issm", "load_scene", "psnr", "render", "rmse", "sam_degrees",
-           "score_map", "sre", "ssim", "uiq"]
+__all__ = ["DatasetError", "DatasetReader", "InputError", "Scene", "aov_names", "fsim", "issm", "load_scene", "psnr",
+           "render", "rmse", "sam_degrees", "score_map", "sre", "ssim", "uiq", "verify_dataset"]

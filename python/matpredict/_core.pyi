@@ -7,6 +7,23 @@ import numpy.typing as npt
 class InputError(ValueError):
     """A bad file, key or value; the message names the file, the JSON pointer or key, and the problem."""
 
+class DatasetError(InputError):
+    """A dataset's file missing, unreadable or refused; the message names it."""
+
+class DatasetReader:
+    """The samples of a MatPredict dataset, each a dict of numpy arrays."""
+    def __init__(self, root: str, *, size: int = 224, linear_albedo: bool = False, read_normal: bool = False,
+                 split_file: Optional[str] = None, split: str = "train") -> None: ...
+    def __len__(self) -> int: ...
+    def __getitem__(self, index: int) -> Dict[str, object]: ...
+    @property
+    def ids(self) -> List[str]: ...
+    @property
+    def root(self) -> str: ...
+
+def verify_dataset(root: str) -> Dict[str, object]:
+    """{'variants': int, 'frames': int, 'problems': List[str]}"""
+
 class Scene:
     """A scene loaded and built, ready to render (load_scene)."""
     @property

@@ -1,13 +1,15 @@
 // matpredict._core: the extension the matpredict package (python/matpredict/__init__.py) exports.
 #include <pybind11/pybind11.h>
 
+#include "dataset_bindings.h"
 #include "metric_bindings.h"
 #include "python_errors.h"
 #include "render_bindings.h"
 
 PYBIND11_MODULE(_core, module) {
-  module.doc() = "matpredict's libraries from Python: rendering to numpy arrays, the image metrics.";
+  module.doc() = "matpredict's libraries from Python: rendering to numpy arrays, the image metrics, datasets.";
   matpredict_python::bind_errors(module);
   matpredict_python::bind_render(module);
   matpredict_python::bind_metrics(module);
+  matpredict_python::bind_datasets(module);
 }

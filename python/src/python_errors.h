@@ -5,7 +5,8 @@
 namespace matpredict_python {
 
 // matpredict.InputError, a ValueError: a bad file, key or value, with the library's message
-// (the file, the JSON pointer or key, the problem). Other std exceptions become pybind11's usual
+// (the file, the JSON pointer or key, the problem); matpredict.DatasetError, an InputError: a
+// dataset's file missing or unreadable, named. Other std exceptions become pybind11's usual
 // RuntimeError or ValueError, an interrupted render KeyboardInterrupt.
 void bind_errors(pybind11::module_& module);
 

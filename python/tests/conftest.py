@@ -1,11 +1,13 @@
 """Fixtures of the Python package's tests: small scene files, written where each test runs."""
 import json
 import os
+import subprocess
 
 import pytest
 
 # The render_object binary and the example scenes, from the CMake build (python/CMakeLists.txt).
 RENDER_OBJECT = os.environ.get("MATPREDICT_RENDER_OBJECT", "")
+MAKE_DATASET = os.environ.get("MATPREDICT_MAKE_DATASET", "")
 EXAMPLES = os.environ.get("MATPREDICT_EXAMPLES", "")
 
 
@@ -30,3 +32,13 @@ def write_scene(folder, width=48, height=36, spp=4, **render):
 @pytest.fixture
 def small_scene(tmp_path):
     return write_scene(str(tmp_path))
+
+
+@pytest.fixture(scope="module")
+def tiny_dataset(tmp_path_factory):
+    """Two variants of the vase (two library materials) from two views at 32 px, by make_dataset."""
+    root = tmp_path_factory.mktemp("dataset") / "out"
+    subprocess.run([MAKE_DATASET, "--objects", "vase", "--materials", "wood/raw:1,metal/brushed:2", "--grid", "1x2",
+                    "--resolution", "32x32", "--spp", "2", "--output", str(root), "--threads", "2"],
+                   check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    return str(root)
