@@ -17,7 +17,7 @@ and datasets are read as dicts of arrays (matpredict.DatasetReader), or as a tor
 ValueError) naming the file, the JSON pointer and the problem.
 """
 from ._core import (DatasetError, DatasetReader, InputError, Scene, aov_names, fsim, issm, load_scene, psnr, render,
-                    rmse, sam_degrees, score_map, sre, ssim, uiq, verify_dataset)
+                    make_dataset, rmse, sam_degrees, score_map, sre, ssim, uiq, verify_dataset)
 
-__all__ = ["DatasetError", "DatasetReader", "InputError", "Scene", "aov_names", "fsim", "issm", "load_scene", "psnr",
-           "render", "rmse", "sam_degrees", "score_map", "sre", "ssim", "uiq", "verify_dataset"]
+__all__ = ["DatasetError", "DatasetReader", "InputError", "Scene", "aov_names", "fsim", "issm", "load_scene",
+           "make_dataset", "psnr", "render", "rmse", "sam_degrees", "score_map", "sre", "ssim", "uiq", "verify_dataset"]

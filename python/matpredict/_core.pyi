@@ -21,6 +21,10 @@ class DatasetReader:
     @property
     def root(self) -> str: ...
 
+def make_dataset(configuration: Dict[str, object], *, output: Optional[str] = None, threads: int = 0,
+                 shard: str = "0/1", progress: Optional[Callable[[int, int], object]] = None) -> Dict[str, object]:
+    """Renders the dataset the configuration describes (make_dataset's YAML keys); resumable."""
+
 def verify_dataset(root: str) -> Dict[str, object]:
     """{'variants': int, 'frames': int, 'problems': List[str]}"""
 

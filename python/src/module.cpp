@@ -2,6 +2,7 @@
 #include <pybind11/pybind11.h>
 
 #include "dataset_bindings.h"
+#include "dataset_maker_bindings.h"
 #include "metric_bindings.h"
 #include "python_errors.h"
 #include "render_bindings.h"
@@ -12,4 +13,5 @@ PYBIND11_MODULE(_core, module) {
   matpredict_python::bind_render(module);
   matpredict_python::bind_metrics(module);
   matpredict_python::bind_datasets(module);
+  matpredict_python::bind_dataset_maker(module);
 }

@@ -1,5 +1,6 @@
 #include "render_bindings.h"
 
+#include <atomic>
 #include <memory>
 #include <optional>
 #include <string>
@@ -9,10 +10,10 @@
 #include <pybind11/stl.h>
 
 #include "frame_arrays.h"
-#include "matbase/input_error.h"
+#include "matrender/render.h"
 #include "matrender/scene_builder.h"
 #include "matrender/scene_file.h"
-#include "render_releasing_gil.h"
+#include "releasing_gil.h"
 
 namespace matpredict_python {
 namespace {
@@ -69,8 +70,18 @@ py::dict render(LoadedScene& scene, std::optional<int> spp, std::optional<uint32
   settings.aovs = aov_mask(aovs, settings.aovs);
   if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
     throw py::type_error("progress: expected None or a callable taking the finished fraction");
+  std::atomic<bool> cancel{false};
+  std::atomic<double> fraction{0.0};
+  settings.cancel = &cancel;
+  settings.progress = [&fraction](double f) { fraction.store(f); };
   matrender::FrameBuffers frame;
-  render_releasing_gil(scene.built.scene, scene.built.camera, settings, frame, progress);
+  double reported = -1.0;
+  run_releasing_gil([&] { matrender::render(scene.built.scene, scene.built.camera, settings, frame); }, cancel, [&] {
+    if (const double f = fraction.load(); !progress.is_none() && f != reported) {
+      reported = f;
+      progress(f);
+    }
+  });
   return frame_arrays(std::move(frame));
 }
 
