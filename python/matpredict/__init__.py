@@ -12,7 +12,10 @@ one's dtype, colour space and frame. The paper's eight image metrics take numpy 
     matpredict.score_map(truth, prediction, mask=object_mask)   # {"RMSE": ..., "PSNR": ..., ...}
 
 and datasets are read as dicts of arrays (matpredict.DatasetReader), or as a torch Dataset
-(matpredict.torch_data.MaterialDataset, which imports torch).
+(matpredict.torch_data.MaterialDataset, which imports torch). A trained checkpoint predicts maps:
+
+    model = matpredict.load_model("train_output/checkpoints/best.pt")   # loads libtorch
+    maps = model.predict(sample["input"])                               # {"base_color": ..., ...}
  Errors in a scene file raise matpredict.InputError (a
 ValueError) naming the file, the JSON pointer and the problem.
 """
@@ -21,3 +24,18 @@ from ._core import (DatasetError, DatasetReader, InputError, Scene, aov_names, f
 
 __all__ = ["DatasetError", "DatasetReader", "InputError", "Scene", "aov_names", "fsim", "issm", "load_scene",
            "make_dataset", "psnr", "render", "rmse", "sam_degrees", "score_map", "sre", "ssim", "uiq", "verify_dataset"]
+
+
+# The trained networks load libtorch, so their module is imported when first asked for.
+_LEARN = ("Model", "load_model")
+
+
+def __getattr__(name):
+    if name in _LEARN:
+        from . import _learn
+        return getattr(_learn, name)
+    raise AttributeError(f"module 'matpredict' has no attribute '{name}'")
+
+
+def __dir__():
+    return sorted(list(globals()) + list(_LEARN))

@@ -8,6 +8,8 @@ import pytest
 # The render_object binary and the example scenes, from the CMake build (python/CMakeLists.txt).
 RENDER_OBJECT = os.environ.get("MATPREDICT_RENDER_OBJECT", "")
 MAKE_DATASET = os.environ.get("MATPREDICT_MAKE_DATASET", "")
+TRAIN_REGRESSOR = os.environ.get("MATPREDICT_TRAIN_REGRESSOR", "")
+EVALUATE = os.environ.get("MATPREDICT_EVALUATE", "")
 EXAMPLES = os.environ.get("MATPREDICT_EXAMPLES", "")
 
 

@@ -1,0 +1,67 @@
+"""A trained checkpoint from Python: the maps evaluate --image writes, and refusals naming the file."""
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+from PIL import Image
+
+import matpredict
+from conftest import EVALUATE, TRAIN_REGRESSOR
+
+
+@pytest.fixture(scope="module")
+def checkpoint(tiny_dataset, tmp_path_factory):
+    """One epoch of the quarter-width UNet on the tiny dataset at its own 32 px."""
+    out = tmp_path_factory.mktemp("training")
+    subprocess.run([TRAIN_REGRESSOR, "--dataset-root", tiny_dataset, "--width-divisor", "4", "--image-size", "32",
+                    "--epochs", "1", "--threads", "2", "--output-dir", str(out)],
+                   check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    return str(out / "checkpoints" / "last.pt")
+
+
+def test_importing_matpredict_does_not_load_libtorch():
+    code = "import sys, matpredict; sys.exit('matpredict._learn' in sys.modules)"
+    assert subprocess.run([sys.executable, "-c", code]).returncode == 0
+
+
+def test_a_checkpoint_predicts_the_maps_evaluate_writes(checkpoint, tiny_dataset, tmp_path):
+    model = matpredict.load_model(checkpoint)
+    assert (model.network, model.image_size, model.epochs_done) == ("unet_no_skip", 32, 1)
+    assert model.outputs == ["base_color", "roughness"]
+    frame = os.path.join(tiny_dataset, "vase", "var001")
+    image, mask = os.path.join(frame, "images", "001.png"), os.path.join(frame, "label", "001.png")
+    subprocess.run([EVALUATE, "--checkpoint", checkpoint, "--image", image, "--mask", mask, "--output-dir",
+                    str(tmp_path)], check=True, stdout=subprocess.DEVNULL)
+    rgb = np.asarray(Image.open(image).convert("RGB"), dtype=np.float32) / 255
+    maps = model.predict(rgb)
+    assert list(maps) == model.outputs
+    # The default layout predicts roughness in three channels, as the repository's networks do.
+    assert maps["base_color"].shape == (32, 32, 3) and maps["roughness"].shape == (32, 32, 3)
+    on = np.asarray(Image.open(mask)) > 0
+    for name, predicted in maps.items():
+        assert predicted.dtype == np.float32 and np.all((0 <= predicted) & (predicted <= 1))
+        written = np.asarray(Image.open(tmp_path / f"{name}.png").convert("RGB"), dtype=np.float32) / 255
+        expected = np.broadcast_to(predicted, written.shape) if predicted.shape[2] == 1 else predicted
+        # evaluate's PNG holds each value rounded to 8 bits, black off the object.
+        assert np.abs(written[on] - expected[on]).max() <= 0.5 / 255 + 1e-6, name
+    # The same image again gives the same maps: inference is deterministic.
+    again = model.predict(rgb)
+    assert all(np.array_equal(maps[name], again[name]) for name in maps)
+
+
+def test_bad_checkpoints_and_images_raise_clear_errors(checkpoint, tmp_path):
+    with pytest.raises(matpredict.InputError, match="no_such.pt"):
+        matpredict.load_model(str(tmp_path / "no_such.pt"))
+    damaged = tmp_path / "damaged.pt"
+    data = bytearray(open(checkpoint, "rb").read())
+    data[len(data) // 2] ^= 0xFF
+    damaged.write_bytes(bytes(data))
+    with pytest.raises(matpredict.InputError, match="damaged.pt"):
+        matpredict.load_model(str(damaged))
+    model = matpredict.load_model(checkpoint)
+    with pytest.raises(ValueError, match=r"image: expected \(32, 32, 3\)"):
+        model.predict(np.zeros((64, 64, 3), dtype=np.float32))
+    with pytest.raises(TypeError):
+        model.predict(np.full((32, 32, 3), "x"))
