@@ -1,4 +1,5 @@
 """Type stubs of matpredict's extension module."""
+import os
 from typing import Callable, Dict, List, Optional, Sequence, Union
 
 import numpy as np
@@ -41,8 +42,8 @@ class Scene:
     @property
     def exposure_stops(self) -> float: ...
 
-def load_scene(path: str) -> Scene:
-    """Reads a JSON scene file (docs/scene_format.md) and builds it."""
+def load_scene(scene: Union[str, "os.PathLike[str]", Dict[str, object]]) -> Scene:
+    """Reads a JSON scene file (docs/scene_format.md), or a dict with its keys, and builds it."""
 
 def render(
     scene: Scene,

@@ -1,6 +1,7 @@
 #include "render_bindings.h"
 
 #include <atomic>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -26,9 +27,18 @@ struct LoadedScene {
   matrender::BuiltScene built;
 };
 
-std::unique_ptr<LoadedScene> load_scene(const std::string& path) {
+// Where a scene dict's errors point: "the scene: /render/spp: ...".
+constexpr const char* kSceneSource = "the scene";
+
+// A scene file's path, or a dict with its keys (relative paths from the current folder).
+std::unique_ptr<LoadedScene> load_scene(const py::object& scene_or_path) {
   auto scene = std::make_unique<LoadedScene>();
-  scene->description = matrender::read_scene_file(path);
+  if (py::isinstance<py::dict>(scene_or_path)) {
+    const std::string json = py::module_::import("json").attr("dumps")(scene_or_path).cast<std::string>();
+    scene->description = matrender::read_scene_text(json, kSceneSource, std::filesystem::current_path().string());
+  } else {
+    scene->description = matrender::read_scene_file(py::str(py::module_::import("os").attr("fspath")(scene_or_path)));
+  }
   py::gil_scoped_release release;  // loading meshes and textures needs no Python
   scene->built = matrender::build_scene(scene->description);
   return scene;
@@ -101,10 +111,10 @@ void bind_render(py::module_& module) {
         return "<matpredict.Scene " + std::to_string(s.built.camera.width) + "x" + std::to_string(s.built.camera.height) + ">";
       });
 
-  module.def("load_scene", &load_scene, py::arg("path"),
-             "Reads a JSON scene file (docs/scene_format.md) and builds it: meshes, textures and materials\n"
-             "loaded, the BVH built. Raises matpredict.InputError naming the file, the JSON pointer and the\n"
-             "problem.");
+  module.def("load_scene", &load_scene, py::arg("scene"),
+             "Reads a JSON scene file (docs/scene_format.md), or a dict with the same keys (relative paths\n"
+             "from the current folder), and builds it: meshes, textures and materials loaded, the BVH built.\n"
+             "Raises matpredict.InputError naming the file (or 'the scene'), the JSON pointer and the problem.");
   module.def("render", &render, py::arg("scene"), py::kw_only(), py::arg("spp") = py::none(),
              py::arg("seed") = py::none(), py::arg("threads") = 0, py::arg("aovs") = py::none(),
              py::arg("progress") = py::none(),

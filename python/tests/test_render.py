@@ -161,3 +161,18 @@ def test_an_example_scene_loads_as_the_cli_reads_it():
     scene = matpredict.load_scene(os.path.join(EXAMPLES, "vase_in_the_sun.json"))
     assert (scene.width, scene.height, scene.spp) == (256, 256, 64)
     assert repr(scene) == "<matpredict.Scene 256x256>"
+
+
+def test_a_dict_with_the_scene_files_keys_is_the_same_scene(small_scene):
+    import json
+
+    with open(small_scene) as f:
+        description = json.load(f)
+    from_dict = matpredict.render(matpredict.load_scene(description), aovs="all")
+    from_file = matpredict.render(matpredict.load_scene(small_scene), aovs="all")
+    assert all(np.array_equal(from_dict[name], from_file[name]) for name in from_file)
+    description["objects"][0]["builtin"] = "sofa2"
+    with pytest.raises(matpredict.InputError, match='the scene: /objects/0/builtin: expected one of "basket"'):
+        matpredict.load_scene(description)
+    with pytest.raises(TypeError):
+        matpredict.load_scene(42)

@@ -10,5 +10,8 @@ namespace matrender {
 // Throws matbase::InputError naming the file and the JSON pointer of the offending value, e.g.
 // "scene.json: /objects/1/transform/scale: expected a positive number".
 SceneDescription read_scene_file(const std::string& path);
+// The same from JSON text: `source` names it in errors ("the scene: /render/spp: ..."), and its
+// relative paths resolve against `folder`.
+SceneDescription read_scene_text(const std::string& json, const std::string& source, const std::string& folder);
 
 }  // namespace matrender

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <sstream>
 
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -501,13 +502,12 @@ void read_render(const DocumentNode& node, SceneDescription& scene) {
 
 }  // namespace
 
-SceneDescription read_scene_file(const std::string& path) {
-  const matbase::DocumentValue document = matbase::read_json_document(path);
-  const matbase::DocumentSource source(path, matbase::PathStyle::JsonPointer);
+namespace {
+
+SceneDescription read_scene(const matbase::DocumentValue& document, const std::string& source_name, const fs::path& folder) {
+  const matbase::DocumentSource source(source_name, matbase::PathStyle::JsonPointer);
   const DocumentNode root(document, source);
   root.expect_keys({"description", "camera", "lights", "background", "materials", "objects", "render"});
-  const fs::path folder = fs::path(path).parent_path();
-
   SceneDescription scene;
   if (auto description = root.find("description")) description->text();  // free text; only its type matters
   scene.camera = read_camera(root.required("camera"));
@@ -517,6 +517,17 @@ SceneDescription read_scene_file(const std::string& path) {
   scene.objects = read_objects(root.required("objects"), folder, scene.materials);
   if (auto render = root.find("render")) read_render(*render, scene);
   return scene;
+}
+
+}  // namespace
+
+SceneDescription read_scene_file(const std::string& path) {
+  return read_scene(matbase::read_json_document(path), path, fs::path(path).parent_path());
+}
+
+SceneDescription read_scene_text(const std::string& json, const std::string& source, const std::string& folder) {
+  std::istringstream text(json);
+  return read_scene(matbase::parse_json_document(text, source), source, folder);
 }
 
 }  // namespace matrender
