@@ -362,7 +362,7 @@ void add_run_options(CLI::App& app, Options& o) {
 
 ObjectDescription object_from(std::variant<MeshFile, BuiltinObject> source, std::string option) {
   ObjectDescription object;
-  object.source = std::move(source);
+  std::visit([&object](auto& given) { object.source = std::move(given); }, source);
   object.origin = Origin{std::move(option), std::nullopt};
   return object;
 }

@@ -19,10 +19,10 @@ and datasets are read as dicts of arrays (matpredict.DatasetReader), or as a tor
  Errors in a scene file raise matpredict.InputError (a
 ValueError) naming the file, the JSON pointer and the problem.
 """
-from ._core import (DatasetError, DatasetReader, InputError, Scene, aov_names, fsim, issm, load_scene, psnr, render,
+from ._core import (DatasetError, DatasetReader, InputError, Mesh, Scene, aov_names, fsim, issm, load_scene, psnr, render,
                     make_dataset, rmse, sam_degrees, score_map, sre, ssim, uiq, verify_dataset)
 
-__all__ = ["DatasetError", "DatasetReader", "InputError", "Scene", "aov_names", "fsim", "issm", "load_scene",
+__all__ = ["DatasetError", "DatasetReader", "InputError", "Mesh", "Scene", "aov_names", "fsim", "issm", "load_scene",
            "make_dataset", "psnr", "render", "rmse", "sam_degrees", "score_map", "sre", "ssim", "uiq", "verify_dataset"]
 
 

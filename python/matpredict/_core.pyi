@@ -29,6 +29,18 @@ def make_dataset(configuration: Dict[str, object], *, output: Optional[str] = No
 def verify_dataset(root: str) -> Dict[str, object]:
     """{'variants': int, 'frames': int, 'problems': List[str]}"""
 
+class Mesh:
+    """A triangle mesh from numpy arrays, for a scene dict's object {"mesh": Mesh(...)}."""
+    def __init__(self, positions: npt.ArrayLike, triangles: npt.ArrayLike, *, uvs: Optional[npt.ArrayLike] = None,
+                 normals: Optional[npt.ArrayLike] = None, parts: Optional[npt.ArrayLike] = None,
+                 part_names: Optional[Sequence[str]] = None) -> None: ...
+    @property
+    def vertex_count(self) -> int: ...
+    @property
+    def triangle_count(self) -> int: ...
+    @property
+    def part_names(self) -> List[str]: ...
+
 class Scene:
     """A scene loaded and built, ready to render (load_scene)."""
     @property

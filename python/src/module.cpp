@@ -3,6 +3,7 @@
 
 #include "dataset_bindings.h"
 #include "dataset_maker_bindings.h"
+#include "mesh_arrays.h"
 #include "metric_bindings.h"
 #include "python_errors.h"
 #include "render_bindings.h"
@@ -10,6 +11,7 @@
 PYBIND11_MODULE(_core, module) {
   module.doc() = "matpredict's libraries from Python: rendering to numpy arrays, the image metrics, datasets.";
   matpredict_python::bind_errors(module);
+  matpredict_python::bind_mesh(module);
   matpredict_python::bind_render(module);
   matpredict_python::bind_metrics(module);
   matpredict_python::bind_datasets(module);

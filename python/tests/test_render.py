@@ -176,3 +176,60 @@ def test_a_dict_with_the_scene_files_keys_is_the_same_scene(small_scene):
         matpredict.load_scene(description)
     with pytest.raises(TypeError):
         matpredict.load_scene(42)
+
+
+def cube(side=0.3):
+    """A box on the ground: 8 corners, 12 triangles counter-clockwise from outside."""
+    half = side / 2
+    positions = np.array([[x, y, z] for z in (0.0, side) for y in (-half, half) for x in (-half, half)])
+    quads = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]
+    triangles = np.array([t for a, b, c, d in quads for t in ((a, b, c), (a, c, d))])
+    return positions, triangles
+
+
+def cube_scene(mesh):
+    return {
+        "camera": {"position": [0.8, -0.9, 0.6], "look_at": [0, 0, 0.15], "width": 40, "height": 30},
+        "lights": {"rig": {}},
+        "materials": {"paint": {"base_color": [0.8, 0.2, 0.1], "roughness": 0.4}},
+        "objects": [{"mesh": mesh, "material": "paint"}],
+        "render": {"spp": 4},
+    }
+
+
+def test_a_numpy_mesh_renders_as_the_same_mesh_from_a_file(tmp_path, monkeypatch):
+    positions, triangles = cube()
+    mesh = matpredict.Mesh(positions, triangles)
+    assert (mesh.vertex_count, mesh.triangle_count, mesh.part_names) == (8, 12, ["part0"])
+    # PLY, which keeps its axes (OBJ and glTF are +Y up and turned on import).
+    with open(tmp_path / "cube.ply", "w") as f:
+        f.write("ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\nproperty float z\n"
+                "element face 12\nproperty list uchar int vertex_indices\nend_header\n")
+        f.writelines(f"{x!r} {y!r} {z!r}\n" for x, y, z in positions.astype(np.float32).astype(float))
+        f.writelines(f"3 {a} {b} {c}\n" for a, b, c in triangles)
+    monkeypatch.chdir(tmp_path)
+    from_arrays = matpredict.render(matpredict.load_scene(cube_scene(mesh)), aovs="all")
+    from_file = matpredict.render(matpredict.load_scene(cube_scene("cube.ply")), aovs="all")
+    for name in ("color", "depth", "normal_world", "base_color", "roughness", "alpha"):
+        assert np.array_equal(from_arrays[name], from_file[name]), name
+    assert 0 < (from_arrays["depth"] > 0).mean() < 1
+
+
+def test_bad_mesh_arrays_raise_clear_errors():
+    positions, triangles = cube()
+    with pytest.raises(ValueError, match=r"positions: expected shape \(N, 3\)"):
+        matpredict.Mesh(positions[:, :2], triangles)
+    with pytest.raises(ValueError, match="triangles: triangle 0 names vertex 8"):
+        matpredict.Mesh(positions, np.array([[8, 1, 2]]))
+    with pytest.raises(TypeError, match="triangles: expected an array of integers"):
+        matpredict.Mesh(positions, triangles.astype(float))
+    bad = positions.copy()
+    bad[3, 1] = np.nan
+    with pytest.raises(ValueError, match="mesh"):
+        matpredict.Mesh(bad, triangles)
+    with pytest.raises(ValueError, match="part_names: expected 2 names"):
+        matpredict.Mesh(positions, triangles, parts=np.arange(12) % 2, part_names=["a"])
+    scene = cube_scene(matpredict.Mesh(positions, triangles))
+    scene["objects"][0]["seed"] = 3
+    with pytest.raises(matpredict.InputError, match="the scene: /objects/0/seed: unknown key"):
+        matpredict.load_scene(scene)

@@ -29,7 +29,7 @@ constexpr double kDegree = matbase::kPi / 180.0;
 matrender::SceneDescription object_scene(const DatasetConfig& config, size_t index) {
   const ObjectConfig& object = config.objects[index];
   matrender::ObjectDescription description;
-  description.source = object.source;
+  std::visit([&description](const auto& source) { description.source = source; }, object.source);
   description.uv_pass = object.uv_pass;
   description.origin = matrender::Origin{config.source, "/objects/" + std::to_string(index)};
   matrender::SceneDescription scene = matrender::paper_object_scene(std::move(description));

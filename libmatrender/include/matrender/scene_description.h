@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -16,6 +17,7 @@
 
 #include "matbase/input_error.h"
 #include "matgeom/camera_grid.h"
+#include "matgeom/object_asset.h"
 #include "matmaterial/library/material_library.h"
 #include "matrender/camera.h"
 #include "matrender/light.h"
@@ -81,13 +83,17 @@ struct BuiltinObject {
   std::string name;
   uint32_t seed = 0;
 };
+// An object handed over in memory, already checked (the Python package's meshes from arrays).
+struct GivenObject {
+  std::shared_ptr<const matgeom::ObjectAsset> asset;
+};
 
 // When an object's mesh gets new UVs from the paper's UV pass (matgeom/uv/uv_pass.h) before it is
 // placed: never, only when the mesh has no UVs of its own, or always.
 enum class UvPassMode { Never, WhenMissing, Always };
 
 struct ObjectDescription {
-  std::variant<MeshFile, BuiltinObject> source;
+  std::variant<MeshFile, BuiltinObject, GivenObject> source;
   UvPassMode uv_pass = UvPassMode::Never;
   glm::dmat4 object_to_world{1.0};
   // Scene materials by name: `material` for every part, or `part_materials` by part name. Parts

@@ -29,6 +29,7 @@ matgeom::ObjectAsset read_source(const ObjectDescription& object) {
       throw object.origin.error("/mesh", e.what());
     }
   }
+  if (const auto* given = std::get_if<GivenObject>(&object.source)) return *given->asset;
   const auto& builtin = std::get<BuiltinObject>(object.source);
   try {
     return matgeom::make_builtin_object(builtin.name, builtin.seed);
