@@ -16,14 +16,54 @@ and datasets are read as dicts of arrays (matpredict.DatasetReader), or as a tor
 
     model = matpredict.load_model("train_output/checkpoints/best.pt")   # loads libtorch
     maps = model.predict(sample["input"])                               # {"base_color": ..., ...}
- Errors in a scene file raise matpredict.InputError (a
-ValueError) naming the file, the JSON pointer and the problem.
-"""
-from ._core import (DatasetError, DatasetReader, InputError, Mesh, Scene, aov_names, fsim, issm, load_scene, psnr, render,
-                    make_dataset, rmse, sam_degrees, score_map, sre, ssim, uiq, verify_dataset)
 
-__all__ = ["DatasetError", "DatasetReader", "InputError", "Mesh", "Scene", "aov_names", "fsim", "issm", "load_scene",
-           "make_dataset", "psnr", "render", "rmse", "sam_degrees", "score_map", "sre", "ssim", "uiq", "verify_dataset"]
+make_dataset(dict) makes a dataset as the command line does. Errors in a scene file, a
+configuration or a dataset raise matpredict.InputError (a ValueError) naming the file, the JSON
+pointer or key, and the problem. docs/python.md documents every array.
+"""
+from ._core import (
+    DatasetError,
+    DatasetReader,
+    InputError,
+    Mesh,
+    Scene,
+    aov_names,
+    fsim,
+    issm,
+    load_scene,
+    make_dataset,
+    psnr,
+    render,
+    rmse,
+    sam_degrees,
+    score_map,
+    sre,
+    ssim,
+    uiq,
+    verify_dataset,
+)
+
+__all__ = [
+    "DatasetError",
+    "DatasetReader",
+    "InputError",
+    "Mesh",
+    "Scene",
+    "aov_names",
+    "fsim",
+    "issm",
+    "load_scene",
+    "make_dataset",
+    "psnr",
+    "render",
+    "rmse",
+    "sam_degrees",
+    "score_map",
+    "sre",
+    "ssim",
+    "uiq",
+    "verify_dataset",
+]
 
 
 # The trained networks load libtorch, so their module is imported when first asked for.

@@ -2,7 +2,8 @@
 `import matpredict` works without torch.
 
     from matpredict.torch_data import MaterialDataset
-    loader = torch.utils.data.DataLoader(MaterialDataset("dataset_out", size=224), batch_size=8, num_workers=2)
+    dataset = MaterialDataset("dataset_out", size=224)
+    loader = torch.utils.data.DataLoader(dataset, batch_size=8, num_workers=2)
 
 Each sample is a dict of tensors laid out as libmatlearn's trainer batches them (make_batch): 'input'
 (3, S, S) float32 RGB in [0, 1] as stored (no ImageNet normalisation: that is the network's),
