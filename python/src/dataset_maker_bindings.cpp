@@ -12,6 +12,7 @@
 #include "matdataset/maker/dataset_config.h"
 #include "matdataset/maker/dataset_plan.h"
 #include "matdataset/maker/dataset_run.h"
+#include "json_text.h"
 #include "releasing_gil.h"
 
 namespace matpredict_python {
@@ -21,10 +22,6 @@ namespace py = pybind11;
 
 // Where a configuration dict's errors point: "the configuration: render.samples: ...".
 constexpr const char* kConfigurationSource = "the configuration";
-
-// The dict as JSON text, which the configuration's YAML reader reads as it reads a file: strings
-// are text, numbers numbers.
-std::string json_text(const py::object& value) { return py::module_::import("json").attr("dumps")(value).cast<std::string>(); }
 
 py::dict make_dataset(const py::dict& configuration, const std::optional<std::string>& output, int threads,
                       const std::string& shard_text, const py::object& progress) {

@@ -20,7 +20,7 @@ template <class Scalar>
 py::array_t<Scalar, py::array::c_style | py::array::forcecast> table(const py::array& array, py::ssize_t columns,
                                                                     const std::string& name) {
   const char kind = array.dtype().kind();
-  const bool numeric = kind == 'f' || (kind == 'i' || kind == 'u');
+  const bool numeric = kind == 'f' || kind == 'i' || kind == 'u';
   if (!numeric || (std::is_integral_v<Scalar> && kind == 'f'))
     throw py::type_error(name + ": expected an array of " + (std::is_integral_v<Scalar> ? "integers" : "numbers") +
                          ", got dtype " + std::string(py::str(array.dtype())));

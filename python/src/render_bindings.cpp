@@ -12,6 +12,7 @@
 #include <pybind11/stl.h>
 
 #include "frame_arrays.h"
+#include "json_text.h"
 #include "matbase/input_error.h"
 #include "matgeom/builtin/builtin_objects.h"
 #include "mesh_arrays.h"
@@ -65,7 +66,7 @@ std::string scene_json(const py::dict& scene, std::vector<std::pair<size_t, Mesh
     }
     readable["objects"] = objects;
   }
-  return py::module_::import("json").attr("dumps")(readable).cast<std::string>();
+  return json_text(readable);
 }
 
 // A scene file's path, or a dict with its keys (relative paths from the current folder).
