@@ -75,8 +75,13 @@ constexpr uint32_t default_aovs() {
 struct AovName {
   std::string name;
   uint32_t bit;
+  std::string description;  // what a pixel holds: units, colour space or frame, the background's value
 };
 const std::vector<AovName>& aov_names();
+// What the colour buffer holds, said as the AOVs' descriptions say it.
+constexpr const char* kColorDescription =
+    "the image: scene-linear Rec.709 RGB (Blender's \"Linear\"), no exposure applied, the mean of the pixel's "
+    "Blackman-Harris filtered camera samples";
 std::optional<uint32_t> aov_named(std::string_view name);
 
 struct FrameBuffers {

@@ -21,6 +21,7 @@ struct BuiltScene {
   std::vector<uint32_t> object_meshes;   // the scene mesh of each described object, in order
   std::string frame_stem;                // output file prefix: "view_005_016" for grid cell (5, 16), else "view"
   matgeom::Sphere bounds;                // minimal enclosing sphere of all objects
+  glm::dvec3 centroid{0.0};              // surface centroid of all objects, where grid cameras look by default
   std::optional<matgeom::LightRig> rig;  // when the paper's rig lights the scene
   // The described materials (those no part uses yet are loaded when first assigned) and each
   // object's surface in world space: what assign_object_materials needs.
@@ -32,6 +33,11 @@ struct BuiltScene {
 // (unreadable mesh or texture, unknown part name), and matbase::Cancelled soon after `cancel`
 // (when given) is set while materials load (SceneMaterials::cancel_on).
 BuiltScene build_scene(const SceneDescription& description, const std::atomic<bool>* cancel = nullptr);
+
+// The camera `description` places in the built scene (a grid centred on "centroid" around
+// built.centroid). Throws matbase::InputError for a look-at whose up is along its view, a cell
+// outside its grid, or a camera beyond single precision's reach (scene_limits.h).
+Camera scene_camera(const CameraDescription& description, const BuiltScene& built);
 
 // Puts object `object` (its index in the description) in other materials of the description:
 // `materials.material` on every part and `materials.part_materials` by part name, as

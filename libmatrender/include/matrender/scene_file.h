@@ -13,5 +13,7 @@ SceneDescription read_scene_file(const std::string& path);
 // The same from JSON text: `source` names it in errors ("the scene: /render/spp: ..."), and its
 // relative paths resolve against `folder`.
 SceneDescription read_scene_text(const std::string& json, const std::string& source, const std::string& folder);
+// A scene file's "camera" value alone, as JSON text; pointers start at it ("the camera: /grid/cell/0: ...").
+CameraDescription read_camera_text(const std::string& json, const std::string& source);
 
 }  // namespace matrender

@@ -3,6 +3,8 @@
 #include <cstddef>
 #include <type_traits>
 
+#include <fmt/format.h>
+
 namespace matrender {
 namespace {
 
@@ -33,21 +35,47 @@ void visit_buffers(FrameBuffers& frame, Visit&& visit) {
 
 }  // namespace
 
+namespace {
+
+// A parameter's AOV: the table's line, and how its values read.
+std::string parameter_aov_description(const matmaterial::MaterialParameterInfo& info) {
+  const std::string values = info.kind == matmaterial::ParameterKind::Color
+                                 ? "linear RGB"
+                                 : fmt::format("from {:g} to {:g}", info.min, info.max);
+  return fmt::format("the material's {} ({}): {}, at the first hit, the mean over the samples that hit; 0 where none did",
+                     info.name, info.description, values);
+}
+
+}  // namespace
+
 const std::vector<AovName>& aov_names() {
   static const std::vector<AovName> names = [] {
     std::vector<AovName> list;
     for (const matmaterial::MaterialParameterInfo& info : matmaterial::kMaterialParameters)
-      list.push_back({info.name, parameter_aov(info.id)});
-    list.insert(list.end(), {{"normal_world", AovNormalWorld},
-                             {"normal_camera", AovNormalCamera},
-                             {"normal_tangent", AovNormalTangent},
-                             {"ambient_occlusion", AovAmbientOcclusion},
-                             {"depth", AovDepth},
-                             {"label", AovLabel},
-                             {"part_id", AovPartId},
-                             {"alpha", AovAlpha},
-                             {"sample_count", AovSampleCount},
-                             {"color_variance", AovColorVariance}});
+      list.push_back({info.name, parameter_aov(info.id), parameter_aov_description(info)});
+    list.insert(list.end(),
+                {{"normal_world", AovNormalWorld,
+                  "the shading normal at the first hit in the world frame (Z up), unit length, the mean over the "
+                  "samples that hit renormalised; 0 where none did"},
+                 {"normal_camera", AovNormalCamera,
+                  "normal_world in the camera's frame: +X image right, +Y image up, +Z toward the viewer"},
+                 {"normal_tangent", AovNormalTangent,
+                  "what the normal map says at the hit, in its tangent frame (2 texel - 1, +Z along the surface "
+                  "normal); (0, 0, 1) without a normal map"},
+                 {"ambient_occlusion", AovAmbientOcclusion,
+                  "the fraction of cosine-distributed directions around the normal that meet no surface within the "
+                  "AO distance (Cycles' AO node), from 0 to 1"},
+                 {"depth", AovDepth,
+                  "metres along the camera's axis to the hit of the sample nearest the pixel centre; 0 where "
+                  "nothing was hit"},
+                 {"label", AovLabel, "the material label id of the hit nearest the pixel centre; 0 for the background"},
+                 {"part_id", AovPartId, "the object part's id at the hit nearest the pixel centre; -1 for the background"},
+                 {"alpha", AovAlpha, "coverage: the fraction of the pixel's camera samples that hit a surface"},
+                 {"sample_count", AovSampleCount,
+                  "the camera samples the pixel took: the samples per pixel, fewer where adaptive sampling stopped "
+                  "early"},
+                 {"color_variance", AovColorVariance,
+                  "the variance of the pixel's colour estimate (the mean of its samples' Rec.709 luminance)"}});
     return list;
   }();
   return names;

@@ -165,15 +165,6 @@ glm::dmat4 camera_to_world(const CameraDescription& camera, const glm::dvec3& ce
   }
 }
 
-Camera make_camera(const CameraDescription& description, const glm::dvec3& centroid) {
-  Camera camera;
-  camera.camera_to_world = camera_to_world(description, centroid);
-  camera.vertical_fov = description.vertical_fov;
-  camera.width = description.width;
-  camera.height = description.height;
-  return camera;
-}
-
 std::string frame_stem(const CameraDescription& camera) {
   const auto* grid = std::get_if<GridPlacement>(&camera.placement);
   return grid ? view_name(grid->i, grid->j) : "view";
@@ -213,12 +204,22 @@ BuiltScene build_scene(const SceneDescription& description, const std::atomic<bo
   }
   add_lights(description.lights, built);
   built.scene.set_background(load_background(description.background));
-  built.camera = make_camera(description.camera, matgeom::surface_centroid(surface));
-  if (const std::optional<std::string> problem = scene_point_problem(glm::dvec3(built.camera.camera_to_world[3]), "the camera"))
-    throw matbase::InputError("camera: " + *problem);
+  built.centroid = matgeom::surface_centroid(surface);
+  built.camera = scene_camera(description.camera, built);
   built.frame_stem = frame_stem(description.camera);
   built.scene.commit();
   return built;
+}
+
+Camera scene_camera(const CameraDescription& description, const BuiltScene& built) {
+  Camera camera;
+  camera.camera_to_world = camera_to_world(description, built.centroid);
+  camera.vertical_fov = description.vertical_fov;
+  camera.width = description.width;
+  camera.height = description.height;
+  if (const std::optional<std::string> problem = scene_point_problem(glm::dvec3(camera.camera_to_world[3]), "the camera"))
+    throw matbase::InputError("camera: " + *problem);
+  return camera;
 }
 
 void assign_object_materials(BuiltScene& built, size_t object, const ObjectDescription& materials) {

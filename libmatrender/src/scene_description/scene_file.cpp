@@ -530,4 +530,10 @@ SceneDescription read_scene_text(const std::string& json, const std::string& sou
   return read_scene(matbase::parse_json_document(text, source), source, folder);
 }
 
+CameraDescription read_camera_text(const std::string& json, const std::string& source) {
+  std::istringstream text(json);
+  const matbase::DocumentValue document = matbase::parse_json_document(text, source);
+  return read_camera(DocumentNode(document, matbase::DocumentSource(source, matbase::PathStyle::JsonPointer)));
+}
+
 }  // namespace matrender
