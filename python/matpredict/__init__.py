@@ -5,8 +5,15 @@
     frame = matpredict.render(scene, spp=64, aovs="all")
     frame["color"].shape, frame["roughness"].dtype   # (H, W, 3), float32
 
-Every array is (height, width, channels), row 0 at the top; see help(matpredict.render) for each
-one's dtype, colour space and frame. The paper's eight image metrics take numpy arrays too:
+Every array is (height, width, channels), row 0 at the top; help(matpredict.render) and
+matpredict.aov_info() give each one's dtype, colour space and frame. One built scene renders from
+any number of cameras, e.g. every view of the paper's 16 x 32 grid around its objects:
+
+    for name, camera in scene.grid_cameras().items():
+        frame = matpredict.render(scene, camera=camera)   # camera.camera_to_world, camera.intrinsics
+
+A scene may also be a dict with the scene file's keys, holding numpy values, paths and meshes
+from arrays (matpredict.Mesh). The paper's eight image metrics take numpy arrays too:
 
     matpredict.ssim(truth, prediction, data_range=1.0, mask=object_mask)
     matpredict.score_map(truth, prediction, mask=object_mask)   # {"RMSE": ..., "PSNR": ..., ...}
@@ -22,11 +29,13 @@ configuration or a dataset raise matpredict.InputError (a ValueError) naming the
 pointer or key, and the problem. docs/python.md documents every array.
 """
 from ._core import (
+    Camera,
     DatasetError,
     DatasetReader,
     InputError,
     Mesh,
     Scene,
+    aov_info,
     aov_names,
     fsim,
     issm,
@@ -44,11 +53,13 @@ from ._core import (
 )
 
 __all__ = [
+    "Camera",
     "DatasetError",
     "DatasetReader",
     "InputError",
     "Mesh",
     "Scene",
+    "aov_info",
     "aov_names",
     "fsim",
     "issm",

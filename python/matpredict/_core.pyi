@@ -13,7 +13,7 @@ class DatasetError(InputError):
 
 class DatasetReader:
     """The samples of a MatPredict dataset, each a dict of numpy arrays."""
-    def __init__(self, root: str, *, size: int = 224, linear_albedo: bool = False, read_normal: bool = False,
+    def __init__(self, root: Union[str, "os.PathLike[str]"], *, size: int = 224, linear_albedo: bool = False, read_normal: bool = False,
                  split_file: Optional[str] = None, split: str = "train") -> None: ...
     def __len__(self) -> int: ...
     def __getitem__(self, index: int) -> Dict[str, object]: ...
@@ -22,11 +22,11 @@ class DatasetReader:
     @property
     def root(self) -> str: ...
 
-def make_dataset(configuration: Dict[str, object], *, output: Optional[str] = None, threads: int = 0,
+def make_dataset(configuration: Dict[str, object], *, output: Union[None, str, "os.PathLike[str]"] = None, threads: int = 0,
                  shard: str = "0/1", progress: Optional[Callable[[int, int], object]] = None) -> Dict[str, object]:
     """Renders the dataset the configuration describes (make_dataset's YAML keys); resumable."""
 
-def verify_dataset(root: str) -> Dict[str, object]:
+def verify_dataset(root: Union[str, "os.PathLike[str]"]) -> Dict[str, object]:
     """{'variants': int, 'frames': int, 'problems': List[str]}"""
 
 class Mesh:
@@ -41,6 +41,25 @@ class Mesh:
     @property
     def part_names(self) -> List[str]: ...
 
+class Camera:
+    """A pinhole camera placed in a scene, Blender's convention (looks down its -Z, +Y up in the image)."""
+    @property
+    def width(self) -> int: ...
+    @property
+    def height(self) -> int: ...
+    @property
+    def fov_deg(self) -> float:
+        """Vertical field of view in degrees."""
+    @property
+    def camera_to_world(self) -> npt.NDArray[np.float64]:
+        """(4, 4): columns are the camera's +X (right), +Y (up), +Z (backward) and its position, world frame."""
+    @property
+    def position(self) -> npt.NDArray[np.float64]:
+        """(3,) metres, world frame (Z up)."""
+    @property
+    def intrinsics(self) -> npt.NDArray[np.float64]:
+        """(3, 3) OpenCV K: camera frame x right, y down, z forward; (0, 0) the top-left pixel's centre."""
+
 class Scene:
     """A scene loaded and built, ready to render (load_scene)."""
     @property
@@ -53,6 +72,13 @@ class Scene:
     def seed(self) -> int: ...
     @property
     def exposure_stops(self) -> float: ...
+    @property
+    def camera(self) -> Camera:
+        """The scene file's camera."""
+    def make_camera(self, description: Dict[str, object]) -> Camera:
+        """The camera a dict with a scene file camera's keys places in this scene."""
+    def grid_cameras(self, grid: Optional[Dict[str, object]] = None) -> Dict[str, Camera]:
+        """Every cell of a grid around the objects ({view name: Camera}); None: the paper's 16 x 32 grid."""
 
 def load_scene(scene: Union[str, "os.PathLike[str]", Dict[str, object]]) -> Scene:
     """Reads a JSON scene file (docs/scene_format.md), or a dict with its keys, and builds it."""
@@ -60,6 +86,7 @@ def load_scene(scene: Union[str, "os.PathLike[str]", Dict[str, object]]) -> Scen
 def render(
     scene: Scene,
     *,
+    camera: Union[None, Camera, Dict[str, object]] = None,
     spp: Optional[int] = None,
     seed: Optional[int] = None,
     threads: int = 0,
@@ -70,6 +97,9 @@ def render(
 
 def aov_names() -> List[str]:
     """Every AOV's name, in the order render() returns them."""
+
+def aov_info() -> Dict[str, Dict[str, object]]:
+    """{name: {'dtype', 'channels', 'default', 'description'}} for 'color' and every AOV."""
 
 ImageArray = npt.ArrayLike  # (H, W) or (H, W, C), any numeric dtype
 MaskArray = Optional[npt.ArrayLike]  # None, or (H, W) with nonzero entries inside

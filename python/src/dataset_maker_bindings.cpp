@@ -23,7 +23,7 @@ namespace py = pybind11;
 // Where a configuration dict's errors point: "the configuration: render.samples: ...".
 constexpr const char* kConfigurationSource = "the configuration";
 
-py::dict make_dataset(const py::dict& configuration, const std::optional<std::string>& output, int threads,
+py::dict make_dataset(const py::dict& configuration, const py::object& output, int threads,
                       const std::string& shard_text, const py::object& progress) {
   if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
     throw py::type_error("progress: expected None or a callable taking (frames done, frames in all)");
@@ -31,9 +31,11 @@ py::dict make_dataset(const py::dict& configuration, const std::optional<std::st
   const std::optional<matdataset::Shard> shard = matdataset::parse_shard(shard_text);
   if (!shard) throw py::value_error("shard: expected K/N with 0 <= K < N, got \"" + shard_text + "\"");
   std::vector<matdataset::Override> overrides;
-  if (output) overrides.push_back({"output", json_text(py::str(*output)), "output"});
+  if (!output.is_none())
+    overrides.push_back({"output", json_text(output, matbase::DocumentSource("output", matbase::PathStyle::DottedKeys)), "output"});
+  const matbase::DocumentSource source(kConfigurationSource, matbase::PathStyle::DottedKeys);
   const matdataset::DatasetConfig config =
-      matdataset::parse_config(json_text(configuration), kConfigurationSource, std::filesystem::current_path(), overrides);
+      matdataset::parse_config(json_text(configuration, source), kConfigurationSource, std::filesystem::current_path(), overrides);
   const matdataset::DatasetPlan plan = matdataset::plan_dataset(config);
 
   std::atomic<bool> cancel{false};

@@ -5,10 +5,16 @@
 
 #include <pybind11/pybind11.h>
 
+#include "matbase/document/document_node.h"
+
 namespace matpredict_python {
 
-inline std::string json_text(const pybind11::handle& value) {
-  return pybind11::module_::import("json").attr("dumps")(value).cast<std::string>();
-}
+// Besides JSON's own types (dict with text keys, list, tuple, str, int, float, bool, None), takes
+// what a user computing a scene in Python holds: numpy scalars and arrays (as their values and
+// nested lists) and paths (os.PathLike, as text). Refuses, naming the value's place in `source`'s
+// style: NaN and infinities (matpredict.InputError), other types and keys that are not text
+// (TypeError), nesting deeper than matbase::kMaxDocumentDepth (which also ends a dict that
+// contains itself).
+std::string json_text(const pybind11::handle& value, const matbase::DocumentSource& source);
 
 }  // namespace matpredict_python

@@ -1,6 +1,7 @@
 // matpredict._core: the extension the matpredict package (python/matpredict/__init__.py) exports.
 #include <pybind11/pybind11.h>
 
+#include "camera_bindings.h"
 #include "dataset_bindings.h"
 #include "dataset_maker_bindings.h"
 #include "mesh_arrays.h"
@@ -12,6 +13,7 @@ PYBIND11_MODULE(_core, module) {
   module.doc() = "matpredict's libraries from Python: rendering to numpy arrays, the image metrics, datasets.";
   matpredict_python::bind_errors(module);
   matpredict_python::bind_mesh(module);
+  matpredict_python::bind_camera(module);
   matpredict_python::bind_render(module);
   matpredict_python::bind_metrics(module);
   matpredict_python::bind_datasets(module);

@@ -9,10 +9,13 @@
 #include <variant>
 #include <vector>
 
+#include <fmt/format.h>
 #include <pybind11/stl.h>
 
+#include "camera_bindings.h"
 #include "frame_arrays.h"
 #include "json_text.h"
+#include "loaded_scene.h"
 #include "matbase/input_error.h"
 #include "matgeom/builtin/builtin_objects.h"
 #include "mesh_arrays.h"
@@ -25,12 +28,6 @@ namespace matpredict_python {
 namespace {
 
 namespace py = pybind11;
-
-// A scene as described and as built, ready to render any number of times.
-struct LoadedScene {
-  matrender::SceneDescription description;
-  matrender::BuiltScene built;
-};
 
 // Where a scene dict's errors point: "the scene: /render/spp: ...".
 constexpr const char* kSceneSource = "the scene";
@@ -66,7 +63,7 @@ std::string scene_json(const py::dict& scene, std::vector<std::pair<size_t, Mesh
     }
     readable["objects"] = objects;
   }
-  return json_text(readable);
+  return json_text(readable, matbase::DocumentSource(kSceneSource, matbase::PathStyle::JsonPointer));
 }
 
 // A scene file's path, or a dict with its keys (relative paths from the current folder).
@@ -108,8 +105,9 @@ uint32_t aov_mask(const std::optional<std::variant<std::string, std::vector<std:
   return mask;
 }
 
-py::dict render(LoadedScene& scene, std::optional<int> spp, std::optional<uint32_t> seed, int threads,
+py::dict render(LoadedScene& scene, const py::object& camera_choice, std::optional<int> spp, std::optional<uint32_t> seed, int threads,
                 const std::optional<std::variant<std::string, std::vector<std::string>>>& aovs, const py::object& progress) {
+  const matrender::Camera camera = chosen_camera(scene, camera_choice);
   matrender::RenderSettings settings = scene.description.settings;
   if (spp) {
     if (*spp < 1) throw py::value_error("spp: expected a whole number of at least 1, got " + std::to_string(*spp));
@@ -127,13 +125,56 @@ py::dict render(LoadedScene& scene, std::optional<int> spp, std::optional<uint32
   settings.progress = [&fraction](double f) { fraction.store(f); };
   matrender::FrameBuffers frame;
   double reported = -1.0;
-  run_releasing_gil([&] { matrender::render(scene.built.scene, scene.built.camera, settings, frame); }, cancel, [&] {
+  run_releasing_gil([&] { matrender::render(scene.built.scene, camera, settings, frame); }, cancel, [&] {
     if (const double f = fraction.load(); !progress.is_none() && f != reported) {
       reported = f;
       progress(f);
     }
   });
   return frame_arrays(std::move(frame));
+}
+
+// Every array render() can return, with the frame's layout of it.
+struct ArrayInfo {
+  std::string name;
+  std::string dtype;
+  int channels;
+  bool is_default;
+  std::string description;
+};
+
+std::vector<ArrayInfo> array_infos() {
+  matrender::FrameBuffers layout;  // empty: only which buffer, its element type and channels are asked
+  const auto info = [&layout](const std::string& name, uint32_t bit, bool is_default, const std::string& description) {
+    const matrender::FrameBufferView view = matrender::frame_buffer(layout, bit);
+    return ArrayInfo{name, view.ints ? "int32" : "float32", view.channels, is_default, description};
+  };
+  std::vector<ArrayInfo> infos{info("color", 0, true, matrender::kColorDescription)};
+  for (const matrender::AovName& aov : matrender::aov_names())
+    infos.push_back(info(aov.name, aov.bit, (aov.bit & matrender::default_aovs()) != 0, aov.description));
+  return infos;
+}
+
+py::dict aov_info() {
+  py::dict table;
+  for (const ArrayInfo& array : array_infos()) {
+    py::dict entry;
+    entry["dtype"] = array.dtype;
+    entry["channels"] = array.channels;
+    entry["default"] = array.is_default;
+    entry["description"] = array.description;
+    table[array.name.c_str()] = entry;
+  }
+  return table;
+}
+
+// "  roughness  float32 x 1  (default)  the material's roughness ..." one array a line.
+std::string aov_table_text() {
+  std::string text;
+  for (const ArrayInfo& array : array_infos())
+    text += fmt::format("  {:<22} {} x {}{}: {}\n", array.name, array.dtype, array.channels,
+                        array.is_default ? ", default" : "", array.description);
+  return text;
 }
 
 }  // namespace
@@ -148,6 +189,17 @@ void bind_render(py::module_& module) {
                              "The sampler's seed the scene file gives.")
       .def_property_readonly("exposure_stops", [](const LoadedScene& s) { return s.description.exposure_stops; },
                              "Stops the scene file applies to its display images (not to the arrays).")
+      .def_property_readonly("camera", [](const LoadedScene& s) { return s.built.camera; },
+                             "The scene file's camera, a matpredict.Camera.")
+      .def("make_camera", &camera_from_dict, py::arg("description"),
+           "The camera a dict with a scene file camera's keys places in this scene (docs/scene_format.md,\n"
+           "'Camera': 'position' and 'look_at', 'grid' (centred on the objects unless it gives 'center')\n"
+           "or 'matrix'; 'fov_deg', 'width', 'height'). Raises matpredict.InputError naming the key.")
+      .def("grid_cameras", &grid_cameras, py::arg("grid") = py::none(),
+           "Every camera of a latitude-longitude grid around this scene's objects, {view name: Camera}\n"
+           "row by row ('view_000_000', 'view_000_001', ...), with the scene camera's size and field of\n"
+           "view: `grid` takes a scene file grid's keys but 'cell' (n_phi, n_theta, radius,\n"
+           "phi_range_deg, theta_range_deg, center); None is the paper's 16 x 32 grid of 1 m.")
       .def("__repr__", [](const LoadedScene& s) {
         return "<matpredict.Scene " + std::to_string(s.built.camera.width) + "x" + std::to_string(s.built.camera.height) + ">";
       });
@@ -156,24 +208,27 @@ void bind_render(py::module_& module) {
              "Reads a JSON scene file (docs/scene_format.md), or a dict with the same keys (relative paths\n"
              "from the current folder), and builds it: meshes, textures and materials loaded, the BVH built.\n"
              "Raises matpredict.InputError naming the file (or 'the scene'), the JSON pointer and the problem.");
-  module.def("render", &render, py::arg("scene"), py::kw_only(), py::arg("spp") = py::none(),
+  static const std::string render_doc =
+      "Renders the scene and returns a dict of numpy arrays, each (height, width, channels), C-contiguous,\n"
+      "row 0 at the top, sharing the frame's memory (no copy): 'color' and the AOVs asked for: None or\n"
+      "'default' (the default ones), 'all', or a list of names.\n"
+      "`camera` is None (the scene's), a matpredict.Camera or a dict with a scene file camera's keys:\n"
+      "one built scene renders from any number of cameras. spp and seed override the scene file's; the\n"
+      "image is the same for a seed whatever `threads` (0: all cores). The GIL is released while\n"
+      "rendering; `progress` is called on this thread with the finished fraction; Ctrl-C stops the render\n"
+      "with KeyboardInterrupt.\n\nThe arrays (matpredict.aov_info() gives the same as a dict):\n" +
+      aov_table_text();
+  module.def("render", &render, py::arg("scene"), py::kw_only(), py::arg("camera") = py::none(), py::arg("spp") = py::none(),
              py::arg("seed") = py::none(), py::arg("threads") = 0, py::arg("aovs") = py::none(),
-             py::arg("progress") = py::none(),
-             "Renders the scene's camera view and returns a dict of numpy arrays, each (height, width,\n"
-             "channels) with row 0 at the top: 'color' (float32 RGB, scene-linear Rec.709, no exposure\n"
-             "applied) and every AOV asked for (None or 'default': the default ones; 'all'; or a list\n"
-             "of names, matpredict.aov_names()): material parameters (colours linear RGB, scalars one channel),\n"
-             "normal_world and normal_camera (XYZ in [-1, 1]; camera: +X right, +Y up, +Z toward the\n"
-             "viewer), normal_tangent, depth (metres along the camera axis), alpha (coverage),\n"
-             "ambient_occlusion, color_variance (float32), label, part_id and sample_count (int32).\n"
-             "spp and seed override the scene file's; the image is the same for a seed whatever\n"
-             "`threads` (0: all cores). The GIL is released while rendering; `progress` is called on\n"
-             "this thread with the finished fraction; Ctrl-C stops the render with KeyboardInterrupt.");
+             py::arg("progress") = py::none(), render_doc.c_str());
   module.def("aov_names", [] {
     std::vector<std::string> names;
     for (const matrender::AovName& aov : matrender::aov_names()) names.push_back(aov.name);
     return names;
   }, "Every AOV's name, in the order render() returns them.");
+  module.def("aov_info", &aov_info,
+             "{name: {'dtype', 'channels', 'default', 'description'}} for 'color' and every AOV, in the order\n"
+             "render() returns them: what each array holds (units, colour space or frame, the background's value).");
 }
 
 }  // namespace matpredict_python

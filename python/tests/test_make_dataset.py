@@ -39,10 +39,10 @@ def test_a_dict_makes_the_command_lines_dataset_byte_for_byte(tmp_path):
     assert files == all_files(tmp_path / "python") and len(files) > 20
     _, mismatch, errors = filecmp.cmpfiles(cli, tmp_path / "python", files, shallow=False)
     assert mismatch == [] and errors == []
-    # Made again, every frame is found complete.
-    again = matpredict.make_dataset(CONFIGURATION, output=str(tmp_path / "python"))
+    # Made again (the output as a pathlib.Path this time), every frame is found complete.
+    again = matpredict.make_dataset(CONFIGURATION, output=tmp_path / "python")
     assert again["rendered"] == 0 and again["skipped"] == 4
-    assert matpredict.verify_dataset(str(tmp_path / "python"))["problems"] == []
+    assert matpredict.verify_dataset(tmp_path / "python")["problems"] == []
 
 
 def test_a_bad_configuration_is_refused_by_key(tmp_path):
@@ -52,6 +52,9 @@ def test_a_bad_configuration_is_refused_by_key(tmp_path):
     quoted = dict(CONFIGURATION, render={"samples": "4"})
     with pytest.raises(matpredict.InputError, match=r'render\.samples: expected a whole number from 1 to 65,535, got "4"'):
         matpredict.make_dataset(quoted, output=str(tmp_path / "out"))
+    not_a_number = dict(CONFIGURATION, render={"samples": 4, "exposure": float("nan")})
+    with pytest.raises(matpredict.InputError, match=r"the configuration: render\.exposure: expected a finite number, got nan"):
+        matpredict.make_dataset(not_a_number, output=str(tmp_path / "out"))
     assert not (tmp_path / "out").exists()
     with pytest.raises(ValueError, match="shard"):
         matpredict.make_dataset(CONFIGURATION, output=str(tmp_path / "out"), shard="2/2")

@@ -233,3 +233,17 @@ def test_bad_mesh_arrays_raise_clear_errors():
     scene["objects"][0]["seed"] = 3
     with pytest.raises(matpredict.InputError, match="the scene: /objects/0/seed: unknown key"):
         matpredict.load_scene(scene)
+
+
+def test_aov_info_describes_every_array_render_returns(small_scene):
+    scene = matpredict.load_scene(small_scene)
+    info = matpredict.aov_info()
+    every = matpredict.render(scene, spp=1, aovs="all")
+    assert list(every) == list(info) == ["color"] + matpredict.aov_names()
+    for name, array in every.items():
+        assert (str(array.dtype), array.shape[2]) == (info[name]["dtype"], info[name]["channels"]), name
+        assert len(info[name]["description"]) > 20, name
+        assert info[name]["description"] in matpredict.render.__doc__, name
+    defaults = matpredict.render(scene, spp=1, aovs="default")
+    assert list(defaults) == [name for name, entry in info.items() if entry["default"]]
+    assert "linear RGB" in info["base_color"]["description"] and "+Z toward the viewer" in info["normal_camera"]["description"]
