@@ -83,7 +83,13 @@ _LEARN = ("Model", "load_model")
 
 def __getattr__(name):
     if name in _LEARN:
-        from . import _learn
+        import importlib
+
+        try:
+            _learn = importlib.import_module("._learn", __name__)
+        except ModuleNotFoundError as missing:
+            raise ImportError(f"matpredict.{name} needs the extension matpredict._learn (libtorch), which this build "
+                              "has not made: cmake --build build --target matpredict_python_learn") from missing
         return getattr(_learn, name)
     raise AttributeError(f"module 'matpredict' has no attribute '{name}'")
 

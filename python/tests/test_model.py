@@ -26,6 +26,21 @@ def test_importing_matpredict_does_not_load_libtorch():
     assert subprocess.run([sys.executable, "-c", code]).returncode == 0
 
 
+def test_a_build_without_the_learning_extension_says_how_to_make_it(tmp_path):
+    package = os.path.dirname(matpredict.__file__)
+    copy = tmp_path / "matpredict"
+    copy.mkdir()
+    for name in os.listdir(package):
+        if not name.startswith("_learn") and os.path.isfile(os.path.join(package, name)):
+            os.symlink(os.path.join(package, name), copy / name)
+    code = "import matpredict; matpredict.load_model('x.pt')"
+    run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         env=dict(os.environ, PYTHONPATH=str(tmp_path)))
+    assert run.returncode == 1
+    assert "ImportError: matpredict.load_model needs the extension matpredict._learn" in run.stderr, run.stderr
+    assert "--target matpredict_python_learn" in run.stderr
+
+
 def test_a_checkpoint_predicts_the_maps_evaluate_writes(checkpoint, tiny_dataset, tmp_path):
     model = matpredict.load_model(checkpoint)
     assert (model.network, model.image_size, model.epochs_done) == ("unet_no_skip", 32, 1)
