@@ -13,6 +13,29 @@ EVALUATE = os.environ.get("MATPREDICT_EVALUATE", "")
 EXAMPLES = os.environ.get("MATPREDICT_EXAMPLES", "")
 
 
+def read_exr(path):
+    """An EXR as OpenImageIO reads it, (height, width, channels) float32: the reference reader."""
+    import OpenImageIO as oiio
+
+    image = oiio.ImageInput.open(str(path))
+    assert image is not None, oiio.geterror()
+    pixels = image.read_image(format="float")
+    image.close()
+    return pixels
+
+
+def write_exr(path, pixels):
+    """(height, width, channels) float32 pixels as an EXR, by OpenImageIO."""
+    import OpenImageIO as oiio
+
+    height, width, channels = pixels.shape
+    output = oiio.ImageOutput.create(str(path))
+    assert output.open(str(path), oiio.ImageSpec(width, height, channels, "float"))
+    assert output.write_image(pixels)
+    output.close()
+    return path
+
+
 def write_scene(folder, width=48, height=36, spp=4, **render):
     """The built-in vase under the sun and a soft lamp, small enough to render in a blink."""
     scene = {

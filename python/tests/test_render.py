@@ -10,18 +10,7 @@ import numpy as np
 import pytest
 
 import matpredict
-from conftest import EXAMPLES, RENDER_OBJECT, write_scene
-
-
-def read_exr(path):
-    """An EXR as OpenImageIO reads it, (height, width, channels) float32: the reference reader."""
-    import OpenImageIO as oiio
-
-    image = oiio.ImageInput.open(path)
-    assert image is not None, oiio.geterror()
-    pixels = image.read_image(format="float")
-    image.close()
-    return pixels
+from conftest import EXAMPLES, RENDER_OBJECT, read_exr, write_scene
 
 
 INT_AOVS = {"label", "part_id", "sample_count"}

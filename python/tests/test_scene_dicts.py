@@ -1,25 +1,21 @@
-"""Scene dicts hold what Python code computes: numpy values and paths are read as their values;
-what JSON cannot say is refused at its place."""
+"""Scene dicts: everything a scene file says, and what Python code computes (numpy values, paths)
+read as their values; what JSON cannot say is refused at its place."""
+import json
+import os
+import subprocess
 
 import numpy as np
 import pytest
 
 import matpredict
+from conftest import RENDER_OBJECT, read_exr, write_exr
 
 
 @pytest.fixture
 def environment(tmp_path):
-    """A small sky-to-ground gradient as an equirectangular EXR, written by OpenImageIO."""
-    import OpenImageIO as oiio
-
+    """A small sky-to-ground gradient as an equirectangular EXR."""
     rows = np.linspace(1.0, 0.1, 8, dtype=np.float32)[:, None, None]
-    pixels = np.broadcast_to(rows * np.array([0.6, 0.7, 1.0], dtype=np.float32), (8, 16, 3)).copy()
-    path = tmp_path / "sky.exr"
-    output = oiio.ImageOutput.create(str(path))
-    assert output.open(str(path), oiio.ImageSpec(16, 8, 3, "float"))
-    assert output.write_image(pixels)
-    output.close()
-    return path
+    return write_exr(tmp_path / "sky.exr", np.broadcast_to(rows * np.array([0.6, 0.7, 1.0], dtype=np.float32), (8, 16, 3)).copy())
 
 
 def vase_scene(position, roughness, color, environment):
@@ -62,3 +58,37 @@ def test_values_json_cannot_say_are_refused_at_their_place(environment):
     looped["render"]["again"] = looped
     with pytest.raises(matpredict.InputError, match="nest deeper than 256 levels"):
         matpredict.load_scene(looped)
+
+
+def test_a_dict_renders_as_render_object_renders_the_same_file(tmp_path, monkeypatch, environment):
+    """Everything a scene file says, said from Python: the paper's rig, a grid camera, an environment
+    map, a library material, a textured one; the CLI reads the dict written as JSON."""
+    from PIL import Image
+
+    checker = (np.indices((16, 16)).sum(axis=0) % 2 * 180 + 40).astype(np.uint8)
+    Image.fromarray(np.stack([checker, checker // 2, 255 - checker], axis=-1)).save(tmp_path / "checker.png")
+    scene = {
+        "camera": {"grid": {"cell": [4, 9], "n_phi": 8, "n_theta": 16, "radius": 1.4}, "width": 40, "height": 32},
+        "lights": {"rig": {"target_illuminance_lux": 800}},
+        "background": {"environment": "sky.exr", "strength": 0.3, "rotation_z_deg": 40},
+        "materials": {
+            "lacquer": {"class": "wood", "style": "lacquered", "seed": 2, "resolution": 64},
+            "checked": {"base_color": {"texture": "checker.png"}, "roughness": 0.4},
+        },
+        "objects": [
+            {"builtin": "chair", "materials": {"seat": "checked", "frame": "lacquer", "back": "lacquer"}},
+        ],
+        "render": {"spp": 3, "seed": 11},
+    }
+    path = tmp_path / "scene.json"
+    path.write_text(json.dumps(scene))
+    out = tmp_path / "cli"
+    subprocess.run([RENDER_OBJECT, "--scene", str(path), "--aovs", "base_color,roughness,depth", "--output", str(out)],
+                   check=True, stdout=subprocess.DEVNULL)
+    monkeypatch.chdir(tmp_path)  # the dict's relative paths are from the current folder
+    frame = matpredict.render(matpredict.load_scene(scene), aovs=["base_color", "roughness", "depth"])
+    for name in ("color", "base_color", "roughness", "depth"):
+        reference = read_exr(out / f"view_004_009_{name}.exr")[:, :, : frame[name].shape[2]]
+        assert np.array_equal(reference, frame[name]), name
+    assert len(np.unique(frame["base_color"].reshape(-1, 3), axis=0)) > 20  # the chair, textured, is in view
+    assert 0.02 < frame["color"].mean() < 1  # lit by the rig and the sky
