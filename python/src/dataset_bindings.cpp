@@ -107,7 +107,7 @@ void bind_datasets(py::module_& module) {
         for (const matdataset::SampleId& id : r.samples) ids.push_back(id.str());
         return ids;
       }, "Every sample's id, in order.")
-      .def_property_readonly("root", [](const DatasetReader& r) { return r.root; });
+      .def_property_readonly("root", [](const DatasetReader& r) { return r.root; }, "The dataset's folder.");
   module.def("verify_dataset", &verify, py::arg("root"),
              "make_dataset --verify from Python: reads every file of the dataset under `root` and returns\n"
              "{'variants': n, 'frames': n, 'problems': [each naming its file]}; no problems: a sound dataset.");

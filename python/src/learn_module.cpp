@@ -74,7 +74,8 @@ PYBIND11_MODULE(_learn, module) {
       }, "The maps it predicts, in order.")
       .def_property_readonly("linear_albedo", [](const Model& m) { return m.header.linear_albedo; },
                              "Whether its base colour is linear (else sRGB as the dataset stores it).")
-      .def_property_readonly("epochs_done", [](const Model& m) { return m.header.epochs_done; })
+      .def_property_readonly("epochs_done", [](const Model& m) { return m.header.epochs_done; },
+                             "Epochs the checkpoint was trained for.")
       .def("predict", &predict, py::arg("image"),
            "The maps for one (image_size, image_size, 3) RGB image in [0, 1] (as a dataset sample's\n"
            "'input'): a dict of (image_size, image_size, C) float32 arrays in [0, 1], named as `outputs`;\n"

@@ -84,9 +84,12 @@ void bind_mesh(py::module_& module) {
            "outside; optional uvs (N, 2), normals (N, 3) for smooth shading, parts (M,) a part per triangle\n"
            "and part_names (one per part; 'part0', 'part1', ... by default), which an object's \"materials\"\n"
            "names. The arrays are copied and checked: a ValueError names what is wrong.")
-      .def_property_readonly("vertex_count", [](const MeshArrays& m) { return m.asset->mesh.vertex_count(); })
-      .def_property_readonly("triangle_count", [](const MeshArrays& m) { return m.asset->mesh.triangle_count(); })
-      .def_property_readonly("part_names", [](const MeshArrays& m) { return m.asset->mesh.part_names; });
+      .def_property_readonly("vertex_count", [](const MeshArrays& m) { return m.asset->mesh.vertex_count(); },
+                             "Vertices (rows of positions).")
+      .def_property_readonly("triangle_count", [](const MeshArrays& m) { return m.asset->mesh.triangle_count(); },
+                             "Triangles (rows of triangles).")
+      .def_property_readonly("part_names", [](const MeshArrays& m) { return m.asset->mesh.part_names; },
+                             "The parts' names, by part id: what an object's \"materials\" names.");
 }
 
 }  // namespace matpredict_python
