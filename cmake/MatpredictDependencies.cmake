@@ -22,3 +22,13 @@ pkg_check_modules(stb REQUIRED IMPORTED_TARGET stb)
 if(MATPREDICT_BUILD_TESTS)
   find_package(Catch2 2.13 REQUIRED CONFIG)
 endif()
+
+# OpenCV's core and image processing (GrabCut, connected components) from Debian's
+# libopencv-imgproc-dev, found by hand: OpenCV's CMake config and pkg-config file come only with
+# libopencv-dev, which pulls in VTK, Open MPI and FFmpeg for modules matpredict does not use.
+find_path(OpenCV_IMGPROC_INCLUDE_DIR opencv2/imgproc.hpp PATH_SUFFIXES opencv4 REQUIRED)
+find_library(OpenCV_CORE_LIBRARY opencv_core REQUIRED)
+find_library(OpenCV_IMGPROC_LIBRARY opencv_imgproc REQUIRED)
+add_library(matpredict_opencv_imgproc INTERFACE IMPORTED)
+target_include_directories(matpredict_opencv_imgproc SYSTEM INTERFACE ${OpenCV_IMGPROC_INCLUDE_DIR})
+target_link_libraries(matpredict_opencv_imgproc INTERFACE ${OpenCV_IMGPROC_LIBRARY} ${OpenCV_CORE_LIBRARY})

@@ -1,7 +1,7 @@
-# `cmake --install` exports matpredict::matbase, matpredict::matmaterial, matpredict::matgeom, matpredict::matrender, matpredict::matlearn_metrics,
+# `cmake --install` exports matpredict::matbase, matpredict::matmaterial, matpredict::matgeom, matpredict::matrender, matpredict::matlearn_metrics, matpredict::matlearn_isolation,
 # matpredict::matdataset_format, matpredict::matdataset_maker and matpredict::matlearn (libtorch) for find_package(matpredict).
 include(CMakePackageConfigHelpers)
-install(TARGETS matbase matmaterial matgeom matrender matdataset_format matdataset_maker matlearn_metrics matlearn EXPORT matpredictTargets
+install(TARGETS matbase matmaterial matgeom matrender matdataset_format matdataset_maker matlearn_metrics matlearn_isolation matlearn EXPORT matpredictTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}

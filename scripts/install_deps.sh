@@ -11,7 +11,7 @@ packages=(
   libembree-dev libtbb-dev libglm-dev libeigen3-dev
   libopenimageio-dev
   libtinygltf-dev libtinyobjloader-dev libstb-dev nlohmann-json3-dev libcli11-dev libfmt-dev libyaml-cpp-dev
-  libtorch-dev libopenblas0-openmp zlib1g-dev
+  libtorch-dev libopenblas0-openmp zlib1g-dev libopencv-imgproc-dev
   catch2
   python3-skimage python3-pil python3-torch python3-torchvision
   python3-dev pybind11-dev python3-numpy python3-pytest python3-openimageio

@@ -1,5 +1,6 @@
 // evaluate: scores a trained regressor on a dataset split with the paper's eight metrics and
 // writes tables per material and per object, and a panel per material.
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <memory>
@@ -13,6 +14,7 @@
 #include "common/progress_bar.h"
 #include "common/thread_count.h"
 #include "matbase/file/atomic_file.h"
+#include "matbase/image/image_writing.h"
 #include "matbase/input_error.h"
 #include "matdataset/format/dataset_error.h"
 #include "matdataset/format/dataset_index.h"
@@ -22,8 +24,11 @@
 #include "matlearn/evaluation/inference.h"
 #include "matlearn/evaluation/panels.h"
 #include "matlearn/evaluation/report.h"
+#include "matlearn/isolation/grabcut.h"
+#include "matlearn/isolation/object_isolation.h"
 #include "matlearn/training/checkpoint.h"
 #include "matmaterial/material_classes.h"
+#include "prompt_options.h"
 
 namespace {
 
@@ -39,6 +44,10 @@ struct Options {
   int threads = 0;
   std::filesystem::path image;  // inference on one image instead of a split
   std::filesystem::path mask;
+  std::string box;                  // with --image and no mask: the prompt
+  std::vector<std::string> points;
+  std::string segmenter = "grabcut";
+  std::string background = "black";
 };
 
 std::vector<matdataset::SampleId> samples_to_score(const Options& o) {
@@ -72,18 +81,56 @@ std::string file_name(const std::string& text) {
   return name;
 }
 
-// Inference: the image resized to the network's size, its maps and a strip of them.
-int predict(const Options& o, const matlearn::CheckpointHeader& header, matlearn::RegressorImpl& model) {
-  matdataset::InputImage input;
+matlearn::Prompt prompt_of(const Options& o) {
+  matlearn::Prompt prompt;
+  if (!o.box.empty()) prompt.box = evaluate_app::parse_box(o.box);
+  for (const std::string& point : o.points) prompt.points.push_back(evaluate_app::parse_point(point));
+  return prompt;
+}
+
+// The object in the image: the mask --mask or the image's alpha gives, else the segmenter's for
+// the prompt. Says which on the console.
+matlearn::IsolatedObject isolated_object(const Options& o, const matlearn::Prompt& prompt, const matdataset::PhotoInput& photo,
+                                         int size) {
+  const matdataset::CropBackground background =
+      o.background == "white" ? matdataset::CropBackground::White : matdataset::CropBackground::Black;
+  if (photo.mask) {
+    const std::string source = o.mask.empty() ? "its alpha" : o.mask.string();
+    if (!prompt.empty()) fmt::print(stderr, "evaluate: the mask is {}: --box and --point are not used\n", source);
+    if (std::none_of(photo.mask->begin(), photo.mask->end(), [](uint8_t v) { return v != 0; }))
+      throw matbase::InputError(o.image.string() + ": the mask (" + source + ") marks no pixel of the object");
+    fmt::print("object: the mask of {}\n", source);
+    return {*photo.mask, matdataset::isolated_input(photo.rgb, *photo.mask, size, background)};
+  }
+  const matlearn::GrabCutSegmenter segmenter;
+  matlearn::IsolatedObject object = matlearn::isolate_object(photo.rgb, prompt, segmenter, size, background, o.image.string());
+  const matbase::PixelBox box = prompt.box ? *prompt.box : *matlearn::default_prompt(photo.rgb.width, photo.rgb.height).box;
+  fmt::print("object: {} in the box ({},{})-({},{}){}, {} px of {} x {}\n", segmenter.name(), box.x0, box.y0, box.x1,
+             box.y1, prompt.points.empty() ? "" : fmt::format(" and {} points", prompt.points.size()),
+             std::count(object.mask.begin(), object.mask.end(), 1), photo.rgb.width, photo.rgb.height);
+  return object;
+}
+
+// Inference: the object isolated and cropped to the network's size, its maps and a strip of them.
+int predict(const Options& o, const matlearn::Prompt& prompt, const matlearn::CheckpointHeader& header,
+            matlearn::RegressorImpl& model) {
+  matdataset::PhotoInput photo;
   try {
-    input = matdataset::read_input_image(o.image, o.mask, header.image_size);
+    photo = matdataset::read_photo(o.image, o.mask);
   } catch (const std::runtime_error& e) {
     throw matbase::InputError(e.what());
   }
+  const matlearn::IsolatedObject object = isolated_object(o, prompt, photo, header.image_size);
+  const matdataset::InputImage& input = object.isolated.input;
   const matlearn::PredictedMaps predicted = matlearn::predict_maps(model, header, input.rgb);
   std::string written;
   matbase::OutputFolder folder(o.output_dir);
   matbase::AtomicFileSet files(o.output_dir / "panel.png");
+  std::vector<float> mask(object.mask.begin(), object.mask.end());
+  matbase::write_data_png((o.output_dir / "mask.png").string(), photo.rgb.width, photo.rgb.height, 1, mask.data(), 255.0,
+                          0.0, false, &files);
+  matbase::write_data_png((o.output_dir / "input.png").string(), input.rgb.width, input.rgb.height, 3,
+                          input.rgb.values.data(), 255.0, 0.0, false, &files);
   for (size_t m = 0; m < predicted.maps.size(); ++m) {
     matlearn::write_map_png(o.output_dir / (predicted.names[m] + ".png"), predicted.maps[m], input.mask, &files);
     written += predicted.names[m] + ".png, ";
@@ -91,12 +138,18 @@ int predict(const Options& o, const matlearn::CheckpointHeader& header, matlearn
   matlearn::write_prediction_strip(o.output_dir / "panel.png", input.rgb, input.mask, predicted, &files);
   files.commit();
   folder.keep();
-  fmt::print("wrote {}: {}panel.png (input | maps), {} x {} px; off the object the maps are black\n",
-             o.output_dir.string(), written, header.image_size, header.image_size);
+  const matbase::CropSquare& crop = object.isolated.crop;
+  fmt::print("wrote {}: mask.png (the object, {} x {}), input.png (the {} px square at ({}, {}) on {}, resized to {} x {}), "
+             "{}panel.png (input | maps); off the object the maps are black\n",
+             o.output_dir.string(), photo.rgb.width, photo.rgb.height, crop.side, crop.left, crop.top, o.background,
+             header.image_size, header.image_size, written);
   return 0;
 }
 
 int run(const Options& o) {
+  if (o.image.empty() && (!o.box.empty() || !o.points.empty() || !o.mask.empty()))
+    throw matbase::InputError("--box, --point and --mask describe the object of --image; give --image");
+  const matlearn::Prompt prompt = prompt_of(o);  // refused before the checkpoint is read
   std::filesystem::path checkpoint = o.checkpoint;
   // train_regressor writes best.pt only when it validated; last.pt always.
   if (!std::filesystem::exists(checkpoint) && checkpoint.filename() == "best.pt" &&
@@ -112,7 +165,7 @@ int run(const Options& o) {
     throw matbase::InputError(e.what());
   }
   if (header.layout.regression_channels() == 0) throw matbase::InputError(checkpoint.string() + " predicts no maps");
-  if (!o.image.empty()) return predict(o, header, *model);
+  if (!o.image.empty()) return predict(o, prompt, header, *model);
   if (o.dataset_root.empty()) throw matbase::InputError("give --dataset-root to score a split, or --image to predict one image");
   std::vector<matdataset::SampleId> samples;
   try {
@@ -196,8 +249,19 @@ int main(int argc, char** argv) {
   app.add_option("--image", o.image, "predict the maps of this one image instead (PNG, JPEG, EXR...)")
       ->check(CLI::ExistingFile);
   app.add_option("--mask", o.mask, "with --image: the object's mask (any nonzero value; a label map works); "
-                                   "default the image's alpha")
+                                   "default the image's alpha where some pixel is transparent, else the segmenter's")
       ->check(CLI::ExistingFile);
+  app.add_option("--box", o.box, "with --image: X0,Y0,X1,Y1, the first and last pixel column and row of a box around the "
+                                 "object (default: the image's central 90 %)");
+  app.add_option("--point", o.points, "with --image: X,Y, a pixel on the object, or X,Y,0 one off it (repeatable)");
+  app.add_option("--segmenter", o.segmenter, "with --image and no mask: what finds the object: grabcut (OpenCV's GrabCut, "
+                                             "no weights)")
+      ->check(CLI::IsMember({"grabcut"}))
+      ->capture_default_str();
+  app.add_option("--background", o.background, "with --image: what the crop shows off the object: black (what networks "
+                                               "trained on make_dataset's frames saw) or white (the paper's preprocessing)")
+      ->check(CLI::IsMember({"black", "white"}))
+      ->capture_default_str();
   app.add_option("--split-file", o.split_file, "split YAML; without one, the 80/20 variant split train_regressor used")
       ->check(CLI::ExistingFile);
   app.add_option("--split", o.split, "train, val or test (without a split file: train, or val and test alike for the 20 % part)")

@@ -1,6 +1,6 @@
 """Type stubs of matpredict's extension module."""
 import os
-from typing import Callable, Dict, List, Optional, Sequence, Union
+from typing import Callable, Dict, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -73,6 +73,9 @@ class Scene:
     @property
     def exposure_stops(self) -> float: ...
     @property
+    def bounds(self) -> Tuple[Tuple[float, float, float], float]:
+        """((x, y, z), radius): the smallest sphere around all objects, metres."""
+    @property
     def camera(self) -> Camera:
         """The scene file's camera."""
     def make_camera(self, description: Dict[str, object]) -> Camera:
@@ -97,6 +100,20 @@ def render(
 
 def aov_names() -> List[str]:
     """Every AOV's name, in the order render() returns them."""
+
+def display_image(color: npt.ArrayLike, *, exposure_stops: float = 0.0) -> npt.NDArray[np.uint8]:
+    """Linear RGB (H, W, 3) as the 8-bit sRGB image render_object's PNG holds."""
+
+def builtin_objects() -> List[str]:
+    """The built-in objects' names ({"builtin": name})."""
+
+def material_classes() -> Dict[str, int]:
+    """{class name: label id} of the procedural library's classes ({"class": name})."""
+
+def isolate(image: npt.ArrayLike, *, mask: Optional[npt.ArrayLike] = None,
+            box: Optional[Tuple[int, int, int, int]] = None, points: Optional[Sequence[Sequence[int]]] = None,
+            segmenter: str = "grabcut", size: int = 224, background: str = "black") -> Dict[str, object]:
+    """The object isolated as evaluate --image does: {'mask', 'input', 'input_mask', 'crop'}."""
 
 def aov_info() -> Dict[str, Dict[str, object]]:
     """{name: {'dtype', 'channels', 'default', 'description'}} for 'color' and every AOV."""

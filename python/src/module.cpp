@@ -4,7 +4,10 @@
 #include "camera_bindings.h"
 #include "dataset_bindings.h"
 #include "dataset_maker_bindings.h"
+#include "display_bindings.h"
+#include "isolation_bindings.h"
 #include "mesh_arrays.h"
+#include "name_bindings.h"
 #include "metric_bindings.h"
 #include "python_errors.h"
 #include "render_bindings.h"
@@ -15,7 +18,10 @@ PYBIND11_MODULE(_core, module) {
   matpredict_python::bind_mesh(module);
   matpredict_python::bind_camera(module);
   matpredict_python::bind_render(module);
+  matpredict_python::bind_display(module);
+  matpredict_python::bind_names(module);
   matpredict_python::bind_metrics(module);
   matpredict_python::bind_datasets(module);
   matpredict_python::bind_dataset_maker(module);
+  matpredict_python::bind_isolation(module);
 }

@@ -189,6 +189,10 @@ void bind_render(py::module_& module) {
                              "The sampler's seed the scene file gives.")
       .def_property_readonly("exposure_stops", [](const LoadedScene& s) { return s.description.exposure_stops; },
                              "Stops the scene file applies to its display images (not to the arrays).")
+      .def_property_readonly("bounds", [](const LoadedScene& s) {
+        const matgeom::Sphere& sphere = s.built.bounds;
+        return py::make_tuple(py::make_tuple(sphere.center.x, sphere.center.y, sphere.center.z), sphere.radius);
+      }, "((x, y, z), radius): the smallest sphere around all objects, metres, world frame.")
       .def_property_readonly("camera", [](const LoadedScene& s) { return s.built.camera; },
                              "The scene file's camera, a matpredict.Camera.")
       .def("make_camera", &camera_from_dict, py::arg("description"),

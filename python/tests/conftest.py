@@ -59,7 +59,7 @@ def small_scene(tmp_path):
     return write_scene(str(tmp_path))
 
 
-@pytest.fixture(scope="module")
+@pytest.fixture(scope="session")
 def tiny_dataset(tmp_path_factory):
     """Two variants of the vase (two library materials) from two views at 32 px, by make_dataset."""
     root = tmp_path_factory.mktemp("dataset") / "out"
@@ -67,3 +67,13 @@ def tiny_dataset(tmp_path_factory):
                     "--resolution", "32x32", "--spp", "2", "--output", str(root), "--threads", "2"],
                    check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     return str(root)
+
+
+@pytest.fixture(scope="session")
+def checkpoint(tiny_dataset, tmp_path_factory):
+    """One epoch of the quarter-width UNet on the tiny dataset at its own 32 px."""
+    out = tmp_path_factory.mktemp("training")
+    subprocess.run([TRAIN_REGRESSOR, "--dataset-root", tiny_dataset, "--width-divisor", "4", "--image-size", "32",
+                    "--epochs", "1", "--threads", "2", "--output-dir", str(out)],
+                   check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    return str(out / "checkpoints" / "last.pt")

@@ -8,17 +8,7 @@ import pytest
 from PIL import Image
 
 import matpredict
-from conftest import EVALUATE, TRAIN_REGRESSOR
-
-
-@pytest.fixture(scope="module")
-def checkpoint(tiny_dataset, tmp_path_factory):
-    """One epoch of the quarter-width UNet on the tiny dataset at its own 32 px."""
-    out = tmp_path_factory.mktemp("training")
-    subprocess.run([TRAIN_REGRESSOR, "--dataset-root", tiny_dataset, "--width-divisor", "4", "--image-size", "32",
-                    "--epochs", "1", "--threads", "2", "--output-dir", str(out)],
-                   check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    return str(out / "checkpoints" / "last.pt")
+from conftest import EVALUATE
 
 
 def test_importing_matpredict_does_not_load_libtorch():
@@ -34,7 +24,8 @@ def test_a_build_without_the_learning_extension_says_how_to_make_it(tmp_path):
         if not name.startswith("_learn") and os.path.isfile(os.path.join(package, name)):
             os.symlink(os.path.join(package, name), copy / name)
     code = "import matpredict; matpredict.load_model('x.pt')"
-    run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+    # From tmp_path: `python -c` looks in its working folder first, where ctest's holds the package.
+    run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=tmp_path,
                          env=dict(os.environ, PYTHONPATH=str(tmp_path)))
     assert run.returncode == 1
     assert "ImportError: matpredict.load_model needs the extension matpredict._learn" in run.stderr, run.stderr
@@ -49,18 +40,26 @@ def test_a_checkpoint_predicts_the_maps_evaluate_writes(checkpoint, tiny_dataset
     image, mask = os.path.join(frame, "images", "001.png"), os.path.join(frame, "label", "001.png")
     subprocess.run([EVALUATE, "--checkpoint", checkpoint, "--image", image, "--mask", mask, "--output-dir",
                     str(tmp_path)], check=True, stdout=subprocess.DEVNULL)
-    rgb = np.asarray(Image.open(image).convert("RGB"), dtype=np.float32) / 255
+    # evaluate isolates the object as matpredict.isolate does, then predicts its crop.
+    on_image = np.asarray(Image.open(mask)) > 0
+    isolated = matpredict.isolate(np.asarray(Image.open(image).convert("RGB")), mask=on_image, size=32)
+    assert np.array_equal(np.asarray(Image.open(tmp_path / "mask.png")) > 0, on_image)
+    written_input = np.asarray(Image.open(tmp_path / "input.png"), dtype=np.float32) / 255
+    assert np.abs(written_input - isolated["input"]).max() <= 0.5 / 255 + 1e-6
+    rgb = isolated["input"]
     maps = model.predict(rgb)
     assert list(maps) == model.outputs
     # The default layout predicts roughness in three channels, as the repository's networks do.
     assert maps["base_color"].shape == (32, 32, 3) and maps["roughness"].shape == (32, 32, 3)
-    on = np.asarray(Image.open(mask)) > 0
+    on = isolated["input_mask"]
+    assert 0.2 < on.mean() < 1
     for name, predicted in maps.items():
         assert predicted.dtype == np.float32 and np.all((0 <= predicted) & (predicted <= 1))
         written = np.asarray(Image.open(tmp_path / f"{name}.png").convert("RGB"), dtype=np.float32) / 255
         expected = np.broadcast_to(predicted, written.shape) if predicted.shape[2] == 1 else predicted
         # evaluate's PNG holds each value rounded to 8 bits, black off the object.
         assert np.abs(written[on] - expected[on]).max() <= 0.5 / 255 + 1e-6, name
+        assert np.all(written[~on] == 0), name
     # The same image again gives the same maps: inference is deterministic.
     again = model.predict(rgb)
     assert all(np.array_equal(maps[name], again[name]) for name in maps)

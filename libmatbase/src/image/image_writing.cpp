@@ -49,6 +49,8 @@ void write_exr(const std::string& path, int width, int height, const std::vector
   write_file_atomically(path, encode_image(path, spec, OIIO::TypeDesc::FLOAT, data), set);
 }
 
+uint8_t display_code(float linear) { return unorm8(linear_to_srgb(std::clamp(linear, 0.0f, 1.0f))); }
+
 void write_display_png(const std::string& path, int width, int height, const float* rgb, const float* alpha,
                        double exposure_stops, AtomicFileSet* set) {
   const int channels = alpha ? 4 : 3;
@@ -61,7 +63,7 @@ void write_display_png(const std::string& path, int width, int height, const flo
     const double unpremultiply = coverage > 0.0f ? gain / coverage : gain;
     for (int c = 0; c < 3; ++c) {
       const float linear = static_cast<float>(rgb[3 * i + c] * unpremultiply);
-      pixels[i * channels + c] = unorm8(linear_to_srgb(std::clamp(linear, 0.0f, 1.0f)));
+      pixels[i * channels + c] = display_code(linear);
     }
     if (alpha) pixels[i * channels + 3] = unorm8(alpha[i]);
   }

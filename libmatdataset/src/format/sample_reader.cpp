@@ -6,6 +6,7 @@
 
 #include "format/resample.h"
 #include "format/texture_target_sample.h"
+#include "matbase/image/object_crop.h"
 #include "matbase/image/srgb.h"
 #include "matdataset/format/dataset_error.h"
 #include "matdataset/format/decoded_image.h"
@@ -42,6 +43,16 @@ std::string listed(const std::vector<fs::path>& files) {
   for (size_t i = 0; i < std::min(files.size(), kNamedFiles); ++i) text += (i ? ", " : "") + files[i].string();
   if (files.size() > kNamedFiles) text += " and " + std::to_string(files.size() - kNamedFiles) + " more";
   return text;
+}
+
+// An image and its object mask at size x size, as samples' inputs are resized.
+InputImage resized_input(const matbase::FloatImage& rgb, const matbase::Mask& object, int size) {
+  const std::vector<int32_t> ids(object.begin(), object.end());
+  InputImage input;
+  input.rgb = resize_bilinear(rgb, size, size);
+  const std::vector<int32_t> resized = resize_nearest(ids, rgb.width, rgb.height, size, size);
+  input.mask.assign(resized.begin(), resized.end());
+  return input;
 }
 
 }  // namespace
@@ -117,23 +128,48 @@ MaterialSample read_sample(const fs::path& root, const SampleId& id, const Sampl
   return sample;
 }
 
-InputImage read_input_image(const fs::path& image_path, const fs::path& mask_path, int size) {
-  if (size < 1) throw std::invalid_argument("read_input_image: size must be at least 1");
+PhotoInput read_photo(const fs::path& image_path, const fs::path& mask_path) {
   const matbase::FloatImage image = decode_finite(image_path);
-  std::vector<int32_t> object(static_cast<size_t>(image.width) * static_cast<size_t>(image.height), 1);
+  PhotoInput photo;
+  photo.rgb = channels_of(image, 0, 3);
+  const size_t pixels = image.pixel_count();
   if (!mask_path.empty()) {
     const matbase::FloatImage mask = decode_finite(mask_path);
     check_same_size(mask.width, mask.height, image, mask_path);
-    for (size_t p = 0; p < object.size(); ++p) object[p] = mask.values[p * static_cast<size_t>(mask.channels)] > 0.0f;
+    photo.mask.emplace(pixels);
+    for (size_t p = 0; p < pixels; ++p) (*photo.mask)[p] = mask.values[p * static_cast<size_t>(mask.channels)] > 0.0f;
   } else if (image.channels == 4 || image.channels == 2) {
-    for (size_t p = 0; p < object.size(); ++p)
-      object[p] = image.values[p * static_cast<size_t>(image.channels) + static_cast<size_t>(image.channels - 1)] > 0.0f;
+    matbase::Mask alpha(pixels);
+    for (size_t p = 0; p < pixels; ++p)
+      alpha[p] = image.values[p * static_cast<size_t>(image.channels) + static_cast<size_t>(image.channels - 1)] > 0.0f;
+    if (std::find(alpha.begin(), alpha.end(), 0) != alpha.end()) photo.mask = std::move(alpha);
   }
-  InputImage input;
-  input.rgb = resize_bilinear(channels_of(image, 0, 3), size, size);
-  const std::vector<int32_t> resized = resize_nearest(object, image.width, image.height, size, size);
-  input.mask.assign(resized.begin(), resized.end());
-  return input;
+  return photo;
+}
+
+InputImage read_input_image(const fs::path& image_path, const fs::path& mask_path, int size) {
+  if (size < 1) throw std::invalid_argument("read_input_image: size must be at least 1");
+  PhotoInput photo = read_photo(image_path, mask_path);
+  const matbase::Mask object = photo.mask ? std::move(*photo.mask) : matbase::Mask(photo.rgb.pixel_count(), 1);
+  return resized_input(photo.rgb, object, size);
+}
+
+IsolatedInput isolated_input(const matbase::FloatImage& rgb, const matbase::Mask& object, int size, CropBackground background) {
+  if (size < 1) throw std::invalid_argument("isolated_input: size must be at least 1");
+  const std::optional<matbase::PixelBox> bounds = matbase::mask_bounds(object, rgb.width, rgb.height);
+  if (!bounds) throw std::invalid_argument("isolated_input: the mask holds no pixel of the object");
+  IsolatedInput isolated;
+  isolated.crop = matbase::object_crop_square(*bounds);
+  const float fill = background == CropBackground::White ? 1.0f : 0.0f;
+  const matbase::FloatImage crop =
+      matbase::crop_to_square(rgb, isolated.crop, std::vector<float>(static_cast<size_t>(rgb.channels), fill), object);
+  matbase::FloatImage object_image(rgb.width, rgb.height, 1);
+  for (size_t p = 0; p < object.size(); ++p) object_image.values[p] = object[p] != 0 ? 1.0f : 0.0f;
+  const matbase::FloatImage crop_mask = matbase::crop_to_square(object_image, isolated.crop, {0.0f});
+  matbase::Mask crop_object(crop_mask.values.size());
+  for (size_t p = 0; p < crop_object.size(); ++p) crop_object[p] = crop_mask.values[p] > 0.0f;
+  isolated.input = resized_input(crop, crop_object, size);
+  return isolated;
 }
 
 }  // namespace matdataset

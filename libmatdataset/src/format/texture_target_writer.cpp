@@ -6,6 +6,7 @@
 
 #include "matbase/file/atomic_file.h"
 #include "matbase/image/image_writing.h"
+#include "matbase/image/object_crop.h"
 #include "matbase/image/png_encoding.h"
 #include "matdataset/format/decoded_image.h"
 
@@ -42,15 +43,11 @@ void write_texture_target_screenshot(const fs::path& root, const std::string& ob
   if (w <= 0 || h <= 0 || maps.coverage.size() != static_cast<size_t>(w) * static_cast<size_t>(h) ||
       maps.color.size() != 3 * maps.coverage.size())
     throw std::invalid_argument("screenshot: the frame's colour and coverage do not match its size");
-  int x0 = w, y0 = h, x1 = -1, y1 = -1;
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      if (maps.coverage[static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x)] > 0.0f)
-        x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
-  if (x1 < 0) x0 = 0, y0 = 0, x1 = w - 1, y1 = h - 1;
-  const int extent = std::max(x1 - x0 + 1, y1 - y0 + 1);
-  const int side = extent + 2 * std::max(2, static_cast<int>(std::lround(0.04 * extent)));
-  const int left = (x0 + x1 + 1 - side) / 2, top = (y0 + y1 + 1 - side) / 2;
+  matbase::Mask covered(maps.coverage.size());
+  for (size_t p = 0; p < covered.size(); ++p) covered[p] = maps.coverage[p] > 0.0f;
+  const matbase::CropSquare square =
+      matbase::object_crop_square(matbase::mask_bounds(covered, w, h).value_or(matbase::PixelBox{0, 0, w - 1, h - 1}));
+  const int side = square.side, left = square.left, top = square.top;
   const float gain = static_cast<float>(std::exp2(maps.exposure_stops));
   std::vector<float> rgb(3 * static_cast<size_t>(side) * static_cast<size_t>(side), 1.0f);  // white
   for (int y = 0; y < side; ++y)

@@ -4,6 +4,7 @@
 // temporary name in the same folder and renamed, so a crash never leaves a half-written file;
 // given an AtomicFileSet, a writer stages its file there instead, to appear with the set's others
 // at its commit(). Every write is checked (a full disk is an error naming the file).
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,10 @@ void write_exr(const std::string& path, int width, int height, const std::vector
 // The exposure a display image takes, in stops: 2^exposure scales floats, and beyond 2^+-126 the
 // image would be all black or all white.
 constexpr double kMaxExposureStops = 126.0;
+
+// The 8-bit code a display image gives a linear value, exposure already applied: the sRGB OETF
+// ("Standard" view) of the value clipped to [0, 1], rounded (write_display_png's every pixel).
+uint8_t display_code(float linear);
 
 // 8-bit PNG from linear RGB(A): exposure in stops, then the sRGB OETF ("Standard" view), clipped.
 // `alpha` may be null. Colour is premultiplied by alpha in the input, as rendered, and written

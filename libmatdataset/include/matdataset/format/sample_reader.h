@@ -6,10 +6,12 @@
 // decoded to linear values for a loss in linear space (W5).
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "matbase/image/float_image.h"
+#include "matbase/image/object_crop.h"
 #include "matdataset/format/dataset_index.h"
 
 namespace matdataset {
@@ -72,5 +74,30 @@ struct InputImage {
 // background: its W17), else from the image's alpha channel (> 0), else it is every pixel.
 // Throws DatasetError naming the file.
 InputImage read_input_image(const std::filesystem::path& image_path, const std::filesystem::path& mask_path, int size);
+
+// A photograph or a frame to isolate an object in: its RGB (display-encoded as stored; a grey
+// image in all three channels) and the object mask `mask_path` gives (any nonzero value) when it
+// is not empty, else the image's alpha (> 0) when some pixel is transparent; none otherwise (an
+// alpha opaque everywhere says nothing of the object). Throws DatasetError naming the file.
+struct PhotoInput {
+  matbase::FloatImage rgb;
+  std::optional<matbase::Mask> mask;
+};
+PhotoInput read_photo(const std::filesystem::path& image_path, const std::filesystem::path& mask_path);
+
+// What an isolated object is composited on: black, what the dataset's images hold where nothing
+// was hit (the trainer drops their alpha, so its networks learn on black), or white, what the
+// paper's preprocessing and the texture-target screenshots key onto.
+enum class CropBackground { Black, White };
+
+struct IsolatedInput {
+  InputImage input;          // the crop, resized; mask: the object in it
+  matbase::CropSquare crop;  // where the crop lies in the image, in its pixels
+};
+
+// The network's input for the object `object` marks in `rgb`: the square around it
+// (matbase::object_crop_square), every pixel outside the object set to `background`, resized to
+// size x size as samples' inputs are. Throws std::invalid_argument for an empty mask.
+IsolatedInput isolated_input(const matbase::FloatImage& rgb, const matbase::Mask& object, int size, CropBackground background);
 
 }  // namespace matdataset

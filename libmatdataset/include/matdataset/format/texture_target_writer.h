@@ -26,7 +26,7 @@ void write_texture_target_references(const std::filesystem::path& root, const st
                                      const MaterialReferences& references);
 
 // The frame's image cropped to a square around the object (its covered pixels' bounding box and
-// a margin of 4 %), composited over white in linear light and sRGB-encoded, as the paper's
+// a margin of 4 %: matbase::object_crop_square), composited over white in linear light and sRGB-encoded, as the paper's
 // preprocessing keyed its renders onto white. A frame with no object is kept whole.
 void write_texture_target_screenshot(const std::filesystem::path& root, const std::string& object,
                                      const std::string& material, const std::string& stem, const FrameMaps& maps);

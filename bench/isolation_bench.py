@@ -1,0 +1,188 @@
+#!/usr/bin/env python3
+"""How well each segmenter isolates an object, measured on rendered frames whose label is the truth.
+
+    PYTHONPATH=build/python /usr/bin/python3 bench/isolation_bench.py [--objects all] [--classes all]
+        [--size 256] [--spp 16] [--output isolation_bench.json]
+
+Every built-in object in a material of every library class is rendered from one view of a grid
+around it (a cell drawn from the seed), twice: on the black background under the paper's light
+rig, and cluttered, standing on a textured floor of another class under an environment map of
+coloured blotches and a sun, so that the background is no flat colour. The object's pixels are
+the label AOV's pixels of its class; the prompt is their bounding box grown by 5 % on each side
+(matpredict.isolate's `box`), as a user draws a box around an object. Each segmenter's mask is
+scored by its intersection over union with the truth, and timed (the isolate call alone, on
+the frame as an 8-bit display image). Prints the IoU distribution per segmenter and background,
+and per material class, as markdown tables; writes every frame's figures to --output.
+"""
+import argparse
+import json
+import math
+import os
+import random
+import statistics
+import tempfile
+import time
+
+import numpy as np
+
+import matpredict
+
+# The floor's class, unless the object has it: then the second.
+FLOOR_CLASSES = ("concrete", "wood")
+
+
+def write_environment(path, seed):
+    """An equirectangular EXR of soft coloured blotches over a sky-to-floor gradient (the clutter
+    of a room's walls, seen blurred), written by OpenImageIO."""
+    import OpenImageIO as oiio
+
+    rng = np.random.default_rng(seed)
+    height, width = 128, 256
+    v, u = np.mgrid[0:height, 0:width] / np.array([height, width])[:, None, None]
+    image = np.stack([0.5 + 0.3 * (1 - v), 0.45 + 0.2 * (1 - v), 0.4 + 0.1 * v], axis=-1)
+    for _ in range(40):
+        cu, cv, radius = rng.random(), rng.random(), 0.03 + 0.1 * rng.random()
+        du = np.minimum(np.abs(u - cu), 1 - np.abs(u - cu))
+        weight = np.exp(-((du / radius) ** 2 + ((v - cv) / radius) ** 2))
+        image += weight[:, :, None] * (rng.random(3) * 1.5 - 0.3)
+    image = np.clip(image, 0.02, None).astype(np.float32)
+    output = oiio.ImageOutput.create(path)
+    assert output.open(path, oiio.ImageSpec(width, height, 3, "float"))
+    assert output.write_image(image)
+    output.close()
+
+
+def floor_mesh(half_side):
+    positions = np.array([[-1, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0]], dtype=float) * half_side
+    uvs = np.array([[0, 0], [1, 0], [1, 1], [0, 1]], dtype=float) * half_side  # one texture per metre
+    return matpredict.Mesh(positions, np.array([[0, 1, 2], [0, 2, 3]]), uvs=uvs)
+
+
+def object_scene(name, material_class, seed, camera, size, spp, cluttered, environment):
+    scene = {
+        "camera": dict(camera, width=size, height=size),
+        "materials": {"object": {"class": material_class, "seed": seed, "resolution": 512}},
+        "objects": [{"builtin": name, "material": "object"}],
+        "render": {"spp": spp, "seed": seed},
+    }
+    if not cluttered:
+        scene["lights"] = {"rig": {}}
+        return scene
+    floor = next(c for c in FLOOR_CLASSES if c != material_class)
+    scene["materials"]["floor"] = {"class": floor, "seed": seed + 1, "resolution": 512}
+    scene["objects"].append({"mesh": floor_mesh(20.0), "material": "floor"})
+    scene["background"] = {"environment": environment, "strength": 1.0, "rotation_z_deg": (37 * seed) % 360}
+    scene["lights"] = [{"type": "sun", "position": [2, -1, 2], "look_at": [0, 0, 0], "strength": 3, "angle_deg": 5}]
+    return scene
+
+
+def display(color):
+    """The frame as a camera would expose it: its 98th percentile luminance at 0.9, sRGB 8-bit."""
+    luminance = color @ np.array([0.2126, 0.7152, 0.0722], dtype=np.float32)
+    bright = float(np.percentile(luminance, 98))
+    stops = math.log2(0.9 / bright) if bright > 0 else 0.0
+    return matpredict.display_image(color, exposure_stops=max(-20.0, min(20.0, stops)))
+
+
+def grown_box(mask, fraction):
+    rows, columns = np.nonzero(mask)
+    y0, y1, x0, x1 = rows.min(), rows.max(), columns.min(), columns.max()
+    grow_x, grow_y = round(fraction * (x1 - x0 + 1)), round(fraction * (y1 - y0 + 1))
+    height, width = mask.shape
+    return (int(max(0, x0 - grow_x)), int(max(0, y0 - grow_y)), int(min(width - 1, x1 + grow_x)),
+            int(min(height - 1, y1 + grow_y)))
+
+
+def intersection_over_union(a, b):
+    union = np.logical_or(a, b).sum()
+    return float(np.logical_and(a, b).sum() / union) if union else 1.0
+
+
+def summary_row(label, ious, seconds):
+    ious = sorted(ious)
+    decile = ious[max(0, len(ious) // 10 - 1)] if len(ious) >= 10 else ious[0]
+    return (f"| {label} | {len(ious)} | {statistics.mean(ious):.3f} | {decile:.3f} | {statistics.median(ious):.3f} | "
+            f"{ious[0]:.3f} | {statistics.median(seconds) * 1000:.0f} |")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--objects", default="all", help="comma-separated built-in objects, or all")
+    parser.add_argument("--classes", default="all", help="comma-separated material classes, or all")
+    parser.add_argument("--size", type=int, default=256)
+    parser.add_argument("--spp", type=int, default=16)
+    parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--segmenters", default="grabcut", help="comma-separated: grabcut")
+    parser.add_argument("--output", default="isolation_bench.json")
+    args = parser.parse_args()
+
+    objects = matpredict.builtin_objects() if args.objects == "all" else args.objects.split(",")
+    classes = matpredict.material_classes()
+    chosen = list(classes) if args.classes == "all" else args.classes.split(",")
+    segmenters = args.segmenters.split(",")
+    rng = random.Random(args.seed)
+    records = []
+    skipped = 0
+    with tempfile.TemporaryDirectory() as folder:
+        environment = os.path.join(folder, "blotches.exr")
+        write_environment(environment, args.seed)
+        for name in objects:
+            # A view that frames the object: a grid cell above the horizon, at 3.4 times its
+            # bounding sphere's radius (Blender's 50 mm lens, 39.6 degrees across, fits the sphere
+            # from 2.95 radii).
+            (cx, cy, cz), radius = matpredict.load_scene(
+                object_scene(name, "wood", 0, {"position": [1, 1, 1], "look_at": [0, 0, 0]}, 8, 1, False, None)).bounds
+            for k, material_class in enumerate(chosen):
+                cell = [rng.randrange(5, 12), rng.randrange(0, 16)]
+                camera = {"grid": {"cell": cell, "n_phi": 16, "n_theta": 16, "radius": 3.4 * radius,
+                                   "theta_range_deg": [0, 360], "center": [cx, cy, cz]}}
+                for cluttered in (False, True):
+                    scene = matpredict.load_scene(object_scene(name, material_class, 1 + k, camera, args.size, args.spp,
+                                                               cluttered, environment))
+                    frame = matpredict.render(scene, aovs=["label"])
+                    truth = frame["label"][:, :, 0] == classes[material_class]
+                    edges = np.concatenate([truth[0], truth[-1], truth[:, 0], truth[:, -1]])
+                    if truth.sum() < 16 or edges.any():
+                        skipped += 1  # not wholly in view: no box lies around it
+                        continue
+                    image = display(frame["color"])
+                    box = grown_box(truth, 0.05)
+                    for segmenter in segmenters:
+                        start = time.perf_counter()
+                        try:
+                            iou = intersection_over_union(matpredict.isolate(image, box=box, segmenter=segmenter)["mask"], truth)
+                            refusal = None
+                        except matpredict.InputError as error:  # counted as no overlap
+                            iou, refusal = 0.0, str(error)
+                        seconds = time.perf_counter() - start
+                        records.append({"object": name, "class": material_class, "cluttered": cluttered,
+                                        "segmenter": segmenter, "cell": cell, "box": list(box), "iou": iou,
+                                        "refusal": refusal, "seconds": seconds, "object_pixels": int(truth.sum())})
+            print(f"{name}: {len(records)} frames so far", flush=True)
+    with open(args.output, "w") as f:
+        json.dump({"size": args.size, "spp": args.spp, "seed": args.seed, "skipped": skipped, "frames": records}, f, indent=1)
+
+    print(f"\nIoU with the true mask, box prompt (the label's box grown by 5 %), {args.size} x {args.size} frames "
+          f"({skipped} frames skipped: the object not wholly in view):\n")
+    print("| segmenter, background | frames | mean | 10th percentile | median | worst | ms per image |")
+    print("|---|---|---|---|---|---|---|")
+    for segmenter in segmenters:
+        for cluttered in (False, True):
+            chosen_records = [r for r in records if r["segmenter"] == segmenter and r["cluttered"] == cluttered]
+            if chosen_records:
+                print(summary_row(f"{segmenter}, {'cluttered' if cluttered else 'black'}",
+                                  [r["iou"] for r in chosen_records], [r["seconds"] for r in chosen_records]))
+    print("\nMean IoU per material class (cluttered):\n")
+    print("| class | " + " | ".join(segmenters) + " |")
+    print("|---|" + "---|" * len(segmenters))
+    for material_class in chosen:
+        cells = []
+        for segmenter in segmenters:
+            ious = [r["iou"] for r in records if r["segmenter"] == segmenter and r["cluttered"] and r["class"] == material_class]
+            cells.append(f"{statistics.mean(ious):.3f}" if ious else "-")
+        print(f"| {material_class} | " + " | ".join(cells) + " |")
+    print(f"\nwrote {args.output}")
+
+
+if __name__ == "__main__":
+    main()
