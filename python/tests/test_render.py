@@ -36,6 +36,13 @@ def test_render_equals_the_cli_bit_for_bit(tmp_path, small_scene):
         assert np.array_equal(reference, expected), name
         compared += 1
     assert compared == len(frame) - 1
+    # The display image is the PNG's bytes.
+    from PIL import Image
+
+    png = np.asarray(Image.open(out / "view_color.png"))
+    assert png.shape == (36, 48, 3)
+    assert np.array_equal(matpredict.display_image(frame["color"], exposure_stops=matpredict.load_scene(small_scene).exposure_stops), png)
+    assert not np.array_equal(matpredict.display_image(frame["color"], exposure_stops=1.0), png)
 
 
 def test_arrays_have_the_documented_shapes_dtypes_and_owner(small_scene):
@@ -222,6 +229,21 @@ def test_bad_mesh_arrays_raise_clear_errors():
     scene["objects"][0]["seed"] = 3
     with pytest.raises(matpredict.InputError, match="the scene: /objects/0/seed: unknown key"):
         matpredict.load_scene(scene)
+
+
+def test_the_names_a_scene_dict_can_use_load():
+    assert "vase" in matpredict.builtin_objects() and len(matpredict.builtin_objects()) == 18
+    classes = matpredict.material_classes()
+    assert classes["wood"] == 7 and "background" not in classes
+    scene = matpredict.load_scene({
+        "camera": {"position": [1.2, -1.2, 0.9], "look_at": [0, 0, 0.3], "width": 16, "height": 16},
+        "lights": {"rig": {}},
+        "materials": {name: {"class": name, "resolution": 8} for name in classes},
+        "objects": [{"builtin": name, "material": list(classes)[k % len(classes)], "transform": {"translate": [k, 0, 0]}}
+                    for k, name in enumerate(matpredict.builtin_objects())],
+        "render": {"spp": 1},
+    })
+    assert scene.bounds[1] > 8  # eighteen objects a metre apart
 
 
 def test_aov_info_describes_every_array_render_returns(small_scene):
