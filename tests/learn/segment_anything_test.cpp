@@ -1,0 +1,149 @@
+// Segment Anything's prompt encoder and mask decoder: the official module layout (names, shapes
+// and parameter counts measured from facebookresearch/segment-anything's own model, in
+// tests/learn/data/segment_anything), what prompts become, and the way masks come back to the
+// photograph against the closed form of bilinear interpolation.
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include <catch2/catch.hpp>
+#include <torch/torch.h>
+
+#include "matlearn/models/segment_anything/sam_frame.h"
+#include "matlearn/models/segment_anything/sam_mask_decoder.h"
+#include "matlearn/models/segment_anything/sam_prompt_encoder.h"
+
+namespace {
+
+// The official state_dict's entries under `prefix` ("prompt_encoder."), name -> shape text "(a, b)".
+std::map<std::string, std::string> official_entries(const std::string& file, const std::string& prefix) {
+  std::ifstream in(std::string(MATPREDICT_SAM_DATA) + "/" + file);
+  REQUIRE(in);
+  std::map<std::string, std::string> entries;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    const size_t tab = line.find('\t');
+    if (line.compare(0, prefix.size(), prefix) == 0) entries[line.substr(prefix.size(), tab - prefix.size())] = line.substr(tab + 1);
+  }
+  return entries;
+}
+
+std::string shape_text(const torch::Tensor& t) {
+  std::string text = "(";
+  for (int64_t d = 0; d < t.dim(); ++d) text += (d ? ", " : "") + std::to_string(t.size(d));
+  return text + (t.dim() == 1 ? ",)" : ")");
+}
+
+std::map<std::string, std::string> our_entries(const torch::nn::Module& module) {
+  std::map<std::string, std::string> entries;
+  for (const auto& p : module.named_parameters()) entries[p.key()] = shape_text(p.value());
+  for (const auto& b : module.named_buffers()) entries[b.key()] = shape_text(b.value());
+  return entries;
+}
+
+int64_t parameter_count(const torch::nn::Module& module) {
+  int64_t count = 0;
+  for (const auto& p : module.parameters()) count += p.numel();
+  return count;
+}
+
+}  // namespace
+
+TEST_CASE("the prompt encoder and mask decoder are laid out as the official ones", "[segment_anything]") {
+  matlearn::SamPromptEncoder prompt_encoder;
+  matlearn::SamMaskDecoder mask_decoder;
+  // Measured by building the official vit_b and vit_t models (the two share both modules).
+  CHECK(parameter_count(*prompt_encoder) == 6220);
+  CHECK(parameter_count(*mask_decoder) == 4058340);
+  for (const char* file : {"vit_b_state_dict.tsv", "vit_t_state_dict.tsv"}) {
+    CHECK(our_entries(*prompt_encoder) == official_entries(file, "prompt_encoder."));
+    CHECK(our_entries(*mask_decoder) == official_entries(file, "mask_decoder."));
+  }
+}
+
+TEST_CASE("prompts become tokens: a box's two corners, points with a padding point", "[segment_anything]") {
+  torch::manual_seed(1);
+  matlearn::SamPromptEncoder encoder;
+  torch::NoGradGuard no_grad;
+  const torch::Tensor box = torch::tensor({{100.0f, 200.0f, 600.0f, 900.0f}});
+  const matlearn::SamPromptTokens boxed = encoder->forward(std::nullopt, std::nullopt, box);
+  CHECK(boxed.sparse.sizes() == torch::IntArrayRef({1, 2, 256}));
+  CHECK(boxed.dense.sizes() == torch::IntArrayRef({1, 256, 64, 64}));
+  const torch::Tensor points = torch::tensor({{{10.0f, 20.0f}, {500.0f, 300.0f}}});
+  const matlearn::SamPromptTokens on = encoder->forward(points, torch::tensor({{1, 1}}), std::nullopt);
+  const matlearn::SamPromptTokens off = encoder->forward(points, torch::tensor({{0, 1}}), std::nullopt);
+  REQUIRE(on.sparse.sizes() == torch::IntArrayRef({1, 3, 256}));
+  // The padding point's token is "not a point", whatever its position.
+  const auto weight = [&](const char* name) { return encoder->named_parameters()[name]; };
+  CHECK(torch::allclose(on.sparse[0][2], weight("not_a_point_embed.weight")[0]));
+  // A point's label adds its kind's embedding to the same position encoding.
+  CHECK(torch::allclose(on.sparse[0][0] - off.sparse[0][0],
+                        weight("point_embeddings.1.weight")[0] - weight("point_embeddings.0.weight")[0], 1e-5, 1e-6));
+  CHECK(torch::equal(on.sparse[0][1], off.sparse[0][1]));
+  // With a box no padding point is added: two points, two corners.
+  CHECK(encoder->forward(points, torch::tensor({{1, 1}}), box).sparse.size(1) == 4);
+  // Random Fourier features are sines and cosines: each pair's squares sum to 1.
+  const torch::Tensor grid = encoder->dense_positional_encoding();
+  CHECK(grid.sizes() == torch::IntArrayRef({1, 256, 64, 64}));
+  CHECK(torch::allclose(grid.slice(1, 0, 128).pow(2) + grid.slice(1, 128, 256).pow(2), torch::ones({1, 128, 64, 64}), 1e-5, 1e-5));
+}
+
+TEST_CASE("the mask decoder gives four masks of 256 x 256 and their IoU scores", "[segment_anything]") {
+  torch::manual_seed(2);
+  matlearn::SamPromptEncoder encoder;
+  matlearn::SamMaskDecoder decoder;
+  torch::NoGradGuard no_grad;
+  const matlearn::SamPromptTokens tokens = encoder->forward(std::nullopt, std::nullopt, torch::tensor({{100.0f, 200.0f, 600.0f, 900.0f}}));
+  const torch::Tensor image = torch::randn({1, 256, 64, 64});
+  const matlearn::SamMasks masks = decoder->forward(image, encoder->dense_positional_encoding(), tokens.sparse, tokens.dense);
+  CHECK(masks.logits.sizes() == torch::IntArrayRef({1, 4, 256, 256}));
+  CHECK(masks.iou.sizes() == torch::IntArrayRef({1, 4}));
+  CHECK(torch::isfinite(masks.logits).all().item<bool>());
+  // Two prompts on one image decode as each alone.
+  const torch::Tensor two = torch::cat({tokens.sparse, tokens.sparse.flip(1)});
+  const matlearn::SamMasks both = decoder->forward(image, encoder->dense_positional_encoding(), two, tokens.dense.expand({2, -1, -1, -1}));
+  CHECK(torch::allclose(both.logits[0], masks.logits[0], 1e-4, 1e-4));
+}
+
+TEST_CASE("SamFrame resizes the longer side to 1024 as the official transform rounds", "[segment_anything]") {
+  const auto size = [](int64_t h, int64_t w) {
+    const matlearn::SamFrame frame = matlearn::SamFrame::of(h, w);
+    return std::make_pair(frame.resized_height, frame.resized_width);
+  };
+  CHECK(size(480, 640) == std::make_pair<int64_t, int64_t>(768, 1024));
+  CHECK(size(333, 500) == std::make_pair<int64_t, int64_t>(682, 1024));
+  CHECK(size(1500, 1000) == std::make_pair<int64_t, int64_t>(1024, 683));
+  CHECK(size(700, 701) == std::make_pair<int64_t, int64_t>(1023, 1024));
+  const torch::Tensor point = matlearn::SamFrame::of(480, 640).to_input(torch::tensor({{320.0f, 100.0f}}));
+  CHECK(torch::allclose(point, torch::tensor({{512.0f, 160.0f}})));
+}
+
+TEST_CASE("mask logits come back to the photograph by bilinear interpolation between pixel centres", "[segment_anything]") {
+  // 2 x 2 logits over the 1024 input: rows are y. Upsampled 512x, output pixel o samples the
+  // source at (o + 1/2) / 512 - 1/2, clamped to [0, 1]: weight w(o) of the second row or column.
+  const torch::Tensor logits = torch::tensor({{-1.0f, 3.0f}, {1.0f, -3.0f}}).view({1, 1, 2, 2});
+  const auto w = [](int64_t o) { return std::clamp((static_cast<double>(o) + 0.5) / 512.0 - 0.5, 0.0, 1.0); };
+  const auto expected = [&](int64_t x, int64_t y) {
+    return (1 - w(y)) * ((1 - w(x)) * -1.0 + w(x) * 3.0) + w(y) * ((1 - w(x)) * 1.0 + w(x) * -3.0);
+  };
+  // A square photograph of 1024: nothing cut, nothing resized.
+  const torch::Tensor square = matlearn::SamFrame::of(1024, 1024).logits_at_photo_size(logits)[0][0];
+  REQUIRE(square.sizes() == torch::IntArrayRef({1024, 1024}));
+  for (const int64_t x : {0, 255, 256, 300, 511, 512, 520, 767, 768, 1023})
+    for (const int64_t y : {0, 200, 256, 511, 513, 700, 1023})
+      CHECK(square[y][x].item<double>() == Approx(expected(x, y)).margin(1e-5));
+  // The object (> 0): top right and bottom left; at the centre the sign turns with the weights.
+  CHECK(square[0][1023].item<float>() > 0);
+  CHECK(square[1023][0].item<float>() > 0);
+  CHECK(square[0][0].item<float>() < 0);
+  CHECK((square[511][511].item<float>() > 0) == (expected(511, 511) > 0));
+  CHECK((square[520][520].item<float>() > 0) == (expected(520, 520) > 0));
+  CHECK(expected(520, 520) < 0);
+  // A 512 x 1024 photograph fills the input's top half: the bottom half is cut and nothing resized.
+  const torch::Tensor wide = matlearn::SamFrame::of(512, 1024).logits_at_photo_size(logits)[0][0];
+  REQUIRE(wide.sizes() == torch::IntArrayRef({512, 1024}));
+  CHECK(torch::allclose(wide, square.slice(0, 0, 512)));
+}
