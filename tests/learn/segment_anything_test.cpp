@@ -14,6 +14,7 @@
 #include "matlearn/models/segment_anything/sam_frame.h"
 #include "matlearn/models/segment_anything/sam_mask_decoder.h"
 #include "matlearn/models/segment_anything/sam_prompt_encoder.h"
+#include "matlearn/models/segment_anything/sam_vit_encoder.h"
 
 namespace {
 
@@ -146,4 +147,49 @@ TEST_CASE("mask logits come back to the photograph by bilinear interpolation bet
   const torch::Tensor wide = matlearn::SamFrame::of(512, 1024).logits_at_photo_size(logits)[0][0];
   REQUIRE(wide.sizes() == torch::IntArrayRef({512, 1024}));
   CHECK(torch::allclose(wide, square.slice(0, 0, 512)));
+}
+
+TEST_CASE("the ViT-B image encoder is laid out as the official one", "[segment_anything]") {
+  matlearn::SamVitEncoder encoder;
+  // Measured by building the official vit_b model.
+  CHECK(parameter_count(*encoder) == 89670912);
+  CHECK(our_entries(*encoder) == official_entries("vit_b_state_dict.tsv", "image_encoder."));
+}
+
+TEST_CASE("the ViT encoder's windows, padding and global blocks", "[segment_anything]") {
+  torch::manual_seed(3);
+  torch::NoGradGuard no_grad;
+  // A small encoder of the same design: 80 px in 16 px patches, a 5 x 5 grid.
+  matlearn::SamVitConfig small;
+  small.image_side = 80;
+  small.dim = 32;
+  small.depth = 2;
+  small.heads = 2;
+  small.window = 2;  // 5 is no multiple of 2: every windowed block pads to 6 x 6
+  small.global_blocks = {1};
+  small.out_channels = 16;
+  matlearn::SamVitEncoder encoder(small);
+  for (auto& p : encoder->parameters()) p.normal_(0.0, 0.2);  // the relative positions too
+  const torch::Tensor image = torch::randn({2, 3, 80, 80});
+  const torch::Tensor out = encoder->forward(image);
+  CHECK(out.sizes() == torch::IntArrayRef({2, 16, 5, 5}));
+  CHECK(torch::isfinite(out).all().item<bool>());
+  // Each image of a batch is encoded alone.
+  CHECK(torch::allclose(encoder->forward(image.slice(0, 1, 2)), out.slice(0, 1, 2), 1e-4, 1e-5));
+
+  // One window over the whole grid is global attention.
+  matlearn::SamVitBlock windowed(32, 2, 5, 5), global(32, 2, 0, 5);
+  for (auto& p : windowed->parameters()) p.normal_(0.0, 0.2);
+  auto source = windowed->named_parameters();
+  for (auto& p : global->named_parameters()) p.value().copy_(source[p.key()]);
+  const torch::Tensor tokens = torch::randn({1, 5, 5, 32});
+  CHECK(torch::allclose(windowed->forward(tokens), global->forward(tokens), 1e-5, 1e-6));
+  // Windows see only their own tokens: changing a token of the last window leaves the first's.
+  matlearn::SamVitBlock small_windows(32, 2, 2, 5);
+  for (auto& p : small_windows->parameters()) p.normal_(0.0, 0.2);
+  torch::Tensor changed = tokens.clone();
+  changed[0][4][4] += 1.0;
+  const torch::Tensor before = small_windows->forward(tokens), after = small_windows->forward(changed);
+  CHECK(torch::equal(before.slice(1, 0, 2).slice(2, 0, 2), after.slice(1, 0, 2).slice(2, 0, 2)));
+  CHECK_FALSE(torch::equal(before[0][4][4], after[0][4][4]));
 }
