@@ -14,6 +14,7 @@
 #include "matlearn/models/segment_anything/sam_frame.h"
 #include "matlearn/models/segment_anything/sam_mask_decoder.h"
 #include "matlearn/models/segment_anything/sam_prompt_encoder.h"
+#include "matlearn/models/segment_anything/sam_tiny_vit_encoder.h"
 #include "matlearn/models/segment_anything/sam_vit_encoder.h"
 
 namespace {
@@ -192,4 +193,18 @@ TEST_CASE("the ViT encoder's windows, padding and global blocks", "[segment_anyt
   const torch::Tensor before = small_windows->forward(tokens), after = small_windows->forward(changed);
   CHECK(torch::equal(before.slice(1, 0, 2).slice(2, 0, 2), after.slice(1, 0, 2).slice(2, 0, 2)));
   CHECK_FALSE(torch::equal(before[0][4][4], after[0][4][4]));
+}
+
+TEST_CASE("MobileSAM's TinyViT encoder is laid out as the official one and gives the 64 x 64 embedding", "[segment_anything]") {
+  torch::manual_seed(4);
+  matlearn::SamTinyVitEncoder encoder;
+  // Measured by building the official vit_t model (its unused 1000-class head included).
+  CHECK(parameter_count(*encoder) == 6065532);
+  std::map<std::string, std::string> official = official_entries("vit_t_state_dict.tsv", "image_encoder.");
+  CHECK(our_entries(*encoder) == official);
+  encoder->eval();
+  torch::NoGradGuard no_grad;
+  const torch::Tensor embedding = encoder->forward(torch::randn({1, 3, 1024, 1024}));
+  CHECK(embedding.sizes() == torch::IntArrayRef({1, 256, 64, 64}));
+  CHECK(torch::isfinite(embedding).all().item<bool>());
 }
