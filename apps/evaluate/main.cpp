@@ -24,7 +24,7 @@
 #include "matlearn/evaluation/inference.h"
 #include "matlearn/evaluation/panels.h"
 #include "matlearn/evaluation/report.h"
-#include "matlearn/isolation/grabcut.h"
+#include "matlearn/evaluation/segmenter_choice.h"
 #include "matlearn/isolation/object_isolation.h"
 #include "matlearn/training/checkpoint.h"
 #include "matmaterial/material_classes.h"
@@ -102,10 +102,10 @@ matlearn::IsolatedObject isolated_object(const Options& o, const matlearn::Promp
     fmt::print("object: the mask of {}\n", source);
     return {*photo.mask, matdataset::isolated_input(photo.rgb, *photo.mask, size, background)};
   }
-  const matlearn::GrabCutSegmenter segmenter;
-  matlearn::IsolatedObject object = matlearn::isolate_object(photo.rgb, prompt, segmenter, size, background, o.image.string());
+  const std::unique_ptr<matlearn::Segmenter> segmenter = matlearn::make_segmenter(o.segmenter);
+  matlearn::IsolatedObject object = matlearn::isolate_object(photo.rgb, prompt, *segmenter, size, background, o.image.string());
   const matbase::PixelBox box = prompt.box ? *prompt.box : *matlearn::default_prompt(photo.rgb.width, photo.rgb.height).box;
-  fmt::print("object: {} in the box ({},{})-({},{}){}, {} px of {} x {}\n", segmenter.name(), box.x0, box.y0, box.x1,
+  fmt::print("object: {} in the box ({},{})-({},{}){}, {} px of {} x {}\n", segmenter->name(), box.x0, box.y0, box.x1,
              box.y1, prompt.points.empty() ? "" : fmt::format(" and {} points", prompt.points.size()),
              std::count(object.mask.begin(), object.mask.end(), 1), photo.rgb.width, photo.rgb.height);
   return object;
@@ -255,8 +255,9 @@ int main(int argc, char** argv) {
                                  "object (default: the image's central 90 %)");
   app.add_option("--point", o.points, "with --image: X,Y, a pixel on the object, or X,Y,0 one off it (repeatable)");
   app.add_option("--segmenter", o.segmenter, "with --image and no mask: what finds the object: grabcut (OpenCV's GrabCut, "
-                                             "no weights)")
-      ->check(CLI::IsMember({"grabcut"}))
+                                             "no weights) or sam:CHECKPOINT (Segment Anything, ViT-B or MobileSAM, "
+                                             "converted by scripts/convert_segment_anything.py)")
+      ->check([](const std::string& choice) { return matlearn::segmenter_choice_problem(choice).value_or(""); })
       ->capture_default_str();
   app.add_option("--background", o.background, "with --image: what the crop shows off the object: black (what networks "
                                                "trained on make_dataset's frames saw) or white (the paper's preprocessing)")

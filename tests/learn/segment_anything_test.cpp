@@ -2,7 +2,11 @@
 // and parameter counts measured from facebookresearch/segment-anything's own model, in
 // tests/learn/data/segment_anything), what prompts become, and the way masks come back to the
 // photograph against the closed form of bilinear interpolation.
+#include <sys/wait.h>
+
 #include <algorithm>
+#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -11,11 +15,15 @@
 #include <catch2/catch.hpp>
 #include <torch/torch.h>
 
+#include "matlearn/evaluation/segmenter_choice.h"
 #include "matlearn/models/segment_anything/sam_frame.h"
 #include "matlearn/models/segment_anything/sam_mask_decoder.h"
 #include "matlearn/models/segment_anything/sam_prompt_encoder.h"
+#include "matlearn/models/segment_anything/sam_segmenter.h"
 #include "matlearn/models/segment_anything/sam_tiny_vit_encoder.h"
 #include "matlearn/models/segment_anything/sam_vit_encoder.h"
+#include "matlearn/models/segment_anything/segment_anything.h"
+#include "matlearn/models/state_dict.h"
 
 namespace {
 
@@ -207,4 +215,82 @@ TEST_CASE("MobileSAM's TinyViT encoder is laid out as the official one and gives
   const torch::Tensor embedding = encoder->forward(torch::randn({1, 3, 1024, 1024}));
   CHECK(embedding.sizes() == torch::IntArrayRef({1, 256, 64, 64}));
   CHECK(torch::isfinite(embedding).all().item<bool>());
+}
+
+namespace {
+
+// Runs a command, its output kept: (exit status, output).
+std::pair<int, std::string> run(const std::string& command) {
+  std::string output;
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  REQUIRE(pipe);
+  char buffer[512];
+  while (fgets(buffer, sizeof buffer, pipe)) output += buffer;
+  const int status = pclose(pipe);
+  return {WEXITSTATUS(status), output};
+}
+
+// A MobileSAM checkpoint in the released layout with random weights, written by Debian's torch,
+// then converted by the script a user runs.
+std::filesystem::path converted_mobile_sam(const std::filesystem::path& folder, const std::string& options) {
+  std::filesystem::create_directories(folder);
+  const std::string python = MATPREDICT_DEBIAN_PYTHON;
+  const std::filesystem::path released = folder / "mobile_sam.pt", converted = folder / "converted.pt";
+  REQUIRE(run(python + " " + MATPREDICT_SAM_CHECKPOINT_SCRIPT + " " + MATPREDICT_SAM_DATA + "/vit_t_state_dict.tsv " +
+              released.string() + " " + options).first == 0);
+  const auto [status, output] = run(python + " " + MATPREDICT_SAM_CONVERT_SCRIPT + " " + released.string() + " " + converted.string());
+  INFO(output);
+  REQUIRE(status == 0);
+  return converted;
+}
+
+}  // namespace
+
+TEST_CASE("a released MobileSAM checkpoint, converted, loads and segments", "[segment_anything]") {
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "matpredict_sam_checkpoint_test";
+  std::filesystem::remove_all(folder);
+  // Released files may lack the BatchNorm counters: the script adds them.
+  const std::filesystem::path checkpoint = converted_mobile_sam(folder / "counters", "--without-counters");
+  const matlearn::SamSegmenter segmenter(checkpoint);
+  CHECK(segmenter.size() == matlearn::SamSize::MobileSam);
+  CHECK(segmenter.name() == "sam:" + checkpoint.string());
+  // The weights are the file's.
+  const std::map<std::string, torch::Tensor> file = matlearn::read_state_dict(checkpoint);
+  matlearn::SegmentAnything model = matlearn::load_segment_anything(checkpoint);
+  const auto parameters = model->named_parameters();
+  CHECK(torch::equal(parameters["mask_decoder.iou_token.weight"], file.at("mask_decoder.iou_token.weight")));
+  CHECK(torch::equal(model->named_buffers()["prompt_encoder.pe_layer.positional_encoding_gaussian_matrix"],
+                     file.at("prompt_encoder.pe_layer.positional_encoding_gaussian_matrix")));
+  // A 160 x 120 photograph and a box: a mask of its size (random weights: any content).
+  matbase::FloatImage photo(160, 120, 3, 0.5f);
+  const matbase::Mask mask = segmenter.segment(photo, {matbase::PixelBox{40, 30, 119, 89}, {}});
+  CHECK(mask.size() == 160u * 120u);
+  CHECK(std::all_of(mask.begin(), mask.end(), [](uint8_t v) { return v <= 1; }));
+  // The same photograph, the same mask.
+  CHECK(segmenter.segment(photo, {matbase::PixelBox{40, 30, 119, 89}, {}}) == mask);
+}
+
+TEST_CASE("checkpoints that do not fit are refused naming the file and the tensor", "[segment_anything]") {
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "matpredict_sam_refusal_test";
+  std::filesystem::remove_all(folder);
+  const std::filesystem::path wrong = converted_mobile_sam(folder / "wrong", "--wrong mask_decoder.iou_token.weight");
+  CHECK_THROWS_WITH(matlearn::load_segment_anything(wrong),
+                    Catch::Contains(wrong.string() + " does not fit the model:") &&
+                        Catch::Contains("mask_decoder.iou_token.weight is [2, 256] in the file, [1, 256] in the model"));
+  CHECK_THROWS_WITH(matlearn::load_segment_anything(folder / "none.pt"), Catch::Contains((folder / "none.pt").string()));
+  // A file torch.save wrote that is no Segment Anything: the script refuses it, and so does the loader.
+  const std::string python = MATPREDICT_DEBIAN_PYTHON;
+  const std::filesystem::path other = folder / "other.pt";
+  REQUIRE(run(python + " -c \"import torch; torch.save({'weight': torch.zeros(3)}, '" + other.string() + "')\"").first == 0);
+  const auto [status, output] = run(python + " " + MATPREDICT_SAM_CONVERT_SCRIPT + " " + other.string() + " " + (folder / "x.pt").string());
+  CHECK(status == 1);
+  CHECK_THAT(output, Catch::Contains("not a Segment Anything checkpoint"));
+  CHECK_FALSE(std::filesystem::exists(folder / "x.pt"));
+  CHECK_THROWS_WITH(matlearn::load_segment_anything(other),
+                    Catch::StartsWith(other.string()) && Catch::Contains("scripts/convert_segment_anything.py"));
+  // evaluate's names: grabcut, or sam: and a checkpoint.
+  CHECK_FALSE(matlearn::segmenter_choice_problem("grabcut"));
+  CHECK_FALSE(matlearn::segmenter_choice_problem("sam:x.pt"));
+  CHECK(matlearn::segmenter_choice_problem("sam:").value_or("").find("expected grabcut or sam:CHECKPOINT") == 0);
+  CHECK_THROWS_WITH(matlearn::make_segmenter("sam:" + (folder / "none.pt").string()), Catch::Contains("none.pt"));
 }

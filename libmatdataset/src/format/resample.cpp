@@ -1,4 +1,4 @@
-#include "format/resample.h"
+#include "matdataset/format/resample.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,12 +4,12 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "format/resample.h"
 #include "format/texture_target_sample.h"
 #include "matbase/image/object_crop.h"
 #include "matbase/image/srgb.h"
 #include "matdataset/format/dataset_error.h"
 #include "matdataset/format/decoded_image.h"
+#include "matdataset/format/resample.h"
 
 namespace matdataset {
 namespace {

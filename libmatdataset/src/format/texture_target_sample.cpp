@@ -4,9 +4,9 @@
 #include <mutex>
 #include <string>
 
-#include "format/resample.h"
 #include "matbase/image/srgb.h"
 #include "matdataset/format/decoded_image.h"
+#include "matdataset/format/resample.h"
 
 namespace matdataset {
 namespace {

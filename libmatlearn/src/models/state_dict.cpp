@@ -29,7 +29,7 @@ std::string shape_of(const torch::Tensor& t) {
 
 }  // namespace
 
-void load_state_dict(torch::nn::Module& module, const std::filesystem::path& path) {
+std::map<std::string, torch::Tensor> read_state_dict(const std::filesystem::path& path) {
   matbase::require_input_file(path.string());
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error("cannot open " + path.string());
@@ -47,6 +47,10 @@ void load_state_dict(torch::nn::Module& module, const std::filesystem::path& pat
       throw std::runtime_error(path.string() + " holds an entry that is not name -> tensor");
     loaded[entry.key().toStringRef()] = entry.value().toTensor();
   }
+  return loaded;
+}
+
+void load_state_dict(torch::nn::Module& module, const std::map<std::string, torch::Tensor>& loaded, const std::string& source) {
   std::map<std::string, torch::Tensor> state = named_state(module);
   std::vector<std::string> problems;
   for (const auto& [name, tensor] : state) {
@@ -59,13 +63,17 @@ void load_state_dict(torch::nn::Module& module, const std::filesystem::path& pat
   for (const auto& entry : loaded)
     if (state.find(entry.first) == state.end()) problems.push_back("unexpected " + entry.first);
   if (!problems.empty()) {
-    std::string message = path.string() + " does not fit the model:";
+    std::string message = source + " does not fit the model:";
     for (size_t i = 0; i < problems.size() && i < 10; ++i) message += "\n  " + problems[i];
     if (problems.size() > 10) message += "\n  ... and " + std::to_string(problems.size() - 10) + " more";
     throw std::runtime_error(message);
   }
   torch::NoGradGuard no_grad;
-  for (auto& [name, tensor] : state) tensor.copy_(loaded[name]);
+  for (auto& [name, tensor] : state) tensor.copy_(loaded.at(name));
+}
+
+void load_state_dict(torch::nn::Module& module, const std::filesystem::path& path) {
+  load_state_dict(module, read_state_dict(path), path.string());
 }
 
 void save_state_dict(const torch::nn::Module& module, const std::filesystem::path& path) {

@@ -15,9 +15,9 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include "format/resample.h"
 #include "matdataset/format/dataset_index.h"
 #include "matdataset/format/decoded_image.h"
+#include "matdataset/format/resample.h"
 #include "matdataset/format/sample_loader.h"
 #include "matdataset/format/sample_reader.h"
 #include "support/synthetic_png.h"

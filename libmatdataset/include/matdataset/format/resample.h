@@ -4,7 +4,8 @@
 // repository's loader applies to every map; resize_bilinear_weighted is the same filter as a
 // normalised convolution, sum w m v / sum w m, so that pixels outside the object (m = 0) do not
 // darken the targets along its silhouette (weak point W16); resize_nearest is Pillow's NEAREST,
-// for label ids.
+// for label ids. Segment Anything's input is resized with resize_bilinear too, as its official
+// predictor resizes with Pillow.
 #include <cstdint>
 #include <vector>
 
