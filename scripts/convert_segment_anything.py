@@ -65,8 +65,11 @@ def main() -> int:
     partial = target + ".partial"
     torch.save(converted, partial)
     os.replace(partial, target)
-    parameters = sum(t.numel() for n, t in converted.items() if t.is_floating_point() and "running_" not in n)
-    print(f"{target}: {size}, {len(converted)} tensors, {parameters:,} weights"
+    # The model's parameters: every float tensor but the buffers (BatchNorm statistics, the
+    # positional encoding's Gaussian), comparable with the count docs/segment_anything.md states.
+    buffers = ("running_mean", "running_var", "positional_encoding_gaussian_matrix")
+    parameters = sum(t.numel() for n, t in converted.items() if t.is_floating_point() and not n.endswith(buffers))
+    print(f"{target}: {size}, {len(converted)} tensors, {parameters:,} parameters"
           + (f" ({added} BatchNorm counters added)" if added else ""))
     return 0
 

@@ -28,6 +28,7 @@ make_dataset(dict) makes a dataset as the command line does. Errors in a scene f
 configuration or a dataset raise matpredict.InputError (a ValueError) naming the file, the JSON
 pointer or key, and the problem. docs/python.md documents every array.
 """
+from . import _core
 from ._core import (
     Camera,
     DatasetError,
@@ -40,7 +41,6 @@ from ._core import (
     builtin_objects,
     display_image,
     fsim,
-    isolate,
     issm,
     load_scene,
     make_dataset,
@@ -89,16 +89,29 @@ __all__ = [
 _LEARN = ("Model", "load_model")
 
 
+def isolate(image, *, segmenter="grabcut", **options):
+    if isinstance(segmenter, str) and segmenter.startswith("sam:"):
+        return _learn_module("isolate").isolate(image, segmenter=segmenter, **options)
+    return _core.isolate(image, segmenter=segmenter, **options)
+
+
+isolate.__doc__ = _core.isolate.__doc__
+
+
+def _learn_module(name):
+    """matpredict._learn, imported on first use (libtorch), for `name`."""
+    import importlib
+
+    try:
+        return importlib.import_module("._learn", __name__)
+    except ModuleNotFoundError as missing:
+        raise ImportError(f"matpredict.{name} needs the extension matpredict._learn (libtorch), which this build "
+                          "has not made: cmake --build build --target matpredict_python_learn") from missing
+
+
 def __getattr__(name):
     if name in _LEARN:
-        import importlib
-
-        try:
-            _learn = importlib.import_module("._learn", __name__)
-        except ModuleNotFoundError as missing:
-            raise ImportError(f"matpredict.{name} needs the extension matpredict._learn (libtorch), which this build "
-                              "has not made: cmake --build build --target matpredict_python_learn") from missing
-        return getattr(_learn, name)
+        return getattr(_learn_module(name), name)
     raise AttributeError(f"module 'matpredict' has no attribute '{name}'")
 
 

@@ -11,7 +11,6 @@
 
 #include "image_arrays.h"
 #include "matbase/input_error.h"
-#include "matlearn/isolation/grabcut.h"
 #include "matlearn/isolation/object_isolation.h"
 #include "owned_array.h"
 
@@ -63,11 +62,12 @@ matlearn::Prompt prompt_of(const std::optional<std::tuple<int, int, int, int>>& 
   return prompt;
 }
 
-py::dict isolate(const py::array& image, const py::object& mask_array, const std::optional<std::tuple<int, int, int, int>>& box,
-                 const std::optional<std::vector<std::vector<int>>>& points, const std::string& segmenter_name, int size,
-                 const std::string& background_name) {
+py::dict isolate(const SegmenterMaker& make_segmenter, const py::array& image, const py::object& mask_array,
+                 const std::optional<std::tuple<int, int, int, int>>& box, const std::optional<std::vector<std::vector<int>>>& points,
+                 const std::string& segmenter_name, int size, const std::string& background_name) {
   if (size < 1) throw py::value_error("size: expected a whole number of at least 1, got " + std::to_string(size));
-  if (segmenter_name != "grabcut") throw py::value_error("segmenter: expected \"grabcut\", got \"" + segmenter_name + "\"");
+  if (const std::optional<std::string> problem = matlearn::segmenter_choice_problem(segmenter_name))
+    throw py::value_error("segmenter: " + *problem);
   if (background_name != "black" && background_name != "white")
     throw py::value_error("background: expected \"black\" or \"white\", got \"" + background_name + "\"");
   const matdataset::CropBackground background =
@@ -83,7 +83,8 @@ py::dict isolate(const py::array& image, const py::object& mask_array, const std
         throw matbase::InputError(std::string(kImageName) + ": the mask marks no pixel of the object");
       object = {*mask, matdataset::isolated_input(rgb, *mask, size, background)};
     } else {
-      object = matlearn::isolate_object(rgb, prompt, matlearn::GrabCutSegmenter(), size, background, kImageName);
+      const std::shared_ptr<const matlearn::Segmenter> segmenter = make_segmenter(segmenter_name);
+      object = matlearn::isolate_object(rgb, prompt, *segmenter, size, background, kImageName);
     }
   }
   const matdataset::IsolatedInput& isolated = object.isolated;
@@ -98,14 +99,22 @@ py::dict isolate(const py::array& image, const py::object& mask_array, const std
 
 }  // namespace
 
-void bind_isolation(py::module_& module) {
-  module.def("isolate", &isolate, py::arg("image"), py::kw_only(), py::arg("mask") = py::none(), py::arg("box") = py::none(),
+void bind_isolation(py::module_& module, SegmenterMaker make_segmenter) {
+  module.def("isolate",
+             [make_segmenter](const py::array& image, const py::object& mask, const std::optional<std::tuple<int, int, int, int>>& box,
+                              const std::optional<std::vector<std::vector<int>>>& points, const std::string& segmenter, int size,
+                              const std::string& background) {
+               return isolate(make_segmenter, image, mask, box, points, segmenter, size, background);
+             },
+             py::arg("image"), py::kw_only(), py::arg("mask") = py::none(), py::arg("box") = py::none(),
              py::arg("points") = py::none(), py::arg("segmenter") = "grabcut", py::arg("size") = 224,
              py::arg("background") = "black",
              "Isolates the object in an image as evaluate --image does, for Model.predict: `image` (H, W, 3)\n"
              "RGB (or grey (H, W), or RGBA) as stored, display-encoded: uint8, uint16 or floats in [0, 1].\n"
              "The object is `mask` (H, W, nonzero inside) when given, else the alpha where some pixel is\n"
-             "transparent, else what the segmenter ('grabcut': OpenCV's GrabCut) finds from the prompt:\n"
+             "transparent, else what the segmenter finds from the prompt: 'grabcut' (OpenCV's GrabCut, no\n"
+             "weights) or 'sam:CHECKPOINT' (Segment Anything, a checkpoint scripts/convert_segment_anything.py\n"
+             "wrote; loaded once and kept for the next calls; loads libtorch):\n"
              "`box` (x0, y0, x1, y1), the first and last pixel column and row around the object, and\n"
              "`points`, (x, y) on the object or (x, y, 0) off it; none means the image's central 90 %.\n"
              "Returns {'mask': (H, W) bool, the object cleaned into one region with its holes filled;\n"

@@ -2,6 +2,7 @@
 // own so that `import matpredict` does not load libtorch; matpredict.load_model imports it.
 #include <filesystem>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 
@@ -11,8 +12,10 @@
 #include <pybind11/stl/filesystem.h>
 
 #include "image_arrays.h"
+#include "isolation_bindings.h"
 #include "matbase/input_error.h"
 #include "matlearn/evaluation/inference.h"
+#include "matlearn/evaluation/segmenter_choice.h"
 #include "matlearn/models/regressor.h"
 #include "matlearn/training/checkpoint.h"
 #include "owned_array.h"
@@ -58,6 +61,19 @@ py::dict predict(Model& model, const py::array& image) {
   return maps;
 }
 
+// The last segmenter made, kept: loading Segment Anything's weights takes longer than a mask.
+std::shared_ptr<const matlearn::Segmenter> kept_segmenter(const std::string& choice) {
+  static std::mutex guard;
+  static std::string kept_choice;
+  static std::shared_ptr<const matlearn::Segmenter> kept;
+  const std::lock_guard<std::mutex> lock(guard);
+  if (!kept || kept_choice != choice) {
+    kept = matlearn::make_segmenter(choice);
+    kept_choice = choice;
+  }
+  return kept;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_learn, module) {
@@ -80,6 +96,7 @@ PYBIND11_MODULE(_learn, module) {
            "The maps for one (image_size, image_size, 3) RGB image in [0, 1] (as a dataset sample's\n"
            "'input'): a dict of (image_size, image_size, C) float32 arrays in [0, 1], named as `outputs`;\n"
            "the same maps evaluate --image writes (before its 8-bit PNGs and the mask).");
+  matpredict_python::bind_isolation(module, &kept_segmenter);
   module.def("load_model", &load_model, py::arg("path"),
              "Reads and verifies a checkpoint (train_regressor's checkpoints/last.pt or best.pt) and builds its\n"
              "network. Raises matpredict.InputError naming the file when it is not a checkpoint, is damaged,\n"

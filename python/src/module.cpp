@@ -1,4 +1,7 @@
 // matpredict._core: the extension the matpredict package (python/matpredict/__init__.py) exports.
+#include <memory>
+#include <string>
+
 #include <pybind11/pybind11.h>
 
 #include "camera_bindings.h"
@@ -6,6 +9,7 @@
 #include "dataset_maker_bindings.h"
 #include "display_bindings.h"
 #include "isolation_bindings.h"
+#include "matlearn/isolation/grabcut.h"
 #include "mesh_arrays.h"
 #include "name_bindings.h"
 #include "metric_bindings.h"
@@ -23,5 +27,7 @@ PYBIND11_MODULE(_core, module) {
   matpredict_python::bind_metrics(module);
   matpredict_python::bind_datasets(module);
   matpredict_python::bind_dataset_maker(module);
-  matpredict_python::bind_isolation(module);
+  matpredict_python::bind_isolation(module, [](const std::string&) -> std::shared_ptr<const matlearn::Segmenter> {
+    return std::make_shared<matlearn::GrabCutSegmenter>();  // "sam:" goes to matpredict._learn's isolate
+  });
 }

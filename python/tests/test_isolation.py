@@ -133,3 +133,30 @@ def test_bad_prompts_and_images_are_refused_clearly():
         matpredict.isolate(image, segmenter="magic")
     with pytest.raises(matpredict.InputError, match="this box covers the whole image"):
         matpredict.isolate(image, box=(0, 0, 49, 39))
+
+
+def test_segment_anything_isolates_from_a_converted_checkpoint(tmp_path):
+    """A MobileSAM checkpoint in the released layout (random weights, written by Debian's torch),
+    converted by the script a user runs: isolate(segmenter="sam:...") loads it through _learn."""
+    import sys
+
+    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    released, converted = tmp_path / "mobile_sam.pt", tmp_path / "converted.pt"
+    subprocess.run([sys.executable, os.path.join(root, "tests", "learn", "official_sam_checkpoint.py"),
+                    os.path.join(root, "tests", "learn", "data", "segment_anything", "vit_t_state_dict.tsv"), str(released)],
+                   check=True)
+    run = subprocess.run([sys.executable, os.path.join(root, "scripts", "convert_segment_anything.py"), str(released),
+                          str(converted)], check=True, capture_output=True, text=True)
+    assert "MobileSAM, 439 tensors, 10,130,092 parameters" in run.stdout
+    image = np.full((90, 120, 3), 128, dtype=np.uint8)
+    image[30:60, 40:80] = (200, 40, 30)
+    try:
+        isolated = matpredict.isolate(image, box=(35, 25, 84, 64), segmenter=f"sam:{converted}", size=32)
+    except matpredict.InputError as error:  # random weights may find nothing; the message says so
+        assert "found no object" in str(error)
+    else:
+        assert isolated["mask"].shape == (90, 120) and isolated["input"].shape == (32, 32, 3)
+    with pytest.raises(matpredict.InputError, match="no_such.pt"):
+        matpredict.isolate(image, segmenter=f"sam:{tmp_path / 'no_such.pt'}")
+    with pytest.raises(ValueError, match="segmenter: expected grabcut or sam:CHECKPOINT"):
+        matpredict.isolate(image, segmenter="sam:")

@@ -93,7 +93,7 @@ def test_progress_is_reported_on_the_calling_thread(small_scene):
 
 
 def test_the_gil_is_released_while_rendering(tmp_path):
-    scene = matpredict.load_scene(write_scene(str(tmp_path), width=96, height=96, spp=256))
+    scene = matpredict.load_scene(write_scene(str(tmp_path), width=96, height=96, spp=1024))
     counted, stop = [0], threading.Event()
 
     def count():

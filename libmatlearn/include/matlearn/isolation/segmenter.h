@@ -1,6 +1,7 @@
 #pragma once
 // What isolates an object: a segmenter finds its pixels in an image from a prompt. GrabCut
 // (grabcut.h) needs no weights; Segment Anything is a network with its checkpoint.
+#include <optional>
 #include <string>
 
 #include "matbase/image/float_image.h"
@@ -17,5 +18,14 @@ class Segmenter {
   // "grabcut", "sam:<checkpoint>": what --segmenter names it.
   virtual std::string name() const = 0;
 };
+
+// What is wrong with `choice` as a segmenter's name (evaluate's --segmenter, matpredict.isolate's
+// `segmenter`), before anything is loaded: "grabcut" (OpenCV's GrabCut, no weights) and
+// "sam:CHECKPOINT" (Segment Anything, matlearn/evaluation/segmenter_choice.h) are; for anything
+// else "expected grabcut or sam:CHECKPOINT ..., got ...".
+std::optional<std::string> segmenter_choice_problem(const std::string& choice);
+
+// The checkpoint a "sam:CHECKPOINT" choice names, or nothing for another choice.
+std::optional<std::string> sam_checkpoint_of(const std::string& choice);
 
 }  // namespace matlearn
