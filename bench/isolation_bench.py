@@ -112,7 +112,7 @@ def main():
     parser.add_argument("--size", type=int, default=256)
     parser.add_argument("--spp", type=int, default=16)
     parser.add_argument("--seed", type=int, default=1)
-    parser.add_argument("--segmenters", default="grabcut", help="comma-separated: grabcut")
+    parser.add_argument("--segmenters", default="grabcut", help="comma-separated: grabcut, sam:CHECKPOINT")
     parser.add_argument("--output", default="isolation_bench.json")
     args = parser.parse_args()
 
