@@ -13,6 +13,11 @@ the label AOV's pixels of its class; the prompt is their bounding box grown by 5
 scored by its intersection over union with the truth, and timed (the isolate call alone, on
 the frame as an 8-bit display image). Prints the IoU distribution per segmenter and background,
 and per material class, as markdown tables; writes every frame's figures to --output.
+
+With --checkpoint (a network train_regressor wrote), each frame is also predicted twice, isolated
+with its true mask and with each segmenter's, and the predicted base colour is scored (RMSE, in
+the stored sRGB encoding) against the rendered base colour cropped and resized the same way, on
+the true object's pixels of the crop: what a segmenter's mistakes cost the prediction.
 """
 import argparse
 import json
@@ -98,6 +103,36 @@ def intersection_over_union(a, b):
     return float(np.logical_and(a, b).sum() / union) if union else 1.0
 
 
+def crop_like(values, crop, size, resample):
+    """(H, W, C) values cut to isolate's square `crop` (zero past the image) and resized as isolate
+    resizes (Pillow's filter per channel)."""
+    from PIL import Image
+
+    left, top, side = crop
+    height, width, channels = values.shape
+    square = np.zeros((side, side, channels), dtype=np.float32)
+    y0, x0, y1, x1 = max(0, top), max(0, left), min(height, top + side), min(width, left + side)
+    square[y0 - top:y1 - top, x0 - left:x1 - left] = values[y0:y1, x0:x1]
+    return np.stack([np.asarray(Image.fromarray(square[:, :, c], mode="F").resize((size, size), resample))
+                     for c in range(channels)], axis=-1)
+
+
+def srgb(linear):
+    linear = np.clip(linear, 0, 1)
+    return np.where(linear <= 0.0031308, 12.92 * linear, 1.055 * np.power(linear, 1 / 2.4) - 0.055).astype(np.float32)
+
+
+def base_color_error(model, isolated, albedo, truth):
+    """RMSE of the predicted base colour of an isolated object on its true pixels in the crop."""
+    from PIL import Image
+
+    size = model.image_size
+    predicted = model.predict(isolated["input"])["base_color"]
+    expected = crop_like(albedo, isolated["crop"], size, Image.BILINEAR)
+    on_object = crop_like(truth[:, :, None].astype(np.float32), isolated["crop"], size, Image.NEAREST)[:, :, 0] > 0.5
+    return float(np.sqrt(np.mean((predicted - expected)[on_object] ** 2))) if on_object.any() else None
+
+
 def summary_row(label, ious, seconds):
     ious = sorted(ious)
     decile = ious[max(0, len(ious) // 10 - 1)] if len(ious) >= 10 else ious[0]
@@ -113,6 +148,7 @@ def main():
     parser.add_argument("--spp", type=int, default=16)
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--segmenters", default="grabcut", help="comma-separated: grabcut, sam:CHECKPOINT")
+    parser.add_argument("--checkpoint", help="also score a trained network's base colour on the isolated objects")
     parser.add_argument("--output", default="isolation_bench.json")
     args = parser.parse_args()
 
@@ -120,6 +156,7 @@ def main():
     classes = matpredict.material_classes()
     chosen = list(classes) if args.classes == "all" else args.classes.split(",")
     segmenters = args.segmenters.split(",")
+    model = matpredict.load_model(args.checkpoint) if args.checkpoint else None
     rng = random.Random(args.seed)
     records = []
     skipped = 0
@@ -139,7 +176,7 @@ def main():
                 for cluttered in (False, True):
                     scene = matpredict.load_scene(object_scene(name, material_class, 1 + k, camera, args.size, args.spp,
                                                                cluttered, environment))
-                    frame = matpredict.render(scene, aovs=["label"])
+                    frame = matpredict.render(scene, aovs=["label", "base_color"])
                     truth = frame["label"][:, :, 0] == classes[material_class]
                     edges = np.concatenate([truth[0], truth[-1], truth[:, 0], truth[:, -1]])
                     if truth.sum() < 16 or edges.any():
@@ -147,17 +184,27 @@ def main():
                         continue
                     image = display(frame["color"])
                     box = grown_box(truth, 0.05)
+                    albedo = srgb(frame["base_color"])
+                    true_error = (base_color_error(model, matpredict.isolate(image, mask=truth, size=model.image_size),
+                                                   albedo, truth) if model else None)
                     for segmenter in segmenters:
                         start = time.perf_counter()
+                        error = None
                         try:
-                            iou = intersection_over_union(matpredict.isolate(image, box=box, segmenter=segmenter)["mask"], truth)
+                            isolated = matpredict.isolate(image, box=box, segmenter=segmenter,
+                                                          size=model.image_size if model else 224)
+                            seconds = time.perf_counter() - start
+                            iou = intersection_over_union(isolated["mask"], truth)
                             refusal = None
-                        except matpredict.InputError as error:  # counted as no overlap
-                            iou, refusal = 0.0, str(error)
-                        seconds = time.perf_counter() - start
+                            if model:
+                                error = base_color_error(model, isolated, albedo, truth)
+                        except matpredict.InputError as refused:  # counted as no overlap
+                            seconds = time.perf_counter() - start
+                            iou, refusal = 0.0, str(refused)
                         records.append({"object": name, "class": material_class, "cluttered": cluttered,
                                         "segmenter": segmenter, "cell": cell, "box": list(box), "iou": iou,
-                                        "refusal": refusal, "seconds": seconds, "object_pixels": int(truth.sum())})
+                                        "refusal": refusal, "seconds": seconds, "object_pixels": int(truth.sum()),
+                                        "base_color_rmse": error, "base_color_rmse_true_mask": true_error})
             print(f"{name}: {len(records)} frames so far", flush=True)
     with open(args.output, "w") as f:
         json.dump({"size": args.size, "spp": args.spp, "seed": args.seed, "skipped": skipped, "frames": records}, f, indent=1)
@@ -172,6 +219,19 @@ def main():
             if chosen_records:
                 print(summary_row(f"{segmenter}, {'cluttered' if cluttered else 'black'}",
                                   [r["iou"] for r in chosen_records], [r["seconds"] for r in chosen_records]))
+    if model:
+        print(f"\nBase colour RMSE of {args.checkpoint} ({model.network}, {model.image_size} px), on the true object's "
+              "pixels of each crop:\n")
+        print("| segmenter, background | frames | isolated with the true mask | isolated by the segmenter |")
+        print("|---|---|---|---|")
+        for segmenter in segmenters:
+            for cluttered in (False, True):
+                scored = [r for r in records if r["segmenter"] == segmenter and r["cluttered"] == cluttered
+                          and r["base_color_rmse"] is not None and r["base_color_rmse_true_mask"] is not None]
+                if scored:
+                    print(f"| {segmenter}, {'cluttered' if cluttered else 'black'} | {len(scored)} | "
+                          f"{statistics.mean(r['base_color_rmse_true_mask'] for r in scored):.4f} | "
+                          f"{statistics.mean(r['base_color_rmse'] for r in scored):.4f} |")
     print("\nMean IoU per material class (cluttered):\n")
     print("| class | " + " | ".join(segmenters) + " |")
     print("|---|" + "---|" * len(segmenters))
