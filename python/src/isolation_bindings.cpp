@@ -11,6 +11,7 @@
 
 #include "image_arrays.h"
 #include "matbase/input_error.h"
+#include "matdataset/format/sample_reader.h"
 #include "matlearn/isolation/object_isolation.h"
 #include "owned_array.h"
 
@@ -34,7 +35,6 @@ std::pair<matbase::FloatImage, std::optional<matbase::Mask>> photo_of(const py::
   if (pixels.channels != 1 && pixels.channels != 3 && pixels.channels != 4)
     throw py::value_error("image: expected 1 (grey), 3 (RGB) or 4 (RGBA) channels, got " + std::to_string(pixels.channels));
   matbase::FloatImage rgb(pixels.width, pixels.height, 3);
-  matbase::Mask alpha(pixels.pixel_count(), 1);
   for (size_t p = 0; p < pixels.pixel_count(); ++p) {
     const size_t in = p * static_cast<size_t>(pixels.channels);
     for (size_t c = 0; c < 3; ++c) {
@@ -43,10 +43,8 @@ std::pair<matbase::FloatImage, std::optional<matbase::Mask>> photo_of(const py::
         throw py::value_error("image: expected values in [0, 1] (display-encoded RGB), got " + std::to_string(value));
       rgb.values[3 * p + c] = value;
     }
-    if (pixels.channels == 4) alpha[p] = pixels.values[in + 3] > 0.0f;
   }
-  std::optional<matbase::Mask> mask;
-  if (std::find(alpha.begin(), alpha.end(), 0) != alpha.end()) mask = std::move(alpha);
+  std::optional<matbase::Mask> mask = matdataset::alpha_mask(pixels);
   return {std::move(rgb), std::move(mask)};
 }
 

@@ -138,13 +138,19 @@ PhotoInput read_photo(const fs::path& image_path, const fs::path& mask_path) {
     check_same_size(mask.width, mask.height, image, mask_path);
     photo.mask.emplace(pixels);
     for (size_t p = 0; p < pixels; ++p) (*photo.mask)[p] = mask.values[p * static_cast<size_t>(mask.channels)] > 0.0f;
-  } else if (image.channels == 4 || image.channels == 2) {
-    matbase::Mask alpha(pixels);
-    for (size_t p = 0; p < pixels; ++p)
-      alpha[p] = image.values[p * static_cast<size_t>(image.channels) + static_cast<size_t>(image.channels - 1)] > 0.0f;
-    if (std::find(alpha.begin(), alpha.end(), 0) != alpha.end()) photo.mask = std::move(alpha);
+  } else {
+    photo.mask = alpha_mask(image);
   }
   return photo;
+}
+
+std::optional<matbase::Mask> alpha_mask(const matbase::FloatImage& image) {
+  if (image.channels != 2 && image.channels != 4) return std::nullopt;
+  matbase::Mask alpha(image.pixel_count());
+  for (size_t p = 0; p < alpha.size(); ++p)
+    alpha[p] = image.values[p * static_cast<size_t>(image.channels) + static_cast<size_t>(image.channels - 1)] > 0.0f;
+  if (std::find(alpha.begin(), alpha.end(), 0) == alpha.end()) return std::nullopt;
+  return alpha;
 }
 
 InputImage read_input_image(const fs::path& image_path, const fs::path& mask_path, int size) {

@@ -85,6 +85,10 @@ struct PhotoInput {
 };
 PhotoInput read_photo(const std::filesystem::path& image_path, const std::filesystem::path& mask_path);
 
+// The object an image's alpha marks (the last channel of a grey-alpha or RGBA image, > 0), when
+// some pixel is transparent; none for an image without alpha or opaque everywhere.
+std::optional<matbase::Mask> alpha_mask(const matbase::FloatImage& image);
+
 // What an isolated object is composited on: black, what the dataset's images hold where nothing
 // was hit (the trainer drops their alpha, so its networks learn on black), or white, what the
 // paper's preprocessing and the texture-target screenshots key onto.
