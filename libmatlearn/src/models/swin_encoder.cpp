@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "matlearn/models/stochastic_depth.h"
+#include "models/window_partition.h"
 
 namespace matlearn {
 namespace {
@@ -38,21 +39,6 @@ torch::Tensor relative_position_index(int64_t window) {
       out[i * n + j] = (dy + window - 1) * (2 * window - 1) + (dx + window - 1);
     }
   return index;
-}
-
-// N x H x W x C (H, W multiples of w) to (N * windows) x w^2 x C, windows in row-major order.
-torch::Tensor partition_windows(const torch::Tensor& x, int64_t window) {
-  const int64_t n = x.size(0), h = x.size(1), w = x.size(2), c = x.size(3);
-  return x.view({n, h / window, window, w / window, window, c})
-      .permute({0, 1, 3, 2, 4, 5})
-      .reshape({-1, window * window, c});
-}
-
-torch::Tensor merge_windows(const torch::Tensor& windows, int64_t batch, int64_t h, int64_t w, int64_t window) {
-  const int64_t c = windows.size(2);
-  return windows.view({batch, h / window, w / window, window, window, c})
-      .permute({0, 1, 3, 2, 4, 5})
-      .reshape({batch, h, w, c});
 }
 
 }  // namespace
@@ -97,9 +83,8 @@ torch::Tensor ShiftedWindowAttentionImpl::shift_mask(int64_t padded_height, int6
 
 torch::Tensor ShiftedWindowAttentionImpl::forward(const torch::Tensor& tokens) {
   const int64_t batch = tokens.size(0), height = tokens.size(1), width = tokens.size(2), dim = tokens.size(3);
-  const int64_t pad_bottom = (window_ - height % window_) % window_, pad_right = (window_ - width % window_) % window_;
-  torch::Tensor x = torch::constant_pad_nd(tokens, {0, 0, 0, pad_right, 0, pad_bottom});
-  const int64_t padded_height = height + pad_bottom, padded_width = width + pad_right;
+  torch::Tensor x = padded_to_windows(tokens, window_);
+  const int64_t padded_height = x.size(1), padded_width = x.size(2);
   // A grid no larger than the window has nothing to shift along that axis.
   const int64_t shift_h = shifted_ && padded_height > window_ ? window_ / 2 : 0;
   const int64_t shift_w = shifted_ && padded_width > window_ ? window_ / 2 : 0;

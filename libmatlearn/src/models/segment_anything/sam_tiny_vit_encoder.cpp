@@ -4,12 +4,12 @@
 #include <cmath>
 
 #include "matlearn/models/segment_anything/layer_norm_2d.h"
+#include "models/window_partition.h"
 
 namespace matlearn {
 namespace {
 
 namespace nn = torch::nn;
-namespace F = torch::nn::functional;
 
 // TinyViT-5M as MobileSAM configures it.
 constexpr std::array<int64_t, 4> kDims = {64, 128, 160, 320};
@@ -168,11 +168,9 @@ torch::Tensor TinyVitBlockImpl::forward(const torch::Tensor& tokens) {
   } else {
     // Windows of the grid zero-padded at the bottom and right; the padded tokens are normalised
     // and attended to like the rest, as in the official encoder.
-    const int64_t pad = (w - s % w) % w, padded = s + pad, count = padded / w;
-    y = F::pad(tokens.view({b, s, s, c}), F::PadFuncOptions({0, 0, 0, pad, 0, pad}));
-    y = y.view({b, count, w, count, w, c}).transpose(2, 3).reshape({b * count * count, w * w, c});
-    y = attn_(y);
-    y = y.view({b, count, count, w, w, c}).transpose(2, 3).reshape({b, padded, padded, c});
+    y = padded_to_windows(tokens.view({b, s, s, c}), w);
+    const int64_t padded = y.size(1);
+    y = merge_windows(attn_(partition_windows(y, w)), b, padded, padded, w);
     y = y.slice(1, 0, s).slice(2, 0, s).reshape({b, s * s, c});
   }
   torch::Tensor x = tokens + y;

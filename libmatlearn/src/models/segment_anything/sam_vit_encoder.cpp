@@ -4,12 +4,12 @@
 #include <cmath>
 
 #include "matlearn/models/segment_anything/layer_norm_2d.h"
+#include "models/window_partition.h"
 
 namespace matlearn {
 namespace {
 
 namespace nn = torch::nn;
-namespace F = torch::nn::functional;
 
 constexpr double kLayerNormEps = 1e-6;
 
@@ -66,13 +66,10 @@ torch::Tensor SamVitBlockImpl::forward(const torch::Tensor& x) {
     // Windows of window x window tokens, the grid zero-padded at the bottom and right (the padded
     // tokens take part in the attention, as in the official encoder).
     const int64_t n = y.size(0), h = y.size(1), w = y.size(2), c = y.size(3);
-    const int64_t pad_h = (window_ - h % window_) % window_, pad_w = (window_ - w % window_) % window_;
-    const int64_t ph = h + pad_h, pw = w + pad_w;
-    y = F::pad(y, F::PadFuncOptions({0, 0, 0, pad_w, 0, pad_h}));
-    y = y.view({n, ph / window_, window_, pw / window_, window_, c}).permute({0, 1, 3, 2, 4, 5}).reshape({-1, window_, window_, c});
-    y = attn_(y);
-    y = y.view({n, ph / window_, pw / window_, window_, window_, c}).permute({0, 1, 3, 2, 4, 5}).reshape({n, ph, pw, c});
-    y = y.slice(1, 0, h).slice(2, 0, w);
+    y = padded_to_windows(y, window_);
+    const int64_t padded_h = y.size(1), padded_w = y.size(2);
+    y = attn_(partition_windows(y, window_).view({-1, window_, window_, c}));
+    y = merge_windows(y, n, padded_h, padded_w, window_).slice(1, 0, h).slice(2, 0, w);
   } else {
     y = attn_(y);
   }
