@@ -2,14 +2,15 @@
 """How well each segmenter isolates an object, measured on rendered frames whose label is the truth.
 
     PYTHONPATH=build/python /usr/bin/python3 bench/isolation_bench.py [--objects all] [--classes all]
-        [--size 256] [--spp 16] [--output isolation_bench.json]
+        [--segmenters grabcut] [--prompts box,none] [--size 256] [--spp 16] [--output isolation_bench.json]
 
 Every built-in object in a material of every library class is rendered from one view of a grid
 around it (a cell drawn from the seed), twice: on the black background under the paper's light
 rig, and cluttered, standing on a textured floor of another class under an environment map of
 coloured blotches and a sun, so that the background is no flat colour. The object's pixels are
-the label AOV's pixels of its class; the prompt is their bounding box grown by 5 % on each side
-(matpredict.isolate's `box`), as a user draws a box around an object. Each segmenter's mask is
+the label AOV's pixels of its class. The prompt is their bounding box grown by 5 % on each side
+(matpredict.isolate's `box`), as a user draws a box around an object, or none (the most central
+object: the frame is centred on it, as a photograph of one object is). Each segmenter's mask is
 scored by its intersection over union with the truth, and timed (the isolate call alone, on
 the frame as an 8-bit display image). Prints the IoU distribution per segmenter and background,
 and per material class, as markdown tables; writes every frame's figures to --output.
@@ -89,15 +90,6 @@ def display(color):
     return matpredict.display_image(color, exposure_stops=max(-20.0, min(20.0, stops)))
 
 
-def grown_box(mask, fraction):
-    rows, columns = np.nonzero(mask)
-    y0, y1, x0, x1 = rows.min(), rows.max(), columns.min(), columns.max()
-    grow_x, grow_y = round(fraction * (x1 - x0 + 1)), round(fraction * (y1 - y0 + 1))
-    height, width = mask.shape
-    return (int(max(0, x0 - grow_x)), int(max(0, y0 - grow_y)), int(min(width - 1, x1 + grow_x)),
-            int(min(height - 1, y1 + grow_y)))
-
-
 def intersection_over_union(a, b):
     union = np.logical_or(a, b).sum()
     return float(np.logical_and(a, b).sum() / union) if union else 1.0
@@ -148,6 +140,7 @@ def main():
     parser.add_argument("--spp", type=int, default=16)
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--segmenters", default="grabcut", help="comma-separated: grabcut, sam:CHECKPOINT")
+    parser.add_argument("--prompts", default="box,none", help="comma-separated: box (the label's, grown by 5 %%), none")
     parser.add_argument("--checkpoint", help="also score a trained network's base colour on the isolated objects")
     parser.add_argument("--output", default="isolation_bench.json")
     args = parser.parse_args()
@@ -156,6 +149,10 @@ def main():
     classes = matpredict.material_classes()
     chosen = list(classes) if args.classes == "all" else args.classes.split(",")
     segmenters = args.segmenters.split(",")
+    prompts = args.prompts.split(",")
+    if not set(prompts) <= {"box", "none"}:
+        parser.error(f"--prompts: expected box and/or none, got {args.prompts}")
+    methods = [(segmenter, prompt) for segmenter in segmenters for prompt in prompts]
     model = matpredict.load_model(args.checkpoint) if args.checkpoint else None
     rng = random.Random(args.seed)
     records = []
@@ -183,16 +180,16 @@ def main():
                         skipped += 1  # not wholly in view: no box lies around it
                         continue
                     image = display(frame["color"])
-                    box = grown_box(truth, 0.05)
+                    box = matpredict.mask_box(truth, grow=0.05)
                     albedo = srgb(frame["base_color"])
                     true_error = (base_color_error(model, matpredict.isolate(image, mask=truth, size=model.image_size),
                                                    albedo, truth) if model else None)
-                    for segmenter in segmenters:
+                    for segmenter, prompt in methods:
                         start = time.perf_counter()
                         error = None
                         try:
-                            isolated = matpredict.isolate(image, box=box, segmenter=segmenter,
-                                                          size=model.image_size if model else 224)
+                            isolated = matpredict.isolate(image, box=box if prompt == "box" else None,
+                                                          segmenter=segmenter, size=model.image_size if model else 224)
                             seconds = time.perf_counter() - start
                             iou = intersection_over_union(isolated["mask"], truth)
                             refusal = None
@@ -202,43 +199,49 @@ def main():
                             seconds = time.perf_counter() - start
                             iou, refusal = 0.0, str(refused)
                         records.append({"object": name, "class": material_class, "cluttered": cluttered,
-                                        "segmenter": segmenter, "cell": cell, "box": list(box), "iou": iou,
+                                        "segmenter": segmenter, "prompt": prompt, "cell": cell, "box": list(box), "iou": iou,
                                         "refusal": refusal, "seconds": seconds, "object_pixels": int(truth.sum()),
                                         "base_color_rmse": error, "base_color_rmse_true_mask": true_error})
             print(f"{name}: {len(records)} frames so far", flush=True)
     with open(args.output, "w") as f:
         json.dump({"size": args.size, "spp": args.spp, "seed": args.seed, "skipped": skipped, "frames": records}, f, indent=1)
 
-    print(f"\nIoU with the true mask, box prompt (the label's box grown by 5 %), {args.size} x {args.size} frames "
-          f"({skipped} frames skipped: the object not wholly in view):\n")
-    print("| segmenter, background | frames | mean | 10th percentile | median | worst | ms per image |")
+    def label(segmenter, prompt, cluttered):
+        return f"{segmenter}, {'box' if prompt == 'box' else 'no prompt'}, {'cluttered' if cluttered else 'black'}"
+
+    def chosen_records(segmenter, prompt, cluttered):
+        return [r for r in records if (r["segmenter"], r["prompt"], r["cluttered"]) == (segmenter, prompt, cluttered)]
+
+    print(f"\nIoU with the true mask, {args.size} x {args.size} frames ({skipped} frames skipped: the object not "
+          "wholly in view); box: the label's box grown by 5 %:\n")
+    print("| segmenter, prompt, background | frames | mean | 10th percentile | median | worst | ms per image |")
     print("|---|---|---|---|---|---|---|")
-    for segmenter in segmenters:
+    for segmenter, prompt in methods:
         for cluttered in (False, True):
-            chosen_records = [r for r in records if r["segmenter"] == segmenter and r["cluttered"] == cluttered]
-            if chosen_records:
-                print(summary_row(f"{segmenter}, {'cluttered' if cluttered else 'black'}",
-                                  [r["iou"] for r in chosen_records], [r["seconds"] for r in chosen_records]))
+            found = chosen_records(segmenter, prompt, cluttered)
+            if found:
+                print(summary_row(label(segmenter, prompt, cluttered), [r["iou"] for r in found],
+                                  [r["seconds"] for r in found]))
     if model:
         print(f"\nBase colour RMSE of {args.checkpoint} ({model.network}, {model.image_size} px), on the true object's "
               "pixels of each crop:\n")
-        print("| segmenter, background | frames | isolated with the true mask | isolated by the segmenter |")
+        print("| segmenter, prompt, background | frames | isolated with the true mask | isolated by the segmenter |")
         print("|---|---|---|---|")
-        for segmenter in segmenters:
+        for segmenter, prompt in methods:
             for cluttered in (False, True):
-                scored = [r for r in records if r["segmenter"] == segmenter and r["cluttered"] == cluttered
-                          and r["base_color_rmse"] is not None and r["base_color_rmse_true_mask"] is not None]
+                scored = [r for r in chosen_records(segmenter, prompt, cluttered)
+                          if r["base_color_rmse"] is not None and r["base_color_rmse_true_mask"] is not None]
                 if scored:
-                    print(f"| {segmenter}, {'cluttered' if cluttered else 'black'} | {len(scored)} | "
+                    print(f"| {label(segmenter, prompt, cluttered)} | {len(scored)} | "
                           f"{statistics.mean(r['base_color_rmse_true_mask'] for r in scored):.4f} | "
                           f"{statistics.mean(r['base_color_rmse'] for r in scored):.4f} |")
     print("\nMean IoU per material class (cluttered):\n")
-    print("| class | " + " | ".join(segmenters) + " |")
-    print("|---|" + "---|" * len(segmenters))
+    print("| class | " + " | ".join(f"{segmenter}, {prompt}" for segmenter, prompt in methods) + " |")
+    print("|---|" + "---|" * len(methods))
     for material_class in chosen:
         cells = []
-        for segmenter in segmenters:
-            ious = [r["iou"] for r in records if r["segmenter"] == segmenter and r["cluttered"] and r["class"] == material_class]
+        for segmenter, prompt in methods:
+            ious = [r["iou"] for r in chosen_records(segmenter, prompt, True) if r["class"] == material_class]
             cells.append(f"{statistics.mean(ious):.3f}" if ious else "-")
         print(f"| {material_class} | " + " | ".join(cells) + " |")
     print(f"\nwrote {args.output}")

@@ -95,7 +95,28 @@ py::dict isolate(const SegmenterMaker& make_segmenter, const py::array& image, c
   return result;
 }
 
+// The box around the mask's pixels, grown by `grow` of its width and height on each side within
+// the image; None for an empty mask.
+py::object mask_box(const py::array& mask, double grow) {
+  if (mask.ndim() < 2)
+    throw py::value_error("mask: expected shape (H, W), got " + std::to_string(mask.ndim()) + " dimension(s)");
+  if (!(grow >= 0.0 && grow <= 10.0)) throw py::value_error("grow: expected a fraction in [0, 10], got " + std::to_string(grow));
+  const int height = static_cast<int>(mask.shape(0)), width = static_cast<int>(mask.shape(1));
+  const std::optional<matbase::PixelBox> bounds = matbase::mask_bounds(mask_of(mask, width, height), width, height);
+  if (!bounds) return py::none();
+  const matbase::PixelBox box = matlearn::grown_box(*bounds, grow, width, height);
+  return py::make_tuple(box.x0, box.y0, box.x1, box.y1);
+}
+
 }  // namespace
+
+void bind_mask_box(py::module_& module) {
+  module.def("mask_box", &mask_box, py::arg("mask"), py::arg("grow") = 0.0,
+             "The box prompt around an object's mask, as isolate's `box` takes it: (x0, y0, x1, y1), the\n"
+             "first and last pixel column and row holding a nonzero entry of `mask` (H, W), grown by `grow`\n"
+             "of the box's width and height on each side (rounded half away from zero) and kept inside the\n"
+             "image; None when the mask is empty. With a label AOV: mask_box(frame['label'][:, :, 0] == k, 0.05).");
+}
 
 void bind_isolation(py::module_& module, SegmenterMaker make_segmenter) {
   module.def("isolate",

@@ -17,4 +17,7 @@ using SegmenterMaker = std::function<std::shared_ptr<const matlearn::Segmenter>(
 
 void bind_isolation(pybind11::module_& module, SegmenterMaker make_segmenter);
 
+// matpredict.mask_box: the box prompt around a mask (matpredict._core alone declares it).
+void bind_mask_box(pybind11::module_& module);
+
 }  // namespace matpredict_python

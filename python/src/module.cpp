@@ -30,4 +30,5 @@ PYBIND11_MODULE(_core, module) {
   matpredict_python::bind_isolation(module, [](const std::string&) -> std::shared_ptr<const matlearn::Segmenter> {
     return std::make_shared<matlearn::GrabCutSegmenter>();  // "sam:" goes to matpredict._learn's isolate
   });
+  matpredict_python::bind_mask_box(module);
 }

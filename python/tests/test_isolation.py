@@ -53,14 +53,6 @@ def exposed(color):
     return matpredict.display_image(color, exposure_stops=float(np.log2(0.9 / bright)))
 
 
-def box_around(mask, fraction=0.05):
-    rows, columns = np.nonzero(mask)
-    grow_x = round(fraction * (columns.max() - columns.min() + 1))
-    grow_y = round(fraction * (rows.max() - rows.min() + 1))
-    return (max(0, int(columns.min()) - grow_x), max(0, int(rows.min()) - grow_y),
-            min(mask.shape[1] - 1, int(columns.max()) + grow_x), min(mask.shape[0] - 1, int(rows.max()) + grow_y))
-
-
 def iou(a, b):
     return np.logical_and(a, b).sum() / np.logical_or(a, b).sum()
 
@@ -68,10 +60,27 @@ def iou(a, b):
 def test_grabcut_isolates_a_rendered_object_on_a_cluttered_background(tmp_path):
     image, truth = cluttered_frame(tmp_path, "mug", "plastic")
     assert 0.05 < truth.mean() < 0.6
-    isolated = matpredict.isolate(image, box=box_around(truth))
+    isolated = matpredict.isolate(image, box=matpredict.mask_box(truth, grow=0.05))
     assert iou(isolated["mask"], truth) > IOU_DECILE
     # The same prompt, the same mask.
-    assert np.array_equal(matpredict.isolate(image, box=box_around(truth))["mask"], isolated["mask"])
+    assert np.array_equal(matpredict.isolate(image, box=matpredict.mask_box(truth, grow=0.05))["mask"], isolated["mask"])
+
+
+def test_mask_box_is_the_grown_box_around_the_mask():
+    mask = np.zeros((30, 52), dtype=bool)
+    mask[4:24, 10:50] = True  # columns 10-49 (40 wide: 5 % is 2), rows 4-23 (20 tall: 5 % is 1)
+    assert matpredict.mask_box(mask) == (10, 4, 49, 23)
+    assert matpredict.mask_box(mask, grow=0.05) == (8, 3, 51, 24)
+    mask[4:24, 0:50] = True  # clipped at column 0 and at the last column, 51
+    assert matpredict.mask_box(mask, grow=0.1) == (0, 2, 51, 25)
+    wide = np.zeros((30, 60), dtype=bool)
+    wide[4:24, 5:55] = True  # 50 wide: 5 % is 2.5, rounded away from zero to 3
+    assert matpredict.mask_box(wide, grow=0.05)[::2] == (2, 57)
+    assert matpredict.mask_box(np.zeros((3, 3))) is None
+    with pytest.raises(ValueError, match="mask: expected shape"):
+        matpredict.mask_box(np.zeros(3))
+    with pytest.raises(ValueError, match="grow: expected a fraction"):
+        matpredict.mask_box(mask, grow=-0.1)
 
 
 def test_the_crop_is_the_square_around_the_mask_resized_as_pillow_resizes():
