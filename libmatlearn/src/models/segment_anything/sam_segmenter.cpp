@@ -29,12 +29,14 @@ torch::Tensor model_input(const matbase::FloatImage& rgb, const SamFrame& frame)
 SamSegmenter::SamSegmenter(const std::filesystem::path& checkpoint)
     : checkpoint_(checkpoint), model_(load_segment_anything(checkpoint)) {}
 
-matbase::Mask SamSegmenter::segment(const matbase::FloatImage& rgb, const Prompt& given) const {
+SamPrediction SamSegmenter::predict(const matbase::FloatImage& rgb, const Prompt& given) const {
   torch::NoGradGuard no_grad;
   const Prompt prompt = given.empty() ? default_prompt(rgb.width, rgb.height) : given;
   const SamFrame frame = SamFrame::of(rgb.height, rgb.width);
   SegmentAnythingImpl& model = *model_.ptr();  // inference changes no weight
-  const torch::Tensor embedding = model.embed(model_input(rgb, frame));
+  SamPrediction prediction;
+  prediction.input = model_input(rgb, frame);
+  prediction.embedding = model.embed(prediction.input);
 
   std::optional<torch::Tensor> points, labels, box;
   if (!prompt.points.empty()) {
@@ -53,11 +55,16 @@ matbase::Mask SamSegmenter::segment(const matbase::FloatImage& rgb, const Prompt
     box = frame.to_input(torch::tensor({static_cast<float>(b.x0), static_cast<float>(b.y0), static_cast<float>(b.x1),
                                         static_cast<float>(b.y1)}).view({1, 4}));
   }
-  const SamMasks masks = model.decode(embedding, points, labels, box);
+  prediction.masks = model.decode(prediction.embedding, points, labels, box);
   const bool ambiguous = !prompt.box && prompt.points.size() <= 1;
-  const int64_t chosen = ambiguous ? 1 + masks.iou[0].slice(0, 1, 4).argmax().item<int64_t>() : 0;
-  const torch::Tensor object = frame.logits_at_photo_size(masks.logits.slice(1, chosen, chosen + 1))[0][0] > 0;
-  const torch::Tensor bytes = object.to(torch::kUInt8).contiguous();
+  prediction.chosen = ambiguous ? 1 + prediction.masks.iou[0].slice(0, 1, 4).argmax().item<int64_t>() : 0;
+  const int64_t k = prediction.chosen;
+  prediction.logits = frame.logits_at_photo_size(prediction.masks.logits.slice(1, k, k + 1))[0][0];
+  return prediction;
+}
+
+matbase::Mask SamSegmenter::segment(const matbase::FloatImage& rgb, const Prompt& prompt) const {
+  const torch::Tensor bytes = (predict(rgb, prompt).logits > 0).to(torch::kUInt8).contiguous();
   return matbase::Mask(bytes.data_ptr<uint8_t>(), bytes.data_ptr<uint8_t>() + bytes.numel());
 }
 

@@ -13,10 +13,23 @@
 
 namespace matlearn {
 
+// What the model says about a prompt on a photograph, each stage as the official SamPredictor
+// has it, before the mask is taken.
+struct SamPrediction {
+  torch::Tensor input;      // 1 x 3 x 1024 x 1024: the photograph resized, normalised and padded
+  torch::Tensor embedding;  // 1 x 256 x 64 x 64
+  SamMasks masks;           // all four masks (256 x 256 logits over the input) and their predicted IoU
+  int64_t chosen = 0;       // the mask taken: 0 for an unambiguous prompt, else the best of 1-3
+  torch::Tensor logits;     // the chosen mask's logits at the photograph's size, height x width
+};
+
 class SamSegmenter final : public Segmenter {
  public:
   // Throws matbase::InputError naming the checkpoint (load_segment_anything).
   explicit SamSegmenter(const std::filesystem::path& checkpoint);
+  // `prompt` in the photograph's pixels, as check_prompt accepts it; an empty one is default_prompt's box.
+  SamPrediction predict(const matbase::FloatImage& rgb, const Prompt& prompt) const;
+  // The object: where predict's logits are positive.
   matbase::Mask segment(const matbase::FloatImage& rgb, const Prompt& prompt) const override;
   std::string name() const override { return "sam:" + checkpoint_.string(); }
   SamSize size() const { return model_->size(); }
