@@ -1,5 +1,6 @@
 // Isolating an object: prompts refused by name, mask cleanup on hand-drawn masks, GrabCut on a
 // synthetic photograph whose object is known, and the crop a network is fed.
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <thread>
@@ -22,21 +23,25 @@ matbase::Mask drawn(const std::vector<std::string>& rows) {
   return mask;
 }
 
-// A 96 x 72 photograph: a reddish disc of radius 20 at (40, 36) with a little noise, on a
-// background of green-grey blotches, and the disc's true mask.
+struct Disc {
+  double x, y, radius;
+  bool holds(int px, int py) const { return std::hypot(px + 0.5 - x, py + 0.5 - y) < radius; }
+};
+
+// A photograph of reddish discs with a little noise on a background of green-grey blotches, and
+// their true mask; by default 96 x 72 with a disc of radius 20 at (40, 36).
 struct Photo {
-  matbase::FloatImage rgb{96, 72, 3};
+  matbase::FloatImage rgb;
   matbase::Mask truth;
 };
-Photo disc_photo() {
-  Photo photo;
+Photo disc_photo(int width = 96, int height = 72, const std::vector<Disc>& discs = {{40.0, 36.0, 20.0}}) {
+  Photo photo{matbase::FloatImage(width, height, 3), matbase::Mask(static_cast<size_t>(width) * static_cast<size_t>(height), 0)};
   std::mt19937 random(7);
   std::uniform_real_distribution<float> noise(-0.06f, 0.06f);
-  photo.truth.assign(96 * 72, 0);
-  for (int y = 0; y < 72; ++y)
-    for (int x = 0; x < 96; ++x) {
-      const bool inside = std::hypot(x + 0.5 - 40.0, y + 0.5 - 36.0) < 20.0;
-      photo.truth[static_cast<size_t>(y * 96 + x)] = inside;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const bool inside = std::any_of(discs.begin(), discs.end(), [&](const Disc& disc) { return disc.holds(x, y); });
+      photo.truth[static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)] = inside;
       const float blotch = 0.5f + 0.25f * std::sin(0.3f * static_cast<float>(x)) * std::cos(0.23f * static_cast<float>(y));
       const float base[3] = {inside ? 0.75f : 0.35f * blotch, inside ? 0.2f : 0.6f * blotch, inside ? 0.15f : 0.4f * blotch};
       for (int c = 0; c < 3; ++c) photo.rgb.at(x, y, c) = std::clamp(base[c] + noise(random), 0.0f, 1.0f);
@@ -72,6 +77,24 @@ TEST_CASE("default_prompt is the central box a twentieth in from each side; grow
   CHECK((grown.x0 == 8 && grown.y0 == 3 && grown.x1 == 51 && grown.y1 == 24));
   const matbase::PixelBox clipped = matlearn::grown_box({0, 0, 99, 49}, 0.05, 100, 50);
   CHECK((clipped.x0 == 0 && clipped.y0 == 0 && clipped.x1 == 99 && clipped.y1 == 49));
+}
+
+TEST_CASE("scaled_prompt keeps a box's pixels and moves a point to the pixel holding its centre", "[isolation]") {
+  // 1600 x 1200 to 640 x 480: a scale of 0.4 on both axes.
+  const matlearn::Prompt scaled = matlearn::scaled_prompt(
+      {matbase::PixelBox{901, 351, 1398, 848}, {{1150, 600, true}, {0, 0, false}, {1599, 1199, true}}}, 1600, 1200, 640, 480);
+  REQUIRE(scaled.box);
+  // 901 * 0.4 = 360.4 and 351 * 0.4 = 140.4 lie in pixels 360 and 140; the last pixels end at
+  // 1399 * 0.4 = 559.6 and 849 * 0.4 = 339.6, inside pixels 559 and 339.
+  CHECK((scaled.box->x0 == 360 && scaled.box->y0 == 140 && scaled.box->x1 == 559 && scaled.box->y1 == 339));
+  REQUIRE(scaled.points.size() == 3);
+  // Centres (1150.5, 600.5) * 0.4 = (460.2, 240.2); (0.5, 0.5) * 0.4; (1599.5, 1199.5) * 0.4 = (639.8, 479.8).
+  CHECK((scaled.points[0].x == 460 && scaled.points[0].y == 240 && scaled.points[0].foreground));
+  CHECK((scaled.points[1].x == 0 && scaled.points[1].y == 0 && !scaled.points[1].foreground));
+  CHECK((scaled.points[2].x == 639 && scaled.points[2].y == 479));
+  // A one-pixel box stays a box: pixel 5 covers 2.0 to 2.4.
+  const matlearn::Prompt tiny = matlearn::scaled_prompt({matbase::PixelBox{5, 5, 5, 5}, {}}, 1600, 1200, 640, 480);
+  CHECK((tiny.box->x0 == 2 && tiny.box->x1 == 2 && tiny.box->y0 == 2 && tiny.box->y1 == 2));
 }
 
 TEST_CASE("mask cleanup keeps one object and fills its holes", "[isolation]") {
@@ -119,6 +142,25 @@ TEST_CASE("GrabCut finds a disc on a blotchy background from a box, the same on 
   // With no prompt the central box holds the disc too.
   CHECK(intersection_over_union(matlearn::cleaned_object_mask(matlearn::grabcut_mask(photo.rgb, {}), 96, 72, {}), photo.truth) >
         0.9);
+}
+
+TEST_CASE("GrabCut segments a photograph larger than its working size there, the box scaled with it", "[isolation]") {
+  // Two discs alike, 1600 x 1200: segmented at 640 x 480. A box around the right one only.
+  const Disc left{450.0, 600.0, 200.0}, right{1150.0, 600.0, 200.0};
+  const Photo photo = disc_photo(1600, 1200, {left, right});
+  const matlearn::Prompt box{matbase::PixelBox{901, 351, 1398, 848}, {}};
+  const matbase::Mask found = matlearn::grabcut_mask(photo.rgb, box);
+  REQUIRE(found.size() == photo.truth.size());
+  matbase::Mask right_disc(found.size(), 0);
+  size_t on_left = 0;
+  for (int y = 0; y < 1200; ++y)
+    for (int x = 0; x < 1600; ++x) {
+      const size_t p = static_cast<size_t>(y) * 1600 + static_cast<size_t>(x);
+      right_disc[p] = right.holds(x, y);
+      on_left += found[p] && left.holds(x, y);
+    }
+  CHECK(intersection_over_union(matlearn::cleaned_object_mask(found, 1600, 1200, box), right_disc) > 0.97);
+  CHECK(on_left == 0);
 }
 
 TEST_CASE("GrabCut refuses prompts that leave it nothing to learn from", "[isolation]") {

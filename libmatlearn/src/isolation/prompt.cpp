@@ -37,4 +37,23 @@ matbase::PixelBox grown_box(const matbase::PixelBox& box, double fraction, int w
           std::min(height - 1, box.y1 + grow_y)};
 }
 
+Prompt scaled_prompt(const Prompt& prompt, int width, int height, int scaled_width, int scaled_height) {
+  const double sx = static_cast<double>(scaled_width) / width, sy = static_cast<double>(scaled_height) / height;
+  const auto first = [](int pixel, double scale) { return static_cast<int>(std::floor(pixel * scale)); };
+  const auto last = [](int pixel, double scale, int side) {
+    return std::min(side - 1, static_cast<int>(std::ceil((pixel + 1) * scale)) - 1);
+  };
+  const auto holding = [](int pixel, double scale, int side) {
+    return std::min(side - 1, static_cast<int>(std::floor((pixel + 0.5) * scale)));
+  };
+  Prompt scaled;
+  if (prompt.box) {
+    const matbase::PixelBox& b = *prompt.box;
+    scaled.box = matbase::PixelBox{first(b.x0, sx), first(b.y0, sy), last(b.x1, sx, scaled_width), last(b.y1, sy, scaled_height)};
+  }
+  for (const PromptPoint& point : prompt.points)
+    scaled.points.push_back({holding(point.x, sx, scaled_width), holding(point.y, sy, scaled_height), point.foreground});
+  return scaled;
+}
+
 }  // namespace matlearn

@@ -36,4 +36,8 @@ Prompt default_prompt(int width, int height);
 // box prompt as a user draws it around an object (the bench's, 5 %).
 matbase::PixelBox grown_box(const matbase::PixelBox& box, double fraction, int width, int height);
 
+// The prompt in a copy of a width x height image resized to scaled_width x scaled_height: a box
+// keeps every pixel it covered in part, a point lands in the pixel that holds its centre.
+Prompt scaled_prompt(const Prompt& prompt, int width, int height, int scaled_width, int scaled_height);
+
 }  // namespace matlearn
