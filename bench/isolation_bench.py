@@ -16,7 +16,9 @@ the frame as an 8-bit display image). Prints the IoU distribution per segmenter 
 and per material class, as markdown tables; writes every frame's figures to --output.
 
 With --checkpoint (a network train_regressor wrote), each frame is also predicted twice, isolated
-with its true mask and with each segmenter's, and the predicted base colour is scored (RMSE, in
+with its true mask and with each segmenter's, exposed as make_dataset exposes its images (a grey
+card at the object's centre, metered under the frame's lights, shows half its albedo; the
+segmenters see the camera's exposure above), and the predicted base colour is scored (RMSE, in
 the stored sRGB encoding) against the rendered base colour cropped and resized the same way, on
 the true object's pixels of the crop: what a segmenter's mistakes cost the prediction.
 """
@@ -88,6 +90,30 @@ def display(color):
     bright = float(np.percentile(luminance, 98))
     stops = math.log2(0.9 / bright) if bright > 0 else 0.0
     return matpredict.display_image(color, exposure_stops=max(-20.0, min(20.0, stops)))
+
+
+def grey_card_stops(scene, center, radius, camera_position):
+    """The exposure make_dataset's images have (docs/make_dataset.md, "Exposure"), measured as a
+    photographer meters incident light: a grey Lambertian card at the object's centre, turned to
+    the camera, rendered under the scene's lights with the object made transparent (so that its
+    rig stays where it was and it casts no shadow), is shown at half its albedo."""
+    albedo = 0.18
+    normal = np.asarray(camera_position, dtype=float) - center
+    normal /= np.linalg.norm(normal)
+    side = np.cross(normal, [0.0, 0.0, 1.0])
+    side = side / np.linalg.norm(side) if np.linalg.norm(side) > 1e-6 else np.array([1.0, 0.0, 0.0])
+    up = np.cross(side, normal)
+    half = 0.25 * radius
+    corners = [center + half * (a * side + b * up) for a, b in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+    metering = dict(scene, camera=dict(scene["camera"], width=64, height=64),
+                    render={"spp": 64, "seed": scene["render"]["seed"]})
+    metering["materials"] = dict(scene["materials"], object={"opacity": 0.0},
+                                 card={"base_color": [albedo] * 3, "roughness": 0.5, "specular": 0.0})
+    metering["objects"] = scene["objects"] + [{"mesh": matpredict.Mesh(np.array(corners), np.array([[0, 1, 2], [0, 2, 3]])),
+                                               "material": "card"}]
+    color = matpredict.render(matpredict.load_scene(metering))["color"]
+    luminance = float(np.mean(color[30:34, 30:34] @ np.array([0.2126, 0.7152, 0.0722])))
+    return math.log2(albedo / (2 * luminance))
 
 
 def intersection_over_union(a, b):
@@ -171,8 +197,9 @@ def main():
                 camera = {"grid": {"cell": cell, "n_phi": 16, "n_theta": 16, "radius": 3.4 * radius,
                                    "theta_range_deg": [0, 360], "center": [cx, cy, cz]}}
                 for cluttered in (False, True):
-                    scene = matpredict.load_scene(object_scene(name, material_class, 1 + k, camera, args.size, args.spp,
-                                                               cluttered, environment))
+                    described = object_scene(name, material_class, 1 + k, camera, args.size, args.spp, cluttered,
+                                             environment)
+                    scene = matpredict.load_scene(described)
                     frame = matpredict.render(scene, aovs=["label", "base_color"])
                     truth = frame["label"][:, :, 0] == classes[material_class]
                     edges = np.concatenate([truth[0], truth[-1], truth[:, 0], truth[:, -1]])
@@ -182,8 +209,14 @@ def main():
                     image = display(frame["color"])
                     box = matpredict.mask_box(truth, grow=0.05)
                     albedo = srgb(frame["base_color"])
-                    true_error = (base_color_error(model, matpredict.isolate(image, mask=truth, size=model.image_size),
-                                                   albedo, truth) if model else None)
+                    true_error = None
+                    if model:
+                        # The segmenters see the frame as a camera exposes it; the network sees it
+                        # exposed as its training images were.
+                        metered = matpredict.display_image(frame["color"], exposure_stops=grey_card_stops(
+                            described, np.array([cx, cy, cz]), radius, scene.camera.position))
+                        true_error = base_color_error(model, matpredict.isolate(metered, mask=truth, size=model.image_size),
+                                                      albedo, truth)
                     for segmenter, prompt in methods:
                         start = time.perf_counter()
                         error = None
@@ -194,7 +227,8 @@ def main():
                             iou = intersection_over_union(isolated["mask"], truth)
                             refusal = None
                             if model:
-                                error = base_color_error(model, isolated, albedo, truth)
+                                error = base_color_error(model, matpredict.isolate(metered, mask=isolated["mask"],
+                                                                                   size=model.image_size), albedo, truth)
                         except matpredict.InputError as refused:  # counted as no overlap
                             seconds = time.perf_counter() - start
                             iou, refusal = 0.0, str(refused)
