@@ -250,25 +250,23 @@ def main():
           "wholly in view); box: the label's box grown by 5 %:\n")
     print("| segmenter, prompt, background | frames | mean | 10th percentile | median | worst | ms per image |")
     print("|---|---|---|---|---|---|---|")
-    for segmenter, prompt in methods:
-        for cluttered in (False, True):
-            found = chosen_records(segmenter, prompt, cluttered)
-            if found:
-                print(summary_row(label(segmenter, prompt, cluttered), [r["iou"] for r in found],
-                                  [r["seconds"] for r in found]))
+    groups = [(segmenter, prompt, cluttered) for segmenter, prompt in methods for cluttered in (False, True)]
+    for group in groups:
+        found = chosen_records(*group)
+        if found:
+            print(summary_row(label(*group), [r["iou"] for r in found], [r["seconds"] for r in found]))
     if model:
         print(f"\nBase colour RMSE of {args.checkpoint} ({model.network}, {model.image_size} px), on the true object's "
               "pixels of each crop:\n")
         print("| segmenter, prompt, background | frames | isolated with the true mask | isolated by the segmenter |")
         print("|---|---|---|---|")
-        for segmenter, prompt in methods:
-            for cluttered in (False, True):
-                scored = [r for r in chosen_records(segmenter, prompt, cluttered)
-                          if r["base_color_rmse"] is not None and r["base_color_rmse_true_mask"] is not None]
-                if scored:
-                    print(f"| {label(segmenter, prompt, cluttered)} | {len(scored)} | "
-                          f"{statistics.mean(r['base_color_rmse_true_mask'] for r in scored):.4f} | "
-                          f"{statistics.mean(r['base_color_rmse'] for r in scored):.4f} |")
+        for group in groups:
+            scored = [r for r in chosen_records(*group)
+                      if r["base_color_rmse"] is not None and r["base_color_rmse_true_mask"] is not None]
+            if scored:
+                print(f"| {label(*group)} | {len(scored)} | "
+                      f"{statistics.mean(r['base_color_rmse_true_mask'] for r in scored):.4f} | "
+                      f"{statistics.mean(r['base_color_rmse'] for r in scored):.4f} |")
     print("\nMean IoU per material class (cluttered):\n")
     print("| class | " + " | ".join(f"{segmenter}, {prompt}" for segmenter, prompt in methods) + " |")
     print("|---|" + "---|" * len(methods))
