@@ -24,6 +24,12 @@ CLI::Validator whole_number_in(int64_t low, int64_t high) {
                    fmt::format("{}..{}", low, high));
 }
 
+CLI::Validator number_in(double low, double high, bool low_open) {
+  return validator(
+      [low, high, low_open](const std::string& text) { return matbase::number_problem(text, low, high, low_open); },
+      fmt::format("{}{}..{}]", low_open ? "(" : "[", low, high));
+}
+
 CLI::Validator any_seed() { return validator(matbase::seed_problem, "0..2^64-1"); }
 
 }  // namespace app_support

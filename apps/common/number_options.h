@@ -22,5 +22,7 @@ constexpr int kMaxBatchSize = 4096;
 // the range ("1..65536").
 CLI::Validator whole_number_in(int64_t low, int64_t high);
 CLI::Validator any_seed();
+// A finite number in [low, high], or (low, high] when low_open.
+CLI::Validator number_in(double low, double high, bool low_open);
 
 }  // namespace app_support

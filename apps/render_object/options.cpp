@@ -12,6 +12,7 @@
 #include "common/number_options.h"
 #include "common/thread_count.h"
 #include "matgeom/builtin/builtin_objects.h"
+#include "matgeom/shading_normals.h"
 #include "matrender/camera.h"
 #include "matrender/image_io.h"
 #include "matrender/paper_setup.h"
@@ -119,6 +120,15 @@ void add_scene_options(CLI::App& app, Options& o) {
                      ->group(group);
   scene->excludes(mesh)->excludes(object);
   mesh->excludes(object);
+  app.add_option_function<double>(
+         "--auto-smooth", [&o](const double& degrees) { o.auto_smooth_deg = degrees; },
+         "shade the --mesh faces the file gives no normals smooth, except across edges sharper than DEG "
+         "(Blender's Auto Smooth; for scans without normals). Without it they are flat, or as an OBJ's "
+         "\"s\" statements say")
+      ->check(app_support::number_in(0.0, matgeom::kMaxAutoSmoothDeg, /*low_open=*/true))
+      ->type_name("DEG")
+      ->needs(mesh)
+      ->group(group);
   auto* library_material =
       app.add_option_function<std::string>(
              "--material",
@@ -393,7 +403,8 @@ ObjectDescription builtin_object(const std::string& argument) {
 
 SceneDescription chosen_scene(const Options& options) {
   if (options.scene_file) return matrender::read_scene_file(*options.scene_file);
-  if (options.mesh_file) return matrender::paper_object_scene(object_from(MeshFile{*options.mesh_file}, "--mesh"));
+  if (options.mesh_file)
+    return matrender::paper_object_scene(object_from(MeshFile{*options.mesh_file, {options.auto_smooth_deg}}, "--mesh"));
   if (options.object) return matrender::paper_object_scene(builtin_object(*options.object));
   return matrender::default_scene();
 }

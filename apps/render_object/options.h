@@ -21,6 +21,7 @@ struct Options {
   // What to render: at most one of these; none renders the built-in default scene.
   std::optional<std::string> scene_file;
   std::optional<std::string> mesh_file;
+  std::optional<double> auto_smooth_deg;  // --auto-smooth, for --mesh
   std::optional<std::string> object;  // NAME[:SEED]
   bool list_objects = false;
   bool list_parameters = false;

@@ -16,17 +16,6 @@ struct Corner {
   glm::dvec2 uv;
 };
 
-// Interior angle at `apex` between the edges to `p` and `q`; 0 for a zero-length edge.
-// atan2 of |cross| and dot stays accurate for angles near 0 and pi, where acos does not.
-double corner_angle(const glm::dvec3& apex, const glm::dvec3& p, const glm::dvec3& q) {
-  const glm::dvec3 e1 = p - apex;
-  const glm::dvec3 e2 = q - apex;
-  const double sine_term = glm::length(glm::cross(e1, e2));
-  const double cosine_term = glm::dot(e1, e2);
-  if (sine_term == 0.0 && cosine_term == 0.0) return 0.0;
-  return std::atan2(sine_term, cosine_term);
-}
-
 // Any unit vector perpendicular to the unit vector n (Duff et al. 2017, "Building an
 // Orthonormal Basis, Revisited"): used where the UVs give no direction.
 glm::dvec3 any_perpendicular(const glm::dvec3& n) {

@@ -1,4 +1,6 @@
 #include "matgeom/io/gltf/gltf_reader.h"
+#include "matgeom/shading_normals.h"
+#include "matgeom/tangents.h"
 
 #include <unistd.h>
 
@@ -453,21 +455,27 @@ TEST_CASE("glTF interleaved, normalized and non-indexed data under a mirroring n
   REQUIRE(asset.materials.size() == 1);
   CHECK(asset.materials[0].scalar(P::Metallic) == 0.0);
 
+  // Without NORMAL the faces are flat (glTF 2.0 requires it): no vertex normals, so no tangents.
+  CHECK(mesh.normals.empty());
+  CHECK(mesh.tangents.empty());
+  // Flat shading made explicit, as the renderer does for a normal map, gives each corner the
+  // re-wound face's normal and a tangent frame on it.
+  matgeom::TriangleMesh flat = matgeom::flat_shaded(mesh);
+  matgeom::compute_tangents(flat);
   for (size_t v = 0; v < 6; ++v) {
     const Vertex& in = vertices[v];
     const glm::dvec3 mirrored(-in.position[0], in.position[1], in.position[2]);
     check_near(mesh.positions[v], to_blender(mirrored));
     CHECK(mesh.uvs[v].x == Approx(in.uv[0] / 65535.0));
     CHECK(mesh.uvs[v].y == Approx(1.0 - in.uv[1] / 65535.0));
-    // The mirrored quad still faces glTF +z, which is Blender -y: normals are computed from the
-    // re-wound triangles.
-    check_near(mesh.normals[v], glm::dvec3(0.0, -1.0, 0.0));
+    // The mirrored quad still faces glTF +z, which is Blender -y.
+    check_near(flat.normals[v], glm::dvec3(0.0, -1.0, 0.0));
     // Computed tangents: u grows along glTF +x, mirrored to Blender -x; +v (after the flip)
     // along glTF +y, Blender +z. Seen from the front (-y) that layout is mirrored: w = -1.
-    const glm::vec4 t = mesh.tangents[v];
+    const glm::vec4 t = flat.tangents[v];
     check_near(glm::vec3(t), glm::dvec3(-1.0, 0.0, 0.0), 1e-4);
     CHECK(t.w == -1.0f);
-    const glm::vec3 bitangent = t.w * glm::cross(mesh.normals[v], glm::vec3(t));
+    const glm::vec3 bitangent = t.w * glm::cross(flat.normals[v], glm::vec3(t));
     CHECK(bitangent.z > 0.9999f);
   }
   for (const glm::uvec3& triangle : mesh.triangles) {

@@ -18,6 +18,7 @@
 #include "matdataset/format/dataset_folders.h"
 #include "matdataset/format/dataset_writer.h"
 #include "matgeom/builtin/builtin_objects.h"
+#include "matrender/scene_file.h"
 
 namespace matdataset {
 namespace {
@@ -219,12 +220,14 @@ std::string folded_case(std::string name) {
 
 ObjectConfig read_object(const DocumentNode& v, const std::optional<DocumentNode>& defaults, const fs::path& base,
                          FolderNames& names) {
-  v.expect_keys({"name", "builtin", "mesh", "seed", "uv_pass", "slots", "materials"});
+  v.expect_keys({"name", "builtin", "mesh", "seed", "uv_pass", "auto_smooth_deg", "slots", "materials"});
   ObjectConfig object;
   const std::optional<DocumentNode> builtin = v.find("builtin"), mesh = v.find("mesh");
   if (builtin.has_value() == mesh.has_value())
     v.fail("give exactly one of `builtin` (a built-in object's name) and `mesh` (a file)");
   if (builtin) {
+    if (const std::optional<DocumentNode> angle = v.find("auto_smooth_deg"))
+      angle->fail("only a mesh file's faces can be smoothed (a built-in object has its own normals)");
     const std::vector<std::string> known = matgeom::builtin_object_names();
     const std::string name = known[builtin->choice(known)];
     const std::optional<DocumentNode> seed = v.find("seed");
@@ -232,6 +235,7 @@ ObjectConfig read_object(const DocumentNode& v, const std::optional<DocumentNode
     object.name = name;
   } else {
     if (const std::optional<DocumentNode> seed = v.find("seed")) seed->fail("only a built-in object has a seed");
+    matrender::MeshFile file;
     const std::string file = mesh->text();
     const fs::path path = fs::path(file).is_absolute() ? fs::path(file) : base / file;
     try {
@@ -239,7 +243,10 @@ ObjectConfig read_object(const DocumentNode& v, const std::optional<DocumentNode
     } catch (const std::exception& e) {
       mesh->fail(e.what());
     }
-    object.source = matrender::MeshFile{path.lexically_normal().string()};
+    file.path = path.lexically_normal().string();
+    if (const std::optional<DocumentNode> angle = v.find("auto_smooth_deg"))
+      file.read_options.auto_smooth_deg = matrender::read_auto_smooth_deg(*angle);
+    object.source = file;
     object.name = path.stem().string();
   }
   const std::optional<DocumentNode> name = v.find("name");

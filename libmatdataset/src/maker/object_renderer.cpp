@@ -260,8 +260,11 @@ std::string ObjectRenderer::provenance_json(const DatasetPlan& plan, size_t vari
   ordered_json source;
   if (const auto* builtin = std::get_if<matrender::BuiltinObject>(&object_.source))
     source = {{"builtin", builtin->name}, {"seed", builtin->seed}};
-  else
-    source = {{"mesh", std::filesystem::path(std::get<matrender::MeshFile>(object_.source).path).filename().string()}};
+  else {
+    const auto& file = std::get<matrender::MeshFile>(object_.source);
+    source = {{"mesh", std::filesystem::path(file.path).filename().string()}};
+    if (file.read_options.auto_smooth_deg) source["auto_smooth_deg"] = *file.read_options.auto_smooth_deg;
+  }
   const char* uv_pass[] = {"never", "when_missing", "always"};
   source["uv_pass"] = uv_pass[static_cast<int>(object_.uv_pass)];
   json["object"] = {{"name", object_.name}, {"source", source}};

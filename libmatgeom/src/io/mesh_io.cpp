@@ -24,14 +24,20 @@ const std::vector<std::string>& object_file_extensions() {
   return extensions;
 }
 
-ObjectAsset read_object(const std::string& path) {
+ObjectAsset read_object(const std::string& path, const ObjectReadOptions& options) {
   matbase::require_input_file(path);
   const std::string extension = matbase::lowercase_extension(path);
-  if (extension == ".glb" || extension == ".gltf") return read_gltf(path);
-  if (extension == ".obj") return read_obj(path);
+  if (extension == ".glb" || extension == ".gltf") return read_gltf(path, {options.auto_smooth_deg});
+  if (extension == ".obj") {
+    ObjReadOptions obj_options;
+    obj_options.auto_smooth_deg = options.auto_smooth_deg;
+    return read_obj(path, obj_options);
+  }
   if (extension != ".ply") throw std::runtime_error(unsupported(path));
+  PlyReadOptions ply_options;
+  ply_options.auto_smooth_deg = options.auto_smooth_deg;
   ObjectAsset asset;
-  asset.mesh = read_ply(path);
+  asset.mesh = read_ply(path, ply_options);
   for (uint32_t part = 0; part < asset.mesh.part_count(); ++part)
     asset.materials.push_back(
         matmaterial::MaterialInputs(part < asset.mesh.part_names.size() ? asset.mesh.part_names[part] : "default"));

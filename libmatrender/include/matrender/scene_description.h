@@ -17,6 +17,7 @@
 
 #include "matbase/input_error.h"
 #include "matgeom/camera_grid.h"
+#include "matgeom/io/mesh_io.h"
 #include "matgeom/object_asset.h"
 #include "matmaterial/library/material_library.h"
 #include "matrender/camera.h"
@@ -77,7 +78,8 @@ struct MaterialDescription {
 };
 
 struct MeshFile {
-  std::string path;  // .glb or .gltf
+  std::string path;  // .glb, .gltf, .ply or .obj
+  matgeom::ObjectReadOptions read_options;  // the scene file's "auto_smooth_deg"
 };
 struct BuiltinObject {
   std::string name;

@@ -3,6 +3,7 @@
 // and describes: referenced files must exist, but nothing is loaded here.
 #include <string>
 
+#include "matbase/document/document_node.h"
 #include "matrender/scene_description.h"
 
 namespace matrender {
@@ -15,5 +16,8 @@ SceneDescription read_scene_file(const std::string& path);
 SceneDescription read_scene_text(const std::string& json, const std::string& source, const std::string& folder);
 // A scene file's "camera" value alone, as JSON text; pointers start at it ("the camera: /grid/cell/0: ...").
 CameraDescription read_camera_text(const std::string& json, const std::string& source);
+// A mesh object's "auto_smooth_deg" (matgeom::ObjectReadOptions), an angle in (0, 180]: the one
+// reading of it, which make_dataset's objects share.
+double read_auto_smooth_deg(const matbase::DocumentNode& node);
 
 }  // namespace matrender

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "lights/light_checks.h"
+#include "matgeom/shading_normals.h"
 #include "matgeom/tangents.h"
 #include "matrender/scene_limits.h"
 #include "scene/scene_data.h"
@@ -40,7 +41,8 @@ void check_part_materials(const std::string& what, uint32_t parts, const std::ve
 }
 
 // Normal maps need tangents; a mesh with UVs but none gets MikkTSpace ones the first time one of
-// its materials has a normal map.
+// its materials has a normal map. A flat mesh (no normals) first gets one vertex per corner with
+// its face normal, so that the frame is built on the normal it is shaded with.
 void add_tangents_if_needed(MeshData& m, const std::vector<Material>& materials) {
   bool needs_tangents = false;
   for (uint32_t id : m.part_materials) needs_tangents |= materials[id].normal_map != nullptr;
@@ -50,9 +52,13 @@ void add_tangents_if_needed(MeshData& m, const std::vector<Material>& materials)
   with_tangents.normals = m.normals;
   with_tangents.uvs = m.uvs;
   with_tangents.triangles = m.triangles;
+  if (with_tangents.normals.empty()) with_tangents = matgeom::flat_shaded(with_tangents);
   matgeom::compute_tangents(with_tangents);
+  m.positions = std::move(with_tangents.positions);
+  m.normals = std::move(with_tangents.normals);
+  m.uvs = std::move(with_tangents.uvs);
+  m.triangles = std::move(with_tangents.triangles);
   m.tangents = std::move(with_tangents.tangents);
-  if (m.normals.empty()) m.normals = std::move(with_tangents.normals);
 }
 
 // Some triangle spans an area (in the float positions rays will meet).

@@ -24,7 +24,7 @@ namespace {
 matgeom::ObjectAsset read_source(const ObjectDescription& object) {
   if (const auto* file = std::get_if<MeshFile>(&object.source)) {
     try {
-      return matgeom::read_object(file->path);
+      return matgeom::read_object(file->path, file->read_options);
     } catch (const std::exception& e) {
       throw object.origin.error("/mesh", e.what());
     }

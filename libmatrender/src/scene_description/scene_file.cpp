@@ -18,6 +18,7 @@
 #include "matgeom/builtin/builtin_objects.h"
 #include "matgeom/camera_grid.h"
 #include "matgeom/io/mesh_io.h"
+#include "matgeom/shading_normals.h"
 #include "matmaterial/material_classes.h"
 #include "matmaterial/material_parameters.h"
 #include "matrender/image_io.h"
@@ -429,6 +430,14 @@ std::string read_object_material(const DocumentNode& node, const fs::path& folde
   return name;
 }
 
+}  // namespace
+
+double read_auto_smooth_deg(const DocumentNode& node) {
+  return node.number_in(0.0, matgeom::kMaxAutoSmoothDeg, /*low_open=*/true);
+}
+
+namespace {
+
 ObjectDescription read_object(const DocumentNode& node, const fs::path& folder,
                               std::map<std::string, MaterialDescription>& materials) {
   if (!node.is_mapping()) node.fail_expected("a mapping of keys");
@@ -436,12 +445,14 @@ ObjectDescription read_object(const DocumentNode& node, const fs::path& folder,
   ObjectDescription object;
   object.origin = origin_of(node);
   if (node.has("mesh")) {
-    node.expect_keys({"mesh", "transform", "material", "materials", "shadow_terminator_geometry_offset"});
+    node.expect_keys({"mesh", "auto_smooth_deg", "transform", "material", "materials", "shadow_terminator_geometry_offset"});
     const std::string path = read_existing_file(node.required("mesh"), folder);
     const std::vector<std::string>& extensions = matgeom::object_file_extensions();
     if (std::find(extensions.begin(), extensions.end(), matbase::lowercase_extension(path)) == extensions.end())
       node.required("mesh").fail("expected a .glb, .gltf, .ply or .obj file");
-    object.source = MeshFile{path};
+    MeshFile file{path, {}};
+    if (auto angle = node.find("auto_smooth_deg")) file.read_options.auto_smooth_deg = read_auto_smooth_deg(*angle);
+    object.source = file;
   } else {
     node.expect_keys(
         {"builtin", "seed", "transform", "material", "materials", "shadow_terminator_geometry_offset"});

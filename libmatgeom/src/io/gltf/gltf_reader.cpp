@@ -24,6 +24,7 @@
 #include "matbase/image/image_file.h"
 #include "matbase/image/unorm.h"
 #include "matbase/text.h"
+#include "matgeom/shading_normals.h"
 #include "matgeom/tangents.h"
 
 // Reading a glTF file is three steps: tinygltf parses the JSON, buffers and images; the node
@@ -578,27 +579,27 @@ PrimitivePiece read_primitive(const GltfFile& file, const tinygltf::Primitive& p
   return piece;
 }
 
-// Normals the file did not give (or gave as zero vectors) are computed area-weighted from the
-// transformed triangles, so that non-uniform scales weight the faces as they appear in the scene.
-void complete_normals(PrimitivePiece& piece) {
-  const bool any_missing = std::find(piece.normal_missing.begin(), piece.normal_missing.end(),
-                                     true) != piece.normal_missing.end();
-  if (!any_missing) return;
-  TriangleMesh computed;
-  computed.positions = piece.mesh.positions;
-  computed.triangles = piece.mesh.triangles;
-  compute_vertex_normals(computed);
-  piece.mesh.normals.resize(piece.mesh.vertex_count());
-  for (size_t v = 0; v < piece.mesh.vertex_count(); ++v) {
-    if (piece.normal_missing[v]) piece.mesh.normals[v] = computed.normals[v];
-  }
+// Normals the file did not give (or gave as zero vectors) are flat, as the glTF 2.0 spec
+// requires of a primitive without NORMAL ("client implementations MUST calculate flat normals")
+// and Blender's importer shades it, unless Auto Smooth is asked for; they are completed after
+// the transform, so that a non-uniform scale tilts the faces as they appear in the scene.
+void complete_normals(PrimitivePiece& piece, std::optional<double> auto_smooth_deg) {
+  MissingNormals missing;
+  missing.vertex_missing = piece.normal_missing;
+  missing.auto_smooth_deg = auto_smooth_deg;
+  // glTF splits a vertex at a UV seam into two with one position; smoothing joins them again.
+  if (auto_smooth_deg) missing.file_vertex = vertices_by_position(piece.mesh);
+  complete_missing_normals(piece.mesh, missing);
+  if (piece.mesh.normals.empty()) piece.file_tangents = false;
 }
 
 // File tangents are re-orthogonalised against the (possibly recomputed) normals; if any is
 // unusable, or the file gave none, the whole piece gets MikkTSpace-style tangents.
 void complete_tangents(PrimitivePiece& piece) {
   TriangleMesh& mesh = piece.mesh;
-  if (mesh.uvs.empty()) return;
+  // A flat piece has no vertex normals to build a frame on (merge_pieces and matrender's scene
+  // make them explicit where needed).
+  if (mesh.uvs.empty() || mesh.normals.empty()) return;
   bool usable = piece.file_tangents;
   for (size_t v = 0; usable && v < mesh.vertex_count(); ++v) {
     const glm::dvec3 n(mesh.normals[v]);
@@ -641,7 +642,7 @@ void check_morph_weights(const GltfFile& file, const MeshInstance& instance) {
 
 // Every primitive of every mesh instance, transformed into Blender's frame, with normals and
 // (where there are UVs) tangents.
-std::vector<PrimitivePiece> read_pieces(const GltfFile& file) {
+std::vector<PrimitivePiece> read_pieces(const GltfFile& file, const GltfReadOptions& options) {
   std::vector<PrimitivePiece> pieces;
   for (const MeshInstance& instance : collect_mesh_instances(file)) {
     const glm::dmat4 transform = gltf_to_blender() * instance.world;
@@ -659,7 +660,7 @@ std::vector<PrimitivePiece> read_pieces(const GltfFile& file) {
       // reverses the winding and the tangents' handedness.
       transform_mesh(piece.mesh, transform);
       check_finite_positions(file, piece.mesh, what);
-      complete_normals(piece);
+      complete_normals(piece, options.auto_smooth_deg);
       complete_tangents(piece);
       pieces.push_back(std::move(piece));
     }
@@ -998,18 +999,26 @@ std::map<int, uint32_t> assign_parts(const std::vector<PrimitivePiece>& pieces) 
 }
 
 // Concatenates the pieces. If any piece has UVs the mesh has UVs everywhere: pieces without
-// get (0, 0) and the arbitrary tangent frame compute_tangents gives degenerate UVs.
+// get (0, 0) and the arbitrary tangent frame compute_tangents gives degenerate UVs. If any piece
+// has normals, a flat piece gets its face normals at one vertex per corner (flat_shaded).
 TriangleMesh merge_pieces(const GltfFile& file, std::vector<PrimitivePiece>& pieces,
                           const std::map<int, uint32_t>& part_of_material) {
   const bool any_uvs = std::any_of(pieces.begin(), pieces.end(), [](const PrimitivePiece& piece) {
     return !piece.mesh.uvs.empty();
   });
+  const bool any_normals = std::any_of(pieces.begin(), pieces.end(), [](const PrimitivePiece& piece) {
+    return !piece.mesh.normals.empty();
+  });
   TriangleMesh merged;
   for (PrimitivePiece& piece : pieces) {
     TriangleMesh& mesh = piece.mesh;
+    if (any_normals && mesh.normals.empty()) {
+      mesh = flat_shaded(mesh);
+      if (!mesh.uvs.empty()) compute_tangents(mesh);
+    }
     if (any_uvs && mesh.uvs.empty()) {
       mesh.uvs.assign(mesh.vertex_count(), glm::vec2(0.0f));
-      compute_tangents(mesh);
+      if (any_normals) compute_tangents(mesh);
     }
     if (mesh.vertex_count() > UINT32_MAX - merged.vertex_count()) {
       matbase::fail(file.path, "more vertices than 32-bit indices can address");
@@ -1030,9 +1039,9 @@ TriangleMesh merge_pieces(const GltfFile& file, std::vector<PrimitivePiece>& pie
 
 }  // namespace
 
-ObjectAsset read_gltf(const std::string& path) {
+ObjectAsset read_gltf(const std::string& path, const GltfReadOptions& options) {
   const GltfFile file = load_gltf(path);
-  std::vector<PrimitivePiece> pieces = read_pieces(file);
+  std::vector<PrimitivePiece> pieces = read_pieces(file, options);
   if (pieces.empty()) matbase::fail(path, "no triangles in the scene");
 
   const std::map<int, uint32_t> part_of_material = assign_parts(pieces);

@@ -14,6 +14,7 @@
 
 #include "matbase/file/file_error.h"
 #include "matmaterial/material_parameters.h"
+#include "io/obj/material_names.h"
 #include "io/obj/statement_text.h"
 
 namespace matgeom::obj {
@@ -306,10 +307,8 @@ std::string with_not_given_markers(const std::string& text) {
       marked.append(line.data(), line.size()).push_back('\n');
       return;
     }
-    // Blender trims material names. tinyobjloader keeps the blanks after the first, and then
-    // "usemtl", which reads one word, would miss the material.
-    const size_t name = trimmed.find_first_not_of(" \t", trimmed.find("newmtl") + 6);
-    marked.append("newmtl ").append(trimmed.substr(name)).append("\n").append(kNotGivenMarkers);
+    // Blender trims material names and keeps their inner blanks (material_names.h).
+    marked.append("newmtl ").append(name_word(statement_name(trimmed))).append("\n").append(kNotGivenMarkers);
   });
   return marked;
 }

@@ -39,12 +39,13 @@ ObjectAsset read_obj(const std::string& path, const ObjReadOptions& options) {
 
   obj::AssembledMesh assembled = obj::assemble_mesh(file, parts);
   if (assembled.mesh.triangles.empty()) matbase::fail(path, "no faces with a surface");
-  obj::complete_normals(assembled, file);
+  obj::complete_normals(assembled, options.auto_smooth_deg);
 
   ObjectAsset asset;
   asset.mesh = std::move(assembled.mesh);
-  // Tangents serve normal maps, which need UVs (as in read_gltf).
-  if (!asset.mesh.uvs.empty()) compute_tangents(asset.mesh);
+  // Tangents serve normal maps, which need UVs (as in read_gltf); a flat mesh has no vertex
+  // normal to build them on, and gets them when a normal map needs them (matrender's scene).
+  if (!asset.mesh.uvs.empty() && !asset.mesh.normals.empty()) compute_tangents(asset.mesh);
   asset.mesh.part_names = parts.names;
   asset.materials = obj::part_materials(file, parts, asset.images);
   try {

@@ -10,6 +10,7 @@
 #include "matbase/file/file_error.h"
 #include "matbase/file/input_file.h"
 #include "matbase/text.h"
+#include "io/obj/material_names.h"
 #include "io/obj/mtl_text_screening.h"
 #include "io/obj/obj_text_screening.h"
 
@@ -48,7 +49,7 @@ void check_material_uses(const ObjFile& file, const std::string& text) {
   const size_t found = file.warnings.find(kBefore);
   if (found == std::string::npos || !names_material_library(text)) return;
   const size_t begin = found + kBefore.size();
-  const std::string name = file.warnings.substr(begin, file.warnings.find(kAfter, begin) - begin);
+  const std::string name = word_name(file.warnings.substr(begin, file.warnings.find(kAfter, begin) - begin));
   matbase::fail(file.path, matbase::concat("line ", first_use_line(text, name), ": usemtl ", matbase::excerpt(name),
                          ": no such material (", missing_material_reason(file, name), ")"));
 }
@@ -71,7 +72,9 @@ class MaterialLibraries : public tinyobj::MaterialReader {
       return false;
     }
     std::istringstream stream(with_not_given_markers(screened_mtl_text(obj_path_, file.string(), text)));
+    const size_t first = materials->size();
     tinyobj::LoadMtl(material_map, materials, &stream, warnings, errors);
+    for (size_t m = first; m < materials->size(); ++m) (*materials)[m].name = word_name((*materials)[m].name);
     sources_.resize(materials->size(), file.string());
     return true;
   }
@@ -95,7 +98,7 @@ ObjFile load_obj(const std::string& path) {
 
   ObjFile file;
   file.path = path;
-  std::istringstream stream(text);
+  std::istringstream stream(tinyobj_text(text));
   MaterialLibraries libraries(path);
   std::string errors;
   const bool parsed = tinyobj::LoadObj(&file.attrib, &file.shapes, &file.materials, &file.warnings,

@@ -11,7 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "matbase/text.h"
-#include "matgeom/tangents.h"
+#include "matgeom/shading_normals.h"
 
 namespace matgeom::obj {
 
@@ -85,7 +85,7 @@ class MeshAssembler {
 
   // Triangles that repeat a position have no surface and are dropped (as read_gltf drops
   // triangles that repeat a vertex).
-  void add_triangle(const tinyobj::index_t* corners, uint32_t part) {
+  void add_triangle(const tinyobj::index_t* corners, uint32_t part, bool smooth) {
     const int a = corners[0].vertex_index, b = corners[1].vertex_index, c = corners[2].vertex_index;
     if (a == b || b == c || c == a) return;
     // One statement each: vertices are numbered in corner order.
@@ -94,6 +94,7 @@ class MeshAssembler {
     const uint32_t third = vertex(corners[2]);
     assembled_.mesh.triangles.emplace_back(first, second, third);
     assembled_.mesh.triangle_parts.push_back(part);
+    assembled_.smooth.push_back(smooth);
   }
 
   AssembledMesh take() { return std::move(assembled_); }
@@ -112,7 +113,7 @@ class MeshAssembler {
   void add_vertex(const tinyobj::index_t& corner) {
     TriangleMesh& mesh = assembled_.mesh;
     mesh.positions.push_back(obj_to_blender(attrib_.vertices, corner.vertex_index));
-    assembled_.file_positions.push_back(corner.vertex_index);
+    assembled_.file_positions.push_back(static_cast<uint32_t>(corner.vertex_index));
     // Corners without a texture coordinate in a file that has them get (0, 0).
     if (with_uvs_) {
       const size_t t = 2 * static_cast<size_t>(std::max(corner.texcoord_index, 0));
@@ -143,32 +144,22 @@ class MeshAssembler {
 AssembledMesh assemble_mesh(const ObjFile& file, const PartTable& parts) {
   MeshAssembler assembler(file);
   for (size_t s = 0; s < file.shapes.size(); ++s) {
-    const std::vector<tinyobj::index_t>& indices = file.shapes[s].mesh.indices;
+    const tinyobj::mesh_t& mesh = file.shapes[s].mesh;
     for (size_t face = 0; face < parts.face_parts[s].size(); ++face) {
-      assembler.add_triangle(&indices[3 * face], parts.face_parts[s][face]);
+      const bool smooth = face < mesh.smoothing_group_ids.size() && mesh.smoothing_group_ids[face] != 0;
+      assembler.add_triangle(&mesh.indices[3 * face], parts.face_parts[s][face], smooth);
     }
   }
   return assembler.take();
 }
 
-void complete_normals(AssembledMesh& assembled, const ObjFile& file) {
-  const std::vector<bool>& missing = assembled.normal_missing;
-  if (std::find(missing.begin(), missing.end(), true) == missing.end()) return;
-  TriangleMesh by_position;
-  for (size_t p = 0; p < file.attrib.vertices.size() / 3; ++p) {
-    by_position.positions.push_back(obj_to_blender(file.attrib.vertices, static_cast<int>(p)));
-  }
-  const std::vector<int>& file_positions = assembled.file_positions;
-  for (const glm::uvec3& t : assembled.mesh.triangles) {
-    by_position.triangles.emplace_back(file_positions[t[0]], file_positions[t[1]],
-                                       file_positions[t[2]]);
-  }
-  compute_vertex_normals(by_position);
-  for (size_t v = 0; v < missing.size(); ++v) {
-    if (missing[v]) {
-      assembled.mesh.normals[v] = by_position.normals[static_cast<size_t>(file_positions[v])];
-    }
-  }
+void complete_normals(AssembledMesh& assembled, std::optional<double> auto_smooth_deg) {
+  MissingNormals missing;
+  missing.vertex_missing = assembled.normal_missing;
+  missing.smooth = assembled.smooth;
+  missing.file_vertex = assembled.file_positions;
+  missing.auto_smooth_deg = auto_smooth_deg;
+  complete_missing_normals(assembled.mesh, missing);
 }
 
 }  // namespace matgeom::obj

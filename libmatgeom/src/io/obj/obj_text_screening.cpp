@@ -1,12 +1,14 @@
 #include "io/obj/obj_text_screening.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
 #include <vector>
 
 #include "matbase/file/file_error.h"
+#include "io/obj/material_names.h"
 #include "io/obj/statement_text.h"
 
 namespace matgeom::obj {
@@ -150,12 +152,48 @@ size_t first_use_line(const std::string& text, std::string_view material) {
   for_each_line(text, [&](size_t begin, size_t end) {
     ++line_number;
     const std::string_view line(text.data() + begin, end - begin);
-    const size_t keyword = line.find_first_not_of(" \t");
-    if (found != 0 || keyword == std::string_view::npos || line.compare(keyword, 6, "usemtl") != 0) return;
-    const std::vector<std::string_view> words = split_words(parsed_part(line.substr(keyword + 6)));
-    if ((words.empty() ? std::string_view() : words.front()) == material) found = line_number;
+    if (found == 0 && line_keyword(line) == "usemtl" && statement_name(line) == material) found = line_number;
   });
   return found;
+}
+
+namespace {
+
+// Blender 3.4's reading of "s" (obj_import_file_reader.cc): off for "0", for a word starting
+// with "off" or "null", and for anything that does not start with an integer; any other
+// integer, negative ones too, turns smoothing on. Group numbers make no sharp edges.
+bool smoothing_on(std::string_view line) {
+  const std::vector<std::string_view> words = statement_arguments(line);
+  if (words.empty()) return false;
+  const std::string_view word = words.front();
+  if (word.rfind("off", 0) == 0 || word.rfind("null", 0) == 0) return false;
+  long long value = 0;
+  const char* start = word.data() + (word.front() == '+' ? 1 : 0);
+  const auto [end, error] = std::from_chars(start, word.data() + word.size(), value);
+  return error == std::errc() && end != start && value != 0;
+}
+
+}  // namespace
+
+std::string tinyobj_text(const std::string& screened) {
+  std::string out;
+  out.reserve(screened.size());
+  for_each_line(screened, [&](size_t begin, size_t end) {
+    const std::string_view line(screened.data() + begin, end - begin);
+    const std::string_view keyword = line_keyword(line);
+    if (keyword == "usemtl") {
+      out.append("usemtl ").append(name_word(statement_name(line)));
+    } else if (keyword == "s") {
+      out.append(smoothing_on(line) ? "s 1" : "s 0");
+    } else if (keyword == "o") {
+      // Blender starts every object flat.
+      out.append(line).append("\ns 0");
+    } else {
+      out.append(line);
+    }
+    out.push_back('\n');
+  });
+  return out;
 }
 
 bool names_material_library(const std::string& text) {

@@ -18,9 +18,16 @@ namespace matgeom::obj {
 // are comments after corners (which tinyobjloader would read as index 0); line numbers stay.
 void screen_obj_text(const std::string& path, std::string& text);
 
-// The number of the first line of OBJ text whose "usemtl" names `material` as tinyobjloader reads
-// the name (its first word); 0 if none does.
+// The number of the first line of OBJ text whose "usemtl" names `material` (the whole rest of
+// the line, trimmed, as Blender reads it); 0 if none does.
 size_t first_use_line(const std::string& text, std::string_view material);
+
+// Screened OBJ text as tinyobjloader must read it to see what Blender 3.4 sees: "usemtl" names
+// as one word (material_names.h); "s" as "s 1" or "s 0" by Blender's rule (any integer but 0 is
+// smooth; tinyobjloader would read "s -1" as off); and "s 0" after every "o", since Blender starts
+// each object flat. Lines end in \n; the "o" lines' extra statements shift later line numbers,
+// so messages take theirs from the screened text.
+std::string tinyobj_text(const std::string& screened);
 
 // Whether the OBJ text has an "mtllib" statement.
 bool names_material_library(const std::string& text);

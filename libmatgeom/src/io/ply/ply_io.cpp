@@ -22,6 +22,7 @@
 #include "matbase/file/atomic_file.h"
 #include "matbase/file/file_error.h"
 #include "matbase/file/input_file.h"
+#include "matgeom/shading_normals.h"
 
 // Reading a PLY file is three steps: the whole file is loaded and its header parsed into element
 // and property declarations, which are checked against the file size before anything is
@@ -783,6 +784,22 @@ void write_ply_file(const TriangleMesh& mesh, const std::vector<std::string>& pa
   if (!out) matbase::fail(path, "cannot write the temporary file " + file_path);
 }
 
+// Faces without normals are flat, as Blender's PLY importer shades them, unless Auto Smooth is
+// asked for; a zero normal in the file counts as none.
+void complete_normals(TriangleMesh& mesh, std::optional<double> auto_smooth_deg) {
+  MissingNormals missing;
+  missing.auto_smooth_deg = auto_smooth_deg;
+  if (!mesh.normals.empty()) {
+    missing.vertex_missing.resize(mesh.vertex_count());
+    for (size_t v = 0; v < mesh.vertex_count(); ++v) {
+      const double length = glm::length(glm::dvec3(mesh.normals[v]));
+      missing.vertex_missing[v] = !(length > 0.0);
+      if (!missing.vertex_missing[v]) mesh.normals[v] = glm::vec3(glm::dvec3(mesh.normals[v]) / length);
+    }
+  }
+  complete_missing_normals(mesh, missing);
+}
+
 }  // namespace
 
 TriangleMesh read_ply(const std::string& path, const PlyReadOptions& options) {
@@ -808,6 +825,7 @@ TriangleMesh read_ply(const std::string& path, const PlyReadOptions& options) {
     }
   }
   assign_parts(path, header.part_table, face_layout, triangle_ids, mesh);
+  complete_normals(mesh, options.auto_smooth_deg);
 
   try {
     validate_mesh(mesh, path);

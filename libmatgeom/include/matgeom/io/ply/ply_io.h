@@ -2,6 +2,7 @@
 // PLY meshes (ASCII, binary little- and big-endian): the format of Replica's scans. Written by
 // hand rather than with OpenMesh: OpenMesh's half-edge mesh drops the non-manifold faces scans
 // contain, and the union of a scan's parts must be the whole scan.
+#include <optional>
 #include <string>
 
 #include "matgeom/mesh.h"
@@ -12,9 +13,13 @@ struct PlyReadOptions {
   // Integer face property whose value becomes the triangle's part. Empty: the first present of
   // "part_id" (written by write_ply), "object_id" (Replica), "instance_id", "segment_id".
   std::string face_id_property;
+  // Shade the faces smooth up to this angle where the file gives no normals (MissingNormals in
+  // matgeom/shading_normals.h); none: flat, as Blender's PLY importer shades them.
+  std::optional<double> auto_smooth_deg;
 };
 
-// Reads element "vertex" (x y z; nx ny nz and s t / u v / texture_u texture_v when present) and
+// Reads element "vertex" (x y z; nx ny nz and s t / u v / texture_u texture_v when present; faces
+// without normals are flat, see PlyReadOptions) and
 // element "face" (list "vertex_indices" or "vertex_index"; polygons are fan-triangulated).
 // Parts: with write_ply's "comment part <k> <name>" lines, id k is part k of that table;
 // otherwise the distinct ids in increasing order become parts 0, 1, ... named "<stem>_<id>",

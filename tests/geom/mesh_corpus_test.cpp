@@ -1,0 +1,96 @@
+// The corpus of tests/geom/data/mesh_corpus: files shaped as other tools write them, each read by
+// read_object and held to what expected.json says of it (a mesh with given traits, or a refusal
+// whose message holds given words).
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include "matgeom/io/mesh_io.h"
+#include "matgeom/mesh.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const fs::path kCorpus = MATPREDICT_MESH_CORPUS;
+
+glm::vec3 face_normal(const matgeom::TriangleMesh& mesh, size_t t) {
+  const glm::uvec3& tri = mesh.triangles[t];
+  return glm::normalize(glm::cross(mesh.positions[tri[1]] - mesh.positions[tri[0]], mesh.positions[tri[2]] - mesh.positions[tri[0]]));
+}
+
+// Flat: no normals (flat shading), or every corner's normal is its face's.
+bool is_flat(const matgeom::TriangleMesh& mesh) {
+  if (mesh.normals.empty()) return true;
+  for (size_t t = 0; t < mesh.triangle_count(); ++t)
+    for (int k = 0; k < 3; ++k)
+      if (glm::length(mesh.normals[mesh.triangles[t][k]] - face_normal(mesh, t)) > 1e-5f) return false;
+  return true;
+}
+
+// Smooth: the corners at one position share one normal, which no face of a cube has.
+bool is_smooth(const matgeom::TriangleMesh& mesh) {
+  if (mesh.normals.empty()) return false;
+  struct Less {
+    bool operator()(const glm::vec3& a, const glm::vec3& b) const {
+      return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
+    }
+  };
+  std::map<glm::vec3, glm::vec3, Less> normal_at;
+  for (const glm::uvec3& tri : mesh.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const auto [found, inserted] = normal_at.emplace(mesh.positions[tri[k]], mesh.normals[tri[k]]);
+      if (!inserted && glm::length(found->second - mesh.normals[tri[k]]) > 1e-5f) return false;
+    }
+  return true;
+}
+
+void check_reads(const fs::path& path, const json& expected) {
+  const matgeom::ObjectAsset asset = matgeom::read_object(path.string());
+  const matgeom::TriangleMesh& mesh = asset.mesh;
+  if (expected.contains("triangles")) CHECK(mesh.triangle_count() == expected["triangles"].get<size_t>());
+  if (expected.contains("shading")) {
+    const std::string shading = expected["shading"];
+    if (shading == "flat") CHECK(is_flat(mesh));
+    if (shading == "smooth") CHECK(is_smooth(mesh));
+  }
+  if (expected.contains("parts")) CHECK(mesh.part_names == expected["parts"].get<std::vector<std::string>>());
+}
+
+void check_refused(const fs::path& path, const json& words) {
+  std::string message;
+  try {
+    matgeom::read_object(path.string());
+  } catch (const std::runtime_error& error) {
+    message = error.what();
+  }
+  INFO("message: " << message);
+  REQUIRE(!message.empty());
+  CHECK(message.rfind(path.string() + ": ", 0) == 0);
+  for (const json& word : words) CHECK(message.find(word.get<std::string>()) != std::string::npos);
+}
+
+}  // namespace
+
+TEST_CASE("every file of the mesh corpus reads, or is refused, as expected.json says", "[geom]") {
+  std::ifstream in(kCorpus / "expected.json");
+  REQUIRE(in.good());
+  const json manifest = json::parse(in);
+  const json& files = manifest.at("files");
+  REQUIRE(!files.empty());
+  for (const json& entry : files) {
+    const fs::path path = kCorpus / entry.at("file").get<std::string>();
+    SECTION(entry.at("file").get<std::string>()) {
+      REQUIRE(fs::is_regular_file(path));
+      if (entry.contains("reads")) check_reads(path, entry["reads"]);
+      else check_refused(path, entry.at("refused"));
+    }
+  }
+}
