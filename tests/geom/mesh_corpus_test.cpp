@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "matgeom/io/mesh_io.h"
+#include "matbase/text_encoding.h"
 #include "matgeom/mesh.h"
 
 namespace {
@@ -62,6 +63,23 @@ void check_reads(const fs::path& path, const json& expected) {
     if (shading == "smooth") CHECK(is_smooth(mesh));
   }
   if (expected.contains("parts")) CHECK(mesh.part_names == expected["parts"].get<std::vector<std::string>>());
+  const auto part = [&](const std::string& name) {
+    for (size_t k = 0; k < mesh.part_names.size(); ++k)
+      if (mesh.part_names[k] == name) return k;
+    FAIL("no part " << name);
+    return size_t{0};
+  };
+  using P = matmaterial::MaterialParameter;
+  const json textured = expected.value("base_color_textured", json::array());
+  const json colours = expected.value("base_color", json::object());
+  for (const json& name : textured) {
+    const matmaterial::MaterialInputs& material = asset.materials.at(part(name.get<std::string>()));
+    CHECK(material[P::BaseColor].image >= 0);
+  }
+  for (const auto& [name, colour] : colours.items()) {
+    const glm::dvec3 actual = asset.materials.at(part(name)).color(P::BaseColor);
+    for (int c = 0; c < 3; ++c) CHECK(actual[c] == Approx(colour[static_cast<size_t>(c)].get<double>()).margin(1e-6));
+  }
 }
 
 void check_refused(const fs::path& path, const json& words) {
@@ -73,6 +91,8 @@ void check_refused(const fs::path& path, const json& words) {
   }
   INFO("message: " << message);
   REQUIRE(!message.empty());
+  // Whatever bytes the file holds, the message is valid UTF-8.
+  CHECK(matbase::valid_utf8(message) == message);
   CHECK(message.rfind(path.string() + ": ", 0) == 0);
   for (const json& word : words) CHECK(message.find(word.get<std::string>()) != std::string::npos);
 }

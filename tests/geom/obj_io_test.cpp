@@ -654,7 +654,7 @@ TEST_CASE("OBJ reader errors name the file and the problem", "[geom]") {
     write_text(path, "mtllib broken.mtl\n" + triangle + "usemtl m\nf 1 2 3\n");
     write_text(dir.file("broken.mtl"), "newmtl m\nmap_Kd lost.png\n");
     CHECK_THAT(read_error(path), Contains(path + ": ") && Contains(dir.file("broken.mtl")) &&
-                                     Contains("texture " + dir.file("lost.png") + ": no such file"));
+                                     Contains("texture \"lost.png\" not found (looked at " + dir.file("lost.png")));
     write_text(dir.file("lost.png"), "not a PNG");
     CHECK_THAT(read_error(path), Contains(path + ": ") && Contains("lost.png: cannot decode the image"));
   }
@@ -754,7 +754,8 @@ TEST_CASE("MTL numbers are checked where they are written, against the range the
            std::pair{"Ke -1 0 0", "Ke: \"-1\" is outside [0, 1000000]"},
            std::pair{"Ns -5", "Ns: \"-5\" is outside [0, ...)"},
            std::pair{"Ns 100 200", "Ns takes 1 number; it has 2"},
-           std::pair{"Ni 0.5", "Ni: \"0.5\" is outside [1, 1000]"},
+           std::pair{"Ni 1001", "Ni: \"1001\" is outside [0, 1000]"},
+           std::pair{"Ni -0.5", "Ni: \"-0.5\" is outside [0, 1000]"},
            std::pair{"d 1.5", "d: \"1.5\" is outside [0, 1]"},
            std::pair{"Tr -0.1", "Tr: \"-0.1\" is outside [0, 1]"},
            std::pair{"Pr 1.5", "Pr: \"1.5\" is outside [0, 1]"},
@@ -783,6 +784,12 @@ TEST_CASE("MTL numbers are checked where they are written, against the range the
     INFO(statement);
     CHECK_THAT(read_error(obj), Contains(obj + ": " + mtl + ": line 2: " + problem));
   }
+  // Ni 0, which exporters write for "unset", reads on an opaque material (the IOR shades only
+  // glass) and is refused on one that transmits.
+  write_text(mtl, "newmtl m\nNi 0\n");
+  CHECK(read_obj(obj).materials[0].scalar(P::Ior) == 1.0);
+  write_text(mtl, "newmtl m\nNi 0.5\nTf 1 1 1\n");
+  CHECK_THAT(read_error(obj), Contains(obj + ": " + mtl + ": material \"m\": Ni 0.5 with transmission 1: glass needs an IOR from 1 to 1000"));
   // A file name after fewer than three numbers of -s: tinyobjloader would take it as the third.
   write_text(mtl, "newmtl m\nmap_Kd -s 1 1 t.png\nmap_Bump -bm 0.5 -o 0 t.png\n");
   const ObjectAsset asset = read_obj(obj);

@@ -103,8 +103,8 @@ void check_before_writing(const DatasetConfig& config) {
       if (const auto* builtin = std::get_if<matrender::BuiltinObject>(&object.source))
         asset = matgeom::make_builtin_object(builtin->name, builtin->seed);
       else
-        const auto& file = std::get<matrender::MeshFile>(object.source);
-        asset = matgeom::read_object(file.path, file.read_options);
+        asset = matgeom::read_object(std::get<matrender::MeshFile>(object.source).path,
+                                     std::get<matrender::MeshFile>(object.source).read_options);
     } catch (const std::exception& e) {
       throw matbase::InputError(config.source + ": " + object_key(o) + ": " + e.what());
     }

@@ -235,7 +235,7 @@ ObjectConfig read_object(const DocumentNode& v, const std::optional<DocumentNode
     object.name = name;
   } else {
     if (const std::optional<DocumentNode> seed = v.find("seed")) seed->fail("only a built-in object has a seed");
-    matrender::MeshFile file;
+    matrender::MeshFile mesh_file;
     const std::string file = mesh->text();
     const fs::path path = fs::path(file).is_absolute() ? fs::path(file) : base / file;
     try {
@@ -243,10 +243,10 @@ ObjectConfig read_object(const DocumentNode& v, const std::optional<DocumentNode
     } catch (const std::exception& e) {
       mesh->fail(e.what());
     }
-    file.path = path.lexically_normal().string();
+    mesh_file.path = path.lexically_normal().string();
     if (const std::optional<DocumentNode> angle = v.find("auto_smooth_deg"))
-      file.read_options.auto_smooth_deg = matrender::read_auto_smooth_deg(*angle);
-    object.source = file;
+      mesh_file.read_options.auto_smooth_deg = matrender::read_auto_smooth_deg(*angle);
+    object.source = mesh_file;
     object.name = path.stem().string();
   }
   const std::optional<DocumentNode> name = v.find("name");

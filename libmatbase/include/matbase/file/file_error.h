@@ -6,10 +6,13 @@
 #include <string>
 #include <string_view>
 
+#include "matbase/text_encoding.h"
+
 namespace matbase {
 
+// A file's name and bytes may be in any encoding: the message is kept valid UTF-8.
 [[noreturn]] inline void fail(const std::string& path, const std::string& problem) {
-  throw std::runtime_error(path + ": " + problem);
+  throw std::runtime_error(valid_utf8(path + ": " + problem));
 }
 
 // The arguments streamed into one string, for messages that mix text and numbers.
@@ -22,19 +25,24 @@ std::string concat(const Args&... args) {
 
 // Text from a file for an error message, as written but cut short: a corrupt file can put
 // anything where a keyword, a name or a number should be, megabytes of it or control characters
-// (shown as \xNN, so that a message stays one readable line). `most`: the characters shown, a
-// word's worth by default.
+// (shown as \xNN, so that a message stays one readable line), and bytes of another encoding than
+// UTF-8 (shown as \xNN too: a message stays valid UTF-8). `most`: the bytes shown, a word's worth
+// by default.
 inline std::string cut_short(std::string_view text, size_t most = 60) {
   std::string shown;
-  for (const char c : text.substr(0, most)) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (byte >= 0x20 && byte != 0x7F) {
-      shown += c;
+  const std::string_view kept = text.substr(0, most);
+  for (size_t i = 0; i < kept.size();) {
+    const auto byte = static_cast<unsigned char>(kept[i]);
+    const size_t length = utf8_sequence_length(kept, i);
+    if (length > 1 || (length == 1 && byte >= 0x20 && byte != 0x7F)) {
+      shown.append(kept.substr(i, length));
+      i += length;
       continue;
     }
     char escaped[5];
     std::snprintf(escaped, sizeof escaped, "\\x%02X", byte);
     shown += escaped;
+    ++i;
   }
   if (text.size() > most) shown += concat("... (", text.size(), " characters)");
   return shown;

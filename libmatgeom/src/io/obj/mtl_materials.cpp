@@ -12,6 +12,7 @@
 
 #include "matbase/file/file_error.h"
 #include "io/obj/mtl_placement.h"
+#include "io/obj/mtl_texture_paths.h"
 #include "io/obj/mtl_textures.h"
 
 // Materials: MTL to the Principled BSDF as Blender's OBJ importer builds it
@@ -65,6 +66,7 @@ class MaterialConverter {
     check_finite_values(material, what);
     matmaterial::MaterialInputs desc(material.name);
     set_scalars(material, desc);
+    check_ior(material, what, desc);
     set_textures(material, index, what, desc);
     return desc;
   }
@@ -85,6 +87,18 @@ class MaterialConverter {
                         finite3(material.transmittance) && std::isfinite(material.clearcoat_thickness) &&
                         std::isfinite(material.clearcoat_roughness) && std::isfinite(material.sheen);
     if (!finite) matbase::fail(file_.path, what + ": non-finite value");
+  }
+
+  // Ni reaches the render only through glass (Principled's transmission): a material that transmits
+  // needs an IOR the parameter can hold; any other keeps Ni clamped into the range, which changes
+  // nothing it shades (Blender reads "Ni 0", which exporters write for "unset", as written).
+  void check_ior(const tinyobj::material_t& material, const std::string& what, const matmaterial::MaterialInputs& desc) const {
+    using P = matmaterial::MaterialParameter;
+    if (material.ior < 0.0f || desc.scalar(P::Transmission) == 0.0) return;
+    const matmaterial::MaterialParameterInfo& ior = matmaterial::material_parameter(P::Ior);
+    if (material.ior < ior.min)
+      matbase::fail(file_.path, matbase::concat(what, ": Ni ", material.ior, " with transmission ", desc.scalar(P::Transmission),
+                                                ": glass needs an IOR from ", ior.min, " to ", ior.max));
   }
 
   // The -1 "not given" markers come from kNotGivenMarkers (obj_text_screening.cpp).
@@ -217,12 +231,19 @@ class MaterialConverter {
     return texture_transform(placed);
   }
 
-  // Texture paths are relative to the .mtl's directory (Blender's first choice; its fallbacks
-  // for broken exports are not tried). Blender drops quotes from them.
-  TextureSource source(std::string name, size_t index, const std::string& what) const {
-    name.erase(std::remove(name.begin(), name.end(), '"'), name.end());
+  // Texture paths are relative to the .mtl's folder, with Blender's fallbacks for paths written
+  // on another machine (mtl_texture_paths.h). A texture found nowhere is refused (Blender would
+  // render a black placeholder), naming the places looked at.
+  TextureSource source(const std::string& name, size_t index, const std::string& what) const {
     const fs::path library(file_.material_libraries[index]);
-    return {name, library.parent_path() / name, what};
+    if (name.empty()) return {name, {}, what};  // a map the material does not have
+    const TexturePathSearch search = find_texture_file(library.parent_path(), name);
+    if (!search.found) {
+      std::string tried;
+      for (const std::string& place : search.tried) tried += (tried.empty() ? "" : ", ") + matbase::cut_short(place, 300);
+      matbase::fail(file_.path, matbase::concat(what, ": texture ", matbase::excerpt(name), " not found (looked at ", tried, ")"));
+    }
+    return {name, *search.found, what};
   }
 
   const ObjFile& file_;

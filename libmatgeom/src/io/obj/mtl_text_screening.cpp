@@ -25,6 +25,11 @@ using P = matmaterial::MaterialParameter;
 // The largest number tinyobjloader's float holds: the bound of numbers with no range of their own.
 constexpr double kFloatMax = std::numeric_limits<float>::max();
 
+// Ni as Blender 3.4 takes it: any IOR from 0 to the Principled BSDF's 1000. Exporters write
+// "Ni 0" for "unset"; the MTL spec's range is 0.001 to 10. An IOR shades only glass, so
+// mtl_materials.cpp holds it to the parameter's range only for a material that transmits.
+constexpr double kMaxNi = 1000.0;
+
 // What a statement of numbers takes: a colour (3 numbers, or 1 for a grey), one number or one
 // whole number.
 enum class Takes { Colour, Number, WholeNumber };
@@ -54,7 +59,7 @@ constexpr std::array<NumberStatement, 18> kNumberStatements = {{
     parameter_statement("Tf", Takes::Colour, P::Transmission),
     {"Ke", Takes::Colour, 0.0, matmaterial::material_parameter(P::EmissionStrength).max},
     {"Ns", Takes::Number, 0.0, kFloatMax},
-    parameter_statement("Ni", Takes::Number, P::Ior),
+    {"Ni", Takes::Number, 0.0, kMaxNi},
     parameter_statement("d", Takes::Number, P::Alpha),
     parameter_statement("Tr", Takes::Number, P::Alpha),
     parameter_statement("Pr", Takes::Number, P::Roughness),

@@ -5,14 +5,19 @@
 #include <cstddef>
 #include <map>
 #include <sstream>
+#include <string_view>
+#include <system_error>
 #include <utility>
+#include <vector>
 
 #include "matbase/file/file_error.h"
 #include "matbase/file/input_file.h"
 #include "matbase/text.h"
+#include "matbase/text_encoding.h"
 #include "io/obj/material_names.h"
 #include "io/obj/mtl_text_screening.h"
 #include "io/obj/obj_text_screening.h"
+#include "io/obj/statement_text.h"
 
 namespace matgeom::obj {
 
@@ -22,6 +27,15 @@ namespace fs = std::filesystem;
 // Loading
 
 namespace {
+
+// OBJ and MTL text saved as UTF-16 or UTF-32 (Windows' "Unicode"), or with a UTF-8 byte-order
+// mark, read as UTF-8 (Blender 3.4 reads UTF-16 as garbage and says nothing).
+std::string marked_text_as_utf8(const std::string& where, const std::string& bytes) {
+  matbase::DecodedText decoded;
+  if (const std::optional<std::string> problem = matbase::decode_marked_text(bytes, decoded))
+    matbase::fail(where, "the text starts with a byte-order mark of " + std::string(decoded.encoding) + ", but it is " + *problem);
+  return decoded.text;
+}
 
 // What a "usemtl" naming no material it can use is missing, for its error message.
 std::string missing_material_reason(const ObjFile& file, const std::string& name) {
@@ -54,37 +68,69 @@ void check_material_uses(const ObjFile& file, const std::string& text) {
                          ": no such material (", missing_material_reason(file, name), ")"));
 }
 
-// Reads the .mtl files "mtllib" names for tinyobjloader, relative to the OBJ's directory as
-// Blender resolves them, screened, remembering the file each material comes from and the files
-// that could not be read (tinyobjloader would only warn about those).
+// Reads the .mtl files "mtllib" names for tinyobjloader, screened, remembering the file each
+// material comes from and the files that could not be read (tinyobjloader would only warn about
+// those). A name is the whole rest of the "mtllib" line (tinyobj_text spells it as one word), a
+// file relative to the OBJ's folder, as Blender reads it; when no such file exists, each of its
+// blank-separated words is one (the MTL spec's list), and when none of those exists either, the
+// .mtl of the OBJ's own stem beside it stands in, as Blender and assimp read it.
 class MaterialLibraries : public tinyobj::MaterialReader {
  public:
   explicit MaterialLibraries(std::string obj_path)
       : obj_path_(std::move(obj_path)), obj_directory_(fs::path(obj_path_).parent_path()) {}
 
-  bool operator()(const std::string& library, std::vector<tinyobj::material_t>* materials,
+  bool operator()(const std::string& word, std::vector<tinyobj::material_t>* materials,
                   std::map<std::string, int>* material_map, std::string* warnings,
                   std::string* errors) override {
-    const fs::path file = obj_directory_ / library;
-    std::string text;
-    if (matbase::read_whole_file(file, text)) {
-      missing_.push_back(file.string());
+    const std::string library = word_name(word);
+    std::vector<fs::path> files = {obj_directory_ / library};
+    if (!exists(files.front())) {
+      files.clear();
+      for (const std::string_view listed : split_words(library))
+        if (exists(obj_directory_ / listed)) files.push_back(obj_directory_ / listed);
+    }
+    if (files.empty() && exists(stem_library()) && !loaded(stem_library())) files.push_back(stem_library());
+    if (files.empty()) {
+      missing_.push_back((obj_directory_ / library).string());
       return false;
     }
-    std::istringstream stream(with_not_given_markers(screened_mtl_text(obj_path_, file.string(), text)));
-    const size_t first = materials->size();
-    tinyobj::LoadMtl(material_map, materials, &stream, warnings, errors);
-    for (size_t m = first; m < materials->size(); ++m) (*materials)[m].name = word_name((*materials)[m].name);
-    sources_.resize(materials->size(), file.string());
+    for (const fs::path& file : files) load(file, materials, material_map, warnings, errors);
     return true;
   }
+
+  // The .mtl beside the OBJ with its stem, which Blender reads for an OBJ that names none.
+  fs::path stem_library() const { return fs::path(obj_path_).replace_extension(".mtl"); }
 
   const std::vector<std::string>& sources() const { return sources_; }
   const std::vector<std::string>& missing() const { return missing_; }
 
  private:
+  static bool exists(const fs::path& file) {
+    std::error_code error;
+    return fs::is_regular_file(file, error);
+  }
+  bool loaded(const fs::path& file) const {
+    return std::find(loaded_.begin(), loaded_.end(), file) != loaded_.end();
+  }
+
+  void load(const fs::path& file, std::vector<tinyobj::material_t>* materials, std::map<std::string, int>* material_map,
+            std::string* warnings, std::string* errors) {
+    if (loaded(file)) return;
+    loaded_.push_back(file);
+    std::string text;
+    if (const std::optional<std::string> problem = matbase::read_whole_file(file, text))
+      matbase::fail(obj_path_, file.string() + ": " + *problem);
+    text = marked_text_as_utf8(obj_path_ + ": " + file.string(), text);
+    std::istringstream stream(with_not_given_markers(screened_mtl_text(obj_path_, file.string(), text)));
+    const size_t first = materials->size();
+    tinyobj::LoadMtl(material_map, materials, &stream, warnings, errors);
+    for (size_t m = first; m < materials->size(); ++m) (*materials)[m].name = word_name((*materials)[m].name);
+    sources_.resize(materials->size(), file.string());
+  }
+
   std::string obj_path_;
   fs::path obj_directory_;
+  std::vector<fs::path> loaded_;
   std::vector<std::string> sources_;  // the .mtl file of material k
   std::vector<std::string> missing_;
 };
@@ -94,18 +140,25 @@ class MaterialLibraries : public tinyobj::MaterialReader {
 ObjFile load_obj(const std::string& path) {
   std::string text;
   if (const std::optional<std::string> problem = matbase::read_whole_file(path, text)) matbase::fail(path, *problem);
+  text = marked_text_as_utf8(path, text);
   screen_obj_text(path, text);
 
   ObjFile file;
   file.path = path;
-  std::istringstream stream(tinyobj_text(text));
   MaterialLibraries libraries(path);
+  std::string prepared = tinyobj_text(text);
+  // Blender reads the .mtl of the OBJ's stem for an OBJ that names no library.
+  std::error_code error;
+  if (!names_material_library(text) && fs::is_regular_file(libraries.stem_library(), error))
+    prepared = "mtllib " + name_word(libraries.stem_library().filename().string()) + "\n" + prepared;
+  std::istringstream stream(prepared);
   std::string errors;
   const bool parsed = tinyobj::LoadObj(&file.attrib, &file.shapes, &file.materials, &file.warnings,
                                        &errors, &stream, &libraries, /*triangulate=*/true,
                                        /*default_vcols_fallback=*/false);
   if (!libraries.missing().empty()) {
-    matbase::fail(path, "cannot open material library " + libraries.missing().front());
+    matbase::fail(path, "cannot open material library " + libraries.missing().front() + " (nor " +
+                            libraries.stem_library().filename().string() + " beside the OBJ)");
   }
   if (!parsed || !errors.empty()) matbase::fail(path, "tinyobjloader: " + matbase::trim(errors));
   file.material_libraries = libraries.sources();

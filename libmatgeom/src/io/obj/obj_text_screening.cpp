@@ -183,6 +183,11 @@ std::string tinyobj_text(const std::string& screened) {
     const std::string_view keyword = line_keyword(line);
     if (keyword == "usemtl") {
       out.append("usemtl ").append(name_word(statement_name(line)));
+    } else if (keyword == "mtllib") {
+      // One file name, the whole rest of the line, without a pair of quotes around it.
+      std::string_view name = statement_name(line);
+      if (name.size() >= 2 && name.front() == '"' && name.back() == '"') name = name.substr(1, name.size() - 2);
+      out.append("mtllib ").append(name_word(name));
     } else if (keyword == "s") {
       out.append(smoothing_on(line) ? "s 1" : "s 0");
     } else if (keyword == "o") {

@@ -23,7 +23,7 @@ void screen_obj_text(const std::string& path, std::string& text);
 size_t first_use_line(const std::string& text, std::string_view material);
 
 // Screened OBJ text as tinyobjloader must read it to see what Blender 3.4 sees: "usemtl" names
-// as one word (material_names.h); "s" as "s 1" or "s 0" by Blender's rule (any integer but 0 is
+// and "mtllib" file names (the whole rest of the line) as one word (material_names.h); "s" as "s 1" or "s 0" by Blender's rule (any integer but 0 is
 // smooth; tinyobjloader would read "s -1" as off); and "s 0" after every "o", since Blender starts
 // each object flat. Lines end in \n; the "o" lines' extra statements shift later line numbers,
 // so messages take theirs from the screened text.
