@@ -12,6 +12,7 @@
 
 #include "matbase/pi.h"
 #include "matgeom/io/mesh_io.h"
+#include "matgeom/tangents.h"
 #include "matrender/asset.h"
 #include "matrender/camera.h"
 #include "matrender/render.h"
@@ -55,8 +56,8 @@ matgeom::TriangleMesh uv_sphere(double radius, int segments, int rings) {
 }
 
 // Axis-aligned cube of half size h about the origin: 12 outward triangles on 8 corners and no
-// normals. The OBJ reader gives such a file area-weighted vertex normals, so through a file it is
-// a cube whose shading normals lean 55 degrees off its faces at the corners.
+// normals. With vertex normals averaged over its corners (smoothed_cube) its shading normals lean
+// 55 degrees off its faces at the corners.
 matgeom::TriangleMesh cube(float h) {
   matgeom::TriangleMesh m;
   for (int i = 0; i < 8; ++i) m.positions.push_back({i & 1 ? h : -h, i & 2 ? h : -h, i & 4 ? h : -h});
@@ -177,7 +178,9 @@ TEST_CASE("A camera inside a closed flat-shaded cube sees no light from lamps ou
 }
 
 TEST_CASE("A camera inside a cube with corner-averaged normals sees no light from lamps outside", "[render]") {
-  const matgeom::ObjectAsset smoothed = through_obj_file(cube(0.3f), "smoothed_cube");
+  matgeom::TriangleMesh corner_averaged = cube(0.3f);
+  matgeom::compute_vertex_normals(corner_averaged);
+  const matgeom::ObjectAsset smoothed = through_obj_file(corner_averaged, "smoothed_cube");
   REQUIRE(smoothed.mesh.normals.size() == 8);
   check_dark_inside(smoothed, {0.0, 0.0, 0.0}, {1.0, 0.2, 0.1});
   check_dark_inside(smoothed, {0.25, -0.2, 0.1}, {-1.0, 0.6, -0.2});
