@@ -189,6 +189,7 @@ int make(const Options& options) {
   run.shard = *shard;
   run.threads = app_support::announced_worker_threads("make_dataset", "--threads", options.threads);
   run.cancel = app_support::cancel_on_interrupt();
+  run.note = [](const std::string& note) { fmt::print(stderr, "make_dataset: note: {}\n", note); };
   app_support::ProgressBar bar("frames");
   const auto start = std::chrono::steady_clock::now();
   run.progress = [&](size_t done, size_t total, size_t rendered) {

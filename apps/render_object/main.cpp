@@ -92,6 +92,7 @@ int render_and_write(const Options& options) {
   } catch (const matbase::Cancelled&) {
     return report_error("interrupted; nothing written", app_support::interrupted_exit_code());
   }
+  for (const std::string& note : built.notes) fmt::print(stderr, "render_object: note: {}\n", note);
 
   matrender::RenderSettings settings = description.settings;
   app_support::ProgressBar progress("render");

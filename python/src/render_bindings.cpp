@@ -193,6 +193,9 @@ void bind_render(py::module_& module) {
         const matgeom::Sphere& sphere = s.built.bounds;
         return py::make_tuple(py::make_tuple(sphere.center.x, sphere.center.y, sphere.center.z), sphere.radius);
       }, "((x, y, z), radius): the smallest sphere around all objects, metres, world frame.")
+      .def_property_readonly("notes", [](const LoadedScene& s) { return s.built.notes; },
+                             "What the scene's mesh files hold that their readers do not apply, or apply otherwise\n"
+                             "than Blender 3.4 (a glTF extension, a material's texture): a list of '<file>: <note>'.")
       .def_property_readonly("camera", [](const LoadedScene& s) { return s.built.camera; },
                              "The scene file's camera, a matpredict.Camera.")
       .def("make_camera", &camera_from_dict, py::arg("description"),

@@ -653,7 +653,7 @@ TEST_CASE("glTF reader errors name the file and the problem", "[geom]") {
     for (const auto& [transform, problem] :
          {std::pair{json{{"offset", {1.0, 2.0, 3.0}}}, "KHR_texture_transform offset needs 2 numbers"},
           std::pair{json{{"rotation", "quarter"}}, "KHR_texture_transform rotation is not a finite number"},
-          std::pair{json{{"texCoord", 1}}, "uses TEXCOORD_1; only TEXCOORD_0 is read"}}) {
+          std::pair{json{{"texCoord", -1}}, "texCoord -1 is negative"}}) {
       GltfWriter writer(dir, "placed", Container::Glb);
       const int positions = writer.add_vec3(kTriangle);
       writer.doc()["meshes"] = json::array(
@@ -889,4 +889,102 @@ TEST_CASE("glTF reader walks a node hierarchy 100,000 levels deep without recurs
   const matgeom::ObjectAsset asset = matgeom::read_gltf(writer.write());
   REQUIRE(asset.mesh.triangle_count() == 1);
   CHECK(asset.mesh.positions[0].x == Approx(kLevels / 1024.0));
+}
+
+TEST_CASE("glTF textures are read on the UV set they name", "[geom]") {
+  TempDir dir;
+  // One triangle with two UV sets: TEXCOORD_0 all (0, 0), TEXCOORD_1 the corners of the unit square.
+  const auto write = [&](const json& material, bool with_second_set) {
+    GltfWriter writer(dir, "two_sets", Container::Glb);
+    json attributes = {{"POSITION", writer.add_vec3(kTriangle)}, {"TEXCOORD_0", writer.add_vec2({0, 0, 0, 0, 0, 0})}};
+    if (with_second_set) attributes["TEXCOORD_1"] = writer.add_vec2({0, 0, 1, 0, 0, 1});
+    writer.doc()["meshes"] = json::array({{{"primitives", json::array({{{"attributes", attributes}, {"material", 0}}})}}});
+    writer.doc()["nodes"] = json::array({{{"mesh", 0}}});
+    const int image = writer.add_image(encode_png(2, 2, 3, 8, kBaseColorPixels), "base.png");
+    writer.doc()["textures"] = json::array({{{"source", image}}});
+    writer.doc()["materials"] = json::array({material});
+    return writer.write();
+  };
+  SECTION("texCoord 1 reads TEXCOORD_1 (v flipped as TEXCOORD_0 is)") {
+    const matgeom::ObjectAsset asset =
+        matgeom::read_gltf(write({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"texCoord", 1}}}}}}, true));
+    REQUIRE(asset.mesh.uvs.size() == 3);
+    CHECK(asset.mesh.uvs[1] == glm::vec2(1.0f, 1.0f));
+    CHECK(asset.mesh.uvs[2] == glm::vec2(0.0f, 0.0f));
+    CHECK(asset.notes.empty());
+  }
+  SECTION("KHR_texture_transform's texCoord replaces the textureInfo's") {
+    const json info = {{"index", 0}, {"extensions", {{"KHR_texture_transform", {{"texCoord", 1}}}}}};
+    const matgeom::ObjectAsset asset = matgeom::read_gltf(write({{"pbrMetallicRoughness", {{"baseColorTexture", info}}}}, true));
+    CHECK(asset.mesh.uvs[1] == glm::vec2(1.0f, 1.0f));
+  }
+  SECTION("two sets in one material are refused, naming both textures") {
+    const json material = {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"texCoord", 1}}}}},
+                           {"normalTexture", {{"index", 0}}}};
+    const std::string path = write(material, true);
+    CHECK_THAT(read_error(path), Catch::Matchers::Contains(
+                                     path + ": material 0 normalTexture samples TEXCOORD_0, but material 0 baseColorTexture samples "
+                                            "TEXCOORD_1: a material's textures are read on one UV set"));
+  }
+  SECTION("a set the primitive lacks is said in the notes") {
+    const matgeom::ObjectAsset asset =
+        matgeom::read_gltf(write({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"texCoord", 1}}}}}}, false));
+    REQUIRE(asset.notes.size() == 1);
+    CHECK_THAT(asset.notes[0], Catch::Matchers::Contains("mesh 0 primitive 0 has no TEXCOORD_1"));
+  }
+}
+
+TEST_CASE("glTF specular-glossiness becomes the nearest metallic-roughness material, and says so", "[geom]") {
+  TempDir dir;
+  GltfWriter writer(dir, "spec_gloss", Container::Glb);
+  writer.doc()["meshes"] =
+      json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", writer.add_vec3(kTriangle)},
+                                                                  {"TEXCOORD_0", writer.add_vec2({0, 0, 1, 0, 0, 1})}}},
+                                                 {"material", 0}}})}}});
+  writer.doc()["nodes"] = json::array({{{"mesh", 0}}});
+  // A 2 x 1 RGBA specular-glossiness map: alpha (glossiness) 255 and 51.
+  const int image = writer.add_image(encode_png(2, 1, 4, 8, {10, 10, 10, 255, 10, 10, 10, 51}), "sg.png");
+  writer.doc()["textures"] = json::array({{{"source", image}}});
+  writer.doc()["extensionsUsed"] = json::array({"KHR_materials_pbrSpecularGlossiness", "KHR_materials_volume"});
+  writer.doc()["materials"] = json::array({{{"extensions",
+                                             {{"KHR_materials_pbrSpecularGlossiness",
+                                               {{"diffuseFactor", {0.5, 0.25, 0.125, 1.0}},
+                                                {"specularFactor", {0.04, 0.04, 0.04}},
+                                                {"glossinessFactor", 0.8},
+                                                {"specularGlossinessTexture", {{"index", 0}}}}}}}}});
+  const matgeom::ObjectAsset asset = matgeom::read_gltf(writer.write());
+  const matmaterial::MaterialInputs& m = asset.materials.at(0);
+  CHECK(m.color(P::BaseColor) == glm::dvec3(0.5, 0.25, 0.125));
+  CHECK(m.scalar(P::Metallic) == 0.0);
+  CHECK(m.scalar(P::Specular) == Approx(0.5));  // 0.04 / 0.08
+  // Roughness = 1 - 0.8 x A: a baked one-channel map of 255 - 0.8 x 255 = 51 and 255 - 0.8 x 51 = 214.
+  REQUIRE(m[P::Roughness].image >= 0);
+  CHECK(m.scalar(P::Roughness) == 1.0);
+  const matbase::ImagePixels& roughness = asset.images.at(static_cast<size_t>(m[P::Roughness].image));
+  CHECK(roughness.channels == 1);
+  CHECK(roughness.data == std::vector<uint8_t>{51, 214});
+  const auto said = [&](const std::string& words) {
+    return std::any_of(asset.notes.begin(), asset.notes.end(), [&](const std::string& note) { return note.find(words) != std::string::npos; });
+  };
+  CHECK(said("KHR_materials_pbrSpecularGlossiness: converted to the nearest metallic-roughness material"));
+  CHECK(said("the glTF extension \"KHR_materials_volume\" is not applied"));
+  CHECK(!said("KHR_materials_pbrSpecularGlossiness\" is not applied"));
+}
+
+TEST_CASE("glTF clearcoatNormalTexture is said not to be applied", "[geom]") {
+  TempDir dir;
+  GltfWriter writer(dir, "coat", Container::Glb);
+  writer.doc()["meshes"] =
+      json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", writer.add_vec3(kTriangle)},
+                                                                  {"TEXCOORD_0", writer.add_vec2({0, 0, 1, 0, 0, 1})}}},
+                                                 {"material", 0}}})}}});
+  writer.doc()["nodes"] = json::array({{{"mesh", 0}}});
+  const int image = writer.add_image(encode_png(2, 2, 3, 8, kBaseColorPixels), "n.png");
+  writer.doc()["textures"] = json::array({{{"source", image}}});
+  writer.doc()["materials"] = json::array(
+      {{{"extensions", {{"KHR_materials_clearcoat", {{"clearcoatFactor", 1.0}, {"clearcoatNormalTexture", {{"index", 0}}}}}}}}});
+  const matgeom::ObjectAsset asset = matgeom::read_gltf(writer.write());
+  CHECK(asset.materials.at(0).scalar(P::Clearcoat) == 1.0);
+  REQUIRE(asset.notes.size() == 1);
+  CHECK(asset.notes[0] == "material 0 KHR_materials_clearcoat clearcoatNormalTexture is not applied (the coat keeps the surface's normal)");
 }

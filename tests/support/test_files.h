@@ -51,7 +51,8 @@ inline void append_chunk(std::vector<uint8_t>& png, const char* type, const std:
 
 }  // namespace png_detail
 
-// Grey (channels 1) or RGB (channels 3) PNG of `bits` 8 or 16, samples row by row from the top.
+// Grey, grey-alpha, RGB or RGBA (channels 1 to 4) PNG of `bits` 8 or 16, samples row by row from
+// the top.
 inline std::vector<uint8_t> encode_png(int width, int height, int channels, int bits,
                                        const std::vector<uint16_t>& samples) {
   using namespace png_detail;
@@ -83,7 +84,7 @@ inline std::vector<uint8_t> encode_png(int width, int height, int channels, int 
   std::vector<uint8_t> header;
   append_be32(header, static_cast<uint32_t>(width));
   append_be32(header, static_cast<uint32_t>(height));
-  const uint8_t colour_type = channels == 1 ? 0 : 2;
+  const uint8_t colour_type = channels == 1 ? 0 : channels == 2 ? 4 : channels == 3 ? 2 : 6;
   header.insert(header.end(), {static_cast<uint8_t>(bits), colour_type, 0, 0, 0});
   append_chunk(png, "IHDR", header);
   append_chunk(png, "IDAT", zlib);

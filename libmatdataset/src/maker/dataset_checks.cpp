@@ -87,7 +87,8 @@ void check_object_in_view(const DatasetConfig& config, size_t o, const matgeom::
                                  config.source, radius, object_key(o), 2.0 * bounds.radius));
 }
 
-void check_before_writing(const DatasetConfig& config) {
+std::vector<std::string> check_before_writing(const DatasetConfig& config) {
+  std::vector<std::string> notes;
   if (const std::optional<std::string> problem = matbase::output_folder_problem(config.output))
     throw matbase::InputError("output: " + *problem + "; give --output a folder you can write to");
   // A frame's buffers, and the maps the writer encodes from them (about as much again).
@@ -108,6 +109,8 @@ void check_before_writing(const DatasetConfig& config) {
     } catch (const std::exception& e) {
       throw matbase::InputError(config.source + ": " + object_key(o) + ": " + e.what());
     }
+    for (const std::string& note : asset.notes)
+      notes.push_back(std::get<matrender::MeshFile>(object.source).path + ": " + note);
     // Every candidate is a textured material, and without UVs a texture shows one texel.
     if (object.uv_pass == matrender::UvPassMode::Never && asset.mesh.uvs.empty())
       throw matbase::InputError(config.source + ": " + object_key(o) +
@@ -144,6 +147,7 @@ void check_before_writing(const DatasetConfig& config) {
                            "after its class (\"wood_oak\") or give its metadata.json a category");
       }
   }
+  return notes;
 }
 
 // The configuration a variant folder's metadata.json records (its provenance), or nothing when

@@ -75,7 +75,8 @@ RunSummary run_dataset(const DatasetConfig& config, const DatasetPlan& plan, con
   const Clock::time_point start = Clock::now();
   RunSummary summary;
   for (size_t k = 0; k < plan.frames.size(); ++k) summary.frames += options.shard.owns(k) ? 1 : 0;
-  check_before_writing(config);
+  for (const std::string& note : check_before_writing(config))
+    if (options.note) options.note(note);
   check_output_matches_plan(config, plan);
   summary.splits = write_dataset_records(config, plan);
   if (config.paper_texture_layout) write_material_references(config);

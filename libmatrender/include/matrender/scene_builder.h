@@ -27,6 +27,9 @@ struct BuiltScene {
   // object's surface in world space: what assign_object_materials needs.
   SceneMaterials materials;
   std::vector<matgeom::TriangleMesh> object_surfaces;
+  // What the mesh files hold that their readers do not apply (matgeom::ObjectAsset::notes), each
+  // "<file>: <note>", once per file: what the tools show before they render.
+  std::vector<std::string> notes;
 };
 
 // Throws matbase::InputError naming the described item when an input fails to load or does not fit

@@ -20,8 +20,9 @@ std::vector<std::vector<uint32_t>> parts_of_slots(const DatasetConfig& config, s
                                                   const std::vector<std::string>& part_names, size_t part_count);
 
 // Loads each object's geometry (not its textures) and checks its slots, and checks each
-// candidate's class. Throws matbase::InputError.
-void check_before_writing(const DatasetConfig& config);
+// candidate's class. Throws matbase::InputError. Returns what the mesh files hold that their
+// readers do not apply, "<file>: <note>" (matgeom::ObjectAsset::notes).
+std::vector<std::string> check_before_writing(const DatasetConfig& config);
 
 // Throws matbase::InputError when the output folder holds object or variant folders the plan does not make
 // (a second run with other objects, or fewer variants, into the same folder): their frames would

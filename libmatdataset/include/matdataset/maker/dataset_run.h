@@ -19,6 +19,9 @@ struct RunOptions {
   const std::atomic<bool>* cancel = nullptr;
   // Called after each frame of the shard, rendered or found complete: (done, total, rendered).
   std::function<void(size_t, size_t, size_t)> progress;
+  // Called once for each thing a mesh file holds that its reader does not apply ("<file>: <note>",
+  // matgeom::ObjectAsset::notes), before the first frame.
+  std::function<void(const std::string&)> note;
 };
 
 struct RunSummary {

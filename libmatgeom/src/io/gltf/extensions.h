@@ -1,6 +1,8 @@
 #pragma once
 // The glTF extensions the reader and the writer share by name.
 
+#include <array>
+
 namespace matgeom::gltf {
 
 // Scales emission beyond glTF's [0, 1] emissiveFactor (its member: emissiveStrength).
@@ -33,5 +35,19 @@ constexpr int kSheenRoughnessChannel = 3;
 
 // A textureInfo's own UV placement (offset, rotation, scale, texCoord): matmaterial/texture_transform.h.
 constexpr const char* kTextureTransform = "KHR_texture_transform";
+
+// The older specular-glossiness model (gltf_materials.cpp converts it to metallic-roughness).
+constexpr const char* kSpecularGlossiness = "KHR_materials_pbrSpecularGlossiness";
+
+// Integer positions, normals, tangents and UVs: it only widens the accessor formats, which the
+// reader handles.
+constexpr const char* kMeshQuantization = "KHR_mesh_quantization";
+
+// The extensions a file may require (extensionsRequired): the ones the reader applies. Any other
+// changes how geometry or images are stored (Draco, meshopt, KTX2 and WebP images) and would be
+// misread if ignored.
+constexpr std::array<const char*, 8> kReadExtensions = {kMeshQuantization, kClearcoat,      kIor,
+                                                        kSheen,           kTransmission,   kTextureTransform,
+                                                        kEmissiveStrength, kSpecularGlossiness};
 
 }  // namespace matgeom::gltf

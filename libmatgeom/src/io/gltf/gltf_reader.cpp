@@ -19,6 +19,8 @@
 
 #include "matbase/file/file_error.h"
 #include "io/gltf/extensions.h"
+#include "io/gltf/gltf_file.h"
+#include "io/gltf/gltf_materials.h"
 #include "io/gltf/json_checks.h"
 #include "matbase/file/input_file.h"
 #include "matbase/image/image_file.h"
@@ -35,12 +37,8 @@
 namespace matgeom {
 namespace {
 
-// What the whole reader needs: the model and the path every error message starts with.
-struct GltfFile {
-  std::string path;
-  tinygltf::Model model;
-  bool quantized = false;  // KHR_mesh_quantization allows integer positions, normals, tangents
-};
+using gltf::GltfFile;
+
 
 // ---------------------------------------------------------------------------------------------
 // Loading
@@ -50,18 +48,6 @@ bool has_glb_magic(const std::string& path) {
   char magic[4] = {};
   in.read(magic, sizeof(magic));
   return in.gcount() == 4 && std::memcmp(magic, "glTF", 4) == 0;
-}
-
-void check_required_extensions(const GltfFile& file) {
-  // Extensions that change how geometry or images are stored would be misread if ignored;
-  // KHR_mesh_quantization only widens the accessor formats, which the reader handles;
-  // KHR_materials_clearcoat, _ior, _sheen, _transmission and KHR_texture_transform are read.
-  for (const std::string& extension : file.model.extensionsRequired) {
-    if (extension == "KHR_mesh_quantization" || extension == gltf::kClearcoat || extension == gltf::kIor ||
-        extension == gltf::kSheen || extension == gltf::kTransmission || extension == gltf::kTextureTransform)
-      continue;
-    matbase::fail(file.path, "requires the unsupported glTF extension " + extension);
-  }
 }
 
 // tinygltf::LoadImageData reads its user data as a LoadImageDataOption, a struct of this one
@@ -135,9 +121,8 @@ GltfFile load_gltf(const std::string& path) {
   // render the material without its texture, so a warning is an error here.
   if (!warnings.empty()) matbase::fail(path, "tinygltf: " + matbase::without_data_uris(matbase::trim(warnings)));
 
-  check_required_extensions(file);
   const auto& used = file.model.extensionsUsed;
-  file.quantized = std::find(used.begin(), used.end(), "KHR_mesh_quantization") != used.end();
+  file.quantized = std::find(used.begin(), used.end(), gltf::kMeshQuantization) != used.end();
   return file;
 }
 
@@ -161,13 +146,14 @@ bool is_integer_component(int component_type) {
 bool attribute_format_allowed(const std::string& semantic, int component_type, bool normalized,
                               bool quantized) {
   if (component_type == TINYGLTF_COMPONENT_TYPE_FLOAT) return !normalized;
-  if (semantic == "TEXCOORD_0" && normalized &&
+  const bool uvs = semantic.rfind("TEXCOORD_", 0) == 0;
+  if (uvs && normalized &&
       (component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
        component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT)) {
     return true;
   }
   if (!quantized) return false;
-  if (semantic == "POSITION" || semantic == "TEXCOORD_0")
+  if (semantic == "POSITION" || uvs)
     return is_integer_component(component_type);
   // NORMAL and TANGENT: unit vectors, so only signed normalized integers make sense.
   return normalized && (component_type == TINYGLTF_COMPONENT_TYPE_BYTE ||
@@ -512,14 +498,15 @@ struct PrimitivePiece {
   bool file_tangents = false;
 };
 
-PrimitivePiece read_primitive(const GltfFile& file, const tinygltf::Primitive& primitive,
-                              const std::string& what) {
+// `uv_set`: the n of the TEXCOORD_n its material's textures sample; kNoUvSet for a material
+// without textures, whose primitive keeps TEXCOORD_0 when it has one (for the UV pass and scene
+// materials).
+constexpr int kNoUvSet = -1;
+
+PrimitivePiece read_primitive(const GltfFile& file, const tinygltf::Primitive& primitive, int uv_set,
+                              const std::string& what, std::vector<std::string>& notes) {
   PrimitivePiece piece;
   piece.material = primitive.material;
-  if (primitive.material >= 0 &&
-      static_cast<size_t>(primitive.material) >= file.model.materials.size()) {
-    matbase::fail(file.path, matbase::concat(what, ": material ", primitive.material, " does not exist"));
-  }
   TriangleMesh& mesh = piece.mesh;
 
   const int position_accessor = find_attribute(primitive, "POSITION");
@@ -546,10 +533,14 @@ PrimitivePiece read_primitive(const GltfFile& file, const tinygltf::Primitive& p
     }
   }
 
-  const int uv_accessor = find_attribute(primitive, "TEXCOORD_0");
+  const std::string uv_semantic = "TEXCOORD_" + std::to_string(uv_set == kNoUvSet ? 0 : uv_set);
+  const int uv_accessor = find_attribute(primitive, uv_semantic.c_str());
+  if (uv_accessor < 0 && uv_set != kNoUvSet)
+    notes.push_back(matbase::concat(what, " has no ", uv_semantic, ", which material ", primitive.material,
+                                    "'s textures sample: they show one texel there"));
   if (uv_accessor >= 0) {
     const AccessorValues uvs =
-        read_attribute(file, uv_accessor, "TEXCOORD_0", TINYGLTF_TYPE_VEC2, vertex_count, what);
+        read_attribute(file, uv_accessor, uv_semantic, TINYGLTF_TYPE_VEC2, vertex_count, what);
     mesh.uvs.resize(vertex_count);
     // glTF puts the UV origin at the image's top-left corner with v pointing down; Blender and
     // our textures use v pointing up from the bottom-left corner, so v becomes 1 - v (the image
@@ -642,7 +633,8 @@ void check_morph_weights(const GltfFile& file, const MeshInstance& instance) {
 
 // Every primitive of every mesh instance, transformed into Blender's frame, with normals and
 // (where there are UVs) tangents.
-std::vector<PrimitivePiece> read_pieces(const GltfFile& file, const GltfReadOptions& options) {
+std::vector<PrimitivePiece> read_pieces(const GltfFile& file, const GltfReadOptions& options, gltf::GltfMaterials& materials,
+                                        std::vector<std::string>& notes) {
   std::vector<PrimitivePiece> pieces;
   for (const MeshInstance& instance : collect_mesh_instances(file)) {
     const glm::dmat4 transform = gltf_to_blender() * instance.world;
@@ -654,7 +646,13 @@ std::vector<PrimitivePiece> read_pieces(const GltfFile& file, const GltfReadOpti
     const tinygltf::Mesh& gltf_mesh = file.model.meshes[instance.mesh];
     for (size_t p = 0; p < gltf_mesh.primitives.size(); ++p) {
       const std::string what = matbase::concat("mesh ", instance.mesh, " primitive ", p);
-      PrimitivePiece piece = read_primitive(file, gltf_mesh.primitives[p], what);
+      const tinygltf::Primitive& primitive = gltf_mesh.primitives[p];
+      if (primitive.material >= 0 && static_cast<size_t>(primitive.material) >= file.model.materials.size())
+        matbase::fail(file.path, matbase::concat(what, ": material ", primitive.material, " does not exist"));
+      const int uv_set = primitive.material >= 0
+                             ? materials.material(static_cast<size_t>(primitive.material)).uv_set.value_or(kNoUvSet)
+                             : kNoUvSet;
+      PrimitivePiece piece = read_primitive(file, primitive, uv_set, what, notes);
       if (piece.mesh.triangles.empty()) continue;
       // transform_mesh maps normals by the inverse transpose and, for a mirroring transform,
       // reverses the winding and the tangents' handedness.
@@ -666,320 +664,6 @@ std::vector<PrimitivePiece> read_pieces(const GltfFile& file, const GltfReadOpti
     }
   }
   return pieces;
-}
-
-// ---------------------------------------------------------------------------------------------
-// Materials and images
-
-matbase::ImagePixels convert_image(const GltfFile& file, size_t index) {
-  const tinygltf::Image& image = file.model.images[index];
-  const std::string name = matbase::concat("image ", index);
-  if (image.image.empty() || image.width <= 0 || image.height <= 0) {
-    matbase::fail(file.path, name + ": no decoded pixels");
-  }
-  if (image.component < 1 || image.component > 4 || (image.bits != 8 && image.bits != 16)) {
-    matbase::fail(file.path, matbase::concat(name, ": unsupported format (", image.component, " channels of ",
-                           image.bits, " bits)"));
-  }
-  const size_t expected = static_cast<size_t>(image.width) * static_cast<size_t>(image.height) *
-                          static_cast<size_t>(image.component) *
-                          static_cast<size_t>(image.bits / 8);
-  if (image.image.size() != expected) matbase::fail(file.path, name + ": pixel data has the wrong size");
-
-  matbase::ImagePixels pixels;
-  const bool embedded = image.uri.empty() || image.uri.rfind("data:", 0) == 0;
-  pixels.name = embedded
-                    ? matbase::concat(std::filesystem::path(file.path).filename().string(), "#image", index)
-                    : image.uri;
-  pixels.width = image.width;
-  pixels.height = image.height;
-  pixels.channels = image.component;
-  pixels.data = matbase::unorm_channels_to_8_bit(image.image, image.bits);
-  return pixels;
-}
-
-// glTF images referenced by materials, converted once each, in order of first reference.
-class ImageTable {
- public:
-  explicit ImageTable(const GltfFile& file) : file_(file) {}
-
-  int asset_index(size_t gltf_image) {
-    const auto it = asset_indices_.find(gltf_image);
-    if (it != asset_indices_.end()) return it->second;
-    const int index = static_cast<int>(images_.size());
-    images_.push_back(convert_image(file_, gltf_image));
-    asset_indices_.emplace(gltf_image, index);
-    return index;
-  }
-
-  std::vector<matbase::ImagePixels> take_images() { return std::move(images_); }
-
- private:
-  const GltfFile& file_;
-  std::map<size_t, int> asset_indices_;
-  std::vector<matbase::ImagePixels> images_;
-};
-
-struct TextureRef {
-  int image = -1;  // index into the asset's images
-  matmaterial::TextureWrap wrap = matmaterial::TextureWrap::Repeat;
-  matmaterial::TextureTransform transform;  // KHR_texture_transform's
-};
-
-// MaterialInputs has one wrap mode. Blender 3.4's Image Texture offers REPEAT and EXTEND per image
-// (its importer emulates mirrored and mixed modes with extra nodes); here a texture clamps only
-// when both axes say CLAMP_TO_EDGE, and MIRRORED_REPEAT is approximated by REPEAT.
-matmaterial::TextureWrap sampler_wrap(const GltfFile& file, int sampler_index, const std::string& what) {
-  if (sampler_index < 0) return matmaterial::TextureWrap::Repeat;
-  if (static_cast<size_t>(sampler_index) >= file.model.samplers.size()) {
-    matbase::fail(file.path, matbase::concat(what, ": sampler ", sampler_index, " does not exist"));
-  }
-  const tinygltf::Sampler& sampler = file.model.samplers[static_cast<size_t>(sampler_index)];
-  const bool clamp = sampler.wrapS == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE &&
-                     sampler.wrapT == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
-  return clamp ? matmaterial::TextureWrap::Clamp : matmaterial::TextureWrap::Repeat;
-}
-
-// Two numbers of a KHR_texture_transform member, `fallback` when absent.
-glm::dvec2 transform_pair(const GltfFile& file, const tinygltf::Value& transform, const char* member,
-                          glm::dvec2 fallback, const std::string& what) {
-  if (!transform.Has(member)) return fallback;
-  const tinygltf::Value& value = transform.Get(member);
-  if (!value.IsArray() || value.ArrayLen() != 2 || !value.Get(0).IsNumber() || !value.Get(1).IsNumber())
-    matbase::fail(file.path, matbase::concat(what, ": ", gltf::kTextureTransform, " ", member, " needs 2 numbers"));
-  const glm::dvec2 pair(value.Get(0).GetNumberAsDouble(), value.Get(1).GetNumberAsDouble());
-  if (!std::isfinite(pair.x) || !std::isfinite(pair.y))
-    matbase::fail(file.path, matbase::concat(what, ": ", gltf::kTextureTransform, " ", member, " is not finite"));
-  return pair;
-}
-
-// A textureInfo's KHR_texture_transform, whose texCoord (when given) replaces the textureInfo's.
-matmaterial::TextureTransform read_texture_transform(const GltfFile& file, const tinygltf::Value& transform, int& tex_coord,
-                                        const std::string& what) {
-  if (!transform.IsObject()) matbase::fail(file.path, matbase::concat(what, ": ", gltf::kTextureTransform, " is not an object"));
-  matmaterial::TextureTransform t;
-  t.offset = transform_pair(file, transform, "offset", t.offset, what);
-  t.scale = transform_pair(file, transform, "scale", t.scale, what);
-  if (transform.Has("rotation")) {
-    const tinygltf::Value& rotation = transform.Get("rotation");
-    if (!rotation.IsNumber() || !std::isfinite(rotation.GetNumberAsDouble()))
-      matbase::fail(file.path, matbase::concat(what, ": ", gltf::kTextureTransform, " rotation is not a finite number"));
-    t.rotation = rotation.GetNumberAsDouble();
-  }
-  if (transform.Has("texCoord")) {
-    if (!transform.Get("texCoord").IsInt())
-      matbase::fail(file.path, matbase::concat(what, ": ", gltf::kTextureTransform, " texCoord is not an integer"));
-    tex_coord = transform.Get("texCoord").GetNumberAsInt();
-  }
-  return t;
-}
-
-// `extensions`: the textureInfo's, where a KHR_texture_transform may be.
-TextureRef resolve_texture(const GltfFile& file, ImageTable& images, int texture_index, int tex_coord,
-                           const tinygltf::ExtensionMap& extensions, const std::string& what) {
-  TextureRef ref;
-  if (texture_index < 0) return ref;
-  const auto transform = extensions.find(gltf::kTextureTransform);
-  if (transform != extensions.end()) ref.transform = read_texture_transform(file, transform->second, tex_coord, what);
-  if (static_cast<size_t>(texture_index) >= file.model.textures.size()) {
-    matbase::fail(file.path, matbase::concat(what, ": texture ", texture_index, " does not exist"));
-  }
-  if (tex_coord != 0) {
-    matbase::fail(file.path, matbase::concat(what, ": uses TEXCOORD_", tex_coord, "; only TEXCOORD_0 is read"));
-  }
-  const tinygltf::Texture& texture = file.model.textures[static_cast<size_t>(texture_index)];
-  if (texture.source < 0 || static_cast<size_t>(texture.source) >= file.model.images.size()) {
-    matbase::fail(file.path,
-         matbase::concat(what, ": texture ", texture_index, " has no image in a core format (PNG or JPEG)"));
-  }
-  ref.image = images.asset_index(static_cast<size_t>(texture.source));
-  ref.wrap = sampler_wrap(file, texture.sampler, what);
-  return ref;
-}
-
-// A factor must lie in its parameter's range (the parameter table's).
-double checked_factor(const GltfFile& file, matmaterial::MaterialParameter p, double value, const std::string& what) {
-  const matmaterial::MaterialParameterInfo& info = matmaterial::material_parameter(p);
-  if (!(value >= info.min && value <= info.max))
-    matbase::fail(file.path, matbase::concat(what, " ", value, " is outside [", info.min, ", ", info.max, "]"));
-  return value;
-}
-
-// A number member of an extension object, if present.
-std::optional<double> extension_number(const GltfFile& file, const tinygltf::Value& extension, const char* member,
-                                       const std::string& what) {
-  if (!extension.Has(member)) return std::nullopt;
-  const tinygltf::Value& value = extension.Get(member);
-  if (!value.IsNumber()) matbase::fail(file.path, matbase::concat(what, ": ", member, " is not a number"));
-  return value.GetNumberAsDouble();
-}
-
-// A textureInfo member of an extension object: the texture, without an image when absent.
-TextureRef extension_texture(const GltfFile& file, ImageTable& images, const tinygltf::Value& extension,
-                             const char* member, const std::string& what) {
-  if (!extension.Has(member)) return {};
-  const tinygltf::Value& info = extension.Get(member);
-  const std::string where = matbase::concat(what, " ", member);
-  if (!info.IsObject() || !info.Has("index") || !info.Get("index").IsInt())
-    matbase::fail(file.path, where + ": expected a texture info with an integer index");
-  int tex_coord = 0;
-  if (info.Has("texCoord")) {
-    if (!info.Get("texCoord").IsInt()) matbase::fail(file.path, where + ": texCoord is not an integer");
-    tex_coord = info.Get("texCoord").GetNumberAsInt();
-  }
-  tinygltf::ExtensionMap extensions;
-  if (info.Has("extensions")) {
-    const tinygltf::Value& all = info.Get("extensions");
-    if (!all.IsObject()) matbase::fail(file.path, where + ": extensions is not an object");
-    for (const std::string& name : all.Keys()) extensions.emplace(name, all.Get(name));
-  }
-  return resolve_texture(file, images, info.Get("index").GetNumberAsInt(), tex_coord, extensions, where);
-}
-
-// One input an extension gives as factor x one channel of a texture (glTF's pattern), set on
-// `p`; the factor is glTF's default 0 when absent.
-void read_extension_input(const GltfFile& file, ImageTable& images, const tinygltf::Value& extension,
-                          const char* factor_member, const char* texture_member, int channel, matmaterial::MaterialParameter p,
-                          matmaterial::MaterialInputs& desc, const std::string& where) {
-  const double factor = extension_number(file, extension, factor_member, where).value_or(0.0);
-  desc.set(p, checked_factor(file, p, factor, matbase::concat(where, " ", factor_member)));
-  const TextureRef texture = extension_texture(file, images, extension, texture_member, where);
-  if (texture.image >= 0) desc.set_image(p, texture.image, channel, texture.transform);
-}
-
-// KHR_materials_clearcoat as Blender 3.4's importer wires it: Clearcoat = clearcoatFactor x
-// clearcoatTexture.R, Clearcoat Roughness = clearcoatRoughnessFactor x clearcoatRoughnessTexture.G,
-// both factors 0 when absent (so a coat without a roughness is a mirror, not Blender's default
-// 0.03). clearcoatNormalTexture has no MaterialInputs input yet: the coat keeps the smooth normal.
-void read_clearcoat(const GltfFile& file, ImageTable& images, const tinygltf::Value& extension, matmaterial::MaterialInputs& desc,
-                    const std::string& what) {
-  const std::string where = matbase::concat(what, " ", gltf::kClearcoat);
-  read_extension_input(file, images, extension, "clearcoatFactor", "clearcoatTexture", gltf::kClearcoatChannel,
-                       matmaterial::MaterialParameter::Clearcoat, desc, where);
-  read_extension_input(file, images, extension, "clearcoatRoughnessFactor", "clearcoatRoughnessTexture",
-                       gltf::kClearcoatRoughnessChannel, matmaterial::MaterialParameter::ClearcoatRoughness, desc, where);
-}
-
-// KHR_materials_sheen as Blender 3.4's importer wires it (gltf2_blender_KHR_materials_sheen.py):
-// a Velvet BSDF added to the Principled BSDF, Color = sheenColorFactor x sheenColorTexture.RGB,
-// Sigma = sheenRoughnessFactor x sheenRoughnessTexture.A, both factors 0 when absent. Present
-// with a black colour, the extension adds a velvet that reflects nothing.
-void read_sheen(const GltfFile& file, ImageTable& images, const tinygltf::Value& extension, matmaterial::MaterialInputs& desc,
-                const std::string& what) {
-  const std::string where = matbase::concat(what, " ", gltf::kSheen);
-  glm::dvec3 colour(0.0);
-  if (extension.Has("sheenColorFactor")) {
-    const tinygltf::Value& factor = extension.Get("sheenColorFactor");
-    if (!factor.IsArray() || factor.ArrayLen() != 3) matbase::fail(file.path, where + ": sheenColorFactor needs 3 numbers");
-    for (int c = 0; c < 3; ++c) {
-      const tinygltf::Value& component = factor.Get(c);
-      if (!component.IsNumber()) matbase::fail(file.path, where + ": sheenColorFactor needs 3 numbers");
-      colour[c] = checked_factor(file, matmaterial::MaterialParameter::VelvetColor, component.GetNumberAsDouble(),
-                                 where + " sheenColorFactor");
-    }
-  }
-  desc.set(matmaterial::MaterialParameter::VelvetColor, colour);
-  const TextureRef colour_texture = extension_texture(file, images, extension, "sheenColorTexture", where);
-  if (colour_texture.image >= 0)
-    desc.set_image(matmaterial::MaterialParameter::VelvetColor, colour_texture.image, 0, colour_texture.transform);
-  read_extension_input(file, images, extension, "sheenRoughnessFactor", "sheenRoughnessTexture",
-                       gltf::kSheenRoughnessChannel, matmaterial::MaterialParameter::VelvetSigma, desc, where);
-}
-
-// KHR_materials_transmission as Blender 3.4's importer wires it: Transmission =
-// transmissionFactor x transmissionTexture.R; a factor of 0 (the default) leaves the texture out.
-void read_transmission(const GltfFile& file, ImageTable& images, const tinygltf::Value& extension, matmaterial::MaterialInputs& desc,
-                       const std::string& what) {
-  const std::string where = matbase::concat(what, " ", gltf::kTransmission);
-  read_extension_input(file, images, extension, "transmissionFactor", "transmissionTexture",
-                       gltf::kTransmissionChannel, matmaterial::MaterialParameter::Transmission, desc, where);
-  if (desc.scalar(matmaterial::MaterialParameter::Transmission) == 0.0) desc[matmaterial::MaterialParameter::Transmission].image = -1;
-}
-
-// The Principled BSDF inputs Blender's importer sets (docs/conventions.md): base colour =
-// factor x texture, roughness = factor x texture.G, metallic = factor x texture.B, normal map
-// strength = normalTexture.scale, emission = emissiveFactor x emissiveTexture with
-// KHR_materials_emissive_strength's strength, IOR = KHR_materials_ior's (1.5 without it),
-// KHR_materials_clearcoat (read_clearcoat), KHR_materials_transmission (read_transmission),
-// KHR_materials_sheen (read_sheen);
-// alphaMode BLEND or MASK: Alpha = baseColorFactor[3] x baseColorTexture.A; specular and
-// specular tint keep Blender's defaults. Occlusion has no MaterialInputs input.
-matmaterial::MaterialInputs convert_material(const GltfFile& file, ImageTable& images, size_t index) {
-  const tinygltf::Material& material = file.model.materials[index];
-  const tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
-  const std::string what = matbase::concat("material ", index);
-
-  using P = matmaterial::MaterialParameter;
-  matmaterial::MaterialInputs desc(material.name.empty() ? matbase::concat("material", index) : material.name);
-  if (pbr.baseColorFactor.size() != 4) matbase::fail(file.path, what + ": baseColorFactor needs 4 numbers");
-  glm::dvec3 base_color;
-  for (int c = 0; c < 3; ++c) {
-    base_color[c] = checked_factor(file, P::BaseColor, pbr.baseColorFactor[static_cast<size_t>(c)],
-                                   what + " baseColorFactor");
-  }
-  desc.set(P::BaseColor, base_color);
-  // alphaMode BLEND and MASK link Alpha to baseColorFactor[3] x the base texture's A; Blender
-  // 3.4's importer turns MASK's alphaCutoff into an EEVEE clip threshold that Cycles ignores,
-  // so MASK renders with the same fractional alpha as BLEND. OPAQUE leaves Alpha at 1.
-  const bool uses_alpha = material.alphaMode == "BLEND" || material.alphaMode == "MASK";
-  if (!uses_alpha && material.alphaMode != "OPAQUE")
-    matbase::fail(file.path, matbase::concat(what, ": alphaMode ", matbase::excerpt(material.alphaMode), " is not OPAQUE, MASK or BLEND"));
-  if (uses_alpha)
-    desc.set(P::Alpha, checked_factor(file, P::Alpha, pbr.baseColorFactor[3], what + " baseColorFactor alpha"));
-  desc.set(P::Metallic, checked_factor(file, P::Metallic, pbr.metallicFactor, what + " metallicFactor"));
-  desc.set(P::Roughness, checked_factor(file, P::Roughness, pbr.roughnessFactor, what + " roughnessFactor"));
-  if (material.emissiveFactor.size() != 3) matbase::fail(file.path, what + ": emissiveFactor needs 3 numbers");
-  glm::dvec3 emission;
-  for (int c = 0; c < 3; ++c)
-    emission[c] = checked_factor(file, P::Emission, material.emissiveFactor[static_cast<size_t>(c)],
-                                 what + " emissiveFactor");
-  desc.set(P::Emission, emission);
-  const auto strength = material.extensions.find(gltf::kEmissiveStrength);
-  if (strength != material.extensions.end() && strength->second.Has("emissiveStrength")) {
-    const tinygltf::Value& value = strength->second.Get("emissiveStrength");
-    if (!value.IsNumber()) matbase::fail(file.path, what + ": emissiveStrength is not a number");
-    desc.set(P::EmissionStrength, checked_factor(file, P::EmissionStrength, value.GetNumberAsDouble(),
-                                                 what + " emissiveStrength"));
-  }
-  desc.set(P::Ior, gltf::kDefaultIor);
-  const auto ior = material.extensions.find(gltf::kIor);
-  if (ior != material.extensions.end())
-    desc.set(P::Ior, checked_factor(file, P::Ior, extension_number(file, ior->second, "ior", what).value_or(gltf::kDefaultIor),
-                                    matbase::concat(what, " ", gltf::kIor, " ior")));
-  const auto clearcoat = material.extensions.find(gltf::kClearcoat);
-  if (clearcoat != material.extensions.end()) read_clearcoat(file, images, clearcoat->second, desc, what);
-  const auto transmission = material.extensions.find(gltf::kTransmission);
-  if (transmission != material.extensions.end()) read_transmission(file, images, transmission->second, desc, what);
-  const auto sheen = material.extensions.find(gltf::kSheen);
-  if (sheen != material.extensions.end()) read_sheen(file, images, sheen->second, desc, what);
-  if (!std::isfinite(material.normalTexture.scale))
-    matbase::fail(file.path, what + ": non-finite normal scale");
-  desc.normal_strength = material.normalTexture.scale;
-
-  const TextureRef base = resolve_texture(file, images, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
-                                         pbr.baseColorTexture.extensions, what + " baseColorTexture");
-  const TextureRef metallic_roughness =
-      resolve_texture(file, images, pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
-                      pbr.metallicRoughnessTexture.extensions, what + " metallicRoughnessTexture");
-  const TextureRef normal = resolve_texture(file, images, material.normalTexture.index, material.normalTexture.texCoord,
-                                           material.normalTexture.extensions, what + " normalTexture");
-  const TextureRef emissive =
-      resolve_texture(file, images, material.emissiveTexture.index, material.emissiveTexture.texCoord,
-                      material.emissiveTexture.extensions, what + " emissiveTexture");
-  if (base.image >= 0) desc.set_image(P::BaseColor, base.image, 0, base.transform);
-  if (base.image >= 0 && uses_alpha) desc.set_image(P::Alpha, base.image, gltf::kBaseColorAlphaChannel, base.transform);
-  if (emissive.image >= 0) desc.set_image(P::Emission, emissive.image, 0, emissive.transform);
-  if (metallic_roughness.image >= 0)
-    desc.set_metallic_roughness_image(metallic_roughness.image, metallic_roughness.transform);
-  desc.normal_image = normal.image;
-  desc.normal_transform = normal.transform;
-  // The wrap mode follows the most visible texture: base colour, else roughness, else normal.
-  for (const TextureRef& ref : {base, metallic_roughness, normal}) {
-    if (ref.image < 0) continue;
-    desc.wrap = ref.wrap;
-    break;
-  }
-  return desc;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1037,27 +721,38 @@ TriangleMesh merge_pieces(const GltfFile& file, std::vector<PrimitivePiece>& pie
   return merged;
 }
 
+// The extensions the file uses that nothing here reads, named once each.
+void note_unread_extensions(const GltfFile& file, std::vector<std::string>& notes) {
+  for (const std::string& extension : file.model.extensionsUsed) {
+    if (std::find(gltf::kReadExtensions.begin(), gltf::kReadExtensions.end(), extension) != gltf::kReadExtensions.end()) continue;
+    notes.push_back("the glTF extension " + matbase::excerpt(extension) + " is not applied");
+  }
+}
+
 }  // namespace
 
 ObjectAsset read_gltf(const std::string& path, const GltfReadOptions& options) {
   const GltfFile file = load_gltf(path);
-  std::vector<PrimitivePiece> pieces = read_pieces(file, options);
+  gltf::GltfMaterials materials(file);
+  std::vector<std::string> notes;
+  note_unread_extensions(file, notes);
+  std::vector<PrimitivePiece> pieces = read_pieces(file, options, materials, notes);
   if (pieces.empty()) matbase::fail(path, "no triangles in the scene");
 
   const std::map<int, uint32_t> part_of_material = assign_parts(pieces);
   ObjectAsset asset;
   asset.mesh = merge_pieces(file, pieces, part_of_material);
-
-  ImageTable images(file);
   asset.materials.resize(part_of_material.size());
   asset.mesh.part_names.resize(part_of_material.size());
   for (const auto& [material, part] : part_of_material) {
     asset.materials[part] = material >= 0
-                                ? convert_material(file, images, static_cast<size_t>(material))
+                                ? materials.material(static_cast<size_t>(material)).inputs
                                 : matmaterial::MaterialInputs("default");  // Blender renders them with its default surface
     asset.mesh.part_names[part] = asset.materials[part].name;
   }
-  asset.images = images.take_images();
+  asset.images = materials.take_images();
+  for (std::string& note : materials.take_notes()) notes.push_back(std::move(note));
+  asset.notes = std::move(notes);
   return asset;
 }
 

@@ -1,5 +1,6 @@
 #include "io/gltf/json_checks.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -12,22 +13,14 @@
 
 #include "matbase/file/file_error.h"
 #include "matbase/file/input_file.h"
+#include "io/gltf/extensions.h"
+#include "io/gltf/gltf_container.h"
+#include "io/gltf/gltf_schema.h"
 
 namespace matgeom::gltf {
 namespace {
 
 using nlohmann::json;
-
-// The JSON chunk of a GLB: a 12-byte header, then the chunk's length, its type "JSON" and its
-// bytes; nullopt when the container is too damaged to hold one.
-std::optional<std::string_view> glb_json_chunk(std::string_view file) {
-  constexpr size_t kHeader = 12, kChunkHeader = 8;
-  if (file.size() < kHeader + kChunkHeader || file.substr(kHeader + 4, 4) != "JSON") return std::nullopt;
-  uint32_t length = 0;
-  std::memcpy(&length, file.data() + kHeader, sizeof(length));  // little-endian, as every target we build for
-  if (length > file.size() - kHeader - kChunkHeader) return std::nullopt;
-  return file.substr(kHeader + kChunkHeader, length);
-}
 
 // The bytes tinygltf's base64 decoder makes of a data URI's payload: it stops at the first '=' or
 // character outside the alphabet.
@@ -205,15 +198,55 @@ json parsed_json(const std::string& path, std::string_view text) {
   }
 }
 
+// asset.version (and minVersion) as "<major>.<minor>": glTF 1.0 files, which tinygltf reads as a
+// glTF without meshes, are refused as what they are. A file without "asset" is refused by the
+// schema check, whose message says glTF 2.0 requires it.
+void check_version(const std::string& path, const json& doc) {
+  const auto asset = doc.find("asset");
+  if (asset == doc.end() || !asset->is_object()) {
+    const bool gltf_1 = doc.contains("meshes") && doc["meshes"].is_object();  // glTF 1.0 kept its lists in objects
+    matbase::fail(path, std::string("no \"asset\" object with a \"version\"") +
+                            (gltf_1 ? ": a glTF 1.0 file (its meshes are an object); only glTF 2.0 is read" : "; glTF 2.0 requires one"));
+  }
+  for (const char* member : {"version", "minVersion"}) {
+    const auto found = asset->find(member);
+    if (found == asset->end() || !found->is_string()) continue;
+    const std::string& version = found->get_ref<const std::string&>();
+    const size_t dot = version.find('.');
+    const std::string major = version.substr(0, dot);
+    if (major != "2" || dot == std::string::npos)
+      matbase::fail(path, matbase::concat("asset.", member, " ", matbase::excerpt(version),
+                                          major == "1" ? ": a glTF 1.0 file" : ": not glTF 2.x", "; only glTF 2.0 is read"));
+  }
+}
+
+// extensionsRequired names only extensions the reader applies (extensions.h).
+void check_required_extensions(const std::string& path, const json& doc) {
+  const auto required = doc.find("extensionsRequired");
+  if (required == doc.end()) return;
+  for (const json& extension : *required) {
+    const std::string& name = extension.get_ref<const std::string&>();
+    if (std::find(kReadExtensions.begin(), kReadExtensions.end(), name) != kReadExtensions.end()) continue;
+    const char* what = name == "KHR_draco_mesh_compression"       ? " (Draco-compressed geometry)"
+                       : name == "EXT_meshopt_compression"        ? " (meshopt-compressed geometry)"
+                       : name == "KHR_texture_basisu"             ? " (KTX2 textures)"
+                       : name == "EXT_texture_webp"               ? " (WebP textures)"
+                       : "";
+    matbase::fail(path, "extensionsRequired: the file requires the glTF extension " + matbase::excerpt(name) + what +
+                            ", which is not supported; decompress or convert it first");
+  }
+}
+
 }  // namespace
 
 void check_gltf_json(const std::string& path, bool binary) {
   std::string file;
   if (const std::optional<std::string> problem = matbase::read_whole_file(path, file)) matbase::fail(path, *problem);
-  const std::optional<std::string_view> text = binary ? glb_json_chunk(file) : std::string_view(file);
-  if (!text) return;
-  const json doc = parsed_json(path, *text);
+  const json doc = parsed_json(path, gltf_json_text(path, file, binary));
   if (!doc.is_object()) matbase::fail(path, "the JSON is not an object");
+  check_version(path, doc);
+  check_gltf_schema(path, doc);
+  check_required_extensions(path, doc);
   const JsonChecker checker(path);
   checker.each(doc, "samplers", "sampler", [&](const json& sampler, const std::string& where) {
     if (!sampler.is_object()) checker.fail_at(element_name(where), "is not an object");
