@@ -5,7 +5,8 @@
 #   blender -b --factory-startup -noaudio --python-exit-code 1 -P cycles_render.py -- SCENE.json
 #
 # SCENE.json holds the mesh (with UVs when a base colour image is given) and material, or in
-# their place "gltf", a file Blender's glTF importer brings in with its own node setups; the
+# their place "gltf", a file Blender's glTF importer brings in with its own node setups, or in
+# place of the mesh "mesh_file", an OBJ or PLY file Blender's importer reads, in the material; the
 # lamps, camera, background, bounces and "settings", plus "threads", "renders" ([{"spp", "seed",
 # "noise_threshold", "path"}], rendered in order) and "timings_path", where {"<path>": seconds}
 # is written. Settings "parity" switch off what would make Cycles' converged image differ from
@@ -49,6 +50,25 @@ def add_mesh(scene, description, material):
     obj = bpy.data.objects.new("object", mesh)
     obj.cycles.shadow_terminator_geometry_offset = description["shadow_terminator_geometry_offset"]
     scene.collection.objects.link(obj)
+
+
+def import_mesh_file(scene, description, material):
+    """An OBJ or PLY file through Blender's own importer with its defaults, as a user imports it,
+    every slot of every object it makes given `material`."""
+    path = description["path"]
+    if path.lower().endswith(".obj"):
+        bpy.ops.wm.obj_import(filepath=path)
+    elif path.lower().endswith(".ply"):
+        bpy.ops.import_mesh.ply(filepath=path)
+    else:
+        sys.exit("cycles_render.py: mesh_file must be .obj or .ply: " + path)
+    for obj in scene.objects:
+        if obj.type != "MESH":
+            continue
+        obj.data.materials.clear()
+        obj.data.materials.append(material)
+        obj.data.polygons.foreach_set("material_index", [0] * len(obj.data.polygons))
+        obj.cycles.shadow_terminator_geometry_offset = description["shadow_terminator_geometry_offset"]
 
 
 def make_material(description, distribution, base_color_image):
@@ -191,6 +211,9 @@ def main():
     scene = bpy.context.scene
     if "gltf" in description:
         import_gltf(description["gltf"])
+    elif "mesh_file" in description:
+        material = make_material(description["material"], description["distribution"], None)
+        import_mesh_file(scene, description["mesh_file"], material)
     else:
         material = make_material(description["material"], description["distribution"],
                                  description.get("base_color_image"))

@@ -76,6 +76,9 @@ class Scene:
     def bounds(self) -> Tuple[Tuple[float, float, float], float]:
         """((x, y, z), radius): the smallest sphere around all objects, metres."""
     @property
+    def notes(self) -> List[str]:
+        """What the scene's mesh files hold that their readers do not apply: '<file>: <note>'."""
+    @property
     def camera(self) -> Camera:
         """The scene file's camera."""
     def make_camera(self, description: Dict[str, object]) -> Camera:

@@ -1,5 +1,7 @@
 """matpredict.render: the CLI's images bit for bit, arrays as documented, Python free to run."""
+import base64
 import gc
+import json
 import os
 import signal
 import subprocess
@@ -209,6 +211,28 @@ def test_a_numpy_mesh_renders_as_the_same_mesh_from_a_file(tmp_path, monkeypatch
     for name in ("color", "depth", "normal_world", "base_color", "roughness", "alpha"):
         assert np.array_equal(from_arrays[name], from_file[name]), name
     assert 0 < (from_arrays["depth"] > 0).mean() < 1
+
+
+def test_scene_notes_say_what_a_mesh_file_holds_that_is_not_applied(tmp_path, monkeypatch):
+    positions, triangles = cube()
+    buffer = positions.astype("<f4").tobytes() + triangles.astype("<u2").tobytes()
+    gltf = {
+        "asset": {"version": "2.0"},
+        "extensionsUsed": ["KHR_materials_volume"],
+        "scenes": [{"nodes": [0]}], "scene": 0, "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+        "buffers": [{"byteLength": len(buffer),
+                     "uri": "data:application/octet-stream;base64," + base64.b64encode(buffer).decode()}],
+        "bufferViews": [{"buffer": 0, "byteLength": 96}, {"buffer": 0, "byteOffset": 96, "byteLength": 72}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3"},
+                      {"bufferView": 1, "componentType": 5123, "count": 36, "type": "SCALAR"}],
+    }
+    (tmp_path / "cube.gltf").write_text(json.dumps(gltf))
+    monkeypatch.chdir(tmp_path)
+    scene = matpredict.load_scene(cube_scene("cube.gltf"))
+    assert len(scene.notes) == 1
+    assert scene.notes[0].endswith('cube.gltf: the glTF extension "KHR_materials_volume" is not applied')
+    assert matpredict.load_scene(cube_scene(matpredict.Mesh(positions, triangles))).notes == []
 
 
 def test_bad_mesh_arrays_raise_clear_errors():

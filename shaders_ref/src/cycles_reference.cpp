@@ -78,17 +78,14 @@ json describe_lamp(const matrender::Light& light) {
 }
 
 // The mesh in its one material, as cycles_render.py rebuilds them.
-json describe_mesh_object(const CyclesScene& scene) {
-  json positions = json::array(), normals = json::array(), triangles = json::array();
-  for (const glm::vec3& p : scene.mesh.positions) positions.push_back({p.x, p.y, p.z});
-  for (const glm::vec3& n : scene.mesh.normals) normals.push_back({n.x, n.y, n.z});
-  for (const glm::uvec3& t : scene.mesh.triangles) triangles.push_back({t.x, t.y, t.z});
+// The material, with at most a base colour image file (on the mesh's UVs, when `with_uvs`).
+json describe_material(const CyclesScene& scene, bool with_uvs) {
   const matrender::Material& m = scene.material;
   // One texture is passed: a base colour image file under a white factor, on the mesh's UVs.
   const matrender::ParameterValue& base = m[matmaterial::MaterialParameter::BaseColor];
   json base_color_image = nullptr;
   if (base.texture) {
-    if (base.value != glm::vec3(1.0f) || !(base.uv_transform == matmaterial::UvAffine{}) ||
+    if (!with_uvs || base.value != glm::vec3(1.0f) || !(base.uv_transform == matmaterial::UvAffine{}) ||
         !std::filesystem::exists(base.texture->name()) || scene.mesh.uvs.size() != scene.mesh.positions.size())
       throw std::invalid_argument("render_with_cycles: a base colour texture must be an image file under a white "
                                   "factor, untransformed, on a mesh with one UV per vertex");
@@ -98,24 +95,41 @@ json describe_mesh_object(const CyclesScene& scene) {
   untextured[matmaterial::MaterialParameter::BaseColor].texture = nullptr;
   if (untextured.textured() || m.normal_map)
     throw std::invalid_argument("render_with_cycles: textures other than the base colour are not passed to Blender");
-  json uvs = json::array();
-  if (base.texture)
-    for (const glm::vec2& uv : scene.mesh.uvs) uvs.push_back({uv.x, uv.y});
-  if (scene.mesh.normals.size() != scene.mesh.positions.size())
-    throw std::invalid_argument("render_with_cycles: the mesh needs one normal per vertex");
-  return {{"mesh",
-           {{"positions", positions},
-            {"normals", normals},
-            {"triangles", triangles},
-            {"uvs", uvs},
-            {"shadow_terminator_geometry_offset", scene.shadow_terminator_geometry_offset}}},
-          {"material", node_inputs(m)},
+  return {{"material", node_inputs(m)},
           {"base_color_image", base_color_image},
           {"distribution", m.distribution == matrender::SpecularDistribution::MultiscatterGGX ? "MULTI_GGX" : "GGX"}};
 }
 
+json describe_mesh_object(const CyclesScene& scene) {
+  json positions = json::array(), normals = json::array(), triangles = json::array();
+  for (const glm::vec3& p : scene.mesh.positions) positions.push_back({p.x, p.y, p.z});
+  for (const glm::vec3& n : scene.mesh.normals) normals.push_back({n.x, n.y, n.z});
+  for (const glm::uvec3& t : scene.mesh.triangles) triangles.push_back({t.x, t.y, t.z});
+  json uvs = json::array();
+  if (scene.material[matmaterial::MaterialParameter::BaseColor].texture)
+    for (const glm::vec2& uv : scene.mesh.uvs) uvs.push_back({uv.x, uv.y});
+  if (scene.mesh.normals.size() != scene.mesh.positions.size())
+    throw std::invalid_argument("render_with_cycles: the mesh needs one normal per vertex");
+  json description = describe_material(scene, true);
+  description["mesh"] = {{"positions", positions},
+                         {"normals", normals},
+                         {"triangles", triangles},
+                         {"uvs", uvs},
+                         {"shadow_terminator_geometry_offset", scene.shadow_terminator_geometry_offset}};
+  return description;
+}
+
 json describe(const CyclesScene& scene) {
-  json description = scene.gltf_path.empty() ? describe_mesh_object(scene) : json{{"gltf", scene.gltf_path}};
+  json description;
+  if (!scene.gltf_path.empty()) {
+    description = {{"gltf", scene.gltf_path}};
+  } else if (!scene.mesh_file_path.empty()) {
+    description = describe_material(scene, false);
+    description["mesh_file"] = {{"path", scene.mesh_file_path},
+                                {"shadow_terminator_geometry_offset", scene.shadow_terminator_geometry_offset}};
+  } else {
+    description = describe_mesh_object(scene);
+  }
   json lamps = json::array();
   for (const matrender::Light& lamp : scene.lamps) lamps.push_back(describe_lamp(lamp));
   description["lamps"] = lamps;

@@ -143,7 +143,9 @@ TEST_CASE("Documents that say a key twice, nest without end or hold no double ar
   CHECK(refusal([] { json(std::string(300, '[') + std::string(300, ']')); }) ==
         "s.json: lists and mappings nest deeper than 256 levels");
   CHECK(refusal([] { yaml("a: &x [*x]\n"); }).find("nest deeper than 256 levels") != std::string::npos);
-  CHECK(refusal([] { json(R"({"a": 1e309})"); }) == "s.json: not valid JSON: the number '1e309' is too large for a double");
+  CHECK(refusal([] { json(R"({"a": 1e309})"); }) == "s.json: /a: the number '1e309' is too large for a double");
+  CHECK(refusal([] { json(R"({"render": {"seed": 1e309}})"); }) == "s.json: /render/seed: the number '1e309' is too large for a double");
+  CHECK(refusal([] { json(R"({"a": [1, 2, -1e400]})"); }) == "s.json: /a/2: the number '-1e400' is too large for a double");
   CHECK(refusal([] { json(R"({"a": 1,})"); }).rfind("s.json: not valid JSON: parse error at line 1, column 9", 0) == 0);
   CHECK(refusal([] { yaml("? [a, b]\n: 1\n"); }) == "c.yaml: a key must be a single value, not a list or a mapping");
 }

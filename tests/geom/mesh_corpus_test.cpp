@@ -1,6 +1,7 @@
 // The corpus of tests/geom/data/mesh_corpus: files shaped as other tools write them, each read by
 // read_object and held to what expected.json says of it (a mesh with given traits, or a refusal
 // whose message holds given words).
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -75,6 +76,11 @@ void check_reads(const fs::path& path, const json& expected) {
   for (const json& name : textured) {
     const matmaterial::MaterialInputs& material = asset.materials.at(part(name.get<std::string>()));
     CHECK(material[P::BaseColor].image >= 0);
+  }
+  for (const json& words : expected.value("notes", json::array())) {
+    INFO("notes must say: " << words.get<std::string>());
+    CHECK(std::any_of(asset.notes.begin(), asset.notes.end(),
+                      [&](const std::string& note) { return note.find(words.get<std::string>()) != std::string::npos; }));
   }
   for (const auto& [name, colour] : colours.items()) {
     const glm::dvec3 actual = asset.materials.at(part(name)).color(P::BaseColor);

@@ -748,7 +748,7 @@ TEST_CASE("MTL numbers are checked where they are written, against the range the
            std::pair{"Kd -0.5 0.2 0.2", "Kd: \"-0.5\" is outside [0, 1]"},
            std::pair{"Kd 5", "Kd: \"5\" is outside [0, 1]"},
            std::pair{"Kd 0.5 0.5", "Kd takes 3 numbers (or 1 for a grey); it has 2"},
-           std::pair{"Ka 0.2 0.2 1.2", "Ka: \"1.2\" is outside [0, 1]"},
+           std::pair{"Ka 0.2 0.2 -1.2", "Ka: \"-1.2\" is outside [0, ...)"},
            std::pair{"Ks 3 3 3", "Ks: \"3\" is outside [0, 1]"},
            std::pair{"Tf 0.5 x 0.5", "Tf: \"x\" is not a finite number"},
            std::pair{"Ke -1 0 0", "Ke: \"-1\" is outside [0, 1000000]"},
@@ -778,12 +778,16 @@ TEST_CASE("MTL numbers are checked where they are written, against the range the
            std::pair{"map_Kd -imfchan q t.png", "map_Kd -imfchan takes one of r, g, b, m, l, z; not \"q\""},
            std::pair{"map_Kd -zoom 2 t.png", "map_Kd: unknown option \"-zoom\""},
            std::pair{"map_Kd", "map_Kd: no file name"},
-           std::pair{"newmtl m", "material \"m\" is defined twice (first on line 1)"},
        }) {
     write_text(mtl, std::string("newmtl m\n") + statement + "\n");
     INFO(statement);
     CHECK_THAT(read_error(obj), Contains(obj + ": " + mtl + ": line 2: " + problem));
   }
+  // Ka beyond 1 reads where it shades nothing (illum 2), and is refused as illum 3's metallic.
+  write_text(mtl, "newmtl m\nKa 1.5 1.5 1.5\nillum 2\n");
+  CHECK(read_obj(obj).materials[0].scalar(P::Metallic) == 0.0);
+  write_text(mtl, "newmtl m\nKa 1.5 1.5 1.5\nillum 3\n");
+  CHECK_THAT(read_error(obj), Contains(obj + ": " + mtl + ": material \"m\": Ka's mean 1.5 is the metallic of illum 3, which must be from 0 to 1"));
   // Ni 0, which exporters write for "unset", reads on an opaque material (the IOR shades only
   // glass) and is refused on one that transmits.
   write_text(mtl, "newmtl m\nNi 0\n");

@@ -238,6 +238,18 @@ TEST_CASE("Each kind of broken material folder gets its own message", "[geom]") 
     write_text(metadata, text);
     CHECK_THAT(read_error(folder.string()), Contains(metadata + ": " + problem));
   }
+  // metadata.json saved by Windows Notepad as "Unicode" (UTF-16, little-endian) reads as the same
+  // text; a roughness map only as EXR is refused by name rather than left out.
+  std::string utf16 = "\xFF\xFE";
+  for (const char c : std::string(R"({"category": "wood"})")) utf16 += std::string{c, '\0'};
+  std::ofstream(metadata, std::ios::binary) << utf16;
+  CHECK(read_error(folder.string()).empty());
+  write_text(folder / "wood_roughness.exr", "an EXR file");
+  CHECK_THAT(read_error(folder.string()),
+             Contains(folder.string() + ": the roughness map wood_roughness.exr is in EXR format, which material folders do "
+                                        "not read (PNG, JPEG, BMP or TGA)"));
+  write_png(folder / "wood_roughness.png", grey_image("r", 4, 100));
+  CHECK(read_error(folder.string()).empty());
 }
 
 TEST_CASE("write_material_folder refuses what a folder cannot hold and leaves nothing behind", "[geom]") {

@@ -5,19 +5,24 @@
 // own samples and pixels are independent. Per pixel i, with d_i the difference of the two
 // renderers' seed averages and e_i = ((o0 - o1)^2 + (c0 - c1)^2) / 4 from the seed differences,
 // E[d_i^2] = E[e_i] when both compute the same integral: z_i = d_i^2 - e_i has mean 0, and so
-// has d_i. Both means are tested against their standard errors over the 4096 pixels.
+// has d_i. Both means are tested against their standard errors over the 4096 pixels. The last
+// case reads OBJ and PLY cubes without normals through our readers and through Blender's own
+// importers, so that their faces are flat or smooth as Blender makes them.
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <variant>
 #include <vector>
 
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 
 #include "matbase/pi.h"
 #include "matgeom/bounding_sphere.h"
 #include "matgeom/camera_grid.h"
+#include "matgeom/io/mesh_io.h"
 #include "matgeom/tangents.h"
 #include "matrender/image_io.h"
 #include "matrender/paper_setup.h"
@@ -449,5 +454,59 @@ TEST_CASE("The shadow terminator geometry offset changes renders as it does in C
                                 minus(cycles[0], cycles_off[0]), minus(cycles[1], cycles_off[1]));
     CHECK(a.mean_ours > 0.0);  // the offset brightens the terminator
     check_agreement("terminator offset " + std::to_string(offset) + ", change", a);
+  }
+}
+
+namespace {
+
+// A 0.3 m cube standing on the ground, as an OBJ (+Y up) or PLY (+Z up) file writes it: quads,
+// no normals, for the importers to shade.
+std::string cube_obj_text(const std::string& smoothing) {
+  std::string text = "# a cube without normals\n";
+  for (int i = 0; i < 8; ++i)
+    text += fmt::format("v {} {} {}\n", i & 1 ? 0.15 : -0.15, i & 2 ? 0.3 : 0.0, i & 4 ? 0.15 : -0.15);
+  text += smoothing;
+  // Counter-clockwise from outside, in OBJ's frame (1-based).
+  for (const char* face : {"1 5 7 3", "2 4 8 6", "1 2 6 5", "3 7 8 4", "1 3 4 2", "5 6 8 7"}) text += std::string("f ") + face + "\n";
+  return text;
+}
+
+std::string cube_ply_text() {
+  std::string text = "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\nproperty float z\n"
+                     "element face 6\nproperty list uchar int vertex_indices\nend_header\n";
+  for (int i = 0; i < 8; ++i)
+    text += fmt::format("{} {} {}\n", i & 1 ? 0.15 : -0.15, i & 2 ? 0.15 : -0.15, i & 4 ? 0.3 : 0.0);
+  for (const char* face : {"0 2 3 1", "4 5 7 6", "0 1 5 4", "2 6 7 3", "0 4 6 2", "1 3 7 5"}) text += std::string("4 ") + face + "\n";
+  return text;
+}
+
+}  // namespace
+
+TEST_CASE("Mesh files without normals render as Blender 3.4's OBJ and PLY importers shade them", "[render][blender]") {
+  REQUIRE(shaders_ref::cycles_available());
+  const std::filesystem::path folder = cycles_work_folder("mesh_files");
+  std::filesystem::create_directories(folder);
+  struct MeshFileCase {
+    std::string file, text;
+    bool smooth;
+  };
+  const std::vector<MeshFileCase> cases = {{"cube_flat.obj", cube_obj_text(""), false},
+                                           {"cube_smoothing_group.obj", cube_obj_text("s 1\n"), true},
+                                           {"cube_smoothing_off.obj", cube_obj_text("s off\n"), false},
+                                           {"cube_no_normals.ply", cube_ply_text(), false}};
+  for (const MeshFileCase& c : cases) {
+    const std::string path = (folder / c.file).string();
+    std::ofstream(path) << c.text;
+    shaders_ref::CyclesScene scene;
+    scene.mesh_file_path = path;
+    scene.mesh = matgeom::read_object(path).mesh;
+    CHECK(scene.mesh.normals.empty() == !c.smooth);
+    scene.material.set(matrender::MaterialParameter::BaseColor, glm::vec3(0.7f, 0.6f, 0.5f));
+    scene.material.set(matrender::MaterialParameter::Roughness, 0.3f);
+    const matgeom::Sphere bound = add_paper_rig(scene);
+    matgeom::CameraGridSpec grid;
+    grid.center = bound.center;
+    scene.camera = matrender::grid_view(grid, matrender::kPaperViewRow, matrender::kPaperViewColumn, kResolution, kResolution);
+    check_agreement(c.file, agreement_with_cycles(scene, c.file));
   }
 }

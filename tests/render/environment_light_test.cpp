@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <functional>
@@ -13,11 +14,13 @@
 #include "chi_square.h"
 #include "lights/environment_light.h"
 #include "lights/light_sampler.h"
+#include "matbase/image/image_writing.h"
 #include "matbase/pi.h"
 #include "matrender/camera.h"
 #include "matrender/render.h"
 #include "matrender/scene.h"
 #include "test_scenes.h"
+#include "texture/negative_radiance.h"
 #include "uniform_floats.h"
 
 using namespace matrender;
@@ -295,5 +298,41 @@ TEST_CASE("A map black but for one very bright texel, at the pole or the horizon
     CAPTURE(row);
     CHECK(test_scenes::renders_finite(
         scene, Camera::look_at({0.0, -3.0, 1.0}, {0.0, 0.0, 0.4}, {0, 0, 1}, 0.8, 24, 24), settings));
+  }
+}
+
+TEST_CASE("Negative texels are clamped where compression rings and refused where nothing explains them", "[render]") {
+  // A 4 x 2 map of 0.5 everywhere (bottom row first, as stored), one component changed.
+  const auto level_with = [](int x, int y, int c, float value) {
+    TexelLevel level;
+    level.width = 4;
+    level.height = 2;
+    level.floats.assign(8, glm::vec4(0.5f, 0.5f, 0.5f, 1.0f));
+    level.floats[static_cast<size_t>(y) * 4 + x][c] = value;
+    return level;
+  };
+  SECTION("ringing: no deeper than an eighth of the brightest neighbour") {
+    TexelLevel level = level_with(1, 0, 2, -0.0625f);
+    clamp_compression_negatives(level, "map.exr");
+    CHECK(level.floats[1] == glm::vec4(0.5f, 0.5f, 0.0f, 1.0f));
+  }
+  SECTION("deeper is a damaged file, named at its texel (rows counted from the top)") {
+    TexelLevel level = level_with(3, 0, 0, -5.0f);
+    CHECK_THROWS_WITH(clamp_compression_negatives(level, "map.exr"),
+                      Catch::StartsWith("map.exr: texel (3, 1) has R -5, a negative radiance no compression explains"));
+    TexelLevel just_deeper = level_with(0, 1, 1, -0.07f);
+    CHECK_THROWS_WITH(clamp_compression_negatives(just_deeper, "map.exr"), Catch::Contains("texel (0, 0) has G -0.07"));
+  }
+  SECTION("a file goes through the rule, and a map that passes renders its clamped texel") {
+    const std::string path = (std::filesystem::temp_directory_path() / "matrender_negative_radiance.exr").string();
+    std::vector<float> pixels(4 * 2 * 3, 0.5f);
+    pixels[3 * 5 + 1] = -0.001f;  // column 1 of the bottom row (rows top first in the file)
+    matbase::write_exr(path, 4, 2, {"R", "G", "B"}, pixels.data());
+    const TexturePtr map = Texture::load_radiance(path, ColorSpace::NonColor);
+    CHECK(map->sample({(1 + 0.5f) / 4, 0.25f}).y == 0.0f);
+    pixels[3 * 5 + 1] = -5.0f;
+    matbase::write_exr(path, 4, 2, {"R", "G", "B"}, pixels.data());
+    CHECK_THROWS_WITH(Texture::load_radiance(path, ColorSpace::NonColor), Catch::Contains("texel (1, 1) has G -5"));
+    std::filesystem::remove(path);
   }
 }

@@ -32,7 +32,7 @@ const Refusal kRefusals[] = {
     // Strict as the docs promise: no repeated key, no number beyond a double, nothing that would
     // render black or clipped.
     {"duplicate_key", R"(/lights/1/power: given twice; say it once)"},
-    {"number_overflow", R"(not valid JSON: the number '1e309' is too large for a double.*)"},
+    {"number_overflow", R"(/lights/0/power: the number '1e309' is too large for a double.*)"},
     {"exposure", R"(/render/exposure: expected a number of stops from -126 to 126, got 2000)"},
     {"label_id", R"(/materials/clay/label_id: expected a whole number from 0 to 65,535, got 70000)"},
     {"matsynth_folder",

@@ -49,10 +49,11 @@ class TreeBuilder : public nlohmann::json::json_sax_t {
 
   bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& error) override {
     const std::string what = error.what();
-    // A number beyond a double ("1e309"): nlohmann says "number overflow parsing '1e309'".
+    // A number beyond a double ("1e309"): nlohmann says "number overflow parsing '1e309'". The
+    // JSON is valid (JSON sets no range), so the value is named by its pointer, as every other.
     if (error.id == 406) {
       const size_t quote = what.find('\'');
-      throw InputError(source_.name() + ": not valid JSON: the number " +
+      throw InputError(source_.name() + ": " + path_of_next_value() + ": the number " +
                        (quote == std::string::npos ? std::string() : what.substr(quote) + " ") +
                        "is too large for a double");
     }
@@ -75,6 +76,15 @@ class TreeBuilder : public nlohmann::json::json_sax_t {
       path = open_[k].value.kind == Kind::List ? source_.item_path(path, open_[k].value.items.size())
                                                 : source_.child_path(path, open_[k].key);
     return path;
+  }
+
+  // The JSON pointer the value being read would have: the next item of the open list, the member
+  // of the open mapping whose key was read, or the root ("").
+  std::string path_of_next_value() const {
+    if (open_.empty()) return "";
+    const Open& innermost = open_.back();
+    return innermost.value.kind == Kind::List ? source_.item_path(path_to_open(), innermost.value.items.size())
+                                              : source_.child_path(path_to_open(), innermost.key);
   }
 
   bool open(Kind kind) {

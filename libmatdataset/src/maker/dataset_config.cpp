@@ -340,7 +340,7 @@ void read_render(const DocumentNode& v, RenderConfig& render) {
   }
   if (const std::optional<DocumentNode> ao = v.find("ambient_occlusion")) {
     ao->expect_keys({"error", "distance"});
-    if (const std::optional<DocumentNode> n = ao->find("error")) render.ambient_occlusion_error = n->number_in(1e-4, 0.5);
+    if (const std::optional<DocumentNode> n = ao->find("error")) render.ambient_occlusion_error = n->number_in(matrender::kMinAmbientOcclusionError, matrender::kMaxAmbientOcclusionError);
     if (const std::optional<DocumentNode> n = ao->find("distance"))
       render.ambient_occlusion_distance_m = n->number_in(0.0, 65536.0, true);
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -20,6 +21,7 @@
 #include "matbase/image/image_file.h"
 #include "matbase/image/png_encoding.h"
 #include "matbase/text.h"
+#include "matbase/text_encoding.h"
 #include "matmaterial/material_parameters.h"
 
 namespace matmaterial {
@@ -61,6 +63,15 @@ bool is_image_file(const fs::path& file) {
          extension == ".tga";
 }
 
+// Image formats PBR packs also ship maps in, which a folder does not read: a map found only in one
+// of them is refused by name rather than left out without a word.
+bool is_unread_image_file(const fs::path& file) {
+  const std::string extension = matbase::lowercase_extension(file);
+  for (const char* unread : {".exr", ".tif", ".tiff", ".hdr", ".webp", ".psd", ".jxl", ".dds", ".ktx2"})
+    if (extension == unread) return true;
+  return false;
+}
+
 // How well a file's lower-case stem names a map: the length of the longest keyword it contains
 // (so "specular_color" is a specular map, not a colour one), 0 for none; `rank` receives that
 // keyword's priority within the map.
@@ -77,6 +88,39 @@ size_t match_length(const std::string& stem, const FolderMapInfo& info, size_t* 
 
 // Each image file of the folder goes to the map it names best; each map takes, of its files, one
 // whose stem is its keyword, else the one of the highest-priority keyword, else the first by name.
+// The map a lower-case file stem names best (kFolderMapCount for none), and that keyword's rank.
+size_t map_named(const std::string& stem, size_t* rank) {
+  size_t best_length = 0, best_map = kFolderMapCount;
+  for (size_t m = 0; m < kFolderMapCount; ++m) {
+    size_t keyword_rank = 0;
+    const size_t length = match_length(stem, kFolderMaps[m], &keyword_rank);
+    if (length > best_length) {
+      best_length = length;
+      best_map = m;
+      *rank = keyword_rank;
+    }
+  }
+  return best_map;
+}
+
+// Refuses a folder that has a map only in a format it does not read ("wood_roughness.exr").
+void check_unread_maps(const fs::path& folder, const std::array<fs::path, kFolderMapCount>& maps) {
+  std::vector<fs::path> files;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder))
+    if (is_unread_image_file(entry.path())) files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  for (const fs::path& file : files) {
+    size_t rank = 0;
+    const size_t map = map_named(matbase::lowercase(file.stem().string()), &rank);
+    if (map == kFolderMapCount || !maps[map].empty()) continue;
+    std::string format = matbase::lowercase_extension(file).substr(1);
+    for (char& c : format) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    matbase::fail(folder.string(), matbase::concat("the ", kFolderMaps[map].file_stem, " map ", file.filename().string(), " is in ",
+                                                   format, " format, which material folders do not read (PNG, JPEG, BMP or "
+                                                   "TGA): convert it, or it would be left out"));
+  }
+}
+
 std::array<fs::path, kFolderMapCount> find_maps(const fs::path& folder) {
   std::vector<fs::path> files;
   for (const fs::directory_entry& entry : fs::directory_iterator(folder))
@@ -90,16 +134,8 @@ std::array<fs::path, kFolderMapCount> find_maps(const fs::path& folder) {
   std::array<std::optional<Candidate>, kFolderMapCount> chosen;
   for (const fs::path& file : files) {
     const std::string stem = matbase::lowercase(file.stem().string());
-    size_t best_length = 0, best_map = kFolderMapCount, best_rank = 0;
-    for (size_t m = 0; m < kFolderMapCount; ++m) {
-      size_t rank = 0;
-      const size_t length = match_length(stem, kFolderMaps[m], &rank);
-      if (length > best_length) {
-        best_length = length;
-        best_map = m;
-        best_rank = rank;
-      }
-    }
+    size_t best_rank = 0;
+    const size_t best_map = map_named(stem, &best_rank);
     if (best_map == kFolderMapCount) continue;
     const Candidate candidate{stem == kFolderMaps[best_map].keywords[best_rank], best_rank, file};
     std::optional<Candidate>& slot = chosen[best_map];
@@ -110,6 +146,7 @@ std::array<fs::path, kFolderMapCount> find_maps(const fs::path& folder) {
   std::array<fs::path, kFolderMapCount> maps;
   for (size_t m = 0; m < kFolderMapCount; ++m)
     if (chosen[m]) maps[m] = chosen[m]->file;
+  check_unread_maps(folder, maps);
   return maps;
 }
 
@@ -156,9 +193,13 @@ Metadata read_metadata(const fs::path& file) {
   Metadata metadata;
   std::error_code missing;
   if (!fs::exists(file, missing)) return metadata;
-  std::string text;
-  if (const std::optional<std::string> problem = matbase::read_whole_file(file, text)) matbase::fail(file.string(), *problem);
-  std::istringstream in(text);
+  std::string bytes;
+  if (const std::optional<std::string> problem = matbase::read_whole_file(file, bytes)) matbase::fail(file.string(), *problem);
+  // Saved as UTF-16 by a Windows editor, it is read as the same text in UTF-8.
+  matbase::DecodedText text;
+  if (const std::optional<std::string> problem = matbase::decode_marked_text(bytes, text))
+    matbase::fail(file.string(), "the text starts with a byte-order mark of " + std::string(text.encoding) + ", but it is " + *problem);
+  std::istringstream in(text.text);
   const matbase::DocumentValue document = matbase::parse_json_document(in, file.string());
   const matbase::DocumentSource source(file.string(), matbase::PathStyle::JsonPointer);
   const matbase::DocumentNode root(document, source);

@@ -15,6 +15,12 @@ namespace matrender {
 // does. Only the noise differs.
 enum class LightSelection { Importance, Uniform };
 
+// The error bound ambient occlusion can be asked for (RenderSettings::ambient_occlusion_error):
+// below the least, its worst case, 0.25 / error^2, exceeds 250,000 rays per pixel; above the most,
+// a pixel's estimate says nothing (the value itself lies in [0, 1]).
+constexpr double kMinAmbientOcclusionError = 0.001;
+constexpr double kMaxAmbientOcclusionError = 0.5;
+
 struct RenderSettings {
   int samples_per_pixel = 64;
   // Adaptive sampling as Cycles 3.4 (Noise Threshold and Min Samples; docs/conventions.md): a
@@ -55,7 +61,7 @@ struct RenderSettings {
   // regularised estimate; open surfaces need far fewer than half-occluded ones), and
   // ambient_occlusion_rays is not used. Otherwise every hit traces ambient_occlusion_rays, and
   // a pixel's standard error is at most 0.5 / sqrt(hits x rays) (less: the directions are
-  // stratified).
+  // stratified). The error is 0 or in [kMinAmbientOcclusionError, kMaxAmbientOcclusionError].
   double ambient_occlusion_distance = 1.0;
   double ambient_occlusion_error = 0.0;
   int ambient_occlusion_rays = 4;

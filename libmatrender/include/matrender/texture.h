@@ -46,6 +46,10 @@ class Texture {
   // lacks, or left of u = -1 or beyond u = 10, read Cycles' missing-texture magenta (1, 0, 1, 1).
   static std::shared_ptr<const Texture> load(const std::string& path, ColorSpace space,
                                              TextureWrap wrap = TextureWrap::Repeat);
+  // An environment map: load() of one image whose negative components are told apart, the
+  // small ones lossy compression leaves clamped to 0 and a deeper one refused naming its texel
+  // (src/texture/negative_radiance.h).
+  static std::shared_ptr<const Texture> load_radiance(const std::string& path, ColorSpace space);
   // From 8-bit pixels in memory, rows top to bottom.
   static std::shared_ptr<const Texture> from_pixels8(int width, int height, int channels,
                                                      const uint8_t* pixels, ColorSpace space,
@@ -82,6 +86,9 @@ class Texture {
   static Decoded decode_bytes(int width, int height, int channels, const uint8_t* pixels, ColorSpace space,
                               const std::string& name);
   static Decoded decode_file(const std::string& path, ColorSpace space);
+  // One image file's texture, its level 0 passed through `adjust` (when given) at every decoding.
+  static std::shared_ptr<const Texture> load_file(const std::string& path, ColorSpace space, TextureWrap wrap,
+                                                  void (*adjust)(TexelLevel&, const std::string&));
   static void associate_alpha(Decoded& decoded);
   // A texture of these texels. `remake`, when given, makes level 0 again after the texture
   // cache dropped it; without it level 0 stays in memory.

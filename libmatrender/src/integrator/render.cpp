@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>
@@ -39,8 +40,6 @@ namespace matrender {
 namespace {
 
 constexpr int kTileSize = 16;
-// Below it the worst case, 0.25 / error^2, exceeds 250,000 rays per pixel.
-constexpr double kMinOcclusionError = 0.001;
 
 struct Tile {
   int x0, y0, x1, y1;
@@ -111,8 +110,10 @@ void validate(const Camera& camera, const RenderSettings& settings) {
                                 std::to_string(static_cast<int64_t>(kMaxSceneCoordinate)) + "] m");
   if ((rendered_aovs(settings) & AovAmbientOcclusion) &&
       !(settings.ambient_occlusion_error == 0.0 ||
-        (settings.ambient_occlusion_error >= kMinOcclusionError && settings.ambient_occlusion_error <= 0.5)))
-    throw std::invalid_argument("render: the ambient occlusion error must be 0 (a fixed ray count) or in [0.001, 0.5]");
+        (settings.ambient_occlusion_error >= kMinAmbientOcclusionError &&
+         settings.ambient_occlusion_error <= kMaxAmbientOcclusionError)))
+    throw std::invalid_argument(fmt::format("render: the ambient occlusion error must be 0 (a fixed ray count) or in [{}, {}]",
+                                            kMinAmbientOcclusionError, kMaxAmbientOcclusionError));
 }
 
 }  // namespace

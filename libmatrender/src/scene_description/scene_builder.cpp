@@ -176,7 +176,7 @@ Background load_background(const BackgroundDescription& description) {
   try {
     const ColorSpace space = environment->color_space ? *environment->color_space
                                                       : blender_default_color_space(environment->path);
-    return EnvironmentMap{Texture::load(environment->path, space, TextureWrap::Repeat), environment->strength,
+    return EnvironmentMap{Texture::load_radiance(environment->path, space), environment->strength,
                           environment->rotation_z};
   } catch (const std::exception& e) {
     throw environment->origin.error("/environment", e.what());

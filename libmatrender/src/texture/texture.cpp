@@ -17,6 +17,9 @@
 #include "matbase/image/image_header.h"
 #include "matbase/image/srgb.h"
 #include "matbase/memory_limit.h"
+#include "matbase/stderr_capture.h"
+#include "matbase/text.h"
+#include "texture/negative_radiance.h"
 #include "texture/texel_cache.h"
 #include "texture/texel_level.h"
 
@@ -167,35 +170,76 @@ Texture::Decoded Texture::decode_bytes(int width, int height, int channels, cons
   return decoded;
 }
 
-Texture::Decoded Texture::decode_file(const std::string& path, ColorSpace space) {
-  matbase::require_input_file(path);
-  require_plausible_header(path);
+namespace {
+
+// An image file's pixels as OpenImageIO reads them: 8-bit bytes, or floats for any other format.
+struct FilePixels {
+  int width = 0, height = 0, channels = 0;
+  OIIO::TypeDesc::BASETYPE format = OIIO::TypeDesc::UNKNOWN;
+  std::vector<uint8_t> bytes;
+  std::vector<float> floats;
+};
+
+// OpenImageIO's error text, which may hold several lines (each layer's say), as one.
+std::string one_line(std::string text) {
+  text = matbase::trim(text);
+  for (size_t at; (at = text.find('\n')) != std::string::npos;) text.replace(at, 1, "; ");
+  return text;
+}
+
+FilePixels read_file_pixels(const std::string& path) {
   // Straight colour as stored (Cycles' default alpha mode); OpenImageIO would premultiply.
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
   auto input = OIIO::ImageInput::open(path, &config);
-  if (!input) throw std::runtime_error(path + ": cannot read image: " + OIIO::geterror());
+  if (!input) throw std::runtime_error(path + ": cannot read image: " + one_line(OIIO::geterror()));
   const OIIO::ImageSpec& spec = input->spec();
-  const int channels = std::min(spec.nchannels, 4);
-  if (spec.width <= 0 || spec.height <= 0 || channels < 1)
-    throw std::runtime_error(path + ": image has no pixels");
-  if (spec.format.basetype == OIIO::TypeDesc::UINT8) {
-    require_texture_memory(path, spec.width, spec.height, channels, 4.0);
-    std::vector<uint8_t> bytes(static_cast<size_t>(spec.width) * spec.height * channels);
-    if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, bytes.data()))
-      throw std::runtime_error(path + ": cannot decode image: " + input->geterror());
-    input->close();
-    return decode_bytes(spec.width, spec.height, channels, bytes.data(), space, path);
+  FilePixels pixels{spec.width, spec.height, std::min(spec.nchannels, 4),
+                    static_cast<OIIO::TypeDesc::BASETYPE>(spec.format.basetype), {}, {}};
+  if (pixels.width <= 0 || pixels.height <= 0 || pixels.channels < 1) throw std::runtime_error(path + ": image has no pixels");
+  const size_t values = static_cast<size_t>(pixels.width) * pixels.height * pixels.channels;
+  bool read = false;
+  if (pixels.format == OIIO::TypeDesc::UINT8) {
+    require_texture_memory(path, pixels.width, pixels.height, pixels.channels, 4.0);
+    pixels.bytes.resize(values);
+    read = input->read_image(0, 0, 0, pixels.channels, OIIO::TypeDesc::UINT8, pixels.bytes.data());
+  } else {
+    require_texture_memory(path, pixels.width, pixels.height, 4.0 * pixels.channels);
+    pixels.floats.resize(values);
+    read = input->read_image(0, 0, 0, pixels.channels, OIIO::TypeDesc::FLOAT, pixels.floats.data());
   }
-  require_texture_memory(path, spec.width, spec.height, 4.0 * channels);
-  std::vector<float> pixels(static_cast<size_t>(spec.width) * spec.height * channels);
-  if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
-    throw std::runtime_error(path + ": cannot decode image: " + input->geterror());
+  if (!read) throw std::runtime_error(path + ": cannot decode image: " + one_line(input->geterror()));
   input->close();
+  return pixels;
+}
 
-  if (space == ColorSpace::SRGB && spec.format.basetype == OIIO::TypeDesc::UINT16) {
+// read_file_pixels with what libpng prints on standard error ("libpng error: IDAT: ...", before
+// OpenImageIO reports the same in its error, which names the file) taken out of the way.
+FilePixels read_file_pixels_quietly(const std::string& path) {
+  matbase::StandardErrorCapture capture;
+  const auto pass_on = [&capture] { matbase::pass_on_other_lines(capture.take(), {"libpng ", "PNG library error"}); };
+  try {
+    FilePixels pixels = read_file_pixels(path);
+    pass_on();
+    return pixels;
+  } catch (...) {
+    pass_on();
+    throw;
+  }
+}
+
+}  // namespace
+
+Texture::Decoded Texture::decode_file(const std::string& path, ColorSpace space) {
+  matbase::require_input_file(path);
+  require_plausible_header(path);
+  FilePixels pixels = read_file_pixels_quietly(path);
+  const int width = pixels.width, height = pixels.height, channels = pixels.channels;
+  if (pixels.format == OIIO::TypeDesc::UINT8) return decode_bytes(width, height, channels, pixels.bytes.data(), space, path);
+  std::vector<float>& floats = pixels.floats;
+  if (space == ColorSpace::SRGB && pixels.format == OIIO::TypeDesc::UINT16) {
     // As for 8-bit images: interpolate encoded values, decode after filtering.
-    Decoded decoded = decode_floats(spec.width, spec.height, channels, pixels.data(), path);
+    Decoded decoded = decode_floats(width, height, channels, floats.data(), path);
     decoded.convert_srgb_after_filtering = true;
     if (channels == 4) associate_alpha(decoded);
     return decoded;
@@ -203,10 +247,10 @@ Texture::Decoded Texture::decode_file(const std::string& path, ColorSpace space)
   if (space == ColorSpace::SRGB) {
     // Float images tagged sRGB are decoded once at load time (Cycles converts float images
     // through OCIO when loading).
-    for (size_t i = 0; i < pixels.size(); ++i)
-      if (channels < 4 || i % 4 != 3) pixels[i] = matbase::srgb_to_linear(pixels[i]);
+    for (size_t i = 0; i < floats.size(); ++i)
+      if (channels < 4 || i % 4 != 3) floats[i] = matbase::srgb_to_linear(floats[i]);
   }
-  return decode_floats(spec.width, spec.height, channels, pixels.data(), path);
+  return decode_floats(width, height, channels, floats.data(), path);
 }
 
 std::shared_ptr<const Texture> Texture::with_texels(Decoded decoded, ColorSpace space, TextureWrap wrap, std::string name,
@@ -247,10 +291,24 @@ std::shared_ptr<const Texture> Texture::from_pixels8(int width, int height, int 
 
 std::shared_ptr<const Texture> Texture::load(const std::string& path, ColorSpace space, TextureWrap wrap) {
   if (path.find(kUdimToken) != std::string::npos) return load_udim(path, space, wrap);
-  Decoded decoded = decode_file(path, space);
+  return load_file(path, space, wrap, nullptr);
+}
+
+std::shared_ptr<const Texture> Texture::load_radiance(const std::string& path, ColorSpace space) {
+  return load_file(path, space, TextureWrap::Repeat, clamp_compression_negatives);
+}
+
+std::shared_ptr<const Texture> Texture::load_file(const std::string& path, ColorSpace space, TextureWrap wrap,
+                                                  void (*adjust)(TexelLevel&, const std::string&)) {
+  const auto decode = [path, space, adjust] {
+    Decoded decoded = decode_file(path, space);
+    if (adjust) adjust(decoded.level0, path);
+    return decoded;
+  };
+  Decoded decoded = decode();
   const int width = decoded.level0.width, height = decoded.level0.height;
-  auto remake = [path, space, width, height] {
-    TexelLevel level = decode_file(path, space).level0;
+  auto remake = [decode, path, width, height] {
+    TexelLevel level = decode().level0;
     if (level.width != width || level.height != height)
       throw std::runtime_error(path + ": changed while rendering: " + std::to_string(width) + " x " +
                                std::to_string(height) + " texels when loaded, now " + std::to_string(level.width) +

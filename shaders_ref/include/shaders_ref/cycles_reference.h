@@ -46,6 +46,10 @@ struct CyclesScene {
   // When not empty, replaces `mesh` and `material`: Blender's own glTF importer makes the objects
   // and their node setups from the file, the way assets reach a Blender user.
   std::string gltf_path;
+  // When not empty, replaces `mesh`: an OBJ or PLY file Blender's own importer reads (wm.obj_import,
+  // import_mesh.ply, with their defaults), its faces flat or smooth as that importer makes them,
+  // every slot in `material`.
+  std::string mesh_file_path;
   std::vector<matrender::Light> lamps;
   matrender::Camera camera;
   glm::vec3 background{0.0f};

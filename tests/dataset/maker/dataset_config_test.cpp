@@ -120,6 +120,14 @@ TEST_CASE("A configuration that says one thing twice, or nothing, or something u
   CHECK(refusal(kOneVase + "render: {samples: \"64\"}\n") ==
         "test.yaml: render.samples: expected a whole number from 1 to 65,535, got \"64\"");
   CHECK(refusal(kOneVase + "render: {samples: 64.0}\n").empty());
+  // The renderer's range for the ambient occlusion error, stated once (matrender/render.h): refused
+  // here before anything is written, not by the first render.
+  CHECK(refusal(kOneVase, {{"render.ambient_occlusion.error", "0.0005", "--ao-error"}}) ==
+        "--ao-error (render.ambient_occlusion.error): expected a number from 0.001 to 0.5, got 0.0005");
+  CHECK(refusal(kOneVase, {{"render.ambient_occlusion.error", "0.001", "--ao-error"}}).empty());
+  // An object's Auto Smooth angle is a mesh's, in (0, 180].
+  CHECK(refusal("objects:\n  - {name: vase, builtin: vase, auto_smooth_deg: 30, materials: {all: [wood/raw:1]}}\n")
+            .find("only a mesh file's faces can be smoothed") != std::string::npos);
   // An alias inside the list it names nests without end; it is refused, not followed.
   CHECK(refusal(kOneVase + "camera: {grid: &a [*a, 1]}\n").find("nest deeper than 256 levels") != std::string::npos);
 }

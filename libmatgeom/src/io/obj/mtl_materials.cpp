@@ -17,11 +17,12 @@
 
 // Materials: MTL to the Principled BSDF as Blender's OBJ importer builds it
 // (io/wavefront_obj/importer/obj_import_mtl.cc, set_bsdf_socket_values and add_image_textures).
-// Blender 3.4 reads the classic MTL statements and Ni, d, Ke, Tf, Pc, Pcr, Ps, map_Ke and map_d
-// (checked by importing a file into Blender 3.4.1); the PBR extension (Pr, Pm, map_Pr, map_Pm) is
-// read as Blender 3.5 added it: its values, when given, replace the ones derived from Ns and Ka.
-// Ignored: Tr (Blender ignores it), map_Ns, refl, disp, anisotropy, map_Ks, and the texture
-// option -type. Blender ignores -clamp, so textures repeat. The options -o and -s place each map as
+// Blender 3.4 reads the classic MTL statements and Ni, d, Ke, Tf, Pc, Pcr, Ps, map_Ke and map_d,
+// and links map_Ks to Specular, map_Ns to Roughness, refl to Metallic and map_Ps to Sheen
+// (checked by importing files into Blender 3.4.1); the PBR extension (Pr, Pm, map_Pr, map_Pm) is
+// read as Blender 3.5 added it: its values, when given, replace the ones derived from Ns and Ka,
+// and its maps the ones of map_Ns and refl. Not applied, as by Blender: Tr, map_Ka, disp (said in
+// the file's notes), anisotropy, and the texture option -type. Blender ignores -clamp, so textures repeat. The options -o and -s place each map as
 // Blender's Mapping node does (mtl_placement.h). tinyobjloader reads Kt as Tf; Blender may not.
 
 namespace matgeom::obj {
@@ -56,8 +57,8 @@ double mean3(const tinyobj::real_t* values) {
 
 class MaterialConverter {
  public:
-  MaterialConverter(const ObjFile& file, TextureTable& textures)
-      : file_(file), textures_(textures) {}
+  MaterialConverter(const ObjFile& file, TextureTable& textures, std::vector<std::string>& notes)
+      : file_(file), textures_(textures), notes_(notes) {}
 
   matmaterial::MaterialInputs convert(size_t index) const {
     const tinyobj::material_t& material = file_.materials[index];
@@ -65,6 +66,7 @@ class MaterialConverter {
         matbase::concat(file_.material_libraries[index], ": material ", matbase::excerpt(material.name));
     check_finite_values(material, what);
     matmaterial::MaterialInputs desc(material.name);
+    check_ambient(material, what);
     set_scalars(material, desc);
     check_ior(material, what, desc);
     set_textures(material, index, what, desc);
@@ -87,6 +89,17 @@ class MaterialConverter {
                         finite3(material.transmittance) && std::isfinite(material.clearcoat_thickness) &&
                         std::isfinite(material.clearcoat_roughness) && std::isfinite(material.sheen);
     if (!finite) matbase::fail(file_.path, what + ": non-finite value");
+  }
+
+  // Ka shades only as the metallic of a reflecting illum model without Pm: there it must be a
+  // fraction; elsewhere any Ka the format allows is read (and does nothing, as in Blender).
+  void check_ambient(const tinyobj::material_t& material, const std::string& what) const {
+    const double ka = mean3(material.ambient);
+    if (!illum_flags(material.illum).reflection || material.metallic >= 0.0f || ka < 0.0) return;
+    const matmaterial::MaterialParameterInfo& metallic = matmaterial::material_parameter(matmaterial::MaterialParameter::Metallic);
+    if (ka > metallic.max)
+      matbase::fail(file_.path, matbase::concat(what, ": Ka's mean ", ka, " is the metallic of illum ", material.illum,
+                                                ", which must be from ", metallic.min, " to ", metallic.max));
   }
 
   // Ni reaches the render only through glass (Principled's transmission): a material that transmits
@@ -180,23 +193,46 @@ class MaterialConverter {
     }
     set_metallic_roughness_texture(material, index, what, desc);
     set_normal_texture(material, index, what, desc);
+    // Blender links map_Ks to Specular and map_Ps to Sheen, a colour read by a float input.
+    set_luminance_texture(material.specular_texname, material.specular_texopt, index, what + " map_Ks",
+                          matmaterial::MaterialParameter::Specular, desc);
+    set_luminance_texture(material.sheen_texname, material.sheen_texopt, index, what + " map_Ps",
+                          matmaterial::MaterialParameter::Sheen, desc);
+    // Nor does Blender 3.4 apply these.
+    if (!material.ambient_texname.empty()) notes_.push_back(what + ": map_Ka is not applied (nor by Blender)");
+    if (!material.displacement_texname.empty())
+      notes_.push_back(what + ": disp (displacement) is not applied (nor by Blender's importer)");
   }
 
+  void set_luminance_texture(const std::string& name, const tinyobj::texture_option_t& options, size_t index,
+                             const std::string& what, matmaterial::MaterialParameter p, matmaterial::MaterialInputs& desc) const {
+    if (name.empty()) return;
+    const TextureSource map = source(name, index, what);
+    desc.set(p, 1.0).set_image(p, textures_.luminance_texture(map), 0, placement(options, map));
+  }
+
+  // Roughness: map_Pr, else map_Ns, which Blender 3.4 links to Roughness as it is (no 1 - sqrt);
+  // metallic: map_Pm, else refl, which Blender 3.4 links to Metallic.
   void set_metallic_roughness_texture(const tinyobj::material_t& material, size_t index,
                                       const std::string& what, matmaterial::MaterialInputs& desc) const {
-    const bool has_roughness = !material.roughness_texname.empty();
-    const bool has_metallic = !material.metallic_texname.empty();
+    const bool pr = !material.roughness_texname.empty(), pm = !material.metallic_texname.empty();
+    const std::string& roughness_name = pr ? material.roughness_texname : material.specular_highlight_texname;
+    const std::string& metallic_name = pm ? material.metallic_texname : material.reflection_texname;
+    const tinyobj::texture_option_t& roughness_options = pr ? material.roughness_texopt : material.specular_highlight_texopt;
+    const tinyobj::texture_option_t& metallic_options = pm ? material.metallic_texopt : material.reflection_texopt;
+    const bool has_roughness = !roughness_name.empty();
+    const bool has_metallic = !metallic_name.empty();
     if (!has_roughness && !has_metallic) return;
-    const TextureSource roughness = source(material.roughness_texname, index, what + " map_Pr");
-    const TextureSource metallic = source(material.metallic_texname, index, what + " map_Pm");
+    const TextureSource roughness = source(roughness_name, index, what + (pr ? " map_Pr" : " map_Ns"));
+    const TextureSource metallic = source(metallic_name, index, what + (pm ? " map_Pm" : " refl"));
     const int packed = textures_.metallic_roughness_texture(has_roughness ? &roughness : nullptr,
                                                             has_metallic ? &metallic : nullptr);
     // One image, each map still placed by its own -o and -s.
     const auto link = [&](matmaterial::MaterialParameter p, const tinyobj::texture_option_t& options, const TextureSource& map) {
       desc.set(p, 1.0).set_image(p, packed, matmaterial::material_parameter(p).packed_channel, placement(options, map));
     };
-    if (has_roughness) link(matmaterial::MaterialParameter::Roughness, material.roughness_texopt, roughness);
-    if (has_metallic) link(matmaterial::MaterialParameter::Metallic, material.metallic_texopt, metallic);
+    if (has_roughness) link(matmaterial::MaterialParameter::Roughness, roughness_options, roughness);
+    if (has_metallic) link(matmaterial::MaterialParameter::Metallic, metallic_options, metallic);
   }
 
   // Blender connects map_Bump (or bump) through a Normal Map node: it is a tangent-space normal
@@ -248,6 +284,7 @@ class MaterialConverter {
 
   const ObjFile& file_;
   TextureTable& textures_;
+  std::vector<std::string>& notes_;
 };
 
 }  // namespace
@@ -256,9 +293,9 @@ class MaterialConverter {
 // Assembly of the asset
 
 std::vector<matmaterial::MaterialInputs> part_materials(const ObjFile& file, const PartTable& parts,
-                                         std::vector<matbase::ImagePixels>& images) {
+                                         std::vector<matbase::ImagePixels>& images, std::vector<std::string>& notes) {
   TextureTable textures(file.path);
-  const MaterialConverter converter(file, textures);
+  const MaterialConverter converter(file, textures, notes);
   std::map<int, matmaterial::MaterialInputs> converted;
   std::vector<matmaterial::MaterialInputs> materials;
   for (const int material : parts.materials) {

@@ -1,6 +1,7 @@
 #pragma once
 // MTL materials to MaterialInputs: the Principled BSDF Blender's OBJ importer builds from each
 // material the parts use, with its textures.
+#include <string>
 #include <vector>
 
 #include "matgeom/object_asset.h"
@@ -10,7 +11,8 @@
 namespace matgeom::obj {
 
 // Every part's MaterialInputs, each file material converted once.
+// What the materials hold that is not applied is added to `notes`.
 std::vector<matmaterial::MaterialInputs> part_materials(const ObjFile& file, const PartTable& parts,
-                                         std::vector<matbase::ImagePixels>& images);
+                                         std::vector<matbase::ImagePixels>& images, std::vector<std::string>& notes);
 
 }  // namespace matgeom::obj

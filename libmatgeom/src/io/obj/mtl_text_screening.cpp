@@ -45,14 +45,15 @@ constexpr NumberStatement parameter_statement(std::string_view keyword, Takes ta
   return {keyword, takes, matmaterial::material_parameter(p).min, matmaterial::material_parameter(p).max};
 }
 
-// What mtl_materials.cpp makes of each: Ka's mean is the metallic, Ks's the specular, Tf's (Kt in
+// What mtl_materials.cpp makes of each: Ka's mean is the metallic of a reflecting illum model (3 to
+// 8) and nothing otherwise, so its range is checked there, where it is used; Ks's the specular, Tf's (Kt in
 // some files) the transmission; Tr is 1 - d (Blender ignores it). A Ke above 1 is a brighter
 // emission (its largest component becomes the strength). Ns has no upper bound: the MTL spec
 // says its values "normally" lie in [0, 1000], and Blender reads a higher one as 1000, the
 // tightest highlight. aniso and anisor (the PBR extension's anisotropy and its rotation, both
 // fractions) shade nothing here.
 constexpr std::array<NumberStatement, 18> kNumberStatements = {{
-    parameter_statement("Ka", Takes::Colour, P::Metallic),
+    {"Ka", Takes::Colour, 0.0, kFloatMax},
     parameter_statement("Kd", Takes::Colour, P::BaseColor),
     parameter_statement("Ks", Takes::Colour, P::Specular),
     parameter_statement("Kt", Takes::Colour, P::Transmission),
@@ -272,7 +273,8 @@ std::string_view trimmed_line(std::string_view line) {
 
 }  // namespace
 
-std::string screened_mtl_text(const std::string& obj_path, const std::string& mtl_path, const std::string& text) {
+std::string screened_mtl_text(const std::string& obj_path, const std::string& mtl_path, const std::string& text,
+                              std::vector<std::string>& notes) {
   LineChecker checker(obj_path, mtl_path);
   std::map<std::string, size_t, std::less<>> material_lines;
   std::string screened;
@@ -290,10 +292,13 @@ std::string screened_mtl_text(const std::string& obj_path, const std::string& mt
     } else if (std::find(kMapStatements.begin(), kMapStatements.end(), keyword) != kMapStatements.end()) {
       screened += checked_map_statement(checker, keyword, after_keyword(parsed));
     } else if (keyword == "newmtl") {
-      const std::string_view name = after_keyword(parsed);
+      const std::string_view name = statement_name(line);
       if (name.empty()) checker.fail_here("newmtl without a material name");
+      // Blender uses the first definition of a name, as tinyobjloader's material map keeps it.
       const auto [first, inserted] = material_lines.emplace(std::string(name), line_number);
-      if (!inserted) checker.fail_here(matbase::concat("material ", matbase::excerpt(name), " is defined twice (first on line ", first->second, ")"));
+      if (!inserted)
+        notes.push_back(matbase::concat(mtl_path, ": line ", line_number, ": material ", matbase::excerpt(name),
+                                        " is defined again (first on line ", first->second, "); the first definition is used, as Blender uses it"));
       screened.append(line);
     } else {
       screened.append(line);

@@ -17,9 +17,11 @@ bool is_file(const fs::path& path) {
 // levels of subfolders deep; unreadable folders are passed over.
 std::optional<fs::path> file_in_subfolders(const fs::path& folder, const fs::path& name, int depth) {
   std::vector<fs::path> level = {folder};
+  size_t searched = 0;
   for (int d = 0; d < depth && !level.empty(); ++d) {
     std::vector<fs::path> next;
     for (const fs::path& parent : level) {
+      if (++searched > kMaxSubfoldersSearched) return std::nullopt;
       std::error_code error;
       std::vector<fs::path> children;
       for (fs::directory_iterator it(parent, error), end; !error && it != end; it.increment(error))

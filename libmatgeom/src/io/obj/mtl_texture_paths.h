@@ -18,9 +18,11 @@ struct TexturePathSearch {
 // Tries, with backslashes read as folder separators and quotes dropped: the MTL's folder joined
 // with the path; the path itself when it is absolute; the first with underscores as blanks;
 // the file name alone in the MTL's folder; then the file name in the MTL's subfolders (up to
-// kMaxSubfolderDepth deep, the first in sorted order).
+// kMaxSubfolderDepth deep and kMaxSubfoldersSearched folders, the first in sorted order, level by
+// level: an OBJ left in a home folder must not set off a walk of the whole disk).
 TexturePathSearch find_texture_file(const std::filesystem::path& mtl_folder, const std::string& written);
 
 constexpr int kMaxSubfolderDepth = 3;
+constexpr size_t kMaxSubfoldersSearched = 1000;
 
 }  // namespace matgeom::obj

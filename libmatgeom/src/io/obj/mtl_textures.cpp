@@ -35,6 +35,18 @@ int TextureTable::color_texture(const TextureSource& source) {
   return index;
 }
 
+int TextureTable::luminance_texture(const TextureSource& source) {
+  const auto found = index_of_luminance_.find(source.file.string());
+  if (found != index_of_luminance_.end()) return found->second;
+  const matbase::ImagePixels rgba = decode_texture(obj_path_, source);
+  matbase::ImagePixels luminance = matbase::blank_image(rgba.name + "#luminance", rgba.width, rgba.height, 1);
+  for (size_t i = 0; i < luminance.data.size(); ++i) luminance.data[i] = matbase::data_luminance(rgba, i);
+  images_.push_back(std::move(luminance));
+  const int index = static_cast<int>(images_.size()) - 1;
+  index_of_luminance_.emplace(source.file.string(), index);
+  return index;
+}
+
 int TextureTable::metallic_roughness_texture(const TextureSource* roughness,
                                              const TextureSource* metallic) {
   const std::pair<std::string, std::string> key(roughness ? roughness->file.string() : "",

@@ -25,6 +25,10 @@ class TextureTable {
 
   int color_texture(const TextureSource& source);
 
+  // The luminance of the image (data_luminance, what Blender's float inputs read of a colour), one
+  // channel.
+  int luminance_texture(const TextureSource& source);
+
   // Roughness (the luminance of map_Pr) into G and metallic (of map_Pm) into B of one image, R
   // unused (0): glTF's layout, so the glTF writer stores it as it is. A channel without a map is
   // 255 (a factor of 1); materials read only the mapped channels.
@@ -39,6 +43,7 @@ class TextureTable {
   std::string obj_path_;
   std::map<std::string, int> index_of_file_;
   std::map<std::pair<std::string, std::string>, int> index_of_packed_;
+  std::map<std::string, int> index_of_luminance_;
   std::vector<matbase::ImagePixels> images_;
 };
 

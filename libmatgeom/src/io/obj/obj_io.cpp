@@ -47,7 +47,8 @@ ObjectAsset read_obj(const std::string& path, const ObjReadOptions& options) {
   // normal to build them on, and gets them when a normal map needs them (matrender's scene).
   if (!asset.mesh.uvs.empty() && !asset.mesh.normals.empty()) compute_tangents(asset.mesh);
   asset.mesh.part_names = parts.names;
-  asset.materials = obj::part_materials(file, parts, asset.images);
+  asset.notes = file.notes;
+  asset.materials = obj::part_materials(file, parts, asset.images, asset.notes);
   try {
     validate_mesh(asset.mesh, "read_obj");
   } catch (const std::invalid_argument& error) {

@@ -103,6 +103,7 @@ class MaterialLibraries : public tinyobj::MaterialReader {
 
   const std::vector<std::string>& sources() const { return sources_; }
   const std::vector<std::string>& missing() const { return missing_; }
+  const std::vector<std::string>& notes() const { return notes_; }
 
  private:
   static bool exists(const fs::path& file) {
@@ -121,7 +122,7 @@ class MaterialLibraries : public tinyobj::MaterialReader {
     if (const std::optional<std::string> problem = matbase::read_whole_file(file, text))
       matbase::fail(obj_path_, file.string() + ": " + *problem);
     text = marked_text_as_utf8(obj_path_ + ": " + file.string(), text);
-    std::istringstream stream(with_not_given_markers(screened_mtl_text(obj_path_, file.string(), text)));
+    std::istringstream stream(with_not_given_markers(screened_mtl_text(obj_path_, file.string(), text, notes_)));
     const size_t first = materials->size();
     tinyobj::LoadMtl(material_map, materials, &stream, warnings, errors);
     for (size_t m = first; m < materials->size(); ++m) (*materials)[m].name = word_name((*materials)[m].name);
@@ -133,6 +134,7 @@ class MaterialLibraries : public tinyobj::MaterialReader {
   std::vector<fs::path> loaded_;
   std::vector<std::string> sources_;  // the .mtl file of material k
   std::vector<std::string> missing_;
+  std::vector<std::string> notes_;
 };
 
 }  // namespace
@@ -162,6 +164,7 @@ ObjFile load_obj(const std::string& path) {
   }
   if (!parsed || !errors.empty()) matbase::fail(path, "tinyobjloader: " + matbase::trim(errors));
   file.material_libraries = libraries.sources();
+  file.notes = libraries.notes();
   check_material_uses(file, text);
   return file;
 }

@@ -15,6 +15,7 @@ struct ObjFile {
   std::vector<tinyobj::material_t> materials;
   std::vector<std::string> material_libraries;  // the .mtl file of material k
   std::string warnings;
+  std::vector<std::string> notes;  // what the reader does not apply as written (ObjectAsset::notes)
 };
 
 ObjFile load_obj(const std::string& path);

@@ -125,9 +125,34 @@ void blank(std::string& text, size_t begin, size_t end) {
   std::fill(text.begin() + static_cast<std::ptrdiff_t>(begin), text.begin() + static_cast<std::ptrdiff_t>(end), ' ');
 }
 
+// Blender 3.4 reads a backslash at the end of an OBJ line (blanks may follow it) as the statement
+// going on in the next line; tinyobjloader does not. The lines are joined into the first, and as
+// many empty lines follow it as were joined, so that later line numbers stay the file's.
+std::string with_continuations_joined(const std::string& text) {
+  std::string joined;
+  joined.reserve(text.size());
+  size_t pending_lines = 0;
+  for_each_line(text, [&](size_t begin, size_t end) {
+    std::string_view line(text.data() + begin, end - begin);
+    const size_t first = line.find_first_not_of(" \t"), last = line.find_last_not_of(" \t");
+    // A comment ending in a backslash ("# exported from C:\models\") is a comment, not a join.
+    const bool comment = pending_lines == 0 && first != std::string_view::npos && line[first] == '#';
+    if (last != std::string_view::npos && line[last] == '\\' && !comment) {
+      joined.append(line.substr(0, last)).push_back(' ');
+      ++pending_lines;
+      return;
+    }
+    joined.append(line).append(pending_lines + 1, '\n');
+    pending_lines = 0;
+  });
+  joined.append(pending_lines, '\n');
+  return joined;
+}
+
 }  // namespace
 
 void screen_obj_text(const std::string& path, std::string& text) {
+  text = with_continuations_joined(text);
   size_t line_number = 0;
   VertexCounts counts;
   for_each_line(text, [&](size_t begin, size_t end) {

@@ -15,7 +15,8 @@ namespace matgeom::obj {
 // to a triangle mesh: it copies every "t" (subdivision tag) line, with up to 3 x 8192 values
 // each, into every shape, so a few kilobytes of tags can claim gigabytes; and it converts "vw"
 // (skin weight) joint numbers to int unchecked, undefined for 1e40. Their lines are blanked, as
-// are comments after corners (which tinyobjloader would read as index 0); line numbers stay.
+// are comments after corners (which tinyobjloader would read as index 0); line numbers stay. A
+// line ending in a backslash goes on in the next, as Blender reads it; the lines are joined.
 void screen_obj_text(const std::string& path, std::string& text);
 
 // The number of the first line of OBJ text whose "usemtl" names `material` (the whole rest of

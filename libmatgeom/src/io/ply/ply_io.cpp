@@ -22,6 +22,7 @@
 #include "matbase/file/atomic_file.h"
 #include "matbase/file/file_error.h"
 #include "matbase/file/input_file.h"
+#include "matbase/text_encoding.h"
 #include "matgeom/shading_normals.h"
 
 // Reading a PLY file is three steps: the whole file is loaded and its header parsed into element
@@ -257,7 +258,14 @@ void check_element_counts(const std::string& path, const PlyHeader& header, size
 }
 
 PlyHeader parse_header(const std::string& path, std::string_view file) {
+  // A header saved by a Windows editor may start with a byte-order mark: UTF-8's is passed over,
+  // UTF-16's or UTF-32's named (a PLY header is ASCII, and the body may be binary).
   size_t offset = 0;
+  if (const std::optional<std::string> mark = matbase::byte_order_mark(file)) {
+    if (*mark != "UTF-8")
+      matbase::fail(path, "the header is " + *mark + " text (it starts with a byte-order mark); a PLY header is ASCII");
+    offset = 3;
+  }
   std::string_view line;
   if (!take_line(file, offset, line) || line != "ply") {
     matbase::fail(path, "not a PLY file (it does not start with a \"ply\" line)");
