@@ -934,14 +934,23 @@ TEST_CASE("glTF textures are read on the UV set they name", "[geom]") {
   }
 }
 
-TEST_CASE("glTF specular-glossiness becomes the nearest metallic-roughness material, and says so", "[geom]") {
-  TempDir dir;
-  GltfWriter writer(dir, "spec_gloss", Container::Glb);
+namespace {
+
+// A triangle with TEXCOORD_0, in material 0, as the file's one node.
+void add_uv_triangle_of_material_0(GltfWriter& writer) {
   writer.doc()["meshes"] =
       json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", writer.add_vec3(kTriangle)},
                                                                   {"TEXCOORD_0", writer.add_vec2({0, 0, 1, 0, 0, 1})}}},
                                                  {"material", 0}}})}}});
   writer.doc()["nodes"] = json::array({{{"mesh", 0}}});
+}
+
+}  // namespace
+
+TEST_CASE("glTF specular-glossiness becomes the nearest metallic-roughness material, and says so", "[geom]") {
+  TempDir dir;
+  GltfWriter writer(dir, "spec_gloss", Container::Glb);
+  add_uv_triangle_of_material_0(writer);
   // A 2 x 1 RGBA specular-glossiness map: alpha (glossiness) 255 and 51.
   const int image = writer.add_image(encode_png(2, 1, 4, 8, {10, 10, 10, 255, 10, 10, 10, 51}), "sg.png");
   writer.doc()["textures"] = json::array({{{"source", image}}});
@@ -974,11 +983,7 @@ TEST_CASE("glTF specular-glossiness becomes the nearest metallic-roughness mater
 TEST_CASE("glTF clearcoatNormalTexture is said not to be applied", "[geom]") {
   TempDir dir;
   GltfWriter writer(dir, "coat", Container::Glb);
-  writer.doc()["meshes"] =
-      json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", writer.add_vec3(kTriangle)},
-                                                                  {"TEXCOORD_0", writer.add_vec2({0, 0, 1, 0, 0, 1})}}},
-                                                 {"material", 0}}})}}});
-  writer.doc()["nodes"] = json::array({{{"mesh", 0}}});
+  add_uv_triangle_of_material_0(writer);
   const int image = writer.add_image(encode_png(2, 2, 3, 8, kBaseColorPixels), "n.png");
   writer.doc()["textures"] = json::array({{{"source", image}}});
   writer.doc()["materials"] = json::array(

@@ -1,5 +1,6 @@
 #include "io/gltf/gltf_schema.h"
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -91,25 +92,38 @@ const Schema kAnimation{{{"channels", Kind::Children, true, 0, &kNamed, "channel
                          {"samplers", Kind::Children, true, 0, &kNamed, "sampler"},
                          {"name", Kind::String}}};
 const Schema kCamera{{{"type", Kind::String, true}, {"name", Kind::String}}};
+// The top-level arrays of objects, each with how one element is named in messages.
+constexpr Member children(const char* name, const Schema& schema, const char* element) {
+  return {name, Kind::Children, false, 0, &schema, element};
+}
+
 const Schema kRoot{{{"asset", Kind::Child, true, 0, &kAsset},
                     {"extensionsUsed", Kind::Strings},
                     {"extensionsRequired", Kind::Strings},
                     {"scene", Kind::Index},
-                    {"scenes", Kind::Children, false, 0, &kScene, "scene"},
-                    {"nodes", Kind::Children, false, 0, &kNode, "node"},
-                    {"meshes", Kind::Children, false, 0, &kMesh, "mesh"},
-                    {"accessors", Kind::Children, false, 0, &kAccessor, "accessor"},
-                    {"bufferViews", Kind::Children, false, 0, &kBufferView, "bufferView"},
-                    {"buffers", Kind::Children, false, 0, &kBuffer, "buffer"},
-                    {"materials", Kind::Children, false, 0, &kNamed, "material"},
-                    {"textures", Kind::Children, false, 0, &kTexture, "texture"},
-                    {"images", Kind::Children, false, 0, &kImage, "image"},
-                    {"samplers", Kind::Children, false, 0, &kNamed, "sampler"},
-                    {"skins", Kind::Children, false, 0, &kSkin, "skin"},
-                    {"animations", Kind::Children, false, 0, &kAnimation, "animation"},
-                    {"cameras", Kind::Children, false, 0, &kCamera, "camera"}}};
+                    children("scenes", kScene, "scene"), children("nodes", kNode, "node"),
+                    children("meshes", kMesh, "mesh"), children("accessors", kAccessor, "accessor"),
+                    children("bufferViews", kBufferView, "bufferView"), children("buffers", kBuffer, "buffer"),
+                    children("materials", kNamed, "material"), children("textures", kTexture, "texture"),
+                    children("images", kImage, "image"), children("samplers", kNamed, "sampler"),
+                    children("skins", kSkin, "skin"), children("animations", kAnimation, "animation"),
+                    children("cameras", kCamera, "camera")}};
 
 bool is_index(const json& value) { return value.is_number_unsigned() || (value.is_number_integer() && value.get<int64_t>() >= 0); }
+
+// The kinds of one JSON value: what each takes, and how a refusal says it.
+struct ScalarKind {
+  Kind kind;
+  bool (*accepts)(const json&);
+  const char* expected;
+};
+constexpr std::array<ScalarKind, 5> kScalarKinds = {{
+    {Kind::Index, is_index, "a whole number of 0 or more"},
+    {Kind::Integer, [](const json& v) { return v.is_number_integer(); }, "a whole number"},
+    {Kind::Number, [](const json& v) { return v.is_number(); }, "a number"},
+    {Kind::String, [](const json& v) { return v.is_string(); }, "a string"},
+    {Kind::Boolean, [](const json& v) { return v.is_boolean(); }, "true or false"},
+}};
 
 bool all_of(const json& array, bool (*test)(const json&)) {
   for (const json& item : array)
@@ -152,22 +166,12 @@ class SchemaChecker {
   }
 
   void check(const json& value, const Member& member, const std::string& place) const {
+    for (const ScalarKind& scalar : kScalarKinds) {
+      if (scalar.kind != member.kind) continue;
+      if (!scalar.accepts(value)) fail_value(place, value, scalar.expected);
+      return;
+    }
     switch (member.kind) {
-      case Kind::Index:
-        if (!is_index(value)) fail_value(place, value, "a whole number of 0 or more");
-        return;
-      case Kind::Integer:
-        if (!value.is_number_integer()) fail_value(place, value, "a whole number");
-        return;
-      case Kind::Number:
-        if (!value.is_number()) fail_value(place, value, "a number");
-        return;
-      case Kind::String:
-        if (!value.is_string()) fail_value(place, value, "a string");
-        return;
-      case Kind::Boolean:
-        if (!value.is_boolean()) fail_value(place, value, "true or false");
-        return;
       case Kind::Object:
         if (!value.is_object()) fail_value(place, value, "an object");
         extensions(value, place + ".");
@@ -202,6 +206,8 @@ class SchemaChecker {
       case Kind::IndexMaps:
         if (!value.is_array()) fail_value(place, value, "an array of objects");
         for (size_t i = 0; i < value.size(); ++i) index_map(value[i], matbase::concat(place, "[", i, "]"));
+        return;
+      default:  // the scalar kinds, checked above
         return;
     }
   }
