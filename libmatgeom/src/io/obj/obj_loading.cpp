@@ -89,7 +89,8 @@ class MaterialLibraries : public tinyobj::MaterialReader {
       for (const std::string_view listed : split_words(library))
         if (exists(obj_directory_ / listed)) files.push_back(obj_directory_ / listed);
     }
-    if (files.empty() && exists(stem_library()) && !loaded(stem_library())) files.push_back(stem_library());
+    if (files.empty() && loaded(stem_library())) return true;  // the stand-in is read already
+    if (files.empty() && exists(stem_library())) files.push_back(stem_library());
     if (files.empty()) {
       missing_.push_back((obj_directory_ / library).string());
       return false;
