@@ -120,3 +120,13 @@ TEST_CASE("every file of the mesh corpus reads, or is refused, as expected.json 
     }
   }
 }
+
+TEST_CASE("auto_smooth_deg smooths the faces a file gives no normals, up to its angle", "[geom]") {
+  for (const char* file : {"obj/cube_flat_no_normals.obj", "ply/cube_no_normals.ply", "gltf/cube_no_normals.gltf"}) {
+    INFO(file);
+    const std::string path = (kCorpus / file).string();
+    // A cube's faces meet at 90 degrees: sharp at 30, smooth at 100 (Blender's Auto Smooth).
+    CHECK(is_flat(matgeom::read_object(path, {30.0}).mesh));
+    CHECK(is_smooth(matgeom::read_object(path, {100.0}).mesh));
+  }
+}

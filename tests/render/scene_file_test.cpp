@@ -26,6 +26,7 @@ const Refusal kRefusals[] = {
     {"negative_size", R"(/lights/0/size/1: expected a number greater than 0, got -0.2)"},
     {"cell_out_of_range", R"(/camera/grid/cell/0: expected a whole number from 0 to 15, got 16)"},
     {"terminator_offset", R"(/objects/0/shadow_terminator_geometry_offset: expected a number from 0 to 1, got 1.5)"},
+    {"auto_smooth", R"(/objects/0/auto_smooth_deg: expected a number greater than 0 and at most 180, got 0)"},
     {"parameter_range", R"(/materials/glass/ior: expected a number from 1 to 1000, got 0.5)"},
     {"untexturable", R"(/materials/glass/ior: expected a number from 1 to 1000, got a mapping of keys)"},
     {"texture_transform", R"(/materials/oak/base_color/transform/scale: expected \[u, v\].*)"},
