@@ -66,36 +66,36 @@ std::optional<std::string> byte_order_mark(std::string_view bytes) {
   return std::string(mark->name);
 }
 
-std::optional<std::string> decode_marked_text(std::string_view bytes, DecodedText& decoded) {
+std::optional<std::string> decode_marked_text(std::string_view bytes, std::string& text) {
   const Mark* mark = mark_of(bytes);
-  decoded.encoding = mark ? mark->name : "UTF-8";
   if (!mark) {
-    decoded.text = std::string(bytes);
+    text = std::string(bytes);
     return std::nullopt;
   }
   const std::string_view body = bytes.substr(mark->bytes.size());
   if (mark->unit == 1) {
-    decoded.text = std::string(body);
+    text = std::string(body);
     return std::nullopt;
   }
   const auto unit = static_cast<size_t>(mark->unit);
+  const std::string marked = "the text starts with a byte-order mark of " + std::string(mark->name) + ", but ";
   if (body.size() % unit != 0)
-    return std::string(mark->name) + " text whose length (" + std::to_string(bytes.size()) + " bytes) is not a whole number of " +
+    return marked + "its length (" + std::to_string(bytes.size()) + " bytes) is not a whole number of " +
            std::to_string(unit) + "-byte units";
-  decoded.text.clear();
-  decoded.text.reserve(body.size() / unit);
+  text.clear();
+  text.reserve(body.size() / unit);
   for (size_t at = 0; at < body.size(); at += unit) {
     const size_t byte = at + mark->bytes.size();
     uint32_t code_point = code_unit(body, at, *mark);
     if (unit == 2 && code_point >= 0xD800 && code_point < 0xDC00) {
       const uint32_t low = at + 2 < body.size() ? code_unit(body, at + 2, *mark) : 0;
-      if (!(low >= 0xDC00 && low < 0xE000)) return at_byte("an unpaired UTF-16 surrogate", byte);
+      if (!(low >= 0xDC00 && low < 0xE000)) return marked + at_byte("it has an unpaired UTF-16 surrogate", byte);
       code_point = 0x10000 + ((code_point - 0xD800) << 10) + (low - 0xDC00);
       at += 2;
     } else if ((code_point >= 0xD800 && code_point < 0xE000) || code_point > 0x10FFFF) {
-      return at_byte(unit == 2 ? "an unpaired UTF-16 surrogate" : "a UTF-32 unit that is no character", byte);
+      return marked + at_byte(unit == 2 ? "it has an unpaired UTF-16 surrogate" : "it has a UTF-32 unit that is no character", byte);
     }
-    append_utf8(code_point, decoded.text);
+    append_utf8(code_point, text);
   }
   return std::nullopt;
 }

@@ -234,7 +234,8 @@ void complete_missing_normals(TriangleMesh& mesh, const MissingNormals& missing)
     return;
   }
   if (!missing.vertex_missing.empty() && !any_of(missing.vertex_missing, true)) return;
-  const std::vector<glm::vec3> corner_normals = blender_corner_normals(mesh, missing);
+  validate_mesh(mesh, "complete_missing_normals");
+  const std::vector<glm::vec3> corner_normals = CornerNormals(mesh, missing).compute();
   const size_t original_count = mesh.vertex_count();
   mesh.normals.resize(original_count, glm::vec3(0.0f));
   // The copies made of each vertex so far, by normal; the vertex itself takes its first corner's.

@@ -3,6 +3,7 @@
 // whose message holds given words).
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -15,6 +16,8 @@
 #include "matgeom/io/mesh_io.h"
 #include "matbase/text_encoding.h"
 #include "matgeom/mesh.h"
+#include "support/temp_dir.h"
+#include "support/test_files.h"
 
 namespace {
 
@@ -22,6 +25,49 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 const fs::path kCorpus = MATPREDICT_MESH_CORPUS;
+
+// A little-endian 32-bit number's bytes.
+std::string le32(uint32_t value) {
+  std::string bytes;
+  for (int k = 0; k < 4; ++k) bytes.push_back(static_cast<char>((value >> (8 * k)) & 0xFF));
+  return bytes;
+}
+
+// The bytes a "made" recipe of expected.json gives, from the corpus's text files.
+std::string made_bytes(const json& recipe) {
+  const auto text_of = [](const json& file) {
+    const std::string text = read_bytes((kCorpus / file.get<std::string>()).string());
+    REQUIRE(std::all_of(text.begin(), text.end(), [](char c) { return static_cast<unsigned char>(c) < 0x80; }));
+    return text;
+  };
+  if (recipe.contains("utf16_of")) {
+    std::string utf16 = "\xFF\xFE";  // little-endian, as Windows writes it
+    for (const char c : text_of(recipe["utf16_of"])) utf16 += std::string{c, '\0'};
+    return utf16;
+  }
+  if (recipe.contains("utf8_bom_of")) return "\xEF\xBB\xBF" + text_of(recipe["utf8_bom_of"]);
+  if (recipe.contains("glb_version_1_of")) {
+    // KHR_binary_glTF: magic, version 1, total length, content length, content format 0 (JSON).
+    const std::string content = text_of(recipe["glb_version_1_of"]);
+    const auto length = static_cast<uint32_t>(content.size());
+    return "glTF" + le32(1) + le32(20 + length) + le32(length) + le32(0) + content;
+  }
+  const std::vector<uint8_t> rgb = recipe.at("png_rgb").get<std::vector<uint8_t>>();
+  std::vector<uint8_t> pixels;
+  for (int texel = 0; texel < 16; ++texel) pixels.insert(pixels.end(), rgb.begin(), rgb.end());
+  const std::vector<uint8_t> png = encode_png(4, 4, 3, pixels);
+  return std::string(png.begin(), png.end());
+}
+
+// The corpus in `folder`: its files copied, and those of the "made" recipes written.
+void make_corpus(const json& manifest, const fs::path& folder) {
+  fs::copy(kCorpus, folder, fs::copy_options::recursive);
+  for (const json& recipe : manifest.at("made")) {
+    const fs::path file = folder / recipe.at("file").get<std::string>();
+    fs::create_directories(file.parent_path());
+    write_bytes(file.string(), made_bytes(recipe));
+  }
+}
 
 glm::vec3 face_normal(const matgeom::TriangleMesh& mesh, size_t t) {
   const glm::uvec3& tri = mesh.triangles[t];
@@ -111,8 +157,11 @@ TEST_CASE("every file of the mesh corpus reads, or is refused, as expected.json 
   const json manifest = json::parse(in);
   const json& files = manifest.at("files");
   REQUIRE(!files.empty());
+  TempDir made;
+  const fs::path corpus = made.path() / "mesh_corpus";
+  make_corpus(manifest, corpus);
   for (const json& entry : files) {
-    const fs::path path = kCorpus / entry.at("file").get<std::string>();
+    const fs::path path = corpus / entry.at("file").get<std::string>();
     SECTION(entry.at("file").get<std::string>()) {
       REQUIRE(fs::is_regular_file(path));
       if (entry.contains("reads")) check_reads(path, entry["reads"]);

@@ -11,13 +11,10 @@ namespace matbase {
 
 // The text of a file as UTF-8, told by its byte-order mark: a UTF-8 mark is dropped, UTF-16 and
 // UTF-32 (little- or big-endian) are converted; text without a mark is returned as it is.
-// Returns the problem instead ("UTF-16 (little-endian) text with an odd number of bytes", "an
-// unpaired UTF-16 surrogate at byte 12") when the marked encoding does not hold.
-struct DecodedText {
-  std::string text;
-  const char* encoding = "UTF-8";  // what the mark said, for messages
-};
-std::optional<std::string> decode_marked_text(std::string_view bytes, DecodedText& decoded);
+// Returns the problem instead, a sentence a reader's message takes as it is ("the text starts with
+// a byte-order mark of UTF-16 (little-endian), but it has an unpaired UTF-16 surrogate at byte 12"),
+// when the marked encoding does not hold.
+std::optional<std::string> decode_marked_text(std::string_view bytes, std::string& text);
 
 // The name of the byte-order mark `bytes` starts with ("UTF-16 (little-endian)"), if any.
 std::optional<std::string> byte_order_mark(std::string_view bytes);

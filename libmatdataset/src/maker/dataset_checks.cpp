@@ -100,17 +100,19 @@ std::vector<std::string> check_before_writing(const DatasetConfig& config) {
   for (size_t o = 0; o < config.objects.size(); ++o) {
     const ObjectConfig& object = config.objects[o];
     matgeom::ObjectAsset asset;
+    const auto* mesh_file = std::get_if<matrender::MeshFile>(&object.source);
     try {
-      if (const auto* builtin = std::get_if<matrender::BuiltinObject>(&object.source))
-        asset = matgeom::make_builtin_object(builtin->name, builtin->seed);
-      else
-        asset = matgeom::read_object(std::get<matrender::MeshFile>(object.source).path,
-                                     std::get<matrender::MeshFile>(object.source).read_options);
+      if (mesh_file) {
+        asset = matgeom::read_object(mesh_file->path, mesh_file->read_options);
+      } else {
+        const auto& builtin = std::get<matrender::BuiltinObject>(object.source);
+        asset = matgeom::make_builtin_object(builtin.name, builtin.seed);
+      }
     } catch (const std::exception& e) {
       throw matbase::InputError(config.source + ": " + object_key(o) + ": " + e.what());
     }
-    for (const std::string& note : asset.notes)
-      notes.push_back(std::get<matrender::MeshFile>(object.source).path + ": " + note);
+    if (mesh_file)
+      for (const std::string& note : asset.notes) matgeom::add_note(notes, mesh_file->path + ": " + note);
     // Every candidate is a textured material, and without UVs a texture shows one texel.
     if (object.uv_pass == matrender::UvPassMode::Never && asset.mesh.uvs.empty())
       throw matbase::InputError(config.source + ": " + object_key(o) +

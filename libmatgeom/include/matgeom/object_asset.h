@@ -2,7 +2,9 @@
 // An object ready to render: its mesh (one part per material slot), the slots' Principled
 // materials and the 8-bit images they reference. Produced by the mesh readers and the built-in
 // objects; libmatrender turns it into scene materials (matrender/asset.h).
+#include <algorithm>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "matbase/image/image_pixels.h"
@@ -20,5 +22,10 @@ struct ObjectAsset {
   // Tools show them once per file.
   std::vector<std::string> notes;
 };
+
+// Adds `note` to `notes` unless it is there already: each note is said once.
+inline void add_note(std::vector<std::string>& notes, std::string note) {
+  if (std::find(notes.begin(), notes.end(), note) == notes.end()) notes.push_back(std::move(note));
+}
 
 }  // namespace matgeom

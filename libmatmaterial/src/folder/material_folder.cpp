@@ -196,10 +196,9 @@ Metadata read_metadata(const fs::path& file) {
   std::string bytes;
   if (const std::optional<std::string> problem = matbase::read_whole_file(file, bytes)) matbase::fail(file.string(), *problem);
   // Saved as UTF-16 by a Windows editor, it is read as the same text in UTF-8.
-  matbase::DecodedText text;
-  if (const std::optional<std::string> problem = matbase::decode_marked_text(bytes, text))
-    matbase::fail(file.string(), "the text starts with a byte-order mark of " + std::string(text.encoding) + ", but it is " + *problem);
-  std::istringstream in(text.text);
+  std::string text;
+  if (const std::optional<std::string> problem = matbase::decode_marked_text(bytes, text)) matbase::fail(file.string(), *problem);
+  std::istringstream in(text);
   const matbase::DocumentValue document = matbase::parse_json_document(in, file.string());
   const matbase::DocumentSource source(file.string(), matbase::PathStyle::JsonPointer);
   const matbase::DocumentNode root(document, source);

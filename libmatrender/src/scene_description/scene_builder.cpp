@@ -199,10 +199,7 @@ BuiltScene build_scene(const SceneDescription& description, const std::atomic<bo
   built.materials.cancel_on(cancel);
   for (size_t k = 0; k < assets.size(); ++k) {
     if (const auto* file = std::get_if<MeshFile>(&description.objects[k].source))
-      for (const std::string& note : assets[k].notes) {
-        const std::string said = file->path + ": " + note;
-        if (std::find(built.notes.begin(), built.notes.end(), said) == built.notes.end()) built.notes.push_back(said);
-      }
+      for (const std::string& note : assets[k].notes) matgeom::add_note(built.notes, file->path + ": " + note);
     add_object(built.scene, description.objects[k], assets[k], built.materials);
     built.object_meshes.push_back(static_cast<uint32_t>(built.scene.mesh_count() - 1));
     built.object_surfaces.push_back(std::move(assets[k].mesh));

@@ -13,6 +13,7 @@
 #include "io/gltf/extensions.h"
 #include "matbase/file/file_error.h"
 #include "matbase/image/unorm.h"
+#include "matgeom/object_asset.h"
 #include "matmaterial/material_parameters.h"
 
 // Each material is converted once, when a primitive first uses it; the images it references are
@@ -95,7 +96,7 @@ struct GltfMaterials::Conversion {
   std::string uv_set_texture;  // the first texture that named it, for messages
 
   void note(const std::string& sentence) {
-    if (std::find(notes.begin(), notes.end(), sentence) == notes.end()) notes.push_back(sentence);
+    add_note(notes, sentence);
   }
 
   void use_uv_set(const GltfFile& file, int set, const std::string& texture) {

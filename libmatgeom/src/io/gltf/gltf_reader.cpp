@@ -536,7 +536,7 @@ PrimitivePiece read_primitive(const GltfFile& file, const tinygltf::Primitive& p
   const std::string uv_semantic = "TEXCOORD_" + std::to_string(uv_set == kNoUvSet ? 0 : uv_set);
   const int uv_accessor = find_attribute(primitive, uv_semantic.c_str());
   if (uv_accessor < 0 && uv_set != kNoUvSet)
-    notes.push_back(matbase::concat(what, " has no ", uv_semantic, ", which material ", primitive.material,
+    add_note(notes, matbase::concat(what, " has no ", uv_semantic, ", which material ", primitive.material,
                                     "'s textures sample: they show one texel there"));
   if (uv_accessor >= 0) {
     const AccessorValues uvs =
@@ -725,7 +725,7 @@ TriangleMesh merge_pieces(const GltfFile& file, std::vector<PrimitivePiece>& pie
 void note_unread_extensions(const GltfFile& file, std::vector<std::string>& notes) {
   for (const std::string& extension : file.model.extensionsUsed) {
     if (std::find(gltf::kReadExtensions.begin(), gltf::kReadExtensions.end(), extension) != gltf::kReadExtensions.end()) continue;
-    notes.push_back("the glTF extension " + matbase::excerpt(extension) + " is not applied");
+    add_note(notes, "the glTF extension " + matbase::excerpt(extension) + " is not applied");
   }
 }
 
@@ -751,7 +751,7 @@ ObjectAsset read_gltf(const std::string& path, const GltfReadOptions& options) {
     asset.mesh.part_names[part] = asset.materials[part].name;
   }
   asset.images = materials.take_images();
-  for (std::string& note : materials.take_notes()) notes.push_back(std::move(note));
+  for (std::string& note : materials.take_notes()) add_note(notes, std::move(note));
   asset.notes = std::move(notes);
   return asset;
 }

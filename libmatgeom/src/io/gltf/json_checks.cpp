@@ -199,8 +199,8 @@ json parsed_json(const std::string& path, std::string_view text) {
 }
 
 // asset.version (and minVersion) as "<major>.<minor>": glTF 1.0 files, which tinygltf reads as a
-// glTF without meshes, are refused as what they are. A file without "asset" is refused by the
-// schema check, whose message says glTF 2.0 requires it.
+// glTF without meshes, are refused as what they are, those without an "asset" (the earliest
+// exporters wrote none) too.
 void check_version(const std::string& path, const json& doc) {
   const auto asset = doc.find("asset");
   if (asset == doc.end() || !asset->is_object()) {

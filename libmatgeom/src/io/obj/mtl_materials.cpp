@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 
 #include <glm/glm.hpp>
@@ -199,9 +200,9 @@ class MaterialConverter {
     set_luminance_texture(material.sheen_texname, material.sheen_texopt, index, what + " map_Ps",
                           matmaterial::MaterialParameter::Sheen, desc);
     // Nor does Blender 3.4 apply these.
-    if (!material.ambient_texname.empty()) notes_.push_back(what + ": map_Ka is not applied (nor by Blender)");
+    if (!material.ambient_texname.empty()) add_note(notes_, what + ": map_Ka is not applied (nor by Blender)");
     if (!material.displacement_texname.empty())
-      notes_.push_back(what + ": disp (displacement) is not applied (nor by Blender's importer)");
+      add_note(notes_, what + ": disp (displacement) is not applied (nor by Blender's importer)");
   }
 
   void set_luminance_texture(const std::string& name, const tinyobj::texture_option_t& options, size_t index,
@@ -220,19 +221,17 @@ class MaterialConverter {
     const std::string& metallic_name = pm ? material.metallic_texname : material.reflection_texname;
     const tinyobj::texture_option_t& roughness_options = pr ? material.roughness_texopt : material.specular_highlight_texopt;
     const tinyobj::texture_option_t& metallic_options = pm ? material.metallic_texopt : material.reflection_texopt;
-    const bool has_roughness = !roughness_name.empty();
-    const bool has_metallic = !metallic_name.empty();
-    if (!has_roughness && !has_metallic) return;
-    const TextureSource roughness = source(roughness_name, index, what + (pr ? " map_Pr" : " map_Ns"));
-    const TextureSource metallic = source(metallic_name, index, what + (pm ? " map_Pm" : " refl"));
-    const int packed = textures_.metallic_roughness_texture(has_roughness ? &roughness : nullptr,
-                                                            has_metallic ? &metallic : nullptr);
+    if (roughness_name.empty() && metallic_name.empty()) return;
+    std::optional<TextureSource> roughness, metallic;
+    if (!roughness_name.empty()) roughness = source(roughness_name, index, what + (pr ? " map_Pr" : " map_Ns"));
+    if (!metallic_name.empty()) metallic = source(metallic_name, index, what + (pm ? " map_Pm" : " refl"));
+    const int packed = textures_.metallic_roughness_texture(roughness ? &*roughness : nullptr, metallic ? &*metallic : nullptr);
     // One image, each map still placed by its own -o and -s.
     const auto link = [&](matmaterial::MaterialParameter p, const tinyobj::texture_option_t& options, const TextureSource& map) {
       desc.set(p, 1.0).set_image(p, packed, matmaterial::material_parameter(p).packed_channel, placement(options, map));
     };
-    if (has_roughness) link(matmaterial::MaterialParameter::Roughness, roughness_options, roughness);
-    if (has_metallic) link(matmaterial::MaterialParameter::Metallic, metallic_options, metallic);
+    if (roughness) link(matmaterial::MaterialParameter::Roughness, roughness_options, *roughness);
+    if (metallic) link(matmaterial::MaterialParameter::Metallic, metallic_options, *metallic);
   }
 
   // Blender connects map_Bump (or bump) through a Normal Map node: it is a tangent-space normal
@@ -272,7 +271,6 @@ class MaterialConverter {
   // render a black placeholder), naming the places looked at.
   TextureSource source(const std::string& name, size_t index, const std::string& what) const {
     const fs::path library(file_.material_libraries[index]);
-    if (name.empty()) return {name, {}, what};  // a map the material does not have
     const TexturePathSearch search = find_texture_file(library.parent_path(), name);
     if (!search.found) {
       std::string tried;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "matbase/file/file_error.h"
+#include "matgeom/object_asset.h"
 #include "matmaterial/material_parameters.h"
 #include "io/obj/material_names.h"
 #include "io/obj/statement_text.h"
@@ -297,7 +298,7 @@ std::string screened_mtl_text(const std::string& obj_path, const std::string& mt
       // Blender uses the first definition of a name, as tinyobjloader's material map keeps it.
       const auto [first, inserted] = material_lines.emplace(std::string(name), line_number);
       if (!inserted)
-        notes.push_back(matbase::concat(mtl_path, ": line ", line_number, ": material ", matbase::excerpt(name),
+        add_note(notes, matbase::concat(mtl_path, ": line ", line_number, ": material ", matbase::excerpt(name),
                                         " is defined again (first on line ", first->second, "); the first definition is used, as Blender uses it"));
       screened.append(line);
     } else {

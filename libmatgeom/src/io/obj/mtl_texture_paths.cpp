@@ -1,6 +1,8 @@
 #include "io/obj/mtl_texture_paths.h"
 
 #include <algorithm>
+
+#include "matbase/file/input_file.h"
 #include <system_error>
 
 namespace matgeom::obj {
@@ -8,10 +10,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool is_file(const fs::path& path) {
-  std::error_code error;
-  return fs::is_regular_file(path, error);
-}
+bool is_file(const fs::path& path) { return !matbase::input_file_problem(path.string()); }
 
 // The first file named `name` under `folder`, searched breadth first in sorted order, `depth`
 // levels of subfolders deep; unreadable folders are passed over.

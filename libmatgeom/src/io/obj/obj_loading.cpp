@@ -6,7 +6,6 @@
 #include <map>
 #include <sstream>
 #include <string_view>
-#include <system_error>
 #include <utility>
 #include <vector>
 
@@ -31,10 +30,9 @@ namespace {
 // OBJ and MTL text saved as UTF-16 or UTF-32 (Windows' "Unicode"), or with a UTF-8 byte-order
 // mark, read as UTF-8 (Blender 3.4 reads UTF-16 as garbage and says nothing).
 std::string marked_text_as_utf8(const std::string& where, const std::string& bytes) {
-  matbase::DecodedText decoded;
-  if (const std::optional<std::string> problem = matbase::decode_marked_text(bytes, decoded))
-    matbase::fail(where, "the text starts with a byte-order mark of " + std::string(decoded.encoding) + ", but it is " + *problem);
-  return decoded.text;
+  std::string text;
+  if (const std::optional<std::string> problem = matbase::decode_marked_text(bytes, text)) matbase::fail(where, *problem);
+  return text;
 }
 
 // What a "usemtl" naming no material it can use is missing, for its error message.
@@ -107,10 +105,7 @@ class MaterialLibraries : public tinyobj::MaterialReader {
   const std::vector<std::string>& notes() const { return notes_; }
 
  private:
-  static bool exists(const fs::path& file) {
-    std::error_code error;
-    return fs::is_regular_file(file, error);
-  }
+  static bool exists(const fs::path& file) { return !matbase::input_file_problem(file.string()); }
   bool loaded(const fs::path& file) const {
     return std::find(loaded_.begin(), loaded_.end(), file) != loaded_.end();
   }
@@ -151,8 +146,7 @@ ObjFile load_obj(const std::string& path) {
   MaterialLibraries libraries(path);
   std::string prepared = tinyobj_text(text);
   // Blender reads the .mtl of the OBJ's stem for an OBJ that names no library.
-  std::error_code error;
-  if (!names_material_library(text) && fs::is_regular_file(libraries.stem_library(), error))
+  if (!names_material_library(text) && !matbase::input_file_problem(libraries.stem_library().string()))
     prepared = "mtllib " + name_word(libraries.stem_library().filename().string()) + "\n" + prepared;
   std::istringstream stream(prepared);
   std::string errors;
