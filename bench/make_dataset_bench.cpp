@@ -205,7 +205,8 @@ shaders_ref::CyclesScene cycles_scene(const matdataset::ObjectRenderer& renderer
   if (!background) throw std::runtime_error("--cycles: the scene's environment map is not passed to Blender");
   scene.background = *background;
   scene.camera = renderer.view_camera(view);
-  scene.bounces = {r.max_bounces, r.max_diffuse_bounces, r.max_glossy_bounces, r.max_transmission_bounces};
+  scene.bounces = {r.settings.max_bounces, r.settings.max_diffuse_bounces, r.settings.max_glossy_bounces,
+                   r.settings.max_transmission_bounces};
   scene.settings = shaders_ref::CyclesSettings::BlenderDefaults;
   return scene;
 }
@@ -355,8 +356,10 @@ std::string ratio_text(const std::optional<Reach>& cycles, const std::optional<R
 
 // Whether two configurations sample a frame alike: the point that renders as the configuration does.
 bool same_sampling(const matdataset::RenderConfig& a, const matdataset::RenderConfig& b) {
-  return a.samples == b.samples && a.noise_threshold == b.noise_threshold && a.min_samples == b.min_samples &&
-         a.denoise == b.denoise;
+  const matrender::RenderSettings& s = a.settings;
+  const matrender::RenderSettings& t = b.settings;
+  return s.samples_per_pixel == t.samples_per_pixel && s.noise_threshold == t.noise_threshold &&
+         s.min_samples == t.min_samples && s.denoise == t.denoise;
 }
 
 // A way of rendering over its points, on each referenced frame: render seconds against image
@@ -561,10 +564,10 @@ int main(int argc, char** argv) {
     // The reference: the configuration's fixed samples times reference_factor, and its AO error
     // bound over sqrt(reference_factor).
     std::vector<matdataset::Override> reference_overrides = sets;
-    const int reference_samples = config.render.samples * reference_factor;
+    const int reference_samples = config.render.settings.samples_per_pixel * reference_factor;
     reference_overrides.push_back({"render.samples", std::to_string(reference_samples), "--reference-factor"});
     reference_overrides.push_back({"render.ambient_occlusion.error",
-                                   fmt::format("{}", config.render.ambient_occlusion_error /
+                                   fmt::format("{}", config.render.settings.ambient_occlusion_error /
                                                          std::sqrt(static_cast<double>(reference_factor))),
                                    "--reference-factor"});
     const matdataset::DatasetConfig reference = matdataset::load_config(config_file, reference_overrides);
@@ -572,7 +575,7 @@ int main(int argc, char** argv) {
       throw std::runtime_error("--cycles: " + cycles.blender + " --version does not report Blender 3.4");
     const int workers = matbase::worker_threads(threads);
     fmt::print("{}: {} frames of {}x{} at {} spp, AO error bound {}; {} threads; modes:", config_file, plan.frames.size(),
-               config.render.width, config.render.height, config.render.samples, config.render.ambient_occlusion_error,
+               config.render.width, config.render.height, config.render.settings.samples_per_pixel, config.render.settings.ambient_occlusion_error,
                workers);
     for (const std::string& text : mode_texts) fmt::print(" {}", text);
     if (cycles.enabled)

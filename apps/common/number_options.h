@@ -10,12 +10,13 @@
 #include <CLI/CLI.hpp>
 
 #include "matbase/number_text.h"
+#include "matbase/threads.h"
 
 namespace app_support {
 
 // Limits the tools share. More threads than a machine has are capped to it anyway; a batch of
 // more samples than this is no training setting but a typo (4096 at 224 px is 2.3 GiB of input).
-constexpr int kMaxThreadRequest = 65536;
+using matbase::kMaxThreadRequest;
 constexpr int kMaxBatchSize = 4096;
 
 // CLI11 validators of matbase/number_text.h's checks; their description, shown in --help, is

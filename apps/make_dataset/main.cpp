@@ -181,7 +181,7 @@ int make(const Options& options) {
   for (const auto& object : plan.variants) variants += object.size();
   fmt::print("make_dataset: {} objects, {} variants, {} views each: {} frames of {}x{} at {} spp{} into {}\n",
              config.objects.size(), variants, plan.views, matbase::with_thousands(static_cast<int64_t>(plan.frames.size())),
-             config.render.width, config.render.height, config.render.samples,
+             config.render.width, config.render.height, config.render.settings.samples_per_pixel,
              shard->count > 1 ? fmt::format(" (shard {}/{})", shard->index, shard->count) : "", config.output);
   std::fflush(stdout);
 

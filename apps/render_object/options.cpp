@@ -263,36 +263,49 @@ void add_camera_options(CLI::App& app, Options& o) {
   look_at->needs(position);
 }
 
+// How render_object spells a declared setting: --NAME with hyphens, or an older spelling kept.
+std::string option_spelling(const matrender::RenderSettingDeclaration& setting) {
+  if (setting.name == "transparent_background") return "--transparent";
+  std::string option = "--" + std::string(setting.name);
+  std::replace(option.begin(), option.end(), '_', '-');
+  return option;
+}
+
+// One option per declared setting of `scope`: a switch is a flag that turns it from its default
+// (--no-NAME where it is on), any other setting takes a value its declaration checks.
+void add_setting_options(CLI::App& app, Options& o, matrender::SettingScope scope, const std::string& group) {
+  for (const matrender::RenderSettingDeclaration& setting : matrender::render_setting_declarations()) {
+    if (setting.scope != scope || setting.name == "threads") continue;
+    const std::string documentation(setting.documentation);
+    if (setting.form == matrender::SettingForm::Switch) {
+      const bool on_by_default = matrender::default_text(setting) == "true";
+      const std::string option = on_by_default ? "--no-" + option_spelling(setting).substr(2) : option_spelling(setting);
+      app.add_flag_callback(
+             option, [&o, &setting, option, on_by_default] {
+               o.render_settings.push_back({&setting, option, on_by_default ? "false" : "true"});
+             },
+             on_by_default ? "turn off (on by default): " + documentation : documentation)
+          ->group(group);
+      continue;
+    }
+    const std::string option = option_spelling(setting);
+    app.add_option_function<std::string>(
+           option,
+           [&o, &setting, option](const std::string& text) {
+             matrender::RenderSettings checked;
+             if (const std::optional<std::string> problem = matrender::assign_text(checked, setting, text))
+               throw CLI::ValidationError(option, *problem);
+             o.render_settings.push_back({&setting, option, text});
+           },
+           documentation + " (" + matrender::expectation(setting) + ")")
+        ->default_str(matrender::default_text(setting))
+        ->group(group);
+  }
+}
+
 void add_render_options(CLI::App& app, Options& o) {
   const std::string group = "Render (override the scene file's render block)";
-  const matrender::RenderSettings settings;
-  app.add_option_function<int>(
-         "--spp", [&o](const int& spp) { o.spp = spp; }, "samples per pixel")
-      ->check(app_support::whole_number_in(1, std::numeric_limits<int>::max()))
-      ->default_str(std::to_string(settings.samples_per_pixel))
-      ->group(group);
-  app.add_option_function<double>(
-         "--noise-threshold",
-         [&o](const double& threshold) {
-           require(threshold >= 0.0 && threshold <= 1.0, "--noise-threshold", "a number in [0, 1] (0: off)");
-           o.noise_threshold = threshold;
-         },
-         "adaptive sampling as Cycles' Noise Threshold: a pixel stops once its relative error estimate is "
-         "below this (0.01 is Blender's default); --spp is then the most a pixel takes. 0 = off")
-      ->default_str("0")
-      ->group(group);
-  app.add_option_function<int>(
-         "--min-samples", [&o](const int& samples) { o.min_samples = samples; },
-         "with --noise-threshold: samples every pixel takes before its first check (0 = Cycles' automatic "
-         "max(4, ceil(16 / threshold^0.3)))")
-      ->check(app_support::whole_number_in(0, std::numeric_limits<int>::max()))
-      ->default_str("0")
-      ->group(group);
-  app.add_option_function<uint32_t>(
-         "--seed", [&o](const uint32_t& seed) { o.seed = seed; }, "sampler seed; the image depends only on it")
-      ->check(app_support::whole_number_in(0, std::numeric_limits<uint32_t>::max()))
-      ->default_str(std::to_string(settings.seed))
-      ->group(group);
+  add_setting_options(app, o, matrender::SettingScope::Scene, group);
   app.add_option_function<double>(
          "--exposure",
          [&o](const double& stops) {
@@ -318,38 +331,21 @@ void add_render_options(CLI::App& app, Options& o) {
                "(about 1e5-1e6 lx at the object)")
       ->excludes("--illuminance")
       ->group(group);
-  app.add_flag("--transparent", o.transparent, "background pixels get alpha 0 and colour 0")->group(group);
-  app.add_option_function<std::string>(
-         "--light-selection",
-         [&o](const std::string& how) {
-           o.light_selection = how == "uniform" ? matrender::LightSelection::Uniform : matrender::LightSelection::Importance;
-         },
-         "how each shading point picks the light it samples: importance (by a bound on the irradiance each "
-         "can give it) or uniform (each equally, as Cycles 3.4); only the noise differs")
-      ->check(CLI::IsMember({"importance", "uniform"}))
-      ->default_str("importance")
-      ->group(group);
-  app.add_flag("--no-mipmaps", o.no_mipmaps,
-               "look textures up bilinearly at the hit point only, as Cycles 3.4 on the CPU, instead of "
-               "filtering them over each camera ray's footprint")
-      ->group(group);
-  app.add_flag("--denoise", o.denoise,
-               "filter the colour after rendering (an edge-avoiding a-trous wavelet guided by the base colour, "
-               "normal, depth, label and the colour's variance; docs/conventions.md, \"Denoising\")")
-      ->group(group);
-  app.add_flag("--cycles-parity", o.cycles_parity,
-               "reproduce Blender 3.4 Cycles' own estimators where they are biased (clearcoat: lamp "
-               "reflections up to 1.76x too bright; the multiscatter GGX walk), for parity with images made in Blender")
-      ->group(group);
 }
 
 void add_run_options(CLI::App& app, Options& o) {
   const std::string group = "Run";
-  app.add_option_function<int>(
-         "--threads", [&o](const int& threads) { o.threads = threads; },
-         "render threads, 0 = all hardware threads, more are capped to them (the image does not depend on it)")
-      ->check(app_support::whole_number_in(0, app_support::kMaxThreadRequest))
-      ->default_str("0")
+  const matrender::RenderSettingDeclaration& threads = matrender::render_setting("threads");
+  app.add_option_function<std::string>(
+         "--threads",
+         [&o, &threads](const std::string& text) {
+           matrender::RenderSettings checked;
+           if (const std::optional<std::string> problem = matrender::assign_text(checked, threads, text))
+             throw CLI::ValidationError("--threads", *problem);
+           o.threads = checked.threads;
+         },
+         std::string(threads.documentation) + " (" + matrender::expectation(threads) + ")")
+      ->default_str(matrender::default_text(threads))
       ->group(group);
   app.add_option("--texture-memory", o.texture_memory_mib,
                  "most memory the textures' texels may take, in MiB; past it the least recently used mip "
@@ -411,17 +407,18 @@ SceneDescription chosen_scene(const Options& options) {
 
 void apply_render_options(const Options& o, SceneDescription& scene) {
   matrender::RenderSettings& s = scene.settings;
-  if (o.spp) s.samples_per_pixel = *o.spp;
-  if (o.noise_threshold) s.noise_threshold = *o.noise_threshold;
-  if (o.min_samples) s.min_samples = *o.min_samples;
-  if (o.seed) s.seed = *o.seed;
-  if (o.transparent) s.transparent_background = true;
-  if (o.cycles_parity) s.cycles_parity = true;
-  if (o.denoise) s.denoise = true;
-  if (s.denoise && s.cycles_parity)
-    throw matbase::InputError("--denoise and --cycles-parity exclude each other: Blender 3.4 in Debian has no denoiser");
-  if (o.light_selection) s.light_selection = *o.light_selection;
-  if (o.no_mipmaps) s.mipmaps = false;
+  for (const Options::SettingOption& given : o.render_settings)
+    if (const std::optional<std::string> problem = matrender::assign_text(s, *given.setting, given.value))
+      throw InputError(given.option + ": " + *problem);
+  if (const std::optional<matrender::SettingConflict> conflict = matrender::settings_conflict(s)) {
+    // Named by the options that gave them, or by the scene file's keys.
+    auto spelled = [&o](std::string_view name) {
+      for (const Options::SettingOption& given : o.render_settings)
+        if (given.setting->name == name) return given.option;
+      return "the scene file's " + std::string(name);
+    };
+    throw InputError(matrender::conflict_refusal(*conflict, spelled(conflict->first), spelled(conflict->second)));
+  }
   if (o.exposure) scene.exposure_stops = *o.exposure;
   s.threads = app_support::announced_worker_threads("render_object", "--threads", o.threads);
   s.aovs = o.aovs;

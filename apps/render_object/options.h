@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -33,12 +34,16 @@ struct Options {
   std::optional<double> environment_strength;
   std::optional<double> environment_rotation_deg;
 
+  // A render setting given on the command line (matrender/render_setting_declarations.h): checked
+  // against its declaration when read, applied over the scene file's in the order given.
+  struct SettingOption {
+    const matrender::RenderSettingDeclaration* setting;
+    std::string option;  // as typed: "--spp"
+    std::string value;   // as assign_text reads it
+  };
+  std::vector<SettingOption> render_settings;
+
   // Each set value overrides the scene's (the scene file's camera and render block).
-  std::optional<int> spp;
-  std::optional<double> noise_threshold;
-  bool denoise = false;
-  std::optional<int> min_samples;
-  std::optional<uint32_t> seed;
   std::optional<int> width;
   std::optional<int> height;
   std::optional<std::array<int, 2>> cell;
@@ -50,10 +55,6 @@ struct Options {
   std::optional<double> exposure;
   std::optional<double> illuminance_lux;
   bool paper_powers = false;
-  bool transparent = false;
-  bool cycles_parity = false;
-  bool no_mipmaps = false;
-  std::optional<matrender::LightSelection> light_selection;
 
   // The run itself.
   int threads = 0;  // 0 = all hardware threads

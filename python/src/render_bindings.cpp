@@ -105,17 +105,22 @@ uint32_t aov_mask(const std::optional<std::variant<std::string, std::vector<std:
   return mask;
 }
 
-py::dict render(LoadedScene& scene, const py::object& camera_choice, std::optional<int> spp, std::optional<uint32_t> seed, int threads,
-                const std::optional<std::variant<std::string, std::vector<std::string>>>& aovs, const py::object& progress) {
+// Sets the declared setting `name` to an argument, refused in the declaration's words.
+void assign_argument(matrender::RenderSettings& settings, std::string_view name, int64_t value) {
+  const matrender::RenderSettingDeclaration& setting = matrender::render_setting(name);
+  if (const std::optional<std::string> problem = matrender::number_problem(setting, static_cast<double>(value)))
+    throw py::value_error(std::string(name) + ": " + *problem);
+  matrender::assign_number(settings, setting, static_cast<double>(value));
+}
+
+py::dict render(LoadedScene& scene, const py::object& camera_choice, std::optional<int64_t> spp, std::optional<int64_t> seed,
+                int64_t threads, const std::optional<std::variant<std::string, std::vector<std::string>>>& aovs,
+                const py::object& progress) {
   const matrender::Camera camera = chosen_camera(scene, camera_choice);
   matrender::RenderSettings settings = scene.description.settings;
-  if (spp) {
-    if (*spp < 1) throw py::value_error("spp: expected a whole number of at least 1, got " + std::to_string(*spp));
-    settings.samples_per_pixel = *spp;
-  }
-  if (seed) settings.seed = *seed;
-  if (threads < 0) throw py::value_error("threads: expected 0 (all) or more, got " + std::to_string(threads));
-  settings.threads = threads;
+  if (spp) assign_argument(settings, "spp", *spp);
+  if (seed) assign_argument(settings, "seed", *seed);
+  assign_argument(settings, "threads", threads);
   settings.aovs = aov_mask(aovs, settings.aovs);
   if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
     throw py::type_error("progress: expected None or a callable taking the finished fraction");

@@ -130,7 +130,7 @@ TEST_CASE("Ambient occlusion to an error bound stays within it at a fraction of 
   for (const double h : {0.0, 0.3, std::sqrt(0.5), 0.95}) {
     const double expected = h > 0.0 ? h * h : 1.0;
     RenderStats stats;
-    const FrameBuffers frame = render_floor(h, 1.0, kSpp, 0, AovAmbientOcclusion | AovAlpha, kError, &stats);
+    const FrameBuffers frame = render_floor(h, 1.0, kSpp, 1, AovAmbientOcclusion | AovAlpha, kError, &stats);
     const std::vector<float> truth(frame.ambient_occlusion.size(), static_cast<float>(expected));
     const double rms = rms_difference(frame.ambient_occlusion, truth, frame.alpha);
     // Rays per pixel: the occlusion rays beside the camera samples' own (at most 2 each here: a
@@ -176,14 +176,16 @@ TEST_CASE("Ambient occlusion to an error bound agrees with a high-ray reference 
 }
 
 TEST_CASE("Ambient occlusion without rays or with a distance of 0 is refused", "[render]") {
+  // In the words of the settings' declarations (matrender/render_setting_declarations.h).
   CHECK_THROWS_WITH(render_floor(0.5, 1.0, 1, 0, AovAmbientOcclusion),
-                    "render: ambient occlusion needs at least 1 ray per sample and a distance in (0, 65536] m");
+                    "render: ambient_occlusion_rays: expected a whole number from 1 to 1,024, got 0");
   CHECK_THROWS_WITH(render_floor(0.5, 0.0, 1, 1, AovAmbientOcclusion),
-                    "render: ambient occlusion needs at least 1 ray per sample and a distance in (0, 65536] m");
-  CHECK_THROWS_WITH(render_floor(0.5, 1.0, 1, 0, AovAmbientOcclusion, 0.0001),
-                    "render: the ambient occlusion error must be 0 (a fixed ray count) or in [0.001, 0.5]");
-  CHECK_THROWS_WITH(render_floor(0.5, 1.0, 1, 0, AovAmbientOcclusion, std::nan("")),
-                    "render: the ambient occlusion error must be 0 (a fixed ray count) or in [0.001, 0.5]");
-  // Settings the AOV does not use are not checked.
-  CHECK_NOTHROW(render_floor(0.5, 0.0, 1, 0, AovAlpha));
+                    "render: ambient_occlusion_distance: expected a number greater than 0 and at most 65536, got 0");
+  CHECK_THROWS_WITH(render_floor(0.5, 1.0, 1, 1, AovAmbientOcclusion, 0.0001),
+                    "render: ambient_occlusion_error: expected 0 (a fixed ray count: `ambient_occlusion_rays` per "
+                    "hit) or a number from 0.001 to 0.5, got 0.0001");
+  CHECK_THROWS_WITH(render_floor(0.5, 1.0, 1, 1, AovAmbientOcclusion, std::nan("")),
+                    Catch::StartsWith("render: ambient_occlusion_error: expected 0") && Catch::EndsWith("got nan"));
+  // A setting out of range is refused whether or not this render uses it, as a scene file would.
+  CHECK_THROWS_WITH(render_floor(0.5, 0.0, 1, 1, AovAlpha), Catch::StartsWith("render: ambient_occlusion_distance"));
 }

@@ -181,7 +181,7 @@ TEST_CASE("The denoiser refuses frames without its guides and settings out of ra
   render_settings.denoise = true;
   render_settings.cycles_parity = true;
   CHECK_THROWS_WITH(render(scene, Camera::look_at({0, 0, 1}, {0, 0, 0}, {0, 1, 0}, 0.5, 8, 8), render_settings, frame),
-                    Catch::Contains("no part of Cycles parity"));
+                    "render: denoise and cycles_parity exclude each other: Blender 3.4 in Debian has no denoiser");
 }
 
 namespace {

@@ -20,7 +20,7 @@ struct Refusal {
 
 const Refusal kRefusals[] = {
     {"unknown_key", R"(/objects/0/trasnform: unknown key.*)"},
-    {"wrong_type", R"(/render/spp: expected a whole number from 1 to 2,147,483,647, got "64")"},
+    {"wrong_type", R"(/render/spp: expected a whole number from 1 to 16,777,216, got "64")"},
     {"missing_mesh", R"(/objects/0/mesh: file not found.*)"},
     {"unknown_material", R"(/objects/0/material: unknown material "chrome".*)"},
     {"negative_size", R"(/lights/0/size/1: expected a number greater than 0, got -0.2)"},

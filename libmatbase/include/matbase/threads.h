@@ -5,6 +5,9 @@
 
 namespace matbase {
 
+// The most threads any tool or library setting accepts (a larger number is a typo, not a request).
+constexpr int kMaxThreadRequest = 65536;
+
 // std::thread::hardware_concurrency(), at least 1.
 int hardware_threads();
 

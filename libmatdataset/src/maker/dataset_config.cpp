@@ -26,10 +26,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr int kMaxResolution = 16384;
-// The sample count map stores each pixel's samples in 16 bits.
-constexpr int kMaxSamples = kMaxSampleCount;
 constexpr int kMaxGridSide = 4096;
-constexpr int kMaxBounces = 1024;
 
 const char* const kDefaultYaml = R"(# make_dataset's embedded default: 6 objects x 3 materials x 8 views, about a minute on 2 cores.
 output: dataset_out
@@ -305,11 +302,13 @@ void read_camera(const DocumentNode& v, CameraConfig& camera) {
   }
 }
 
-int read_bounces(const DocumentNode& node) { return node.integer_in(0, kMaxBounces); }
-
 void read_render(const DocumentNode& v, RenderConfig& render) {
-  v.expect_keys({"resolution", "samples", "noise_threshold", "min_samples", "denoise", "exposure", "bounces",
-                 "ambient_occlusion", "material_resolution"});
+  std::vector<std::string> keys{"resolution"};
+  for (const std::string& key : dataset_render_top_keys()) keys.push_back(key);
+  keys.insert(keys.end(), {"exposure", "material_resolution"});
+  std::vector<const char*> allowed;
+  for (const std::string& key : keys) allowed.push_back(key.c_str());
+  v.expect_keys(allowed);
   if (const std::optional<DocumentNode> r = v.find("resolution")) {
     if (r->is_list()) {
       const std::vector<DocumentNode> sides = r->items(2, "a side or [width, height]");
@@ -319,10 +318,7 @@ void read_render(const DocumentNode& v, RenderConfig& render) {
       render.width = render.height = r->integer_in(1, kMaxResolution);
     }
   }
-  if (const std::optional<DocumentNode> n = v.find("samples")) render.samples = n->integer_in(1, kMaxSamples);
-  if (const std::optional<DocumentNode> n = v.find("noise_threshold")) render.noise_threshold = n->number_in(0.0, 1.0);
-  if (const std::optional<DocumentNode> n = v.find("denoise")) render.denoise = n->boolean();
-  if (const std::optional<DocumentNode> n = v.find("min_samples")) render.min_samples = n->integer_in(0, kMaxSamples);
+  read_dataset_render_keys(v, render.settings);
   if (const std::optional<DocumentNode> exposure = v.find("exposure")) {
     if (exposure->is_word("auto"))
       render.exposure_stops = std::nullopt;
@@ -330,19 +326,6 @@ void read_render(const DocumentNode& v, RenderConfig& render) {
       render.exposure_stops = exposure->number_where(
           [](double stops) { return std::abs(stops) <= matbase::kMaxExposureStops; },
           fmt::format("auto or a number of stops from {} to {}", -matbase::kMaxExposureStops, matbase::kMaxExposureStops));
-  }
-  if (const std::optional<DocumentNode> b = v.find("bounces")) {
-    b->expect_keys({"max", "diffuse", "glossy", "transmission"});
-    if (const std::optional<DocumentNode> n = b->find("max")) render.max_bounces = read_bounces(*n);
-    if (const std::optional<DocumentNode> n = b->find("diffuse")) render.max_diffuse_bounces = read_bounces(*n);
-    if (const std::optional<DocumentNode> n = b->find("glossy")) render.max_glossy_bounces = read_bounces(*n);
-    if (const std::optional<DocumentNode> n = b->find("transmission")) render.max_transmission_bounces = read_bounces(*n);
-  }
-  if (const std::optional<DocumentNode> ao = v.find("ambient_occlusion")) {
-    ao->expect_keys({"error", "distance"});
-    if (const std::optional<DocumentNode> n = ao->find("error")) render.ambient_occlusion_error = n->number_in(matrender::kMinAmbientOcclusionError, matrender::kMaxAmbientOcclusionError);
-    if (const std::optional<DocumentNode> n = ao->find("distance"))
-      render.ambient_occlusion_distance_m = n->number_in(0.0, 65536.0, true);
   }
   if (const std::optional<DocumentNode> n = v.find("material_resolution"))
     render.material_resolution = n->integer_in(matmaterial::kMinLibraryResolution, matmaterial::kMaxLibraryResolution);

@@ -34,7 +34,7 @@ void write_variant_records(const DatasetConfig& config, const DatasetPlan& plan,
   metadata.materials = renderer.slot_materials();
   metadata.width = config.render.width;
   metadata.height = config.render.height;
-  metadata.samples = config.render.samples;
+  metadata.samples = config.render.settings.samples_per_pixel;
   metadata.provenance_json = renderer.provenance_json(plan, variant);
   for (const char* record : {"metadata.json", "transforms.json", "material_segmentation_map.json"})
     matbase::remove_stale_temporaries(folder / record, false);

@@ -205,32 +205,16 @@ CameraIntrinsics ObjectRenderer::intrinsics() const {
                             config_.camera.vertical_fov_deg * kDegree);
 }
 
-matrender::RenderSettings ObjectRenderer::sampling_settings() const {
-  matrender::RenderSettings settings;
-  settings.samples_per_pixel = config_.render.samples;
-  settings.noise_threshold = config_.render.noise_threshold;
-  settings.min_samples = config_.render.min_samples;
-  settings.denoise = config_.render.denoise;
-  return settings;
-}
-
-int ObjectRenderer::fewest_samples() const { return matrender::fewest_samples_per_pixel(sampling_settings()); }
+int ObjectRenderer::fewest_samples() const { return matrender::fewest_samples_per_pixel(config_.render.settings); }
 
 bool ObjectRenderer::render(size_t view, uint32_t seed, int threads, const std::atomic<bool>* cancel,
                             FrameMaps& maps, matrender::RenderStats* stats) {
-  const RenderConfig& r = config_.render;
-  matrender::RenderSettings settings = sampling_settings();
+  matrender::RenderSettings settings = config_.render.settings;
   settings.seed = seed;
   settings.threads = threads;
-  settings.max_bounces = r.max_bounces;
-  settings.max_diffuse_bounces = r.max_diffuse_bounces;
-  settings.max_glossy_bounces = r.max_glossy_bounces;
-  settings.max_transmission_bounces = r.max_transmission_bounces;
   settings.transparent_background = true;
   using P = matrender::MaterialParameter;
   settings.aovs = dataset_aovs();
-  settings.ambient_occlusion_error = r.ambient_occlusion_error;
-  settings.ambient_occlusion_distance = r.ambient_occlusion_distance_m;
   settings.cancel = cancel;
   matrender::FrameBuffers frame;
   const matrender::RenderStats result = matrender::render(built_.scene, view_camera(view), settings, frame);
@@ -320,19 +304,20 @@ std::string ObjectRenderer::provenance_json(const DatasetPlan& plan, size_t vari
                     {"lamps", lamps}};
 
   const RenderConfig& r = config_.render;
+  const matrender::RenderSettings& rs = r.settings;
   ordered_json seeds = ordered_json::object();
   for (size_t view = 0; view < plan.views; ++view)
     seeds[view_stem(plan, view)] = frame_seed(config_.seed, {object, variant, view});
   json["render"] = {{"renderer", "matpredict libmatrender (Principled BSDF path tracer, Cycles 3.4 conventions)"},
-                    {"samples", r.samples},
-                    {"noise_threshold", r.noise_threshold},
-                    {"min_samples", r.min_samples},
+                    {"samples", rs.samples_per_pixel},
+                    {"noise_threshold", rs.noise_threshold},
+                    {"min_samples", rs.min_samples},
                     {"fewest_samples", fewest_samples()},
-                    {"denoise", r.denoise},
-                    {"max_bounces", r.max_bounces},
-                    {"max_diffuse_bounces", r.max_diffuse_bounces},
-                    {"max_glossy_bounces", r.max_glossy_bounces},
-                    {"max_transmission_bounces", r.max_transmission_bounces},
+                    {"denoise", rs.denoise},
+                    {"max_bounces", rs.max_bounces},
+                    {"max_diffuse_bounces", rs.max_diffuse_bounces},
+                    {"max_glossy_bounces", rs.max_glossy_bounces},
+                    {"max_transmission_bounces", rs.max_transmission_bounces},
                     {"exposure_stops", exposure_stops_},
                     {"exposure_rule", r.exposure_stops ? "configured"
                                                        : "grey card: a Lambertian card at the grid's centre facing the "
@@ -340,8 +325,8 @@ std::string ObjectRenderer::provenance_json(const DatasetPlan& plan, size_t vari
                                                          "the grid's views (log2(683 pi / lux) - 1)"},
                     {"transparent_background", true},
                     {"ambient_occlusion",
-                     {{"distance_m", r.ambient_occlusion_distance_m},
-                      {"standard_error_at_most", r.ambient_occlusion_error},
+                     {{"distance_m", rs.ambient_occlusion_distance},
+                      {"standard_error_at_most", rs.ambient_occlusion_error},
                       {"rule", "each pixel traces occlusion rays from its hits until the standard error estimated from "
                                "its own trials, sqrt(p (1 - p) / n) with p = (escaped + 1) / (n + 2), is at most the "
                                "bound; stratified directions make the true error smaller"}}},

@@ -86,9 +86,8 @@ void validate(const Camera& camera, const RenderSettings& settings) {
   check_scene_point(glm::dvec3(camera.camera_to_world[3]), "render: the camera");
   if (!(camera.vertical_fov > 0.0 && camera.vertical_fov < matbase::kPi))
     throw std::invalid_argument("render: vertical field of view must be in (0, pi) radians");
-  if (!(settings.noise_threshold >= 0.0 && settings.noise_threshold <= 1.0))
-    throw std::invalid_argument("render: the noise threshold must be in [0, 1] (0: adaptive sampling off)");
-  if (settings.min_samples < 0) throw std::invalid_argument("render: min samples must be >= 0 (0: automatic)");
+  if (const std::optional<std::string> problem = render_settings_problem(settings))
+    throw std::invalid_argument("render: " + *problem);
   const double pixels = static_cast<double>(camera.width) * static_cast<double>(camera.height);
   const bool adaptive = settings.noise_threshold > 0.0;
   matbase::require_memory(FrameBuffers::bytes_for(camera.width, camera.height, rendered_aovs(settings)) +
@@ -96,24 +95,6 @@ void validate(const Camera& camera, const RenderSettings& settings) {
                           std::string(adaptive ? "the colour and AOV buffers and adaptive sampling's sums" : "the colour and AOV buffers") +
                               " of a " + std::to_string(camera.width) + " x " + std::to_string(camera.height) + " image",
                           "render");
-  if (settings.samples_per_pixel < 1) throw std::invalid_argument("render: samples per pixel must be >= 1");
-  if (settings.denoise && settings.cycles_parity)
-    throw std::invalid_argument("render: the denoiser is no part of Cycles parity (Blender 3.4 in Debian has none)");
-  if (settings.threads < 0) throw std::invalid_argument("render: threads must be >= 0");
-  if (settings.max_bounces < 0 || settings.max_diffuse_bounces < 0 || settings.max_glossy_bounces < 0 ||
-      settings.max_transmission_bounces < 0 || settings.max_transparent_bounces < 0)
-    throw std::invalid_argument("render: bounce limits must be >= 0");
-  if ((rendered_aovs(settings) & AovAmbientOcclusion) &&
-      ((settings.ambient_occlusion_error == 0.0 && settings.ambient_occlusion_rays < 1) ||
-       !(settings.ambient_occlusion_distance > 0.0 && settings.ambient_occlusion_distance <= kMaxSceneCoordinate)))
-    throw std::invalid_argument("render: ambient occlusion needs at least 1 ray per sample and a distance in (0, " +
-                                std::to_string(static_cast<int64_t>(kMaxSceneCoordinate)) + "] m");
-  if ((rendered_aovs(settings) & AovAmbientOcclusion) &&
-      !(settings.ambient_occlusion_error == 0.0 ||
-        (settings.ambient_occlusion_error >= kMinAmbientOcclusionError &&
-         settings.ambient_occlusion_error <= kMaxAmbientOcclusionError)))
-    throw std::invalid_argument(fmt::format("render: the ambient occlusion error must be 0 (a fixed ray count) or in [{}, {}]",
-                                            kMinAmbientOcclusionError, kMaxAmbientOcclusionError));
 }
 
 }  // namespace

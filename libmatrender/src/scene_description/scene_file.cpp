@@ -22,6 +22,7 @@
 #include "matmaterial/material_classes.h"
 #include "matmaterial/material_parameters.h"
 #include "matrender/image_io.h"
+#include "matrender/render_setting_reading.h"
 #include "scene_description/scene_file_values.h"
 
 namespace matrender {
@@ -484,31 +485,22 @@ std::vector<ObjectDescription> read_objects(const DocumentNode& node, const fs::
 
 // ---- render settings ------------------------------------------------------------------------
 
+// The declared scene settings (matrender/render_setting_declarations.h) by their own names, and
+// the display exposure, which is the scene's and no render setting.
 void read_render(const DocumentNode& node, SceneDescription& scene) {
-  node.expect_keys({"spp", "noise_threshold", "min_samples", "seed", "max_bounces", "max_diffuse_bounces", "max_glossy_bounces",
-                    "max_transmission_bounces", "max_transparent_bounces", "exposure",
-                    "transparent_background", "cycles_parity", "light_selection", "mipmaps", "denoise"});
-  RenderSettings& s = scene.settings;
-  if (auto n = node.find("spp")) s.samples_per_pixel = n->integer_at_least(1);
-  if (auto n = node.find("noise_threshold"))
-    s.noise_threshold = n->number_where([](double v) { return v >= 0.0 && v <= 1.0; }, "a number from 0 to 1 (0: off)");
-  if (auto n = node.find("min_samples")) s.min_samples = n->integer_at_least(0);
-  if (auto n = node.find("seed")) s.seed = n->uint32();
-  if (auto n = node.find("max_bounces")) s.max_bounces = n->integer_at_least(0);
-  if (auto n = node.find("max_diffuse_bounces")) s.max_diffuse_bounces = n->integer_at_least(0);
-  if (auto n = node.find("max_glossy_bounces")) s.max_glossy_bounces = n->integer_at_least(0);
-  if (auto n = node.find("max_transmission_bounces")) s.max_transmission_bounces = n->integer_at_least(0);
-  if (auto n = node.find("max_transparent_bounces")) s.max_transparent_bounces = n->integer_at_least(0);
+  std::vector<const char*> keys;
+  for (const RenderSettingDeclaration& setting : render_setting_declarations())
+    if (setting.scope == SettingScope::Scene) keys.push_back(setting.name.data());
+  keys.push_back("exposure");
+  node.expect_keys(keys);
+  for (const RenderSettingDeclaration& setting : render_setting_declarations())
+    if (setting.scope == SettingScope::Scene)
+      if (auto value = node.find(std::string(setting.name))) read_render_setting(*value, setting, scene.settings);
+  if (const std::optional<SettingConflict> conflict = settings_conflict(scene.settings))
+    node.fail(conflict_refusal(*conflict, conflict->first, conflict->second));
   if (auto n = node.find("exposure"))
     scene.exposure_stops = n->number_where([](double v) { return std::abs(v) <= matbase::kMaxExposureStops; },
                                            fmt::format("a number of stops from {} to {}", -matbase::kMaxExposureStops, matbase::kMaxExposureStops));
-  if (auto n = node.find("transparent_background")) s.transparent_background = n->boolean();
-  if (auto n = node.find("cycles_parity")) s.cycles_parity = n->boolean();
-  if (auto n = node.find("mipmaps")) s.mipmaps = n->boolean();
-  if (auto n = node.find("denoise")) s.denoise = n->boolean();
-  if (s.denoise && s.cycles_parity) node.fail("denoise and cycles_parity exclude each other: Blender 3.4 in Debian has no denoiser");
-  if (auto n = node.find("light_selection"))
-    s.light_selection = n->choice({"importance", "uniform"}) == 0 ? LightSelection::Importance : LightSelection::Uniform;
 }
 
 }  // namespace

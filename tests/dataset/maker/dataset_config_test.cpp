@@ -58,7 +58,7 @@ TEST_CASE("The embedded default is six built-in objects in three library materia
   CHECK(config.camera.fill == 0.9);
   CHECK(config.render.width == 128);
   CHECK(config.render.height == 128);
-  CHECK(config.render.samples == 32);
+  CHECK(config.render.settings.samples_per_pixel == 32);
   CHECK_FALSE(config.render.exposure_stops.has_value());  // auto
   CHECK(config.render.material_resolution == 256);
   CHECK(config.combination == matdataset::VariantCombination::Cartesian);
@@ -73,7 +73,7 @@ TEST_CASE("Overrides apply in order over the file and are recorded, the output e
                                              {"camera.grid", "[1, 3]", "--grid"},
                                              {"render.samples", "8", "--set render.samples=8"},
                                              {"output", "elsewhere", "--output"}});
-  CHECK(config.render.samples == 8);
+  CHECK(config.render.settings.samples_per_pixel == 8);
   CHECK(config.camera.n_phi == 1);
   CHECK(config.camera.n_theta == 3);
   CHECK(config.output == "elsewhere");
@@ -120,8 +120,8 @@ TEST_CASE("A configuration that says one thing twice, or nothing, or something u
   CHECK(refusal(kOneVase + "render: {samples: \"64\"}\n") ==
         "test.yaml: render.samples: expected a whole number from 1 to 65,535, got \"64\"");
   CHECK(refusal(kOneVase + "render: {samples: 64.0}\n").empty());
-  // The renderer's range for the ambient occlusion error, stated once (matrender/render.h): refused
-  // here before anything is written, not by the first render.
+  // The renderer's range for the ambient occlusion error, stated once (its declaration): refused
+  // here before anything is written, not by the first render. A dataset refuses 0 (render_keys.h).
   CHECK(refusal(kOneVase, {{"render.ambient_occlusion.error", "0.0005", "--ao-error"}}) ==
         "--ao-error (render.ambient_occlusion.error): expected a number from 0.001 to 0.5, got 0.0005");
   CHECK(refusal(kOneVase, {{"render.ambient_occlusion.error", "0.001", "--ao-error"}}).empty());

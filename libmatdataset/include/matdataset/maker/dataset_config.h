@@ -16,6 +16,7 @@
 
 #include "matdataset/format/dataset_splits.h"
 #include "matdataset/maker/material_variants.h"
+#include "matdataset/maker/render_keys.h"
 #include "matmaterial/library/material_library.h"
 #include "matrender/paper_setup.h"
 #include "matrender/scene_description.h"
@@ -64,19 +65,12 @@ struct CameraConfig {
 
 struct RenderConfig {
   int width = 512, height = 512;
-  int samples = 64;  // per pixel; with a noise threshold the most a pixel takes
-  // Adaptive sampling as Cycles 3.4 (matrender::RenderSettings): 0 = off.
-  double noise_threshold = 0.0;
-  int min_samples = 0;  // 0: Cycles' automatic rule
-  bool denoise = false;  // matrender::RenderSettings::denoise
+  // The render settings the configuration sets (render_keys.h); the maker sets the others per
+  // frame: the seed, the threads, the transparent background, the AOVs.
+  matrender::RenderSettings settings = dataset_render_defaults();
   // Applied to the images; none: the grey-card rule (matrender::grey_card_exposure), one value
   // per object for all its views and variants.
   std::optional<double> exposure_stops;
-  int max_bounces = 12, max_diffuse_bounces = 4, max_glossy_bounces = 4, max_transmission_bounces = 12;
-  // ORM's R: the standard error its estimate may have at most (ambient occlusion rays per
-  // camera sample follow from it and the samples), and Cycles' AO distance.
-  double ambient_occlusion_error = 0.02;
-  double ambient_occlusion_distance_m = 1.0;
   int material_resolution = 1024;  // texels per side of the library's maps
 };
 

@@ -68,9 +68,6 @@ class ObjectRenderer {
   std::string provenance_json(const DatasetPlan& plan, size_t variant) const;
 
  private:
-  // The configuration's sampling: samples per pixel, adaptive sampling, the denoiser.
-  matrender::RenderSettings sampling_settings() const;
-
   const DatasetConfig& config_;
   size_t object_index_;
   const ObjectConfig& object_;

@@ -1,0 +1,86 @@
+#include "matdataset/maker/render_keys.h"
+
+#include <algorithm>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "matdataset/format/dataset_writer.h"
+#include "matrender/render_setting_reading.h"
+
+namespace matdataset {
+namespace {
+
+// The key's group and its name in the group ("bounces", "max"), or no group.
+std::pair<std::string, std::string> split_key(std::string_view key) {
+  const size_t dot = key.find('.');
+  if (dot == std::string_view::npos) return {"", std::string(key)};
+  return {std::string(key.substr(0, dot)), std::string(key.substr(dot + 1))};
+}
+
+}  // namespace
+
+const std::vector<DatasetRenderKey>& dataset_render_keys() {
+  static const std::vector<DatasetRenderKey> keys = {
+      {"samples", "spp", kMaxSampleCount, false, "the sample count map holds 16 bits"},
+      {"noise_threshold", "noise_threshold", std::nullopt, false, ""},
+      {"min_samples", "min_samples", std::nullopt, false, ""},
+      {"denoise", "denoise", std::nullopt, false, "the data maps are never filtered"},
+      {"bounces.max", "max_bounces", std::nullopt, false, ""},
+      {"bounces.diffuse", "max_diffuse_bounces", std::nullopt, false, ""},
+      {"bounces.glossy", "max_glossy_bounces", std::nullopt, false, ""},
+      {"bounces.transmission", "max_transmission_bounces", std::nullopt, false, ""},
+      {"ambient_occlusion.error", "ambient_occlusion_error", std::nullopt, true,
+       "ORM's R; not 0: metadata.json states the bound each frame meets"},
+      {"ambient_occlusion.distance", "ambient_occlusion_distance", std::nullopt, false, ""},
+  };
+  return keys;
+}
+
+matrender::RenderSettingDeclaration dataset_declaration(const DatasetRenderKey& key) {
+  matrender::RenderSettingDeclaration setting = matrender::render_setting(key.setting);
+  if (key.most) setting.most = std::min(setting.most, *key.most);
+  if (key.zero_refused) setting.zero_meaning = {};
+  return setting;
+}
+
+matrender::RenderSettings dataset_render_defaults() {
+  matrender::RenderSettings settings;
+  settings.ambient_occlusion_error = 0.02;
+  return settings;
+}
+
+std::vector<std::string> dataset_render_top_keys() {
+  std::vector<std::string> keys;
+  for (const DatasetRenderKey& key : dataset_render_keys()) {
+    const auto [group, name] = split_key(key.key);
+    const std::string top = group.empty() ? name : group;
+    if (std::find(keys.begin(), keys.end(), top) == keys.end()) keys.push_back(top);
+  }
+  return keys;
+}
+
+void read_dataset_render_keys(const matbase::DocumentNode& render, matrender::RenderSettings& settings) {
+  std::map<std::string, std::vector<const char*>> group_keys;
+  for (const DatasetRenderKey& key : dataset_render_keys()) {
+    const auto [group, name] = split_key(key.key);
+    if (!group.empty()) group_keys[group].push_back(key.key.data() + group.size() + 1);
+  }
+  for (const auto& [group, names] : group_keys)
+    if (const std::optional<matbase::DocumentNode> node = render.find(group)) node->expect_keys(names);
+  for (const DatasetRenderKey& key : dataset_render_keys()) {
+    const auto [group, name] = split_key(key.key);
+    const std::optional<matbase::DocumentNode> parent = group.empty() ? std::nullopt : render.find(group);
+    const std::optional<matbase::DocumentNode> node = group.empty() ? render.find(name) : parent ? parent->find(name) : std::nullopt;
+    if (node) matrender::read_render_setting(*node, dataset_declaration(key), settings);
+  }
+}
+
+std::string dataset_render_key_row(const DatasetRenderKey& key) {
+  const matrender::RenderSettingDeclaration setting = dataset_declaration(key);
+  const std::string value = matrender::value_text(dataset_render_defaults(), setting);
+  return fmt::format("| `render.{}` | {} | {}: {}{}{} |", key.key, value, matrender::expectation(setting),
+                     setting.documentation, key.note.empty() ? "" : "; ", key.note);
+}
+
+}  // namespace matdataset
