@@ -17,7 +17,6 @@
 #include "json_text.h"
 #include "loaded_scene.h"
 #include "matbase/input_error.h"
-#include "matgeom/builtin/builtin_objects.h"
 #include "mesh_arrays.h"
 #include "matrender/render.h"
 #include "matrender/scene_builder.h"
@@ -32,34 +31,24 @@ namespace py = pybind11;
 // Where a scene dict's errors point: "the scene: /render/spp: ...".
 constexpr const char* kSceneSource = "the scene";
 
-// The keys of a scene file's mesh object (docs/scene_format.md, "Objects").
-const char* const kMeshObjectKeys =
-    "\"mesh\", \"transform\", \"material\", \"materials\", \"shadow_terminator_geometry_offset\"";
-
-// The scene dict as JSON for the file's reader. An object whose "mesh" is a matpredict.Mesh is
-// read with a built-in object in its place (its other keys as a mesh object's) and given the
-// arrays' mesh after; `given` collects them by object index.
-std::string scene_json(const py::dict& scene, std::vector<std::pair<size_t, MeshArrays>>& given) {
+// The scene dict as JSON for the scene reader: an object whose "mesh" is a matpredict.Mesh gets
+// {"given": K} in its place, K its index in `given`, where its arrays' object goes.
+std::string scene_json(const py::dict& scene, std::vector<matrender::GivenObject>& given) {
   py::dict readable(scene);
   if (scene.contains("objects") && py::isinstance<py::list>(scene["objects"])) {
     py::list objects;
-    size_t index = 0;
     for (const py::handle object : scene["objects"].cast<py::list>()) {
-      const std::string place = std::string(kSceneSource) + ": /objects/" + std::to_string(index);
       if (py::isinstance<py::dict>(object) && object.cast<py::dict>().contains("mesh") &&
           py::isinstance<MeshArrays>(object.cast<py::dict>()["mesh"])) {
-        py::dict stand_in(object.cast<py::dict>());
-        if (stand_in.contains("builtin")) throw matbase::InputError(place + ": expected exactly one of \"mesh\" or \"builtin\"");
-        if (stand_in.contains("seed"))
-          throw matbase::InputError(place + "/seed: unknown key (allowed here: " + kMeshObjectKeys + ")");
-        given.emplace_back(index, stand_in["mesh"].cast<MeshArrays>());
-        PyDict_DelItemString(stand_in.ptr(), "mesh");
-        stand_in["builtin"] = matgeom::builtin_object_names().front();
-        objects.append(stand_in);
+        py::dict reference(object.cast<py::dict>());
+        py::dict mesh;
+        mesh["given"] = given.size();
+        given.push_back(matrender::GivenObject{reference["mesh"].cast<MeshArrays>().asset});
+        reference["mesh"] = mesh;
+        objects.append(reference);
       } else {
         objects.append(object);
       }
-      ++index;
     }
     readable["objects"] = objects;
   }
@@ -70,10 +59,9 @@ std::string scene_json(const py::dict& scene, std::vector<std::pair<size_t, Mesh
 std::unique_ptr<LoadedScene> load_scene(const py::object& scene_or_path) {
   auto scene = std::make_unique<LoadedScene>();
   if (py::isinstance<py::dict>(scene_or_path)) {
-    std::vector<std::pair<size_t, MeshArrays>> given;
+    std::vector<matrender::GivenObject> given;
     const std::string json = scene_json(scene_or_path.cast<py::dict>(), given);
-    scene->description = matrender::read_scene_text(json, kSceneSource, std::filesystem::current_path().string());
-    for (const auto& [index, mesh] : given) scene->description.objects[index].source = matrender::GivenObject{mesh.asset};
+    scene->description = matrender::read_scene_text(json, kSceneSource, std::filesystem::current_path().string(), given);
   } else {
     scene->description = matrender::read_scene_file(py::str(py::module_::import("os").attr("fspath")(scene_or_path)));
   }

@@ -253,6 +253,11 @@ def test_bad_mesh_arrays_raise_clear_errors():
     scene["objects"][0]["seed"] = 3
     with pytest.raises(matpredict.InputError, match="the scene: /objects/0/seed: unknown key"):
         matpredict.load_scene(scene)
+    # Every key of a mesh object is read by the scene reader itself; a mesh from arrays has its normals.
+    scene = cube_scene(matpredict.Mesh(positions, triangles))
+    scene["objects"][0]["auto_smooth_deg"] = 30
+    with pytest.raises(matpredict.InputError, match="the scene: /objects/0/auto_smooth_deg: only a mesh file's faces"):
+        matpredict.load_scene(scene)
 
 
 def test_the_names_a_scene_dict_can_use_load():

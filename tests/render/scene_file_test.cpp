@@ -3,13 +3,16 @@
 // names the file, the JSON pointer of the value to fix and the problem (docs/scene_format.md);
 // render_object's own tests check that the app turns a few of them into exit code 2 with nothing
 // written.
+#include <memory>
 #include <string>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
 #include "matbase/input_error.h"
 #include "matrender/scene_builder.h"
 #include "matrender/scene_file.h"
+#include "test_scenes.h"
 
 namespace {
 
@@ -82,4 +85,37 @@ TEST_CASE("scene files are refused naming the file, the JSON pointer and the pro
     INFO(path);
     CHECK_THAT(refusal_of(path), Catch::Matchers::Matches(escaped(path) + ": " + refusal.message));
   }
+}
+
+TEST_CASE("an object given in memory is read with a mesh object's keys, and only where a program gives one", "[render]") {
+  matgeom::ObjectAsset square;
+  square.mesh = test_scenes::horizontal_square(1.0);
+  const std::vector<matrender::GivenObject> given{{std::make_shared<const matgeom::ObjectAsset>(square)}};
+  auto scene = [](const std::string& object) {
+    return R"({"camera": {"position": [1, -1, 0.5], "look_at": [0, 0, 0]}, "lights": {"rig": {}}, "objects": [)" +
+           object + "]}";
+  };
+  const matrender::SceneDescription read = matrender::read_scene_text(
+      scene(R"({"mesh": {"given": 0}, "transform": {"translate": [0, 0, 2]}})"), "s.json", ".", given);
+  REQUIRE(read.objects.size() == 1);
+  const auto* object = std::get_if<matrender::GivenObject>(&read.objects[0].source);
+  REQUIRE(object);
+  CHECK(object->asset == given[0].asset);
+  CHECK(read.objects[0].object_to_world[3][2] == 2.0);
+  auto refusal = [&](const std::string& object, const std::vector<matrender::GivenObject>& objects) -> std::string {
+    try {
+      matrender::read_scene_text(scene(object), "s.json", ".", objects);
+    } catch (const matbase::InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  CHECK(refusal(R"({"mesh": {"given": 1}})", given) ==
+        "s.json: /objects/0/mesh/given: expected a whole number from 0 to 0, got 1");
+  CHECK(refusal(R"({"mesh": {"given": 0}, "seed": 1})", given).rfind("s.json: /objects/0/seed: unknown key", 0) == 0);
+  CHECK(refusal(R"({"mesh": {"given": 0}, "auto_smooth_deg": 30})", given)
+            .rfind("s.json: /objects/0/auto_smooth_deg: only a mesh file's faces can be smoothed", 0) == 0);
+  CHECK(refusal(R"({"mesh": {"given": 0}})", {}) ==
+        "s.json: /objects/0/mesh: an object given in memory, but none was given: in a scene file, \"mesh\" is a "
+        "file's path");
 }

@@ -439,21 +439,36 @@ double read_auto_smooth_deg(const DocumentNode& node) {
 
 namespace {
 
+// A mesh object's source: the file "mesh" names, or, where "mesh" is {"given": K}, the K-th
+// object the program gave the reader.
+decltype(ObjectDescription::source) read_mesh_source(const DocumentNode& node, const fs::path& folder,
+                                                     const std::vector<GivenObject>& given) {
+  const DocumentNode mesh = node.required("mesh");
+  if (mesh.is_mapping()) {
+    mesh.expect_keys({"given"});
+    if (given.empty()) mesh.fail("an object given in memory, but none was given: in a scene file, \"mesh\" is a file's path");
+    if (auto angle = node.find("auto_smooth_deg"))
+      angle->fail("only a mesh file's faces can be smoothed (an object given in memory has its own normals)");
+    return given[static_cast<size_t>(mesh.required("given").whole_number(0, static_cast<int64_t>(given.size()) - 1))];
+  }
+  const std::string path = read_existing_file(mesh, folder);
+  const std::vector<std::string>& extensions = matgeom::object_file_extensions();
+  if (std::find(extensions.begin(), extensions.end(), matbase::lowercase_extension(path)) == extensions.end())
+    mesh.fail("expected a .glb, .gltf, .ply or .obj file");
+  MeshFile file{path, {}};
+  if (auto angle = node.find("auto_smooth_deg")) file.read_options.auto_smooth_deg = read_auto_smooth_deg(*angle);
+  return file;
+}
+
 ObjectDescription read_object(const DocumentNode& node, const fs::path& folder,
-                              std::map<std::string, MaterialDescription>& materials) {
+                              std::map<std::string, MaterialDescription>& materials, const std::vector<GivenObject>& given) {
   if (!node.is_mapping()) node.fail_expected("a mapping of keys");
   if (node.has("mesh") == node.has("builtin")) node.fail("expected exactly one of \"mesh\" or \"builtin\"");
   ObjectDescription object;
   object.origin = origin_of(node);
   if (node.has("mesh")) {
     node.expect_keys({"mesh", "auto_smooth_deg", "transform", "material", "materials", "shadow_terminator_geometry_offset"});
-    const std::string path = read_existing_file(node.required("mesh"), folder);
-    const std::vector<std::string>& extensions = matgeom::object_file_extensions();
-    if (std::find(extensions.begin(), extensions.end(), matbase::lowercase_extension(path)) == extensions.end())
-      node.required("mesh").fail("expected a .glb, .gltf, .ply or .obj file");
-    MeshFile file{path, {}};
-    if (auto angle = node.find("auto_smooth_deg")) file.read_options.auto_smooth_deg = read_auto_smooth_deg(*angle);
-    object.source = file;
+    object.source = read_mesh_source(node, folder, given);
   } else {
     node.expect_keys(
         {"builtin", "seed", "transform", "material", "materials", "shadow_terminator_geometry_offset"});
@@ -475,11 +490,12 @@ ObjectDescription read_object(const DocumentNode& node, const fs::path& folder,
 }
 
 std::vector<ObjectDescription> read_objects(const DocumentNode& node, const fs::path& folder,
-                                            std::map<std::string, MaterialDescription>& materials) {
+                                            std::map<std::string, MaterialDescription>& materials,
+                                            const std::vector<GivenObject>& given) {
   const std::vector<DocumentNode> items = node.items("a non-empty list of objects");
   if (items.empty()) node.fail_expected("a non-empty list of objects");
   std::vector<ObjectDescription> objects;
-  for (const DocumentNode& item : items) objects.push_back(read_object(item, folder, materials));
+  for (const DocumentNode& item : items) objects.push_back(read_object(item, folder, materials, given));
   return objects;
 }
 
@@ -507,7 +523,8 @@ void read_render(const DocumentNode& node, SceneDescription& scene) {
 
 namespace {
 
-SceneDescription read_scene(const matbase::DocumentValue& document, const std::string& source_name, const fs::path& folder) {
+SceneDescription read_scene(const matbase::DocumentValue& document, const std::string& source_name, const fs::path& folder,
+                            const std::vector<GivenObject>& given) {
   const matbase::DocumentSource source(source_name, matbase::PathStyle::JsonPointer);
   const DocumentNode root(document, source);
   root.expect_keys({"description", "camera", "lights", "background", "materials", "objects", "render"});
@@ -517,7 +534,7 @@ SceneDescription read_scene(const matbase::DocumentValue& document, const std::s
   scene.lights = read_lights(root.required("lights"));
   if (auto background = root.find("background")) scene.background = read_background(*background, folder);
   if (auto materials = root.find("materials")) scene.materials = read_materials(*materials, folder);
-  scene.objects = read_objects(root.required("objects"), folder, scene.materials);
+  scene.objects = read_objects(root.required("objects"), folder, scene.materials, given);
   if (auto render = root.find("render")) read_render(*render, scene);
   return scene;
 }
@@ -525,12 +542,13 @@ SceneDescription read_scene(const matbase::DocumentValue& document, const std::s
 }  // namespace
 
 SceneDescription read_scene_file(const std::string& path) {
-  return read_scene(matbase::read_json_document(path), path, fs::path(path).parent_path());
+  return read_scene(matbase::read_json_document(path), path, fs::path(path).parent_path(), {});
 }
 
-SceneDescription read_scene_text(const std::string& json, const std::string& source, const std::string& folder) {
+SceneDescription read_scene_text(const std::string& json, const std::string& source, const std::string& folder,
+                                 const std::vector<GivenObject>& given) {
   std::istringstream text(json);
-  return read_scene(matbase::parse_json_document(text, source), source, folder);
+  return read_scene(matbase::parse_json_document(text, source), source, folder, given);
 }
 
 CameraDescription read_camera_text(const std::string& json, const std::string& source) {
