@@ -271,6 +271,15 @@ std::string option_spelling(const matrender::RenderSettingDeclaration& setting) 
   return option;
 }
 
+// What --help shows an option's value as: INT, FLOAT, or the choices (importance|uniform).
+std::string value_name(const matrender::RenderSettingDeclaration& setting) {
+  if (setting.form == matrender::SettingForm::WholeNumber) return "INT";
+  if (setting.form == matrender::SettingForm::Number) return "FLOAT";
+  std::string choices;
+  for (const std::string_view choice : setting.choices) choices += (choices.empty() ? "" : "|") + std::string(choice);
+  return choices;
+}
+
 // One option per declared setting of `scope`: a switch is a flag that turns it from its default
 // (--no-NAME where it is on), any other setting takes a value its declaration checks.
 void add_setting_options(CLI::App& app, Options& o, matrender::SettingScope scope, const std::string& group) {
@@ -298,6 +307,7 @@ void add_setting_options(CLI::App& app, Options& o, matrender::SettingScope scop
              o.render_settings.push_back({&setting, option, text});
            },
            documentation + " (" + matrender::expectation(setting) + ")")
+        ->type_name(value_name(setting))
         ->default_str(matrender::default_text(setting))
         ->group(group);
   }
@@ -345,6 +355,7 @@ void add_run_options(CLI::App& app, Options& o) {
            o.threads = checked.threads;
          },
          std::string(threads.documentation) + " (" + matrender::expectation(threads) + ")")
+      ->type_name(value_name(threads))
       ->default_str(matrender::default_text(threads))
       ->group(group);
   app.add_option("--texture-memory", o.texture_memory_mib,
