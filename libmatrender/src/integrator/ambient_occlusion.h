@@ -98,4 +98,38 @@ inline void top_up_occlusion(const EmbreeScene& accel, const OcclusionSite& site
     trace_occlusion_rays(accel, site, distance, seeds, static_cast<int>(std::ceil(missing)), tally, rays_traced);
 }
 
+// Ambient occlusion as a render asks for it (RenderSettings): at every hit of a pixel's camera
+// samples a fixed number of rays, or, with an error bound, as many as the pixel still needs
+// (occlusion_rays_per_hit), and after the pixel's samples what the bound still misses.
+class AmbientOcclusionEstimator {
+ public:
+  AmbientOcclusionEstimator(const EmbreeScene& accel, float distance, double error, int rays_per_hit)
+      : accel_(accel), distance_(distance), error_(error), rays_per_hit_(rays_per_hit) {}
+
+  // At the hit `site` of a pixel's camera sample: `samples` and `hits` count this sample, and
+  // samples_left counts it too. Returns the rays traced.
+  uint32_t at_hit(OcclusionTally& tally, const OcclusionSite& site, const PairSeeds& seeds, uint32_t samples,
+                  uint32_t hits, uint32_t samples_left) const {
+    const int rays = error_ > 0.0 ? occlusion_rays_per_hit(tally, samples, hits, samples_left, error_) : rays_per_hit_;
+    uint32_t traced = 0;
+    trace_occlusion_rays(accel_, site, distance_, seeds, rays, tally, &traced);
+    return traced;
+  }
+
+  // After a run of a pixel's samples, `hits` of which hit, the last at `last_hit`: with an error
+  // bound, the trials the tally still misses. Returns the rays traced.
+  uint32_t after_samples(OcclusionTally& tally, const OcclusionSite& last_hit, const PairSeeds& seeds, int32_t hits) const {
+    if (!(error_ > 0.0) || hits == 0) return 0;
+    uint32_t traced = 0;
+    top_up_occlusion(accel_, last_hit, distance_, seeds, error_, tally, &traced);
+    return traced;
+  }
+
+ private:
+  const EmbreeScene& accel_;
+  float distance_;
+  double error_;
+  int rays_per_hit_;
+};
+
 }  // namespace matrender

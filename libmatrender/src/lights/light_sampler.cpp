@@ -5,6 +5,7 @@
 #include <variant>
 
 #include "sampling/warp.h"
+#include "scene/scene_data.h"
 
 namespace matrender {
 namespace {
@@ -18,6 +19,14 @@ std::vector<SceneLight> of_type(const std::vector<SceneLight>& prepared, LightTy
 }
 
 }  // namespace
+
+LightSampler LightSampler::for_scene(const SceneData& scene, LightSelection selection) {
+  std::vector<PreparedMeshEmitter> emitters;
+  for (uint32_t mesh = 0; mesh < scene.meshes.size(); ++mesh)
+    if (std::optional<PreparedMeshEmitter> emitter = PreparedMeshEmitter::of_mesh(scene, mesh))
+      emitters.push_back(std::move(*emitter));
+  return LightSampler(scene.lights, scene.world, selection, emitters);
+}
 
 LightSampler::LightSampler(const std::vector<Light>& lights, const WorldLight& world, LightSelection selection,
                            const std::vector<PreparedMeshEmitter>& emitters)

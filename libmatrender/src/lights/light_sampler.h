@@ -20,7 +20,7 @@
 #include "lights/scene_light.h"
 #include "lights/world_light.h"
 #include "matrender/light.h"
-#include "matrender/render.h"
+#include "matrender/render_settings.h"
 
 namespace matrender {
 
@@ -46,12 +46,17 @@ constexpr bool is_shaped_lamp() {
          !std::is_same_v<Prepared, PreparedMeshEmitter>;
 }
 
+class SceneData;
+
 class LightSampler {
  public:
-  // A uniform black world is no light at all.
+  // Every emitter of `scene` prepared for rendering, here and nowhere else: its lamps, its world
+  // and the emitting triangles of each of its meshes, which must outlive the sampler.
+  static LightSampler for_scene(const SceneData& scene, LightSelection selection);
+  // Lamps and a world alone, without meshes. A uniform black world is no light at all.
   LightSampler(const std::vector<Light>& lights, const WorldLight& world,
-               LightSelection selection = LightSelection::Importance,
-               const std::vector<PreparedMeshEmitter>& emitters = {});
+               LightSelection selection = LightSelection::Importance)
+      : LightSampler(lights, world, selection, {}) {}
 
   // The lights next-event estimation draws from are lights(0 .. sampled_count() - 1), placed by
   // their LightType, each kind in scene order: the area lamps (rectangles, then the disks of
@@ -120,6 +125,9 @@ class LightSampler {
   std::optional<glm::vec3> uniform_camera_background() const;
 
  private:
+  LightSampler(const std::vector<Light>& lights, const WorldLight& world, LightSelection selection,
+               const std::vector<PreparedMeshEmitter>& emitters);
+
   std::vector<SceneLight> lights_;
   size_t sampled_count_ = 0;
   std::vector<size_t> infinite_;  // indices of the infinite lights
