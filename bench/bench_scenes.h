@@ -7,7 +7,7 @@
 
 #include "matgeom/mesh.h"
 #include "matrender/camera.h"
-#include "matrender/light.h"
+#include "matrender/lamp.h"
 #include "matrender/material.h"
 #include "matrender/scene.h"
 #include "matrender/scene_builder.h"

@@ -27,7 +27,7 @@
 #include "matbase/pi.h"
 #include "matrender/paper_setup.h"
 #include "matrender/render.h"
-#include "matrender/rig_lights.h"
+#include "matrender/rig_lamps.h"
 #include "matrender/texture.h"
 #include "shaders_ref/cycles_reference.h"
 
@@ -101,7 +101,7 @@ shaders_ref::CyclesScene make_scene(const std::string& name, size_t triangles, i
   if (name == "environment") {
     scene.environment = shaders_ref::CyclesEnvironment{sky, 1.0, 0.0};
   } else {
-    scene.lamps = matrender::rig_lights(matrender::paper_rig(scene.mesh));
+    scene.lamps = matrender::rig_lamps(matrender::paper_rig(scene.mesh));
   }
   return scene;
 }
@@ -110,7 +110,7 @@ shaders_ref::CyclesScene make_scene(const std::string& name, size_t triangles, i
 matrender::Scene our_scene(const shaders_ref::CyclesScene& description) {
   matrender::Scene scene;
   scene.add_mesh(description.mesh, {scene.add_material(description.material)});
-  for (const matrender::Light& lamp : description.lamps) scene.add_light(lamp);
+  for (const matrender::Lamp& lamp : description.lamps) scene.add_lamp(lamp);
   if (description.environment)
     scene.set_background(matrender::EnvironmentMap{
         matrender::Texture::load(description.environment->exr_path, matmaterial::ColorSpace::NonColor),

@@ -33,8 +33,8 @@ matgeom::TriangleMesh quad(const glm::vec3& corner, const glm::vec3& a, const gl
   return m;
 }
 
-matrender::RectLight lamp_at(const glm::dvec3& position, const glm::dvec3& target, double size, double power) {
-  matrender::RectLight lamp;
+matrender::RectLamp lamp_at(const glm::dvec3& position, const glm::dvec3& target, double size, double power) {
+  matrender::RectLamp lamp;
   lamp.light_to_world = matgeom::look_at_camera_to_world(position, target, {0, 0, 1});
   lamp.size_x = lamp.size_y = size;
   lamp.power = power;
@@ -47,7 +47,7 @@ BenchScene paper_rig_scene(int resolution) {
   matrender::SceneDescription description = matrender::paper_object_scene(vase);
   description.camera.width = description.camera.height = resolution;
   matrender::BuiltScene built = matrender::build_scene(description);
-  return {"vase under the paper's rig (" + std::to_string(built.scene.lights().size()) + " lamps)",
+  return {"vase under the paper's rig (" + std::to_string(built.scene.lamps().size()) + " lamps)",
           std::move(built.scene), built.camera};
 }
 
@@ -67,11 +67,11 @@ BenchScene back_lit_room(int resolution) {
   s.scene.add_mesh(sphere, {s.scene.add_material(bench::bench_material())});
   for (int k = 0; k < 10; ++k) {
     const double x = -1.8 + 0.4 * k;
-    s.scene.add_light(lamp_at({x, 1.7, 0.4 + 0.15 * (k % 4)}, {x, 2.0, 0.6 + 0.15 * (k % 4)}, 0.25, 40.0));
+    s.scene.add_lamp(lamp_at({x, 1.7, 0.4 + 0.15 * (k % 4)}, {x, 2.0, 0.6 + 0.15 * (k % 4)}, 0.25, 40.0));
   }
   for (const glm::dvec3& at : {glm::dvec3(1.0, -1.0, 0.8), glm::dvec3(-1.0, -1.0, 0.8), glm::dvec3(0.8, 0.6, 1.2),
                                glm::dvec3(-0.8, 0.6, 1.2)})
-    s.scene.add_light(lamp_at(at, {0.0, 0.0, 0.2}, 0.4, 60.0));
+    s.scene.add_lamp(lamp_at(at, {0.0, 0.0, 0.2}, 0.4, 60.0));
   s.camera = matrender::Camera::look_at({0.0, -2.2, 0.9}, {0.0, 0.5, 0.5}, {0, 0, 1}, 0.9, resolution, resolution);
   return s;
 }

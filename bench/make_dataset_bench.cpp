@@ -200,7 +200,7 @@ shaders_ref::CyclesScene cycles_scene(const matdataset::ObjectRenderer& renderer
                                       const std::string& gltf, const matdataset::RenderConfig& r) {
   shaders_ref::CyclesScene scene;
   scene.gltf_path = gltf;
-  scene.lamps = renderer.scene().lights();
+  scene.lamps = renderer.scene().lamps();
   const auto* background = std::get_if<glm::vec3>(&renderer.scene().background());
   if (!background) throw std::runtime_error("--cycles: the scene's environment map is not passed to Blender");
   scene.background = *background;

@@ -160,7 +160,7 @@ VaseScene textured_vase(int resolution) {
   matrender::add_asset(v.scene, vase);
   matrender::add_rig(v.scene, matrender::paper_rig(vase.mesh));
   v.camera = matrender::paper_view(vase.mesh, resolution, resolution);
-  fmt::print("\n(textured vase: {} triangles, {} lamps)\n", vase.mesh.triangle_count(), v.scene.lights().size());
+  fmt::print("\n(textured vase: {} triangles, {} lamps)\n", vase.mesh.triangle_count(), v.scene.lamps().size());
   return v;
 }
 

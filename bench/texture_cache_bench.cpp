@@ -96,7 +96,7 @@ Run render_wall(const std::vector<std::string>& maps, uint64_t limit_bytes, int 
     const float z = 1.1f * (static_cast<float>(k / side) - 0.5f * (side - 1));
     scene.add_mesh(plane_at(x, z), {scene.add_material(m)});
   }
-  scene.add_light(matrender::PointLight{glm::dvec3(0.0, -4.0, 2.0), 3000.0, glm::dvec3(1.0)});
+  scene.add_lamp(matrender::PointLamp{glm::dvec3(0.0, -4.0, 2.0), 3000.0, glm::dvec3(1.0)});
   scene.set_background(glm::vec3(0.2f));
   run.load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   matrender::RenderSettings settings;

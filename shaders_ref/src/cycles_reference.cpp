@@ -51,25 +51,25 @@ json node_inputs(const matrender::Material& m) {
 json rgb(const glm::dvec3& c) { return {c.r, c.g, c.b}; }
 json xyz(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
 
-json describe_lamp(const matrender::Light& light) {
-  if (const auto* rect = std::get_if<matrender::RectLight>(&light))
+json describe_lamp(const matrender::Lamp& light) {
+  if (const auto* rect = std::get_if<matrender::RectLamp>(&light))
     return {{"type", "area"},
             {"light_to_world", column_major(rect->light_to_world)},
             {"size_x", rect->size_x},
             {"size_y", rect->size_y},
             {"power", rect->power},
             {"color", rgb(rect->color)}};
-  if (const auto* point = std::get_if<matrender::PointLight>(&light))
+  if (const auto* point = std::get_if<matrender::PointLamp>(&light))
     return {{"type", "point"},
             {"position", xyz(point->position)},
             {"radius", point->radius},
             {"power", point->power},
             {"color", rgb(point->color)}};
-  if (const auto* spot = std::get_if<matrender::SpotLight>(&light))
+  if (const auto* spot = std::get_if<matrender::SpotLamp>(&light))
     return {{"type", "spot"},          {"position", xyz(spot->position)}, {"direction", xyz(spot->direction)},
             {"radius", spot->radius},  {"spot_angle", spot->spot_angle},  {"blend", spot->blend},
             {"power", spot->power},    {"color", rgb(spot->color)}};
-  const auto& sun = std::get<matrender::SunLight>(light);
+  const auto& sun = std::get<matrender::SunLamp>(light);
   return {{"type", "sun"},
           {"direction", xyz(sun.direction)},
           {"angle", sun.angle},
@@ -131,7 +131,7 @@ json describe(const CyclesScene& scene) {
     description = describe_mesh_object(scene);
   }
   json lamps = json::array();
-  for (const matrender::Light& lamp : scene.lamps) lamps.push_back(describe_lamp(lamp));
+  for (const matrender::Lamp& lamp : scene.lamps) lamps.push_back(describe_lamp(lamp));
   description["lamps"] = lamps;
   const matrender::Camera& c = scene.camera;
   description["camera"] = {{"camera_to_world", column_major(c.camera_to_world)},

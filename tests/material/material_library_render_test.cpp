@@ -63,7 +63,7 @@ TEST_CASE("Every library style renders finite pixels, labelled with its class, i
     const matmaterial::FolderMaterial generated = matmaterial::generate_library_material(spec, {kMapSize, 0});
     Scene scene;
     scene.add_mesh(plane, {scene.add_material(material_from_desc(generated.material, generated.images))});
-    scene.add_light(PointLight{glm::dvec3(0.5, 0.5, 2.0), 100.0, glm::dvec3(1.0)});
+    scene.add_lamp(PointLamp{glm::dvec3(0.5, 0.5, 2.0), 100.0, glm::dvec3(1.0)});
     RenderSettings settings;
     settings.samples_per_pixel = 4;
     settings.aovs = all_aovs();

@@ -123,7 +123,7 @@ namespace {
 Scene noisy_sphere_scene() {
   Scene scene;
   scene.add_mesh(test_scenes::uv_sphere(0.5, 24), {scene.add_material(test_scenes::lambert(0.7f))});
-  RectLight lamp;
+  RectLamp lamp;
   lamp.light_to_world = glm::dmat4(1.0);
   lamp.light_to_world[3] = glm::dvec4(0.6, -0.6, 1.2, 1.0);
   lamp.light_to_world[2] = glm::dvec4(glm::normalize(glm::dvec3(0.6, -0.6, 1.2)), 0.0);  // local +Z away from the sphere
@@ -131,8 +131,8 @@ Scene noisy_sphere_scene() {
   lamp.light_to_world[1] = glm::dvec4(glm::cross(glm::dvec3(lamp.light_to_world[2]), glm::dvec3(lamp.light_to_world[0])), 0.0);
   lamp.size_x = lamp.size_y = 0.3;
   lamp.power = 40.0;
-  scene.add_light(lamp);
-  scene.add_light(PointLight{glm::dvec3(-1.0, -0.5, 0.2), 5.0, glm::dvec3(1.0)});
+  scene.add_lamp(lamp);
+  scene.add_lamp(PointLamp{glm::dvec3(-1.0, -0.5, 0.2), 5.0, glm::dvec3(1.0)});
   scene.set_background(glm::vec3(0.2f));
   return scene;
 }

@@ -42,7 +42,7 @@ struct ShadowScene {
   explicit ShadowScene(const Material* card) {
     scene.add_mesh(test_scenes::horizontal_square(10.0, 0.0), {scene.add_material(test_scenes::lambert(0.5f))});
     if (card) scene.add_mesh(test_scenes::horizontal_square(2.0, 1.0), {scene.add_material(*card)});
-    scene.add_light(PointLight{glm::dvec3(0.0, 0.0, 2.0), 100.0, glm::dvec3(1.0)});
+    scene.add_lamp(PointLamp{glm::dvec3(0.0, 0.0, 2.0), 100.0, glm::dvec3(1.0)});
   }
   FrameBuffers render_frame() {
     FrameBuffers frame;
@@ -167,7 +167,7 @@ TEST_CASE("A scene with alpha 0 everywhere shows its background, finite", "[rend
   Material ghost = test_scenes::lambert(0.8f);
   ghost.set(MaterialParameter::Alpha, 0.0f);
   scene.add_mesh(test_scenes::horizontal_square(4.0, -0.5), {scene.add_material(ghost)});
-  scene.add_light(PointLight{glm::dvec3(0.0, 0.0, 2.0), 100.0, glm::dvec3(1.0)});
+  scene.add_lamp(PointLamp{glm::dvec3(0.0, 0.0, 2.0), 100.0, glm::dvec3(1.0)});
   scene.set_background(glm::vec3(0.25f));
   FrameBuffers frame;
   const RenderStats stats =

@@ -23,7 +23,7 @@ FrameBuffers render_floor(double ceiling_height, double distance, int spp, int r
   const uint32_t grey = scene.add_material(test_scenes::lambert(0.5f));
   scene.add_mesh(test_scenes::horizontal_square(400.0), {grey});
   if (ceiling_height > 0.0) scene.add_mesh(test_scenes::horizontal_square(400.0, ceiling_height), {grey});
-  scene.add_light(PointLight{glm::dvec3(0.0, 0.0, 0.1), 1.0, glm::dvec3(1.0)});
+  scene.add_lamp(PointLamp{glm::dvec3(0.0, 0.0, 0.1), 1.0, glm::dvec3(1.0)});
   const Camera camera = Camera::look_at({0, 0, 0.1}, {0, 0, 0}, {0, 1, 0}, 0.5, 24, 24);
   RenderSettings settings;
   settings.samples_per_pixel = spp;
@@ -98,7 +98,7 @@ TEST_CASE("The tangent-space normal AOV is the normal map's texel, (0, 0, 1) wit
   bumpy.normal_map = Texture::from_pixelsf(1, 1, 3, texel.data(), ColorSpace::NonColor);
   Scene scene;
   scene.add_mesh(plane, {scene.add_material(flat), scene.add_material(bumpy)});
-  scene.add_light(PointLight{glm::dvec3(0, 0, 1), 10.0, glm::dvec3(1.0)});
+  scene.add_lamp(PointLamp{glm::dvec3(0, 0, 1), 10.0, glm::dvec3(1.0)});
   RenderSettings settings;
   settings.samples_per_pixel = 4;
   settings.aovs = AovNormalTangent | AovPartId;
@@ -154,7 +154,7 @@ TEST_CASE("Ambient occlusion to an error bound agrees with a high-ray reference 
   const uint32_t grey = scene.add_material(test_scenes::lambert(0.5f));
   scene.add_mesh(test_scenes::horizontal_square(400.0), {grey});
   scene.add_mesh(test_scenes::uv_sphere(0.3, 24, {0.0, 0.0, 0.3}), {grey});
-  scene.add_light(PointLight{glm::dvec3(1.0, -1.0, 2.0), 50.0, glm::dvec3(1.0)});
+  scene.add_lamp(PointLamp{glm::dvec3(1.0, -1.0, 2.0), 50.0, glm::dvec3(1.0)});
   const Camera camera = Camera::look_at({1.2, -1.2, 0.9}, {0, 0, 0.15}, {0, 0, 1}, 0.8, 40, 30);
   RenderSettings settings;
   settings.aovs = AovAmbientOcclusion | AovAlpha;

@@ -33,7 +33,7 @@ TEST_CASE("AOVs of a two-part plane equal the materials at the hit", "[render]")
   right.label_id = 5;
   Scene scene;
   scene.add_mesh(plane, {scene.add_material(left), scene.add_material(right)});
-  scene.add_light(PointLight{glm::dvec3(0, 0, 1), 10.0, glm::dvec3(1.0)});
+  scene.add_lamp(PointLamp{glm::dvec3(0, 0, 1), 10.0, glm::dvec3(1.0)});
 
   // Straight down from 2 m; the 1.2 x 1.2 m footprint lies inside the 2 x 2 m plane.
   const Camera camera = Camera::look_at({0, 0, 2}, {0, 0, 0}, {0, 1, 0}, 2.0 * std::atan(0.3), 40, 40);
@@ -112,7 +112,7 @@ TEST_CASE("Coverage, background and camera-space normals at an object's edge", "
 TEST_CASE("Changing lamps re-renders without a BVH rebuild; progress and cancel work", "[render]") {
   Scene scene;
   scene.add_mesh(test_scenes::horizontal_square(2.0), {scene.add_material(test_scenes::lambert(0.5f))});
-  scene.add_light(PointLight{glm::dvec3(0, 0, 1), 10.0, glm::dvec3(1.0)});
+  scene.add_lamp(PointLamp{glm::dvec3(0, 0, 1), 10.0, glm::dvec3(1.0)});
   const Camera camera = Camera::look_at({0, -1, 1}, {0, 0, 0}, {0, 0, 1}, 0.8, 32, 32);
   RenderSettings settings;
   settings.samples_per_pixel = 2;
@@ -129,8 +129,8 @@ TEST_CASE("Changing lamps re-renders without a BVH rebuild; progress and cancel 
   const double build_seconds = scene.bvh_build_seconds();
   REQUIRE(scene.committed());
 
-  scene.clear_lights();
-  scene.add_light(PointLight{glm::dvec3(0, 0, 1), 40.0, glm::dvec3(1.0)});
+  scene.clear_lamps();
+  scene.add_lamp(PointLamp{glm::dvec3(0, 0, 1), 40.0, glm::dvec3(1.0)});
   render(scene, camera, settings, second);
   CHECK(scene.bvh_build_seconds() == build_seconds);
   // Four times the power, four times the radiance (same seed, same paths).
@@ -147,7 +147,7 @@ TEST_CASE("Changing lamps re-renders without a BVH rebuild; progress and cancel 
 TEST_CASE("At millions of samples per pixel, progress comes within a pixel and a cancel stops it at once", "[render]") {
   Scene scene;
   scene.add_mesh(test_scenes::horizontal_square(1.0), {scene.add_material(test_scenes::lambert(0.5f))});
-  scene.add_light(PointLight{glm::dvec3(0, 0, 1), 10.0, glm::dvec3(1.0)});
+  scene.add_lamp(PointLamp{glm::dvec3(0, 0, 1), 10.0, glm::dvec3(1.0)});
   const Camera camera = Camera::look_at({0, 0, 2}, {0, 0, 0}, {0, 1, 0}, 0.5, 4, 4);
   RenderSettings settings;
   settings.samples_per_pixel = 1 << 24;  // 268 M samples in all: minutes of work

@@ -22,7 +22,7 @@ TEST_CASE("Every built-in object renders with finite pixels", "[render]") {
   matrender::add_asset(scene, asset);
   const matgeom::Sphere bounds = matgeom::minimal_enclosing_sphere(asset.mesh.positions);
   scene.set_background(glm::vec3(0.4f));
-  scene.add_light(matrender::PointLight{bounds.center + glm::dvec3(0.5, -1.0, 2.0) * bounds.radius, 40.0 * bounds.radius * bounds.radius,
+  scene.add_lamp(matrender::PointLamp{bounds.center + glm::dvec3(0.5, -1.0, 2.0) * bounds.radius, 40.0 * bounds.radius * bounds.radius,
                                         glm::dvec3(1.0)});
   matrender::Camera camera;
   const glm::dvec3 eye = bounds.center + 2.6 * bounds.radius * glm::normalize(glm::dvec3(1.0, -1.3, 0.9));

@@ -27,7 +27,7 @@
 #include "matrender/image_io.h"
 #include "matrender/paper_setup.h"
 #include "matrender/render.h"
-#include "matrender/rig_lights.h"
+#include "matrender/rig_lamps.h"
 #include "shaders_ref/cycles_reference.h"
 
 namespace {
@@ -97,8 +97,8 @@ matgeom::TriangleMesh open_vessel() {
 
 matgeom::Sphere add_paper_rig(shaders_ref::CyclesScene& scene) {
   const matgeom::Sphere bound = matgeom::minimal_enclosing_sphere(scene.mesh.positions);
-  for (const matrender::Light& light : matrender::rig_lights(matrender::paper_rig(bound))) {
-    const auto* rect = std::get_if<matrender::RectLight>(&light);
+  for (const matrender::Lamp& light : matrender::rig_lamps(matrender::paper_rig(bound))) {
+    const auto* rect = std::get_if<matrender::RectLamp>(&light);
     REQUIRE(rect);  // spots only come for objects under 0.15 m
     scene.lamps.push_back(*rect);
   }
@@ -123,7 +123,7 @@ std::vector<float> render_ours(const shaders_ref::CyclesScene& cycles_scene, uin
   matrender::MeshOptions options;
   options.shadow_terminator_geometry_offset = cycles_scene.shadow_terminator_geometry_offset;
   scene.add_mesh(cycles_scene.mesh, {scene.add_material(cycles_scene.material)}, options);
-  for (const matrender::Light& lamp : cycles_scene.lamps) scene.add_light(lamp);
+  for (const matrender::Lamp& lamp : cycles_scene.lamps) scene.add_lamp(lamp);
   if (const auto& environment = cycles_scene.environment)
     scene.set_background(matrender::EnvironmentMap{
         matrender::Texture::load(environment->exr_path, matrender::ColorSpace::NonColor), environment->strength,
@@ -394,23 +394,23 @@ TEST_CASE("Point and spot lamps with a radius and a sun with an angle agree with
   matrender::Material glossy;
   glossy.set(matrender::MaterialParameter::BaseColor, glm::vec3(0.7f, 0.45f, 0.3f));
   glossy.set(matrender::MaterialParameter::Roughness, 0.25f);
-  matrender::PointLight point;
+  matrender::PointLamp point;
   point.position = glm::dvec3(0.9, -0.7, 0.9);
   point.power = 60.0;
   point.radius = 0.25;
   point.color = glm::dvec3(1.0, 0.9, 0.7);
-  matrender::SpotLight spot;
+  matrender::SpotLamp spot;
   spot.position = glm::dvec3(-0.8, -0.9, 0.6);
   spot.direction = glm::normalize(glm::dvec3(0.0, 0.0, 0.1) - spot.position);
   spot.spot_angle = glm::radians(40.0);
   spot.blend = 0.3;
   spot.power = 80.0;
   spot.radius = 0.15;
-  matrender::SunLight sun;
+  matrender::SunLamp sun;
   sun.direction = glm::normalize(glm::dvec3(-0.4, 0.5, -0.6));
   sun.strength = 1.5;
   sun.angle = glm::radians(10.0);
-  const std::vector<std::pair<std::string, std::vector<matrender::Light>>> cases = {
+  const std::vector<std::pair<std::string, std::vector<matrender::Lamp>>> cases = {
       {"soft_point", {point}}, {"soft_spot", {spot}}, {"soft_sun", {sun}}, {"all_three", {point, spot, sun}}};
   for (const auto& [name, lamps] : cases) {
     shaders_ref::CyclesScene scene = paper_scene(glossy, 48, 0.1f);

@@ -197,11 +197,11 @@ Comparison render_ball(const Material& ball, int spp, bool denoised) {
   Scene scene;
   scene.add_mesh(test_scenes::horizontal_square(6.0), {scene.add_material(test_scenes::lambert(0.6f))});
   scene.add_mesh(test_scenes::uv_sphere(0.4, 32, {0.0, 0.0, 0.4}), {scene.add_material(ball)});
-  RectLight lamp;
+  RectLamp lamp;
   lamp.light_to_world[3] = glm::dvec4(0.5, -0.5, 2.0, 1.0);
   lamp.size_x = lamp.size_y = 1.5;
   lamp.power = 150.0;
-  scene.add_light(lamp);
+  scene.add_lamp(lamp);
   const Camera camera = Camera::look_at({0.0, -2.2, 1.2}, {0, 0, 0.35}, {0, 0, 1}, 0.6, 40, 32);
   RenderSettings settings;
   settings.aovs = AovAlpha;

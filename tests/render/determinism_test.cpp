@@ -31,11 +31,11 @@ Scene glossy_box_scene(const TexturePtr& white = nullptr) {
   metal.set(matrender::MaterialParameter::Metallic, 1.0f);
   metal.set(matrender::MaterialParameter::Roughness, 0.2f);
   scene.add_mesh(test_scenes::horizontal_square(0.5, 0.4), {scene.add_material(texture(metal))});
-  RectLight lamp;
+  RectLamp lamp;
   lamp.light_to_world[3] = glm::dvec4(0.0, 0.0, 2.0, 1.0);
   lamp.power = 200.0;
-  scene.add_light(lamp);
-  scene.add_light(PointLight{glm::dvec3(1.0, 1.0, 1.0), 50.0, glm::dvec3(1.0)});
+  scene.add_lamp(lamp);
+  scene.add_lamp(PointLamp{glm::dvec3(1.0, 1.0, 1.0), 50.0, glm::dvec3(1.0)});
   scene.set_background(glm::vec3(0.05f));
   return scene;
 }

@@ -132,13 +132,13 @@ TEST_CASE("An emitting quad and a rectangle lamp of the same radiance light a gl
     if (emissive_mesh) {
       add_emissive_quad(scene, 5.0f);
     } else {
-      RectLight lamp;
+      RectLamp lamp;
       // Its +Z points up, so it emits down its -Z toward the plane.
       lamp.light_to_world[3] = glm::dvec4(0.0, 0.0, 1.5, 1.0);
       lamp.size_x = 0.6;
       lamp.size_y = 0.4;
       lamp.power = 5.0 * 4.0 * 0.6 * 0.4;  // L = P / (4 a b)
-      scene.add_light(lamp);
+      scene.add_lamp(lamp);
     }
     RenderSettings settings;
     settings.samples_per_pixel = 64;

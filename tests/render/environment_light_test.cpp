@@ -102,7 +102,7 @@ TEST_CASE("The map is looked up as Blender 3.4 does at the poles, the seam and t
   // What a 1-pixel Cycles render of the probe map gave looking along each direction: straight up
   // and down blend the top and bottom rows (the lookup wraps in v), -X blends the first and last
   // columns (it wraps in u), and 0.5 degrees off straight down blends 0.4118 of the top row.
-  const PreparedEnvironmentLight light(EnvironmentMap{probe_map(), 1.0, 0.0});
+  const EnvironmentLight light(EnvironmentMap{probe_map(), 1.0, 0.0});
   check_color(light.radiance({0, 0, 1}), {0.5f, 0.0f, 0.5f}, 1e-4f);
   check_color(light.radiance({0, 0, -1}), {0.5f, 0.0f, 0.5f}, 1e-4f);
   check_color(light.radiance({1, 0, 0}), {0.0f, 1.0f, 0.0f}, 1e-4f);
@@ -114,8 +114,8 @@ TEST_CASE("The map is looked up as Blender 3.4 does at the poles, the seam and t
 TEST_CASE("A Z rotation looks the map up along R_z(angle) d, as a Mapping node's rotation", "[render]") {
   // Columns numbered by their value: world -Y turned by +90 degrees looks at the map's +X column.
   const TexturePtr columns = map_of(64, 32, [](int x, int) { return glm::vec3(static_cast<float>(x)); });
-  const PreparedEnvironmentLight turned(EnvironmentMap{columns, 2.0, matbase::kPi / 2});
-  const PreparedEnvironmentLight plain(EnvironmentMap{columns, 2.0, 0.0});
+  const EnvironmentLight turned(EnvironmentMap{columns, 2.0, matbase::kPi / 2});
+  const EnvironmentLight plain(EnvironmentMap{columns, 2.0, 0.0});
   CHECK(turned.radiance({0, -1, 0}).x == Approx(plain.radiance({1, 0, 0}).x));
   CHECK(plain.radiance({1, 0, 0}).x == Approx(2.0 * 31.5));  // strength times the centre columns' mean
   UniformFloats rng(3);
@@ -145,7 +145,7 @@ TEST_CASE("Environment sampling fits its pdf (chi-square), and the pdf covers ev
   const double significance = 0.01 / static_cast<double>(cases.size());
   for (const Case& c : cases) {
     INFO(c.name);
-    const PreparedEnvironmentLight light(EnvironmentMap{c.image, 1.0, c.rotation});
+    const EnvironmentLight light(EnvironmentMap{c.image, 1.0, c.rotation});
     std::vector<double> observed(kBinsU * kBinsV, 0.0), expected(kBinsU * kBinsV, 0.0);
     UniformFloats rng(0xe4f1);
     int failures = 0;
@@ -194,7 +194,7 @@ TEST_CASE("Environment sampling fits its pdf (chi-square), and the pdf covers ev
 
 TEST_CASE("A black map is no light: nothing sampled, and the light set leaves it out", "[render]") {
   const TexturePtr black = map_of(8, 4, [](int, int) { return glm::vec3(0.0f); });
-  const PreparedEnvironmentLight light(EnvironmentMap{black, 3.0, 0.0});
+  const EnvironmentLight light(EnvironmentMap{black, 3.0, 0.0});
   CHECK(light.black());
   CHECK_FALSE(light.sample(glm::vec3(0.0f), {}, {0.3f, 0.7f}));
   CHECK(light.pdf({0, 0, 1}) == 0.0f);
@@ -202,16 +202,16 @@ TEST_CASE("A black map is no light: nothing sampled, and the light set leaves it
   CHECK(sampler.empty());
   CHECK(sampler.escaped_radiance({0, 0, 1}, 1.0f, false, false, sampler.site(glm::vec3(0.0f), {})) == glm::vec3(0.0f));
   // Strength 0 blackens any map.
-  CHECK(PreparedEnvironmentLight(EnvironmentMap{probe_map(), 0.0, 0.0}).radiance({1, 0, 0}) == glm::vec3(0.0f));
+  CHECK(EnvironmentLight(EnvironmentMap{probe_map(), 0.0, 0.0}).radiance({1, 0, 0}) == glm::vec3(0.0f));
 }
 
 TEST_CASE("An environment map that cannot be rendered is refused", "[render]") {
-  CHECK_THROWS_AS(PreparedEnvironmentLight(EnvironmentMap{nullptr, 1.0, 0.0}), std::invalid_argument);
-  CHECK_THROWS_AS(PreparedEnvironmentLight(EnvironmentMap{probe_map(), -1.0, 0.0}), std::invalid_argument);
-  CHECK_THROWS_AS(PreparedEnvironmentLight(EnvironmentMap{probe_map(), 1e300, 0.0}), std::invalid_argument);
-  CHECK_THROWS_AS(PreparedEnvironmentLight(EnvironmentMap{probe_map(), 1.0, NAN}), std::invalid_argument);
+  CHECK_THROWS_AS(EnvironmentLight(EnvironmentMap{nullptr, 1.0, 0.0}), std::invalid_argument);
+  CHECK_THROWS_AS(EnvironmentLight(EnvironmentMap{probe_map(), -1.0, 0.0}), std::invalid_argument);
+  CHECK_THROWS_AS(EnvironmentLight(EnvironmentMap{probe_map(), 1e300, 0.0}), std::invalid_argument);
+  CHECK_THROWS_AS(EnvironmentLight(EnvironmentMap{probe_map(), 1.0, NAN}), std::invalid_argument);
   const TexturePtr bright = map_of(4, 2, [](int, int) { return glm::vec3(1e30f); });
-  CHECK_THROWS_WITH(PreparedEnvironmentLight(EnvironmentMap{bright, 1e10, 0.0}), Catch::Contains("lower the strength"));
+  CHECK_THROWS_WITH(EnvironmentLight(EnvironmentMap{bright, 1e10, 0.0}), Catch::Contains("lower the strength"));
   Scene scene;
   CHECK_THROWS_AS(scene.set_background(EnvironmentMap{probe_map(), -2.0, 0.0}), std::invalid_argument);
   CHECK_THROWS_AS(scene.set_background(glm::vec3(-1.0f)), std::invalid_argument);

@@ -97,12 +97,12 @@ TEST_CASE("Glass in hard configurations gives finite pixels", "[render]") {
     scene.add_mesh(closed_box({0.3f, 0.3f, 0.3f}, {0.8f, 0.0f, 0.0f}), {inner});
     scene.add_mesh(closed_box({0.3f, 0.3f, 0.1f}, {0.8f, 0.0f, 0.2f}), {outer});
     scene.add_mesh(test_scenes::horizontal_square(6.0, -0.5), {scene.add_material(test_scenes::lambert(0.5f))});
-    scene.add_light(PointLight{glm::dvec3(0.0, 0.0, 0.1), 10.0, glm::dvec3(1.0)});
-    RectLight lamp;
+    scene.add_lamp(PointLamp{glm::dvec3(0.0, 0.0, 0.1), 10.0, glm::dvec3(1.0)});
+    RectLamp lamp;
     lamp.light_to_world[3] = glm::dvec4(0.0, 0.0, 2.0, 1.0);
     lamp.size_x = lamp.size_y = 1.0;
     lamp.power = 100.0;
-    scene.add_light(lamp);
+    scene.add_lamp(lamp);
     scene.set_background(glm::vec3(0.3f));
     RenderSettings settings;
     settings.samples_per_pixel = 8;

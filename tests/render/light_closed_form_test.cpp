@@ -47,7 +47,7 @@ TEST_CASE("A Lambertian plane under a rectangular lamp matches the polygon irrad
   Scene scene;
   scene.add_mesh(test_scenes::horizontal_square(40.0), {scene.add_material(test_scenes::lambert(albedo))});
 
-  RectLight lamp;
+  RectLamp lamp;
   const glm::dvec3 centre(0.1, -0.2, 0.8);
   // Tilted lamp: +X along (1, 0, 0.3), emitting down its -Z toward the plane.
   const glm::dvec3 ex = glm::normalize(glm::dvec3(1, 0, 0.3));
@@ -58,7 +58,7 @@ TEST_CASE("A Lambertian plane under a rectangular lamp matches the polygon irrad
   lamp.size_y = 0.3;
   lamp.power = 40.0;
   lamp.color = glm::dvec3(1.0, 0.5, 0.25);
-  scene.add_light(lamp);
+  scene.add_lamp(lamp);
 
   const double radiance = lamp.power / (4.0 * lamp.size_x * lamp.size_y);  // Cycles: P / (4 a b)
   const std::vector<glm::dvec3> corners = {
@@ -87,14 +87,14 @@ TEST_CASE("A Lambertian plane under a spot lamp gets I a(w) cos / d^2", "[render
   const float albedo = 0.5f;
   Scene scene;
   scene.add_mesh(test_scenes::horizontal_square(40.0), {scene.add_material(test_scenes::lambert(albedo))});
-  SpotLight spot;
+  SpotLamp spot;
   spot.position = glm::dvec3(0.3, 0.2, 1.5);
   spot.direction = glm::normalize(glm::dvec3(0.2, -0.1, -1.0));
   spot.spot_angle = 60.0 * kPi / 180.0;
   spot.blend = 0.4;
   spot.power = 100.0;
   spot.color = glm::dvec3(1.0);
-  scene.add_light(spot);
+  scene.add_lamp(spot);
 
   RenderSettings settings;
   settings.samples_per_pixel = 4;
@@ -127,10 +127,10 @@ TEST_CASE("A point lamp's intensity is P / (4 pi) per steradian", "[render]") {
   const float albedo = 0.8f;
   Scene scene;
   scene.add_mesh(test_scenes::horizontal_square(40.0), {scene.add_material(test_scenes::lambert(albedo))});
-  PointLight point;
+  PointLamp point;
   point.position = glm::dvec3(-0.4, 0.0, 2.0);
   point.power = 250.0;
-  scene.add_light(point);
+  scene.add_lamp(point);
   const glm::dvec3 target(0.5, 0.25, 0.0);
   const glm::dvec3 to_point = target - point.position;
   const double d = glm::length(to_point);
@@ -145,7 +145,7 @@ TEST_CASE("A point lamp's intensity is P / (4 pi) per steradian", "[render]") {
 TEST_CASE("An area lamp visible to the camera shows its radiance P / (4 a b), only then and only its front", "[render]") {
   // Nothing but the lamp in the scene, facing the camera (lamps emit down their -Z), filling the
   // view: every sample meets it, and camera rays take its radiance whole.
-  RectLight lamp;
+  RectLamp lamp;
   lamp.light_to_world = matgeom::look_at_camera_to_world({0.0, 0.0, 1.0}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0});
   lamp.size_x = 2.0;
   lamp.size_y = 1.0;
@@ -161,7 +161,7 @@ TEST_CASE("An area lamp visible to the camera shows its radiance P / (4 a b), on
                           View{true, {0.0, 0.0, 2.0}, 0.0}}) {  // from behind: its back emits nothing
     lamp.visible_to_camera = view.visible;
     Scene scene;
-    scene.add_light(lamp);
+    scene.add_lamp(lamp);
     RenderSettings settings;
     settings.samples_per_pixel = 4;
     settings.aovs = 0;
@@ -206,11 +206,11 @@ TEST_CASE("A point lamp of radius R is a disk facing each point: E = P h / (4 pi
   const float albedo = 0.8f;
   Scene scene;
   scene.add_mesh(test_scenes::horizontal_square(40.0), {scene.add_material(test_scenes::lambert(albedo))});
-  PointLight point;
+  PointLamp point;
   point.position = glm::dvec3(0.0, 0.0, 0.5);
   point.power = 50.0;
   point.radius = 0.3;
-  scene.add_light(point);
+  scene.add_lamp(point);
   RenderSettings settings;
   settings.samples_per_pixel = 64;
   settings.seed = 3;
@@ -231,14 +231,14 @@ TEST_CASE("A spot lamp of radius R weighs each point of its disk by the cone fac
   const float albedo = 0.5f;
   Scene scene;
   scene.add_mesh(test_scenes::horizontal_square(40.0), {scene.add_material(test_scenes::lambert(albedo))});
-  SpotLight spot;
+  SpotLamp spot;
   spot.position = glm::dvec3(0.2, 0.0, 0.8);
   spot.direction = glm::normalize(glm::dvec3(0.3, 0.0, -1.0));
   spot.spot_angle = 70.0 * kPi / 180.0;
   spot.blend = 0.5;
   spot.power = 80.0;
   spot.radius = 0.25;
-  scene.add_light(spot);
+  scene.add_lamp(spot);
   const double cos_half = std::cos(0.5 * spot.spot_angle);
   const auto cone_factor = [&](const glm::dvec3& from_lamp) {
     const double cos_t = glm::dot(glm::normalize(from_lamp), spot.direction);
@@ -271,12 +271,12 @@ TEST_CASE("A sun gives E = S cos on a plane; with an angle, the mean cosine over
   for (const double angle_deg : {0.0, 12.0}) {
     Scene scene;
     scene.add_mesh(test_scenes::horizontal_square(40.0), {scene.add_material(test_scenes::lambert(albedo))});
-    SunLight sun;
+    SunLamp sun;
     sun.direction = -to_sun;
     sun.strength = 3.0;
     sun.color = glm::dvec3(1.0, 0.9, 0.8);
     sun.angle = angle_deg * kPi / 180.0;
-    scene.add_light(sun);
+    scene.add_lamp(sun);
     // A disk of radius tan(angle / 2) at distance 1 toward the sun, of radiance S / (pi r^2 cos^3):
     // the quadrature's cos(disk, x - q) / |q - x|^2 is that cos^3, so E = S / (pi r^2) times the
     // integral of the cosine to the plane over the disk.
@@ -303,7 +303,7 @@ TEST_CASE("A sun gives E = S cos on a plane; with an angle, the mean cosine over
 }
 
 TEST_CASE("Camera rays do not see a sun, a mirror shows it with radiance S / (pi r^2 cos^3)", "[render]") {
-  SunLight sun;
+  SunLamp sun;
   sun.direction = glm::dvec3(0, 0, -1);
   sun.strength = 2.0;
   sun.angle = 20.0 * kPi / 180.0;
@@ -312,7 +312,7 @@ TEST_CASE("Camera rays do not see a sun, a mirror shows it with radiance S / (pi
   settings.aovs = 0;
   {
     Scene empty;
-    empty.add_light(sun);
+    empty.add_lamp(sun);
     FrameBuffers frame;
     render(empty, Camera::look_at({0, 0, 0}, {0, 0, 1}, {0, 1, 0}, 0.01, 4, 4), settings, frame);
     for (const float v : frame.color) CHECK(v == 0.0f);
@@ -325,7 +325,7 @@ TEST_CASE("Camera rays do not see a sun, a mirror shows it with radiance S / (pi
   mirror.set(MaterialParameter::Metallic, 1.0f);
   mirror.set(MaterialParameter::Roughness, 0.0f);
   scene.add_mesh(test_scenes::horizontal_square(40.0), {scene.add_material(mirror)});
-  scene.add_light(sun);
+  scene.add_lamp(sun);
   FrameBuffers frame;
   render(scene, camera_above(glm::dvec3(0.0)), settings, frame);
   const double r = std::tan(0.5 * sun.angle);

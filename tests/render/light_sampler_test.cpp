@@ -13,8 +13,8 @@ using namespace matrender;
 
 namespace {
 
-RectLight rect_at(double x) {
-  RectLight lamp;
+RectLamp rect_at(double x) {
+  RectLamp lamp;
   lamp.light_to_world[3] = glm::dvec4(x, 0.0, 1.0, 1.0);
   lamp.size_x = lamp.size_y = 0.5;
   return lamp;
@@ -23,28 +23,28 @@ RectLight rect_at(double x) {
 }  // namespace
 
 TEST_CASE("The distribution holds the lights by type: area, delta, infinite, not the uniform background", "[render]") {
-  PointLight soft_point;
+  PointLamp soft_point;
   soft_point.radius = 0.1;
-  SpotLight soft_spot;
+  SpotLamp soft_spot;
   soft_spot.radius = 0.2;
-  SunLight soft_sun;
+  SunLamp soft_sun;
   soft_sun.angle = 0.01;
-  const std::vector<Light> lights = {PointLight{}, soft_sun, SunLight{}, rect_at(0.0), soft_spot, SpotLight{},
+  const std::vector<Lamp> lights = {PointLamp{}, soft_sun, SunLamp{}, rect_at(0.0), soft_spot, SpotLamp{},
                                      rect_at(2.0), soft_point};
   const LightSampler sampler(lights, UniformBackground(glm::vec3(0.1f, 0.2f, 0.3f)));
   REQUIRE(sampler.sampled_count() == 8);
-  CHECK(std::holds_alternative<PreparedRectLight>(sampler.light(0)));
-  CHECK(std::holds_alternative<PreparedRectLight>(sampler.light(1)));
-  CHECK(std::holds_alternative<PreparedDiskLamp>(sampler.light(2)));
-  CHECK(std::holds_alternative<PreparedDiskLamp>(sampler.light(3)));
+  CHECK(std::holds_alternative<RectLight>(sampler.light(0)));
+  CHECK(std::holds_alternative<RectLight>(sampler.light(1)));
+  CHECK(std::holds_alternative<DiskLight>(sampler.light(2)));
+  CHECK(std::holds_alternative<DiskLight>(sampler.light(3)));
   CHECK(light_type(sampler.light(3)) == LightType::Area);
-  CHECK(std::holds_alternative<PreparedPointLight>(sampler.light(4)));
-  CHECK(std::holds_alternative<PreparedSpotLight>(sampler.light(5)));
+  CHECK(std::holds_alternative<PointLight>(sampler.light(4)));
+  CHECK(std::holds_alternative<SpotLight>(sampler.light(5)));
   CHECK(light_type(sampler.light(5)) == LightType::DeltaPosition);
   // A sun of angle 0 is one direction, one with an angle a disk of directions rays see.
-  CHECK(std::holds_alternative<PreparedDistantLight>(sampler.light(6)));
+  CHECK(std::holds_alternative<DistantLight>(sampler.light(6)));
   CHECK(light_type(sampler.light(6)) == LightType::DeltaDirection);
-  CHECK(std::holds_alternative<PreparedSunLight>(sampler.light(7)));
+  CHECK(std::holds_alternative<SunLight>(sampler.light(7)));
   CHECK(light_type(sampler.light(7)) == LightType::Infinite);
   // The background is a ninth light, outside the distribution.
   CHECK(std::holds_alternative<UniformBackground>(sampler.light(8)));
@@ -52,7 +52,7 @@ TEST_CASE("The distribution holds the lights by type: area, delta, infinite, not
 }
 
 TEST_CASE("Rays find the disks of lamps with a radius, facing their origin, within their length", "[render]") {
-  PointLight soft;
+  PointLamp soft;
   soft.position = glm::dvec3(0.0, 0.0, 1.0);
   soft.radius = 0.2;
   const LightSampler sampler({soft}, UniformBackground(glm::vec3(0.0f)));
@@ -70,7 +70,7 @@ TEST_CASE("Rays find the disks of lamps with a radius, facing their origin, with
 }
 
 TEST_CASE("A uniform pick chooses each light over an equal interval and rescales u", "[render]") {
-  const LightSampler sampler({rect_at(0.0), PointLight{}, SpotLight{}}, UniformBackground(glm::vec3(0.0f)),
+  const LightSampler sampler({rect_at(0.0), PointLamp{}, SpotLamp{}}, UniformBackground(glm::vec3(0.0f)),
                              LightSelection::Uniform);
   const PickSite site = sampler.site(glm::vec3(0.0f), {});
   for (int k = 0; k < 3; ++k)
@@ -92,16 +92,16 @@ TEST_CASE("A uniform pick chooses each light over an equal interval and rescales
 TEST_CASE("An importance pick chooses each light in proportion to its importance and rescales u", "[render]") {
   // Two point lamps, one four times as far from the site: 16 times less irradiance; a rectangle
   // facing away from the site can give it nothing and is never picked.
-  RectLight away = rect_at(0.0);  // emits down -Z, the site is above it
-  const std::vector<Light> lights = {away, PointLight{glm::dvec3(0.0, 0.0, 2.0), 10.0, glm::dvec3(1.0)},
-                                     PointLight{glm::dvec3(0.0, 0.0, 5.0), 10.0, glm::dvec3(1.0)}};
+  RectLamp away = rect_at(0.0);  // emits down -Z, the site is above it
+  const std::vector<Lamp> lights = {away, PointLamp{glm::dvec3(0.0, 0.0, 2.0), 10.0, glm::dvec3(1.0)},
+                                     PointLamp{glm::dvec3(0.0, 0.0, 5.0), 10.0, glm::dvec3(1.0)}};
   const LightSampler sampler(lights, UniformBackground(glm::vec3(0.0f)));
   const PickSite site = sampler.site(glm::vec3(0.0f, 0.0f, 1.0f), {glm::vec3(0.0f, 0.0f, 1.0f), false});
   const double near = 10.0 / (4.0 * matbase::kPi) / 1.0, far = 10.0 / (4.0 * matbase::kPi) / 16.0;
   CHECK(site.total_importance == Approx(near + far).epsilon(1e-5));
-  REQUIRE(std::holds_alternative<PreparedRectLight>(sampler.light(0)));
+  REQUIRE(std::holds_alternative<RectLight>(sampler.light(0)));
   CHECK(sampler.pick_probability(0, site) == 0.0f);
-  REQUIRE(std::holds_alternative<PreparedPointLight>(sampler.light(1)));
+  REQUIRE(std::holds_alternative<PointLight>(sampler.light(1)));
   CHECK(sampler.pick_probability(1, site) == Approx(16.0 / 17.0));
   for (double within : {0.0, 0.3, 0.9}) {
     float u = static_cast<float>(within * 16.0 / 17.0);
@@ -127,21 +127,21 @@ TEST_CASE("Importance is positive wherever a light can light a point", "[render]
   // For random points and normals around lamps of every kind, any light sample that arrives above
   // the receiving plane with radiance comes from a light of positive importance there: light
   // selection never leaves out light the image needs.
-  SpotLight spot;
+  SpotLamp spot;
   spot.position = glm::dvec3(0.2, -0.3, 1.0);
   spot.direction = glm::normalize(glm::dvec3(0.1, 0.2, -1.0));
   spot.spot_angle = 0.6;
-  SpotLight soft_spot = spot;
+  SpotLamp soft_spot = spot;
   soft_spot.radius = 0.3;
-  PointLight soft_point{glm::dvec3(-0.5, 0.4, 0.3), 20.0, glm::dvec3(1.0), 0.4};
-  RectLight tilted = rect_at(0.3);
+  PointLamp soft_point{glm::dvec3(-0.5, 0.4, 0.3), 20.0, glm::dvec3(1.0), 0.4};
+  RectLamp tilted = rect_at(0.3);
   tilted.light_to_world = glm::dmat4(glm::dvec4(glm::normalize(glm::dvec3(1, 0, 1)), 0), glm::dvec4(0, 1, 0, 0),
                                      glm::dvec4(glm::normalize(glm::dvec3(-1, 0, 1)), 0), glm::dvec4(0.3, 0, 0.5, 1));
   tilted.size_x = 2.0;
-  SunLight sun;
+  SunLamp sun;
   sun.direction = glm::normalize(glm::dvec3(0.3, 0.1, -1.0));
   sun.angle = 0.4;
-  const std::vector<Light> lights = {tilted, soft_point, soft_spot, spot, sun};
+  const std::vector<Lamp> lights = {tilted, soft_point, soft_spot, spot, sun};
   const LightSampler sampler(lights, UniformBackground(glm::vec3(0.0f)));
   UniformFloats rng(17);
   int lit = 0;
@@ -166,9 +166,9 @@ TEST_CASE("The rectangles' weights, taken all at once, are each lamp's importanc
   // remainder) and a point lamp; sites all around them, inside their bounding spheres and behind
   // them, with reflecting and transmitting BSDFs.
   UniformFloats rng(5);
-  std::vector<Light> lights;
+  std::vector<Lamp> lights;
   for (int k = 0; k < 9; ++k) {
-    RectLight rect;
+    RectLamp rect;
     const glm::dvec3 z = glm::dvec3(random_unit_vector(rng));
     const glm::dvec3 x = glm::normalize(glm::cross(z, std::abs(z.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
     rect.light_to_world = glm::dmat4(glm::dvec4(x, 0), glm::dvec4(glm::cross(z, x), 0), glm::dvec4(z, 0),
@@ -178,7 +178,7 @@ TEST_CASE("The rectangles' weights, taken all at once, are each lamp's importanc
     rect.power = 10.0 + 100.0 * rng.next();
     lights.push_back(rect);
   }
-  lights.push_back(PointLight{glm::dvec3(0.0, 0.0, 3.0), 10.0, glm::dvec3(1.0)});
+  lights.push_back(PointLamp{glm::dvec3(0.0, 0.0, 3.0), 10.0, glm::dvec3(1.0)});
   const LightSampler sampler(lights, UniformBackground(glm::vec3(0.0f)));
   REQUIRE(sampler.sampled_count() == 10);
   int zeros = 0;
@@ -224,7 +224,7 @@ TEST_CASE("A ray leaving the scene sees the uniform background with MIS weight 1
 }
 
 TEST_CASE("A light sample's pdf includes the probability of picking the light", "[render]") {
-  const LightSampler sampler({PointLight{glm::dvec3(0.0, 0.0, 2.0), 10.0, glm::dvec3(1.0)}, PointLight{}},
+  const LightSampler sampler({PointLamp{glm::dvec3(0.0, 0.0, 2.0), 10.0, glm::dvec3(1.0)}, PointLamp{}},
                              UniformBackground(glm::vec3(0.0f)), LightSelection::Uniform);
   const auto s = sampler.sample(sampler.site(glm::vec3(0.0f, 0.0f, 1.0f), {}), glm::vec2(0.25f, 0.5f));
   REQUIRE(s);

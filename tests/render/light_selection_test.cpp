@@ -18,8 +18,8 @@ using namespace matrender;
 
 namespace {
 
-RectLight lamp_facing(const glm::dvec3& position, const glm::dvec3& target, double size, double power) {
-  RectLight lamp;
+RectLamp lamp_facing(const glm::dvec3& position, const glm::dvec3& target, double size, double power) {
+  RectLamp lamp;
   lamp.light_to_world = matgeom::look_at_camera_to_world(position, target, {0, 0, 1});
   lamp.size_x = lamp.size_y = size;
   lamp.power = power;
@@ -41,17 +41,17 @@ Scene back_lit_room() {
   scene.add_mesh(test_scenes::uv_sphere(0.3, 24, glm::dvec3(0.0, 0.0, 0.3)), {scene.add_material(glossy)});
   for (int k = 0; k < 10; ++k) {
     const double x = -1.8 + 0.4 * k;
-    scene.add_light(lamp_facing({x, 1.7, 0.5}, {x, 2.0, 0.7}, 0.25, 30.0));
+    scene.add_lamp(lamp_facing({x, 1.7, 0.5}, {x, 2.0, 0.7}, 0.25, 30.0));
   }
   for (const glm::dvec3& at : {glm::dvec3(1.0, -1.0, 0.8), glm::dvec3(-1.0, -1.0, 0.8), glm::dvec3(0.8, 0.6, 1.2),
                                glm::dvec3(-0.8, 0.6, 1.2)})
-    scene.add_light(lamp_facing(at, {0.0, 0.0, 0.3}, 0.4, 40.0));
-  scene.add_light(PointLight{glm::dvec3(0.5, -0.6, 0.4), 5.0, glm::dvec3(1.0), 0.1});
-  SunLight sun;
+    scene.add_lamp(lamp_facing(at, {0.0, 0.0, 0.3}, 0.4, 40.0));
+  scene.add_lamp(PointLamp{glm::dvec3(0.5, -0.6, 0.4), 5.0, glm::dvec3(1.0), 0.1});
+  SunLamp sun;
   sun.direction = glm::normalize(glm::dvec3(0.2, 1.0, -0.6));
   sun.strength = 0.5;
   sun.angle = 0.1;
-  scene.add_light(sun);
+  scene.add_lamp(sun);
   return scene;
 }
 

@@ -107,16 +107,16 @@ Material grey_material() {
 // An area lamp (square of side `area_size`, 500 W) looking at the origin from `area_at`, a 300 W
 // point lamp and a 300 W spot aimed at the origin.
 void add_lamps(Scene& scene, double area_size, const glm::dvec3& area_at, const glm::dvec3& point_at, const glm::dvec3& spot_at) {
-  RectLight area;
+  RectLamp area;
   const glm::dvec3 back = glm::normalize(area_at);  // the lamp's +Z points away from the origin
   const glm::dvec3 x = glm::normalize(glm::cross(glm::dvec3(0.3, 0.2, 1.0), back));
   area.light_to_world = glm::dmat4(glm::dvec4(x, 0.0), glm::dvec4(glm::cross(back, x), 0.0), glm::dvec4(back, 0.0),
                                    glm::dvec4(area_at, 1.0));
   area.size_x = area.size_y = area_size;
   area.power = 500.0;
-  scene.add_light(area);
-  scene.add_light(PointLight{point_at, 300.0, glm::dvec3(1.0)});
-  scene.add_light(SpotLight{spot_at, -spot_at, 1.2, 0.2, 300.0, glm::dvec3(1.0)});
+  scene.add_lamp(area);
+  scene.add_lamp(PointLamp{point_at, 300.0, glm::dvec3(1.0)});
+  scene.add_lamp(SpotLamp{spot_at, -spot_at, 1.2, 0.2, 300.0, glm::dvec3(1.0)});
 }
 
 struct LeakCount {

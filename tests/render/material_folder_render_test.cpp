@@ -61,7 +61,7 @@ double lit_mean(const std::filesystem::path& folder, bool light_toward_plus_v) {
   Scene scene;
   scene.add_mesh(plane, {scene.add_material(material)});
   // A point lamp low over the plane on the +y (+v) or -y side.
-  scene.add_light(PointLight{glm::dvec3(0.0, light_toward_plus_v ? 3.0 : -3.0, 0.8), 200.0, glm::dvec3(1.0)});
+  scene.add_lamp(PointLamp{glm::dvec3(0.0, light_toward_plus_v ? 3.0 : -3.0, 0.8), 200.0, glm::dvec3(1.0)});
   const Camera camera = Camera::look_at({0, 0, 3}, {0, 0, 0}, {0, 1, 0}, 0.5, 16, 16);
   RenderSettings settings;
   settings.samples_per_pixel = 4;

@@ -21,7 +21,7 @@ namespace {
 double share_on_face_normals(const std::string& file) {
   matrender::Scene scene;
   matrender::add_asset(scene, matgeom::read_object((std::filesystem::path(MATPREDICT_MESH_CORPUS) / file).string()));
-  scene.add_light(matrender::PointLight{glm::dvec3(3, -4, 5), 1000.0, glm::dvec3(1.0)});
+  scene.add_lamp(matrender::PointLamp{glm::dvec3(3, -4, 5), 1000.0, glm::dvec3(1.0)});
   // From a corner: three faces in view, each at another angle.
   const matrender::Camera camera = matrender::Camera::look_at({4, -5, 3.5}, {0, 0, 0}, {0, 0, 1}, 0.6, 48, 48);
   matrender::RenderSettings settings;

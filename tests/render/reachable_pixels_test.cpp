@@ -106,11 +106,11 @@ struct TwoObjects {
     Material m = test_scenes::lambert(0.6f);
     const glm::vec3 behind = glm::vec3(camera.camera_to_world[3]) + 3.0f * glm::vec3(camera.camera_to_world[2]);
     s.add_mesh(far_vertex ? with_unused_vertex(sphere, behind) : sphere, {s.add_material(m)});
-    RectLight lamp;
+    RectLamp lamp;
     lamp.light_to_world[3] = glm::dvec4(1.0, 0.5, 1.5, 1.0);
     lamp.power = 150.0;
-    s.add_light(lamp);
-    s.add_light(PointLight{glm::dvec3(0.8, -0.8, 0.8), 40.0, glm::dvec3(1.0)});
+    s.add_lamp(lamp);
+    s.add_lamp(PointLamp{glm::dvec3(0.8, -0.8, 0.8), 40.0, glm::dvec3(1.0)});
     s.set_background(background);
     s.commit();
     return s;

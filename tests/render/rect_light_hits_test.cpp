@@ -16,7 +16,7 @@ namespace {
 
 // Distance to the lamp's emitting (-Z) side, or -1: the ray meets the plane of the lamp from
 // its -Z side inside the rectangle.
-double reference_hit(const RectLight& lamp, const glm::dvec3& o, const glm::dvec3& d, double t_max) {
+double reference_hit(const RectLamp& lamp, const glm::dvec3& o, const glm::dvec3& d, double t_max) {
   const glm::dvec3 c(lamp.light_to_world[3]);
   const glm::dvec3 ax = glm::normalize(glm::dvec3(lamp.light_to_world[0]));
   const glm::dvec3 ay = glm::normalize(glm::dvec3(lamp.light_to_world[1]));
@@ -37,9 +37,9 @@ TEST_CASE("Blocked lamp hits equal a plain ray-rectangle test", "[render]") {
     return glm::vec3(half * (2.0f * rng.next() - 1.0f), half * (2.0f * rng.next() - 1.0f),
                      half * (2.0f * rng.next() - 1.0f));
   };
-  std::vector<RectLight> lamps;
+  std::vector<RectLamp> lamps;
   for (int i = 0; i < 11; ++i) {  // more than one block
-    RectLight lamp;
+    RectLamp lamp;
     const glm::vec3 axis = glm::normalize(in_box(1.0f) + glm::vec3(0.0f, 0.0f, 1e-3f));
     glm::dmat4 m = glm::translate(glm::dmat4(1.0), glm::dvec3(in_box(2.0f)));
     m = glm::rotate(m, 6.28 * double(rng.next()), glm::dvec3(axis));
@@ -48,7 +48,7 @@ TEST_CASE("Blocked lamp hits equal a plain ray-rectangle test", "[render]") {
     lamp.size_y = 0.2 + 1.5 * rng.next();
     lamps.push_back(lamp);
   }
-  std::vector<PreparedRectLight> prepared(lamps.begin(), lamps.end());
+  std::vector<RectLight> prepared(lamps.begin(), lamps.end());
   const RectLightHits hits(prepared);
   int total_hits = 0, decided = 0;
   for (int r = 0; r < 20000; ++r) {
@@ -63,7 +63,7 @@ TEST_CASE("Blocked lamp hits equal a plain ray-rectangle test", "[render]") {
       const bool near_boundary = std::abs(expected - t_max) < 1e-4;
       if ((expected > 0.0) != (got[k] > 0.0)) {
         const double edge_margin = 1e-4;
-        RectLight grown = lamps[k], shrunk = lamps[k];
+        RectLamp grown = lamps[k], shrunk = lamps[k];
         grown.size_x += edge_margin, grown.size_y += edge_margin;
         shrunk.size_x -= edge_margin, shrunk.size_y -= edge_margin;
         const bool ambiguous = (reference_hit(grown, glm::dvec3(o), glm::dvec3(d), t_max) > 0.0) !=
@@ -88,9 +88,9 @@ TEST_CASE("Blocked lamp hits equal a plain ray-rectangle test", "[render]") {
 // rays aimed just inside a corner from far and near.
 TEST_CASE("Rays aimed just inside a lamp's corners hit it", "[render]") {
   UniformFloats rng(0x5eed0005);
-  std::vector<RectLight> lamps;
+  std::vector<RectLamp> lamps;
   for (int i = 0; i < 6; ++i) {
-    RectLight lamp;
+    RectLamp lamp;
     const glm::dvec3 axis = glm::normalize(glm::dvec3(rng.next() - 0.5, rng.next() - 0.5, rng.next() + 0.1));
     lamp.light_to_world = glm::rotate(glm::translate(glm::dmat4(1.0), glm::dvec3(2.0 * i, 1.0, 3.0)),
                                       6.28 * double(rng.next()), axis);
@@ -98,7 +98,7 @@ TEST_CASE("Rays aimed just inside a lamp's corners hit it", "[render]") {
     lamp.size_y = 0.05 + 2.0 * rng.next();
     lamps.push_back(lamp);
   }
-  std::vector<PreparedRectLight> prepared(lamps.begin(), lamps.end());
+  std::vector<RectLight> prepared(lamps.begin(), lamps.end());
   const RectLightHits hits(prepared);
   int aimed = 0;
   for (size_t k = 0; k < lamps.size(); ++k) {

@@ -146,7 +146,7 @@ struct FloorPixels {
 
   FloorPixels() {
     scene.add_mesh(test_scenes::horizontal_square(1.0), {scene.add_material(test_scenes::lambert(0.5f))});
-    scene.add_light(PointLight{glm::dvec3(0.3, 0.2, 1.0), 5.0, glm::dvec3(1.0)});
+    scene.add_lamp(PointLamp{glm::dvec3(0.3, 0.2, 1.0), 5.0, glm::dvec3(1.0)});
     scene.commit();
   }
 

@@ -48,18 +48,18 @@ Material material_with(float roughness, float metallic) {
 
 void add_lamps_touching(Scene& scene, float scale) {
   // A rectangle lying in the surface plane and a point lamp exactly on a vertex.
-  RectLight lamp;
+  RectLamp lamp;
   lamp.light_to_world[3] = glm::dvec4(0.5 * scale, 0.5 * scale, 0.0, 1.0);
   lamp.size_x = lamp.size_y = 0.5 * scale;
   lamp.power = 10.0;
-  scene.add_light(lamp);
-  RectLight above;
+  scene.add_lamp(lamp);
+  RectLamp above;
   above.light_to_world[3] = glm::dvec4(0.5 * scale, 0.2 * scale, 1.0 * scale, 1.0);
   above.size_x = above.size_y = 0.3 * scale;
   above.power = 10.0 * scale * scale;
-  scene.add_light(above);
-  scene.add_light(PointLight{glm::dvec3(0.0), 10.0, glm::dvec3(1.0)});
-  scene.add_light(SpotLight{glm::dvec3(scale, 0.0, 0.0), glm::dvec3(0, 0, -1), 0.5, 0.0, 10.0, glm::dvec3(1.0)});
+  scene.add_lamp(above);
+  scene.add_lamp(PointLamp{glm::dvec3(0.0), 10.0, glm::dvec3(1.0)});
+  scene.add_lamp(SpotLamp{glm::dvec3(scale, 0.0, 0.0), glm::dvec3(0, 0, -1), 0.5, 0.0, 10.0, glm::dvec3(1.0)});
 }
 
 }  // namespace
@@ -121,7 +121,7 @@ TEST_CASE("Grazing views of a smooth normal-mapped sphere stay finite", "[render
   const uint8_t bumpy[4 * 3] = {255, 128, 128, 128, 255, 128, 0, 128, 200, 128, 0, 60};
   m.normal_map = Texture::from_pixels8(2, 2, 3, bumpy, ColorSpace::NonColor);
   scene.add_mesh(sphere, {scene.add_material(m)});
-  scene.add_light(PointLight{glm::dvec3(3, 0, 0), 100.0, glm::dvec3(1.0)});
+  scene.add_lamp(PointLamp{glm::dvec3(3, 0, 0), 100.0, glm::dvec3(1.0)});
   scene.set_background(glm::vec3(1.0f));
   RenderSettings settings;
   settings.samples_per_pixel = 8;
@@ -154,29 +154,29 @@ TEST_CASE("What single precision cannot render is refused with the reason, never
   const uint32_t mixed = scene.add_mesh(zero_area, {grey});
 
   // Lamps whose values are each valid but whose emission or size a float cannot hold.
-  RectLight tiny;
+  RectLamp tiny;
   tiny.size_x = 1e-300;
-  RectLight bright;
+  RectLamp bright;
   bright.power = 1e300;
-  RectLight flat;
+  RectLamp flat;
   flat.light_to_world[1] = flat.light_to_world[0];  // X and Y axes parallel
-  PointLight far_point;
+  PointLamp far_point;
   far_point.position = glm::dvec3(0.0, 1e7, 0.0);
-  PointLight nan_colour;
+  PointLamp nan_colour;
   nan_colour.color = glm::dvec3(std::numeric_limits<double>::quiet_NaN());
-  SpotLight no_direction;
+  SpotLamp no_direction;
   no_direction.direction = glm::dvec3(0.0);
-  SpotLight wide;
+  SpotLamp wide;
   wide.spot_angle = 4.0;
-  const std::vector<std::pair<Light, const char*>> refused = {
+  const std::vector<std::pair<Lamp, const char*>> refused = {
       {tiny, "area"},          {bright, "radiance"},           {flat, "parallel"},       {far_point, "beyond 65536 m"},
       {nan_colour, "colour"},  {no_direction, "direction"},     {wide, "spot angle"}};
   for (const auto& [light, reason] : refused) {
     CAPTURE(reason);
-    CHECK_THROWS_WITH(scene.add_light(light), Contains("light 0: ") && Contains(reason));
+    CHECK_THROWS_WITH(scene.add_lamp(light), Contains("light 0: ") && Contains(reason));
   }
-  CHECK(scene.lights().empty());
-  scene.add_light(PointLight{glm::dvec3(0.0, 0.0, 1.0), 10.0, glm::dvec3(1.0)});
+  CHECK(scene.lamps().empty());
+  scene.add_lamp(PointLamp{glm::dvec3(0.0, 0.0, 1.0), 10.0, glm::dvec3(1.0)});
 
   // A camera beyond the limit (Embree asserted on its rays at 1e20 m) or at NaN.
   CHECK(mixed == 0);

@@ -106,7 +106,7 @@ TEST_CASE("Illuminance overrides scale only the paper's rig", "[render]") {
   CHECK_FALSE(std::get<matrender::LightRigDescription>(scene.lights).target_illuminance_lux.has_value());
 
   SceneDescription listed = two_vases();
-  listed.lights = std::vector<matrender::Light>{matrender::PointLight{}};
+  listed.lights = std::vector<matrender::Lamp>{matrender::PointLamp{}};
   CHECK(refusal(brighter, listed) ==
         "--illuminance: rescales only the paper's light rig, and the scene file lists its own lights");
   CHECK(refusal(given_powers, listed).empty());  // a scene's own lights are at their powers anyway

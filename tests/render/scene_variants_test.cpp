@@ -37,11 +37,11 @@ std::vector<Material> variant_materials() {
   return {red, metal, bumpy};
 }
 
-Scene scene_with(const std::vector<uint32_t>& parts, const Light& light) {
+Scene scene_with(const std::vector<uint32_t>& parts, const Lamp& light) {
   Scene scene;
   for (const Material& m : variant_materials()) scene.add_material(m);
   scene.add_mesh(two_part_floor(), parts);
-  scene.add_light(light);
+  scene.add_lamp(light);
   return scene;
 }
 
@@ -55,8 +55,8 @@ std::vector<float> render_color(Scene& scene) {
   return frame.color;
 }
 
-const Light kOverhead = PointLight{glm::dvec3(0.2, 0.1, 1.0), 40.0, glm::dvec3(1.0)};
-const Light kSpot = SpotLight{glm::dvec3(-0.5, -0.5, 0.8), glm::dvec3(0.5, 0.5, -0.8), 1.0, 0.2, 60.0, glm::dvec3(1.0)};
+const Lamp kOverhead = PointLamp{glm::dvec3(0.2, 0.1, 1.0), 40.0, glm::dvec3(1.0)};
+const Lamp kSpot = SpotLamp{glm::dvec3(-0.5, -0.5, 0.8), glm::dvec3(0.5, 0.5, -0.8), 1.0, 0.2, 60.0, glm::dvec3(1.0)};
 
 }  // namespace
 
@@ -80,8 +80,8 @@ TEST_CASE("Switching part materials after the BVH is built renders as a scene bu
 TEST_CASE("Switching the lamps after the BVH is built renders as a scene built that way", "[render]") {
   Scene scene = scene_with({0, 1}, kOverhead);
   render_color(scene);
-  scene.clear_lights();
-  scene.add_light(kSpot);
+  scene.clear_lamps();
+  scene.add_lamp(kSpot);
   Scene fresh = scene_with({0, 1}, kSpot);
   CHECK(render_color(scene) == render_color(fresh));
 }

@@ -146,7 +146,7 @@ TEST_CASE("A render in a cache far smaller than its textures gives the same pixe
     for (glm::vec3& p : plane.positions) p.x += 2.0f * (k - 2.5f);
     scene.add_mesh(plane, {scene.add_material(m)});
   }
-  scene.add_light(PointLight{glm::dvec3(0.0, -2.0, 3.0), 2000.0, glm::dvec3(1.0)});
+  scene.add_lamp(PointLamp{glm::dvec3(0.0, -2.0, 3.0), 2000.0, glm::dvec3(1.0)});
   scene.set_background(glm::vec3(0.3f));
   RenderSettings settings;
   settings.samples_per_pixel = 4;

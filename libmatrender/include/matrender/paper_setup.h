@@ -12,7 +12,7 @@
 #include "matgeom/light_rig.h"
 #include "matgeom/mesh.h"
 #include "matrender/camera.h"
-#include "matrender/light.h"
+#include "matrender/lamp.h"
 #include "matrender/scene.h"
 #include "matrender/scene_description.h"
 

@@ -12,7 +12,7 @@
 
 #include "matgeom/mesh.h"
 #include "matrender/background.h"
-#include "matrender/light.h"
+#include "matrender/lamp.h"
 #include "matrender/material.h"
 
 namespace matrender {
@@ -55,9 +55,9 @@ class Scene {
   // Throws std::invalid_argument, naming the light and the reason, for one single precision
   // cannot render as given (non-finite or negative values, a position beyond the scene limit, an
   // area or emission that does not fit a float).
-  void add_light(const Light& light);
-  void clear_lights();
-  const std::vector<Light>& lights() const;
+  void add_lamp(const Lamp& light);
+  void clear_lamps();
+  const std::vector<Lamp>& lamps() const;
 
   // What camera rays that miss see and what lights the scene from every direction: a uniform
   // radiance or an environment map (matrender/background.h). An environment map's sampling

@@ -21,7 +21,7 @@
 #include "matgeom/object_asset.h"
 #include "matmaterial/library/material_library.h"
 #include "matrender/camera.h"
-#include "matrender/light.h"
+#include "matrender/lamp.h"
 #include "matrender/material.h"
 #include "matrender/render.h"
 #include "matrender/texture.h"
@@ -111,7 +111,7 @@ struct ObjectDescription {
 struct LightRigDescription {
   std::optional<double> target_illuminance_lux;
 };
-using LightsDescription = std::variant<std::vector<Light>, LightRigDescription>;
+using LightsDescription = std::variant<std::vector<Lamp>, LightRigDescription>;
 
 // World > Environment Texture: an equirectangular image file times a strength, turned about Z
 // (matrender/background.h).

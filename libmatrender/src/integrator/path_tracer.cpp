@@ -178,7 +178,7 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
       const std::optional<size_t> emitter = lights_.emitter_index(hit.mesh);
       if (!camera_ray && !bsdf_delta && emitter) {
         const float t = glm::length(sp.position - scattered.p);
-        const auto& mesh_emitter = std::get<PreparedMeshEmitter>(lights_.light(*emitter));
+        const auto& mesh_emitter = std::get<MeshEmitter>(lights_.light(*emitter));
         weight = power_heuristic(bsdf_pdf, lights_.pick_probability(*emitter, scattered) *
                                                mesh_emitter.pdf(scattered.p, dir, t, hit.triangle));
       }

@@ -11,14 +11,14 @@
 #include "lights/light_importance.h"
 #include "lights/light_sample.h"
 #include "lights/light_type.h"
-#include "matrender/light.h"
+#include "matrender/lamp.h"
 #include "util/channel_average.h"
 
 namespace matrender {
 
-class PreparedDistantLight {
+class DistantLight {
  public:
-  explicit PreparedDistantLight(const SunLight& light)
+  explicit DistantLight(const SunLamp& light)
       : to_sun_(-glm::normalize(light.direction)),
         irradiance_(light.strength * light.color),
         mean_irradiance_(channel_average(irradiance_)) {}

@@ -53,7 +53,7 @@ glm::vec3 equirectangular_direction(glm::vec2 uv) {
   return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), std::cos(theta)};
 }
 
-PreparedEnvironmentLight::PreparedEnvironmentLight(const EnvironmentMap& map) : image_(map.image) {
+EnvironmentLight::EnvironmentLight(const EnvironmentMap& map) : image_(map.image) {
   if (!image_) throw std::invalid_argument("environment map: no image");
   if (!(map.strength >= 0.0 && map.strength <= std::numeric_limits<float>::max()))
     throw std::invalid_argument(image_->name() + ": environment strength " + std::to_string(map.strength) +
@@ -89,15 +89,15 @@ PreparedEnvironmentLight::PreparedEnvironmentLight(const EnvironmentMap& map) : 
   importance_ = static_cast<float>(matbase::kPi * strength_ * 0.5 * matbase::kPi * distribution_->integral());
 }
 
-glm::vec3 PreparedEnvironmentLight::to_map(const glm::vec3& d) const {
+glm::vec3 EnvironmentLight::to_map(const glm::vec3& d) const {
   return {cos_rotation_ * d.x - sin_rotation_ * d.y, sin_rotation_ * d.x + cos_rotation_ * d.y, d.z};
 }
 
-glm::vec3 PreparedEnvironmentLight::from_map(const glm::vec3& d) const {
+glm::vec3 EnvironmentLight::from_map(const glm::vec3& d) const {
   return {cos_rotation_ * d.x + sin_rotation_ * d.y, -sin_rotation_ * d.x + cos_rotation_ * d.y, d.z};
 }
 
-std::optional<LightSample> PreparedEnvironmentLight::sample(const glm::vec3& /*p*/,
+std::optional<LightSample> EnvironmentLight::sample(const glm::vec3& /*p*/,
                                                             const ReceivingDirections& /*receiving*/,
                                                             glm::vec2 u) const {
   if (black()) return std::nullopt;
@@ -114,7 +114,7 @@ std::optional<LightSample> PreparedEnvironmentLight::sample(const glm::vec3& /*p
   return s;
 }
 
-float PreparedEnvironmentLight::pdf(const glm::vec3& d) const {
+float EnvironmentLight::pdf(const glm::vec3& d) const {
   if (black()) return 0.0f;
   const glm::vec3 m = to_map(d);
   const float sine = std::sqrt(std::max(0.0f, 1.0f - m.z * m.z));
@@ -122,7 +122,7 @@ float PreparedEnvironmentLight::pdf(const glm::vec3& d) const {
   return distribution_->pdf(equirectangular_uv(m)) / (kTwoPiSquared * sine);
 }
 
-glm::vec3 PreparedEnvironmentLight::radiance(const glm::vec3& d) const {
+glm::vec3 EnvironmentLight::radiance(const glm::vec3& d) const {
   return strength_ * glm::vec3(image_->sample(equirectangular_uv(to_map(d))));
 }
 

@@ -21,12 +21,12 @@ namespace matrender {
 glm::vec2 equirectangular_uv(const glm::vec3& direction);
 glm::vec3 equirectangular_direction(glm::vec2 uv);
 
-class PreparedEnvironmentLight {
+class EnvironmentLight {
  public:
   // Builds the sampling density: each texel weighs the integral of the bilinear lookup's channel
   // mean over its cell times the sine of its polar angle (the cell's solid angle). Throws
   // std::invalid_argument for a map without an image or with a negative or non-finite strength.
-  explicit PreparedEnvironmentLight(const EnvironmentMap& map);
+  explicit EnvironmentLight(const EnvironmentMap& map);
 
   static constexpr LightType type() { return LightType::Infinite; }
   static constexpr bool visible_to_camera() { return true; }

@@ -9,7 +9,7 @@
 
 #include "matbase/pi.h"
 #include "matrender/scene_limits.h"
-#include "lights/scene_light.h"
+#include "lights/light.h"
 
 namespace matrender {
 namespace {
@@ -61,9 +61,9 @@ void check_point_lamp(const glm::dvec3& position, double power, const glm::dvec3
   check_emission(power * color / (4.0 * matbase::kPi * area), "radiance", "lower the power or enlarge the radius");
 }
 
-std::optional<std::string> light_problem(const Light& light) {
+std::optional<std::string> lamp_problem(const Lamp& light) {
   try {
-    std::visit([](const auto& described) { LightKind<std::decay_t<decltype(described)>>::check(described); }, light);
+    std::visit([](const auto& described) { LampPreparation<std::decay_t<decltype(described)>>::check(described); }, light);
   } catch (const LightRefusal& refusal) {
     return refusal.reason;
   }

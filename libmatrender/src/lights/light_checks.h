@@ -2,7 +2,7 @@
 // What a lamp must be for single-precision shading to render it as described: finite values,
 // positions within the scene limit (matrender/scene_limits.h), a rectangle whose area and
 // radiance, and a point lamp whose intensity, are finite non-zero floats. Each light's
-// LightKind::check (light_kind.h) states its own with the checks below.
+// LampPreparation::check (light_kind.h) states its own with the checks below.
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -11,18 +11,14 @@
 #include <glm/glm.hpp>
 
 #include "matbase/pi.h"
-#include "matrender/light.h"
+#include "matrender/lamp.h"
 
 namespace matrender {
 
-// The widest sun: Blender takes 180 degrees, where the disk of directions, of radius
-// tan(angle / 2), becomes infinite; at 179 degrees it is 115 wide.
-constexpr double kMaxSunAngle = 179.0 * matbase::kPi / 180.0;
-
 // Why the lamp cannot be rendered as given ("power 1e+308 W exceeds ..."), or nothing.
-std::optional<std::string> light_problem(const Light& light);
+std::optional<std::string> lamp_problem(const Lamp& light);
 
-// The checks a LightKind::check is made of; each refuses (throws LightRefusal) with the reason.
+// The checks a LampPreparation::check is made of; each refuses (throws LightRefusal) with the reason.
 struct LightRefusal {
   std::string reason;
 };

@@ -11,9 +11,9 @@ namespace matrender {
 namespace {
 
 // The lights of one type among `prepared`, in scene order.
-std::vector<SceneLight> of_type(const std::vector<SceneLight>& prepared, LightType type) {
-  std::vector<SceneLight> lights;
-  for (const SceneLight& light : prepared)
+std::vector<Light> of_type(const std::vector<Light>& prepared, LightType type) {
+  std::vector<Light> lights;
+  for (const Light& light : prepared)
     if (light_type(light) == type) lights.push_back(light);
   return lights;
 }
@@ -21,50 +21,50 @@ std::vector<SceneLight> of_type(const std::vector<SceneLight>& prepared, LightTy
 }  // namespace
 
 LightSampler LightSampler::for_scene(const SceneData& scene, LightSelection selection) {
-  std::vector<PreparedMeshEmitter> emitters;
+  std::vector<MeshEmitter> emitters;
   for (uint32_t mesh = 0; mesh < scene.meshes.size(); ++mesh)
-    if (std::optional<PreparedMeshEmitter> emitter = PreparedMeshEmitter::of_mesh(scene, mesh))
+    if (std::optional<MeshEmitter> emitter = MeshEmitter::of_mesh(scene, mesh))
       emitters.push_back(std::move(*emitter));
-  return LightSampler(scene.lights, scene.world, selection, emitters);
+  return LightSampler(scene.lamps, scene.world, selection, emitters);
 }
 
-LightSampler::LightSampler(const std::vector<Light>& lights, const WorldLight& world, LightSelection selection,
-                           const std::vector<PreparedMeshEmitter>& emitters)
+LightSampler::LightSampler(const std::vector<Lamp>& lights, const WorldLight& world, LightSelection selection,
+                           const std::vector<MeshEmitter>& emitters)
     : selection_(selection) {
-  std::vector<SceneLight> prepared;
-  // Each described light as the implementation it renders with (its LightKind's prepare).
-  for (const Light& light : lights)
+  std::vector<Light> prepared;
+  // Each described light as the implementation it renders with (its LampPreparation's prepare).
+  for (const Lamp& light : lights)
     std::visit(
         [&](const auto& described) {
           using Description = std::decay_t<decltype(described)>;
-          LightKind<Description>::prepare(described,
+          LampPreparation<Description>::prepare(described,
                                           [&](auto implementation) { prepared.emplace_back(implementation); });
         },
         light);
   // Area lamps first, rectangles before the others: the lamp-hit query and light selection
   // treat the rectangles together, and rays find the others (is_shaped_lamp) by their own
   // intersect().
-  std::vector<PreparedRectLight> rects;
-  for (const SceneLight& light : prepared)
-    if (const auto* rect = std::get_if<PreparedRectLight>(&light)) rects.push_back(*rect);
+  std::vector<RectLight> rects;
+  for (const Light& light : prepared)
+    if (const auto* rect = std::get_if<RectLight>(&light)) rects.push_back(*rect);
   area_hits_ = RectLightHits(rects);
   rect_importance_ = RectLampImportance(rects);
   lights_.assign(rects.begin(), rects.end());
   rect_count_ = rects.size();
-  for (const PreparedRectLight& rect : rects) camera_visible_lamps_ = camera_visible_lamps_ || rect.visible_to_camera();
-  for (const SceneLight& light : of_type(prepared, LightType::Area))
-    if (!std::holds_alternative<PreparedRectLight>(light)) lights_.push_back(light);
+  for (const RectLight& rect : rects) camera_visible_lamps_ = camera_visible_lamps_ || rect.visible_to_camera();
+  for (const Light& light : of_type(prepared, LightType::Area))
+    if (!std::holds_alternative<RectLight>(light)) lights_.push_back(light);
   shaped_lamp_count_ = lights_.size() - rect_count_;
   // Then the meshes' emitting triangles, which rays find by hitting the mesh.
-  for (const PreparedMeshEmitter& emitter : emitters) {
+  for (const MeshEmitter& emitter : emitters) {
     if (emitter.mesh() >= emitter_of_mesh_.size()) emitter_of_mesh_.resize(emitter.mesh() + 1, -1);
     emitter_of_mesh_[emitter.mesh()] = static_cast<int32_t>(lights_.size());
     lights_.emplace_back(emitter);
   }
   // Then the lights only light sampling reaches, and those rays that leave the scene see.
   for (const LightType type : {LightType::DeltaPosition, LightType::DeltaDirection, LightType::Infinite})
-    for (const SceneLight& light : of_type(prepared, type)) lights_.push_back(light);
-  if (const auto* map = std::get_if<PreparedEnvironmentLight>(&world); map && !map->black()) lights_.emplace_back(*map);
+    for (const Light& light : of_type(prepared, type)) lights_.push_back(light);
+  if (const auto* map = std::get_if<EnvironmentLight>(&world); map && !map->black()) lights_.emplace_back(*map);
   sampled_count_ = lights_.size();
   // A uniform background is no light to sample (uniform_background.h), only one to see.
   if (const auto* uniform = std::get_if<UniformBackground>(&world);

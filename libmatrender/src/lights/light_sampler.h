@@ -17,9 +17,9 @@
 #include "lights/light_sample.h"
 #include "lights/rect_lamp_importance.h"
 #include "lights/rect_light_hits.h"
-#include "lights/scene_light.h"
+#include "lights/light.h"
 #include "lights/world_light.h"
-#include "matrender/light.h"
+#include "matrender/lamp.h"
 #include "matrender/render_settings.h"
 
 namespace matrender {
@@ -42,8 +42,8 @@ struct PickSite {
 // found together (rect_light_hits.h), emissive meshes by the rays' hits on the mesh.
 template <class Prepared>
 constexpr bool is_shaped_lamp() {
-  return Prepared::type() == LightType::Area && !std::is_same_v<Prepared, PreparedRectLight> &&
-         !std::is_same_v<Prepared, PreparedMeshEmitter>;
+  return Prepared::type() == LightType::Area && !std::is_same_v<Prepared, RectLight> &&
+         !std::is_same_v<Prepared, MeshEmitter>;
 }
 
 class SceneData;
@@ -54,7 +54,7 @@ class LightSampler {
   // and the emitting triangles of each of its meshes, which must outlive the sampler.
   static LightSampler for_scene(const SceneData& scene, LightSelection selection);
   // Lamps and a world alone, without meshes. A uniform black world is no light at all.
-  LightSampler(const std::vector<Light>& lights, const WorldLight& world,
+  LightSampler(const std::vector<Lamp>& lights, const WorldLight& world,
                LightSelection selection = LightSelection::Importance)
       : LightSampler(lights, world, selection, {}) {}
 
@@ -66,7 +66,7 @@ class LightSampler {
   // that is not black.
   size_t sampled_count() const { return sampled_count_; }
   bool empty() const { return sampled_count_ == 0; }
-  const SceneLight& light(size_t i) const { return lights_[i]; }
+  const Light& light(size_t i) const { return lights_[i]; }
   LightSelection selection() const { return selection_; }
 
   // The site at p, its total importance summed (for importance selection).
@@ -89,7 +89,7 @@ class LightSampler {
   std::optional<LightSample> sample(const PickSite& site, glm::vec2 u) const;
 
   bool has_area_lights() const { return !area_hits_.empty() || shaped_lamp_count_ > 0; }
-  // The index of the light that is a mesh's emitting triangles (a PreparedMeshEmitter), or
+  // The index of the light that is a mesh's emitting triangles (a MeshEmitter), or
   // nothing.
   std::optional<size_t> emitter_index(uint32_t mesh) const {
     if (mesh >= emitter_of_mesh_.size() || emitter_of_mesh_[mesh] < 0) return std::nullopt;
@@ -105,7 +105,7 @@ class LightSampler {
   template <class Visit>
   void for_each_area_hit(const glm::vec3& origin, const glm::vec3& dir, float t_max, Visit&& visit) const {
     area_hits_.for_each_hit(origin, dir, t_max, [&](size_t index, float t) {
-      visit(index, *std::get_if<PreparedRectLight>(&lights_[index]), t);
+      visit(index, *std::get_if<RectLight>(&lights_[index]), t);
     });
     for (size_t i = rect_count_; i < rect_count_ + shaped_lamp_count_; ++i)
       with_light(lights_[i], [&](const auto& lamp) {
@@ -125,10 +125,10 @@ class LightSampler {
   std::optional<glm::vec3> uniform_camera_background() const;
 
  private:
-  LightSampler(const std::vector<Light>& lights, const WorldLight& world, LightSelection selection,
-               const std::vector<PreparedMeshEmitter>& emitters);
+  LightSampler(const std::vector<Lamp>& lights, const WorldLight& world, LightSelection selection,
+               const std::vector<MeshEmitter>& emitters);
 
-  std::vector<SceneLight> lights_;
+  std::vector<Light> lights_;
   size_t sampled_count_ = 0;
   std::vector<size_t> infinite_;  // indices of the infinite lights
   // light(index)'s importance at the site: kept there, or evaluated again.

@@ -21,7 +21,7 @@ float emission_bound(const Material& material) {
 
 }  // namespace
 
-std::optional<PreparedMeshEmitter> PreparedMeshEmitter::of_mesh(const SceneData& scene, uint32_t mesh_index) {
+std::optional<MeshEmitter> MeshEmitter::of_mesh(const SceneData& scene, uint32_t mesh_index) {
   const MeshData& mesh = scene.meshes[mesh_index];
   std::vector<float> part_bound(mesh.part_materials.size());
   bool any = false;
@@ -31,7 +31,7 @@ std::optional<PreparedMeshEmitter> PreparedMeshEmitter::of_mesh(const SceneData&
   }
   if (!any) return std::nullopt;
 
-  PreparedMeshEmitter emitter;
+  MeshEmitter emitter;
   emitter.scene_ = &scene;
   emitter.mesh_ = mesh_index;
   auto cells = std::make_shared<std::vector<int32_t>>(mesh.triangles.size(), -1);
@@ -59,7 +59,7 @@ std::optional<PreparedMeshEmitter> PreparedMeshEmitter::of_mesh(const SceneData&
   return emitter;
 }
 
-std::optional<LightSample> PreparedMeshEmitter::sample(const glm::vec3& p, const ReceivingDirections& /*receiving*/,
+std::optional<LightSample> MeshEmitter::sample(const glm::vec3& p, const ReceivingDirections& /*receiving*/,
                                                        glm::vec2 u) const {
   float choice_pdf;
   size_t cell;
@@ -89,7 +89,7 @@ std::optional<LightSample> PreparedMeshEmitter::sample(const glm::vec3& p, const
   return s;
 }
 
-float PreparedMeshEmitter::pdf(const glm::vec3& /*p*/, const glm::vec3& wi, float t, uint32_t triangle) const {
+float MeshEmitter::pdf(const glm::vec3& /*p*/, const glm::vec3& wi, float t, uint32_t triangle) const {
   const int32_t cell = (*cell_of_triangle_)[triangle];
   if (cell < 0) return 0.0f;
   const MeshData& mesh = scene_->meshes[mesh_];
@@ -104,7 +104,7 @@ float PreparedMeshEmitter::pdf(const glm::vec3& /*p*/, const glm::vec3& wi, floa
   return area_pdf * t * t / cos_light;
 }
 
-float PreparedMeshEmitter::importance(const glm::vec3& p, const ReceivingDirections& receiving) const {
+float MeshEmitter::importance(const glm::vec3& p, const ReceivingDirections& receiving) const {
   const glm::vec3 to_center = center_ - p;
   const float distance2 = glm::dot(to_center, to_center);
   const float distance = std::sqrt(distance2);

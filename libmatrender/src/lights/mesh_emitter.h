@@ -21,10 +21,10 @@ namespace matrender {
 
 class SceneData;
 
-class PreparedMeshEmitter {
+class MeshEmitter {
  public:
   // The emitter of mesh `mesh` of `scene`, which must outlive it; none when no part emits.
-  static std::optional<PreparedMeshEmitter> of_mesh(const SceneData& scene, uint32_t mesh);
+  static std::optional<MeshEmitter> of_mesh(const SceneData& scene, uint32_t mesh);
 
   static constexpr LightType type() { return LightType::Area; }
   static constexpr bool visible_to_camera() { return true; }  // the camera sees the surface itself
@@ -39,7 +39,7 @@ class PreparedMeshEmitter {
   uint32_t mesh() const { return mesh_; }
 
  private:
-  PreparedMeshEmitter() = default;
+  MeshEmitter() = default;
 
   const SceneData* scene_ = nullptr;
   uint32_t mesh_ = 0;

@@ -8,14 +8,13 @@
 
 #include <glm/glm.hpp>
 
-#include "lights/disk_lamp.h"
+#include "lights/disk_light.h"
 #include "lights/light_checks.h"
-#include "lights/light_kind.h"
+#include "lights/lamp_preparation.h"
 #include "lights/light_sample.h"
 #include "lights/light_type.h"
 #include "matbase/pi.h"
-#include "matrender/light.h"
-#include "scene_description/scene_file_values.h"
+#include "matrender/lamp.h"
 #include "util/channel_average.h"
 
 namespace matrender {
@@ -45,9 +44,9 @@ inline glm::vec3 point_lamp_intensity(double power, const glm::dvec3& color) {
   return power * color / (4.0 * matbase::kPi);
 }
 
-class PreparedPointLight {
+class PointLight {
  public:
-  explicit PreparedPointLight(const PointLight& light)
+  explicit PointLight(const PointLamp& light)
       : position_(light.position),
         intensity_(point_lamp_intensity(light.power, light.color)),
         mean_intensity_(channel_average(intensity_)) {}
@@ -77,42 +76,24 @@ class PreparedPointLight {
   float mean_intensity_;
 };
 
-// What the scene file gives every lamp at a point, after its own keys: "power" (required),
-// "color" and "radius".
-template <class LampAtPoint>
-void read_lamp_at_point_emission(const matbase::DocumentNode& node, LampAtPoint& light) {
-  light.power = node.required("power").non_negative();
-  if (auto color = node.find("color")) light.color = read_color(*color);
-  if (auto radius = node.find("radius")) light.radius = radius->non_negative();
-}
-
 // A lamp at a point renders as a disk lamp when it has a radius, else as `Delta`.
 template <class Delta, class LampAtPoint, class Add>
 void prepare_lamp_at_point(const LampAtPoint& light, Add&& add) {
   if (light.radius > 0.0)
-    std::forward<Add>(add)(PreparedDiskLamp(light));
+    std::forward<Add>(add)(DiskLight(light));
   else
     std::forward<Add>(add)(Delta(light));
 }
 
-// The scene file's "point" lamp: position, power, color, radius. With a radius it renders as a
-// disk lamp.
+// A point lamp renders as a disk light when it has a radius, else as a point light.
 template <>
-struct LightKind<PointLight> {
-  static constexpr const char* kSceneFileType = "point";
-  static PointLight read(const matbase::DocumentNode& node) {
-    node.expect_keys({"type", "position", "power", "color", "radius"});
-    PointLight light;
-    light.position = read_vec3(node.required("position"));
-    read_lamp_at_point_emission(node, light);
-    return light;
-  }
-  static void check(const PointLight& light) {
+struct LampPreparation<PointLamp> {
+  static void check(const PointLamp& light) {
     check_point_lamp(light.position, light.power, light.color, light.radius);
   }
   template <class Add>
-  static void prepare(const PointLight& light, Add&& add) {
-    prepare_lamp_at_point<PreparedPointLight>(light, std::forward<Add>(add));
+  static void prepare(const PointLamp& light, Add&& add) {
+    prepare_lamp_at_point<PointLight>(light, std::forward<Add>(add));
   }
 };
 

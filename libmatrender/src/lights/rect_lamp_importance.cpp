@@ -4,8 +4,8 @@
 
 namespace matrender {
 
-RectLampImportance::RectLampImportance(const std::vector<PreparedRectLight>& lamps) {
-  for (const PreparedRectLight& lamp : lamps) {
+RectLampImportance::RectLampImportance(const std::vector<RectLight>& lamps) {
+  for (const RectLight& lamp : lamps) {
     const glm::vec3 c = lamp.center(), back = lamp.rectangle().z;
     center_x_.push_back(c.x), center_y_.push_back(c.y), center_z_.push_back(c.z);
     back_x_.push_back(back.x), back_y_.push_back(back.y), back_z_.push_back(back.z);
@@ -15,7 +15,7 @@ RectLampImportance::RectLampImportance(const std::vector<PreparedRectLight>& lam
 }
 
 void RectLampImportance::evaluate(const glm::vec3& p, const ReceivingDirections& receiving, float* weights) const {
-  // The same function as PreparedRectLight::importance, lamp by lamp; the compiler runs the
+  // The same function as RectLight::importance, lamp by lamp; the compiler runs the
   // iterations side by side once `every_direction` is a constant in the loop (a select on it
   // would keep the loop scalar).
   const auto each_lamp = [&](const ReceivingDirections& constant_receiving) {

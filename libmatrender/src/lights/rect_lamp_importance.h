@@ -17,7 +17,7 @@ namespace matrender {
 class RectLampImportance {
  public:
   RectLampImportance() = default;
-  explicit RectLampImportance(const std::vector<PreparedRectLight>& lamps);
+  explicit RectLampImportance(const std::vector<RectLight>& lamps);
 
   size_t size() const { return power_.size(); }
 
@@ -26,7 +26,7 @@ class RectLampImportance {
 
  private:
   // Per lamp: the centre, the lamp's +Z (the side that does not emit), the bounding radius and
-  // the power, as PreparedRectLight::importance reads them.
+  // the power, as RectLight::importance reads them.
   std::vector<float> center_x_, center_y_, center_z_;
   std::vector<float> back_x_, back_y_, back_z_;
   std::vector<float> radius_, power_;

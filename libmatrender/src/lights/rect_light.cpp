@@ -7,9 +7,7 @@
 
 #include "lights/light_checks.h"
 #include "lights/light_importance.h"
-#include "matgeom/camera_grid.h"
 #include "matrender/scene_limits.h"
-#include "scene_description/scene_file_values.h"
 #include "util/channel_average.h"
 #include "util/finite.h"
 
@@ -22,7 +20,7 @@ constexpr float kMinSphericalSolidAngle = 1e-3f;
 
 }  // namespace
 
-PreparedRectLight::PreparedRectLight(const RectLight& light) {
+RectLight::RectLight(const RectLamp& light) {
   const glm::dvec3 axis_x = glm::normalize(glm::dvec3(light.light_to_world[0]));
   const glm::dvec3 axis_y = glm::normalize(glm::dvec3(light.light_to_world[1]));
   const glm::dvec3 center(light.light_to_world[3]);
@@ -42,21 +40,21 @@ PreparedRectLight::PreparedRectLight(const RectLight& light) {
   power_ = channel_average(radiance_) * area_;
 }
 
-float PreparedRectLight::importance(const glm::vec3& p, const ReceivingDirections& receiving) const {
+float RectLight::importance(const glm::vec3& p, const ReceivingDirections& receiving) const {
   return one_sided_emitter_importance(center_, rect_.z, bounding_radius_, power_, p, receiving);
 }
 
-bool PreparedRectLight::sees_emitting_side(const glm::vec3& p) const {
+bool RectLight::sees_emitting_side(const glm::vec3& p) const {
   return glm::dot(p - center_, rect_.z) < 0.0f;
 }
 
-bool PreparedRectLight::below_plane(const glm::vec3& p, const glm::vec3& n) const {
+bool RectLight::below_plane(const glm::vec3& p, const glm::vec3& n) const {
   for (const glm::vec3& corner : corners_)
     if (glm::dot(corner - p, n) > 0.0f) return false;
   return true;
 }
 
-std::optional<LightSample> PreparedRectLight::sample(const glm::vec3& p, const ReceivingDirections& receiving,
+std::optional<LightSample> RectLight::sample(const glm::vec3& p, const ReceivingDirections& receiving,
                                                      glm::vec2 u) const {
   if (!sees_emitting_side(p) || (!receiving.every_direction && below_plane(p, receiving.normal)))
     return std::nullopt;
@@ -85,7 +83,7 @@ std::optional<LightSample> PreparedRectLight::sample(const glm::vec3& p, const R
   return s;
 }
 
-float PreparedRectLight::pdf(const glm::vec3& p, const glm::vec3& wi, float t) const {
+float RectLight::pdf(const glm::vec3& p, const glm::vec3& wi, float t) const {
   if (!sees_emitting_side(p)) return 0.0f;
   const float solid_angle = SphericalRectangle(p, rect_).solid_angle();
   if (solid_angle > kMinSphericalSolidAngle) return 1.0f / solid_angle;
@@ -94,33 +92,7 @@ float PreparedRectLight::pdf(const glm::vec3& p, const glm::vec3& wi, float t) c
   return t * t / (cos_light * area_);
 }
 
-RectLight LightKind<RectLight>::read(const matbase::DocumentNode& node) {
-  node.expect_keys({"type", "position", "look_at", "up", "size", "power", "color", "visible_to_camera"});
-  RectLight light;
-  const glm::dvec3 position = read_vec3(node.required("position"));
-  const glm::dvec3 target = read_target(node, position);
-  const glm::dvec3 up = node.has("up") ? read_direction(node.required("up")) : glm::dvec3(0.0, 0.0, 1.0);
-  // A lamp emits down its -Z like a camera looks down its -Z, so the same frame aims both.
-  try {
-    light.light_to_world = matgeom::look_at_camera_to_world(position, target, up);
-  } catch (const std::invalid_argument& e) {
-    node.required("look_at").fail(e.what());
-  }
-  const matbase::DocumentNode size = node.required("size");
-  if (size.is_number()) {
-    light.size_x = light.size_y = size.positive();
-  } else {
-    const std::vector<matbase::DocumentNode> sides = size.items(2, "a positive number or [size_x, size_y]");
-    light.size_x = sides[0].positive();
-    light.size_y = sides[1].positive();
-  }
-  light.power = node.required("power").non_negative();
-  if (auto color = node.find("color")) light.color = read_color(*color);
-  if (auto visible = node.find("visible_to_camera")) light.visible_to_camera = visible->boolean();
-  return light;
-}
-
-void LightKind<RectLight>::check(const RectLight& light) {
+void LampPreparation<RectLamp>::check(const RectLamp& light) {
   if (!is_finite(light.light_to_world)) refuse("its transform has a non-finite entry");
   check_point_within_limit(glm::dvec3(light.light_to_world[3]), "centre");
   const glm::dvec3 axis_x(light.light_to_world[0]), axis_y(light.light_to_world[1]);

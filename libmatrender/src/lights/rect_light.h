@@ -7,21 +7,17 @@
 
 #include <glm/glm.hpp>
 
-#include "lights/light_kind.h"
+#include "lights/lamp_preparation.h"
 #include "lights/light_sample.h"
 #include "lights/light_type.h"
 #include "lights/spherical_rectangle.h"
-#include "matrender/light.h"
-
-namespace matbase {
-class DocumentNode;
-}  // namespace matbase
+#include "matrender/lamp.h"
 
 namespace matrender {
 
-class PreparedRectLight {
+class RectLight {
  public:
-  explicit PreparedRectLight(const RectLight& light);
+  explicit RectLight(const RectLamp& light);
 
   static constexpr LightType type() { return LightType::Area; }
 
@@ -61,16 +57,13 @@ class PreparedRectLight {
   bool visible_to_camera_ = false;
 };
 
-
-// The scene file's "area" lamp: position, look_at, up, size, power, color, visible_to_camera.
+// A rectangle lamp renders as a rectangle light.
 template <>
-struct LightKind<RectLight> {
-  static constexpr const char* kSceneFileType = "area";
-  static RectLight read(const matbase::DocumentNode& node);
-  static void check(const RectLight& light);
+struct LampPreparation<RectLamp> {
+  static void check(const RectLamp& light);
   template <class Add>
-  static void prepare(const RectLight& light, Add&& add) {
-    std::forward<Add>(add)(PreparedRectLight(light));
+  static void prepare(const RectLamp& light, Add&& add) {
+    std::forward<Add>(add)(RectLight(light));
   }
 };
 

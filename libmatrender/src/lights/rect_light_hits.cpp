@@ -2,7 +2,7 @@
 
 namespace matrender {
 
-RectLightHits::RectLightHits(const std::vector<PreparedRectLight>& lamps) {
+RectLightHits::RectLightHits(const std::vector<RectLight>& lamps) {
   Block padding{};
   for (size_t i = 0; i < kBlock; ++i) padding.half_x[i] = padding.half_y[i] = padding.radius2[i] = -1.0f;
   blocks_.assign((lamps.size() + kBlock - 1) / kBlock, padding);

@@ -20,7 +20,7 @@ class RectLightHits {
   static constexpr size_t kBlock = 4;
 
   RectLightHits() = default;
-  explicit RectLightHits(const std::vector<PreparedRectLight>& lamps);
+  explicit RectLightHits(const std::vector<RectLight>& lamps);
 
   bool empty() const { return blocks_.empty(); }
 

@@ -11,15 +11,14 @@
 #include <glm/glm.hpp>
 
 #include "lights/light_checks.h"
-#include "lights/light_kind.h"
+#include "lights/lamp_preparation.h"
 #include "lights/light_sample.h"
 #include "lights/light_type.h"
 #include "lights/point_light.h"
 #include "matbase/pi.h"
 #include "matbase/smoothstep.h"
-#include "matrender/light.h"
+#include "matrender/lamp.h"
 #include "sampling/warp.h"
-#include "scene_description/scene_file_values.h"
 #include "util/channel_average.h"
 
 namespace matrender {
@@ -32,9 +31,9 @@ inline float spot_attenuation(float cos_t, float cos_half_angle, float blend) {
   return cos_t * edge;
 }
 
-class PreparedSpotLight {
+class SpotLight {
  public:
-  explicit PreparedSpotLight(const SpotLight& light)
+  explicit SpotLight(const SpotLamp& light)
       : position_(light.position),
         intensity_(point_lamp_intensity(light.power, light.color)),
         mean_intensity_(channel_average(intensity_)),
@@ -73,24 +72,10 @@ class PreparedSpotLight {
   float blend_;
 };
 
-// The scene file's "spot" lamp: position, look_at, spot_angle_deg, blend, power, color, radius.
-// With a radius it renders as a disk lamp.
+// A spot lamp renders as a disk light when it has a radius, else as a spot light.
 template <>
-struct LightKind<SpotLight> {
-  static constexpr const char* kSceneFileType = "spot";
-  static SpotLight read(const matbase::DocumentNode& node) {
-    node.expect_keys({"type", "position", "look_at", "spot_angle_deg", "blend", "power", "color", "radius"});
-    SpotLight light;
-    light.position = read_vec3(node.required("position"));
-    light.direction = glm::normalize(read_target(node, light.position) - light.position);
-    if (auto angle = node.find("spot_angle_deg"))
-      light.spot_angle = glm::radians(
-          angle->number_in(0.0, 180.0, true));
-    if (auto blend = node.find("blend")) light.blend = blend->unit_interval();
-    read_lamp_at_point_emission(node, light);
-    return light;
-  }
-  static void check(const SpotLight& spot) {
+struct LampPreparation<SpotLamp> {
+  static void check(const SpotLamp& spot) {
     check_point_lamp(spot.position, spot.power, spot.color, spot.radius);
     check_direction(spot.direction);
     if (!(spot.spot_angle > 0.0 && spot.spot_angle <= matbase::kPi))
@@ -98,8 +83,8 @@ struct LightKind<SpotLight> {
     if (!(spot.blend >= 0.0 && spot.blend <= 1.0)) refuse(fmt::format("blend {} must lie in [0, 1]", spot.blend));
   }
   template <class Add>
-  static void prepare(const SpotLight& light, Add&& add) {
-    prepare_lamp_at_point<PreparedSpotLight>(light, std::forward<Add>(add));
+  static void prepare(const SpotLamp& light, Add&& add) {
+    prepare_lamp_at_point<SpotLight>(light, std::forward<Add>(add));
   }
 };
 

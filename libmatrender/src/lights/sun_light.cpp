@@ -10,16 +10,15 @@
 #include "lights/light_importance.h"
 #include "matbase/pi.h"
 #include "sampling/warp.h"
-#include "scene_description/scene_file_values.h"
 #include "util/channel_average.h"
 
 namespace matrender {
 
-bool PreparedSunLight::has_disk(const SunLight& light) {
+bool SunLight::has_disk(const SunLamp& light) {
   return static_cast<float>(std::tan(0.5 * light.angle)) > 0.0f;
 }
 
-PreparedSunLight::PreparedSunLight(const SunLight& light)
+SunLight::SunLight(const SunLamp& light)
     : to_sun_(-glm::normalize(light.direction)), irradiance_(light.strength * light.color) {
   const double radius = std::tan(0.5 * light.angle);
   disk_radius_ = static_cast<float>(radius);
@@ -29,11 +28,11 @@ PreparedSunLight::PreparedSunLight(const SunLight& light)
   mean_irradiance_ = channel_average(irradiance_);
 }
 
-float PreparedSunLight::importance(const glm::vec3& /*p*/, const ReceivingDirections& receiving) const {
+float SunLight::importance(const glm::vec3& /*p*/, const ReceivingDirections& receiving) const {
   return mean_irradiance_ * receiving_bound(receiving, to_sun_, cos_half_angle_, sin_half_angle_);
 }
 
-float PreparedSunLight::density(const glm::vec3& direction) const {
+float SunLight::density(const glm::vec3& direction) const {
   const float cos_t = glm::dot(direction, to_sun_);
   if (!(cos_t > 0.0f)) return 0.0f;
   const float sin_t = glm::length(glm::cross(direction, to_sun_));
@@ -43,7 +42,7 @@ float PreparedSunLight::density(const glm::vec3& direction) const {
   return inverse_disk_area_ / (cos_t * cos_t * cos_t);
 }
 
-std::optional<LightSample> PreparedSunLight::sample(const glm::vec3& /*p*/, const ReceivingDirections& /*receiving*/,
+std::optional<LightSample> SunLight::sample(const glm::vec3& /*p*/, const ReceivingDirections& /*receiving*/,
                                                     glm::vec2 u) const {
   LightSample s;
   s.distance = std::numeric_limits<float>::infinity();
@@ -56,24 +55,11 @@ std::optional<LightSample> PreparedSunLight::sample(const glm::vec3& /*p*/, cons
   return s;
 }
 
-float PreparedSunLight::pdf(const glm::vec3& direction) const { return density(direction); }
+float SunLight::pdf(const glm::vec3& direction) const { return density(direction); }
 
-glm::vec3 PreparedSunLight::radiance(const glm::vec3& direction) const { return irradiance_ * density(direction); }
+glm::vec3 SunLight::radiance(const glm::vec3& direction) const { return irradiance_ * density(direction); }
 
-SunLight LightKind<SunLight>::read(const matbase::DocumentNode& node) {
-  node.expect_keys({"type", "position", "look_at", "strength", "color", "angle_deg"});
-  SunLight light;
-  const glm::dvec3 position = read_vec3(node.required("position"));
-  light.direction = glm::normalize(read_target(node, position) - position);
-  light.strength = node.required("strength").non_negative();
-  if (auto color = node.find("color")) light.color = read_color(*color);
-  if (auto angle = node.find("angle_deg"))
-    light.angle = glm::radians(
-        angle->number_in(0.0, glm::degrees(kMaxSunAngle)));
-  return light;
-}
-
-void LightKind<SunLight>::check(const SunLight& sun) {
+void LampPreparation<SunLamp>::check(const SunLamp& sun) {
   check_direction(sun.direction);
   check_color(sun.color);
   if (!(std::isfinite(sun.strength) && sun.strength >= 0.0))

@@ -12,22 +12,18 @@
 #include <glm/glm.hpp>
 
 #include "lights/distant_light.h"
-#include "lights/light_kind.h"
+#include "lights/lamp_preparation.h"
 #include "lights/light_sample.h"
 #include "lights/light_type.h"
-#include "matrender/light.h"
-
-namespace matbase {
-class DocumentNode;
-}  // namespace matbase
+#include "matrender/lamp.h"
 
 namespace matrender {
 
-class PreparedSunLight {
+class SunLight {
  public:
-  explicit PreparedSunLight(const SunLight& light);
+  explicit SunLight(const SunLamp& light);
   // Whether the sun's disk of directions has a radius a float holds; else it is a distant light.
-  static bool has_disk(const SunLight& light);
+  static bool has_disk(const SunLamp& light);
 
   // What rays that leave the scene may see.
   static constexpr LightType type() { return LightType::Infinite; }
@@ -53,20 +49,16 @@ class PreparedSunLight {
   float mean_irradiance_ = 0.0f;
 };
 
-
-// The scene file's "sun": position, look_at (only the direction between them matters), strength,
-// color, angle_deg. Of angle 0 it renders as a distant light.
+// A sun renders as a distant light of one direction at angle 0, else as a sun light.
 template <>
-struct LightKind<SunLight> {
-  static constexpr const char* kSceneFileType = "sun";
-  static SunLight read(const matbase::DocumentNode& node);
-  static void check(const SunLight& sun);
+struct LampPreparation<SunLamp> {
+  static void check(const SunLamp& sun);
   template <class Add>
-  static void prepare(const SunLight& light, Add&& add) {
-    if (PreparedSunLight::has_disk(light))
-      std::forward<Add>(add)(PreparedSunLight(light));
+  static void prepare(const SunLamp& light, Add&& add) {
+    if (SunLight::has_disk(light))
+      std::forward<Add>(add)(SunLight(light));
     else
-      std::forward<Add>(add)(PreparedDistantLight(light));
+      std::forward<Add>(add)(DistantLight(light));
   }
 };
 

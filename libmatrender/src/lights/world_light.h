@@ -9,10 +9,10 @@
 
 namespace matrender {
 
-using WorldLight = std::variant<UniformBackground, PreparedEnvironmentLight>;
+using WorldLight = std::variant<UniformBackground, EnvironmentLight>;
 
 inline WorldLight prepare_world(const Background& background) {
-  if (const auto* map = std::get_if<EnvironmentMap>(&background)) return PreparedEnvironmentLight(*map);
+  if (const auto* map = std::get_if<EnvironmentMap>(&background)) return EnvironmentLight(*map);
   return UniformBackground(std::get<glm::vec3>(background));
 }
 

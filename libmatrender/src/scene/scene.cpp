@@ -121,13 +121,13 @@ size_t Scene::mesh_count() const { return data_->meshes.size(); }
 
 const std::vector<uint32_t>& Scene::part_materials(uint32_t mesh) const { return data_->meshes.at(mesh).part_materials; }
 
-void Scene::add_light(const Light& light) {
-  if (const std::optional<std::string> problem = light_problem(light))
-    throw std::invalid_argument("light " + std::to_string(data_->lights.size()) + ": " + *problem);
-  data_->lights.push_back(light);
+void Scene::add_lamp(const Lamp& light) {
+  if (const std::optional<std::string> problem = lamp_problem(light))
+    throw std::invalid_argument("light " + std::to_string(data_->lamps.size()) + ": " + *problem);
+  data_->lamps.push_back(light);
 }
-void Scene::clear_lights() { data_->lights.clear(); }
-const std::vector<Light>& Scene::lights() const { return data_->lights; }
+void Scene::clear_lamps() { data_->lamps.clear(); }
+const std::vector<Lamp>& Scene::lamps() const { return data_->lamps; }
 
 void Scene::set_background(const Background& background) {
   if (const auto* uniform = std::get_if<glm::vec3>(&background))

@@ -10,7 +10,7 @@
 #include "accel/embree_scene.h"
 #include "lights/world_light.h"
 #include "matrender/background.h"
-#include "matrender/light.h"
+#include "matrender/lamp.h"
 #include "matrender/material.h"
 
 namespace matrender {
@@ -30,7 +30,7 @@ class SceneData {
  public:
   std::vector<Material> materials;
   std::vector<MeshData> meshes;
-  std::vector<Light> lights;
+  std::vector<Lamp> lamps;
   Background background = glm::vec3(0.0f);
   WorldLight world = UniformBackground(glm::vec3(0.0f));  // prepared from background
   EmbreeScene accel;

@@ -7,7 +7,7 @@
 
 #include "matbase/image/image_writing.h"
 #include "matbase/pi.h"
-#include "matrender/rig_lights.h"
+#include "matrender/rig_lamps.h"
 
 namespace matrender {
 
@@ -33,7 +33,7 @@ double grey_card_exposure(const matgeom::LightRig& rig, const matgeom::CameraGri
 }
 
 void add_rig(Scene& scene, const matgeom::LightRig& rig) {
-  for (const Light& light : rig_lights(rig)) scene.add_light(light);
+  for (const Lamp& light : rig_lamps(rig)) scene.add_lamp(light);
 }
 
 Camera grid_view(const matgeom::CameraGridSpec& grid, int i, int j, int width, int height, double vertical_fov) {

@@ -117,10 +117,10 @@ void add_object(Scene& scene, const ObjectDescription& object, const matgeom::Ob
 // The lamps, listed or the paper's rig around the objects (whose lamps an object too large for
 // the scene limit would put beyond it).
 void add_lights(const LightsDescription& lights, BuiltScene& built) {
-  const auto* listed = std::get_if<std::vector<Light>>(&lights);
+  const auto* listed = std::get_if<std::vector<Lamp>>(&lights);
   try {
     if (listed) {
-      for (const Light& light : *listed) built.scene.add_light(light);
+      for (const Lamp& light : *listed) built.scene.add_lamp(light);
       return;
     }
     built.rig = paper_rig(built.bounds, std::get<LightRigDescription>(lights).target_illuminance_lux);

@@ -11,7 +11,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "lights/light_checks.h"
-#include "lights/scene_light.h"
 #include "matbase/document/json_document.h"
 #include "matbase/number_text.h"
 #include "matbase/text.h"
@@ -23,6 +22,7 @@
 #include "matmaterial/material_parameters.h"
 #include "matrender/image_io.h"
 #include "matrender/render_setting_reading.h"
+#include "scene_description/lamp_reading.h"
 #include "scene_description/scene_file_values.h"
 
 namespace matrender {
@@ -149,22 +149,6 @@ CameraDescription read_camera(const DocumentNode& node) {
 
 // ---- lights ---------------------------------------------------------------------------------
 
-// Each kind of light reads its own keys (lights/light_kind.h): the kinds are `Light`'s
-// alternatives, in its order.
-template <size_t... kKinds>
-std::vector<std::string> light_types(std::index_sequence<kKinds...>) {
-  return {LightKind<std::variant_alternative_t<kKinds, Light>>::kSceneFileType...};
-}
-std::vector<std::string> light_types() { return light_types(std::make_index_sequence<std::variant_size_v<Light>>()); }
-
-template <size_t kKind = 0>
-Light read_light(size_t kind, const DocumentNode& node) {
-  using Description = std::variant_alternative_t<kKind, Light>;
-  if constexpr (kKind + 1 < std::variant_size_v<Light>)
-    if (kind != kKind) return read_light<kKind + 1>(kind, node);
-  return LightKind<Description>::read(node);
-}
-
 LightsDescription read_lights(const DocumentNode& node) {
   if (!node.is_list()) {
     if (!node.is_mapping()) node.fail_expected("a list of lights or {\"rig\": {...}}");
@@ -175,11 +159,11 @@ LightsDescription read_lights(const DocumentNode& node) {
     if (auto lux = rig_node.find("target_illuminance_lux")) rig.target_illuminance_lux = lux->positive();
     return rig;
   }
-  std::vector<Light> lights;
+  std::vector<Lamp> lights;
   for (const DocumentNode& light : node.items("a list of lights")) {
-    lights.push_back(read_light(light.required("type").choice(light_types()), light));
+    lights.push_back(read_lamp(light));
     // Values each valid alone may still not render: a lamp 1e-300 m wide, a power of 1e308 W.
-    if (const std::optional<std::string> problem = light_problem(lights.back())) light.fail(*problem);
+    if (const std::optional<std::string> problem = lamp_problem(lights.back())) light.fail(*problem);
   }
   return lights;
 }

@@ -2,7 +2,7 @@
 // The small values every part of a scene file (docs/scene_format.md) reads, through
 // matbase::DocumentNode so that each refusal names the file and the JSON pointer of the value
 // ("scene.json: /lights/2/color/0: expected a number of at least 0, got -1"). The scene file's
-// reader and each light's own reader (lights/light_kind.h) use them.
+// reader and each light's own reader (lights/lamp_preparation.h) use them.
 #include <glm/glm.hpp>
 
 #include "matbase/document/document_node.h"

@@ -12,7 +12,7 @@
 
 #include "matgeom/mesh.h"
 #include "matrender/camera.h"
-#include "matrender/light.h"
+#include "matrender/lamp.h"
 #include "matrender/material.h"
 
 namespace shaders_ref {
@@ -50,7 +50,7 @@ struct CyclesScene {
   // import_mesh.ply, with their defaults), its faces flat or smooth as that importer makes them,
   // every slot in `material`.
   std::string mesh_file_path;
-  std::vector<matrender::Light> lamps;
+  std::vector<matrender::Lamp> lamps;
   matrender::Camera camera;
   glm::vec3 background{0.0f};
   std::optional<CyclesEnvironment> environment;  // replaces the background

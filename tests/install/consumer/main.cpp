@@ -11,7 +11,7 @@ int main() {
   square.triangles = {{0, 1, 2}, {0, 2, 3}};
   matrender::Scene scene;
   scene.add_mesh(square, {scene.add_material(matrender::Material{})});
-  scene.add_light(matrender::PointLight{glm::dvec3(0, 0, 1), 100.0, glm::dvec3(1.0)});
+  scene.add_lamp(matrender::PointLamp{glm::dvec3(0, 0, 1), 100.0, glm::dvec3(1.0)});
   const auto camera = matrender::Camera::look_at({0, -1, 2}, {0, 0, 0}, {0, 0, 1}, 0.8, 16, 16);
   matrender::RenderSettings settings;
   settings.samples_per_pixel = 4;

@@ -1,9 +1,9 @@
 #pragma once
 // The lights of a scene, prepared for rendering, behind one interface, as the lobes of a BSDF are.
-// A described light (matrender/light.h) becomes one of these by its LightKind's prepare
-// (light_kind.h), declared in the light's own file: a point lamp a PreparedPointLight, or a
-// PreparedDiskLamp when it has a radius; a sun a PreparedDistantLight, or a PreparedSunLight when
-// it has an angle. Including this header includes every light's file, and so every LightKind.
+// A described light (matrender/lamp.h) becomes one of these by its LampPreparation's prepare
+// (light_kind.h), declared in the light's own file: a point lamp a PointLight, or a
+// DiskLight when it has a radius; a sun a DistantLight, or a SunLight when
+// it has an angle. Including this header includes every light's file, and so every LampPreparation.
 //
 // Every light:
 //   static constexpr LightType type();   what it is (light_type.h), which decides how the
@@ -21,7 +21,7 @@
 #include <utility>
 #include <variant>
 
-#include "lights/disk_lamp.h"
+#include "lights/disk_light.h"
 #include "lights/distant_light.h"
 #include "lights/environment_light.h"
 #include "lights/light_type.h"
@@ -34,16 +34,16 @@
 
 namespace matrender {
 
-using SceneLight = std::variant<PreparedRectLight, PreparedDiskLamp, PreparedMeshEmitter, PreparedPointLight,
-                                PreparedSpotLight, PreparedDistantLight, PreparedSunLight, UniformBackground,
-                                PreparedEnvironmentLight>;
+using Light = std::variant<RectLight, DiskLight, MeshEmitter, PointLight,
+                                SpotLight, DistantLight, SunLight, UniformBackground,
+                                EnvironmentLight>;
 
 // f(the light as its own type). A switch, not std::visit, so that the lights' methods inline
 // (GCC calls std::visit's alternatives through a table); the variant above and its cases here
 // change together.
 template <class F>
-decltype(auto) with_light(const SceneLight& light, F&& f) {
-  static_assert(std::variant_size_v<SceneLight> == 9, "a new light needs its case here");
+decltype(auto) with_light(const Light& light, F&& f) {
+  static_assert(std::variant_size_v<Light> == 9, "a new light needs its case here");
   switch (light.index()) {
     case 0: return f(*std::get_if<0>(&light));
     case 1: return f(*std::get_if<1>(&light));
@@ -57,7 +57,7 @@ decltype(auto) with_light(const SceneLight& light, F&& f) {
   }
 }
 
-inline LightType light_type(const SceneLight& light) {
+inline LightType light_type(const Light& light) {
   return with_light(light, [](const auto& l) { return l.type(); });
 }
 

@@ -1,4 +1,4 @@
-#include "lights/disk_lamp.h"
+#include "lights/disk_light.h"
 
 #include <cmath>
 
@@ -18,13 +18,13 @@ glm::vec3 disk_radiance(double power, const glm::dvec3& color, double radius) {
 
 }  // namespace
 
-PreparedDiskLamp::PreparedDiskLamp(const PointLight& light)
+DiskLight::DiskLight(const PointLamp& light)
     : center_(light.position),
       radius_(static_cast<float>(light.radius)),
       radiance_(disk_radiance(light.power, light.color, light.radius)),
       intensity_(static_cast<float>(light.power / (4.0 * matbase::kPi)) * channel_average(glm::vec3(light.color))) {}
 
-PreparedDiskLamp::PreparedDiskLamp(const SpotLight& light)
+DiskLight::DiskLight(const SpotLamp& light)
     : center_(light.position),
       radius_(static_cast<float>(light.radius)),
       radiance_(disk_radiance(light.power, light.color, light.radius)),
@@ -34,12 +34,12 @@ PreparedDiskLamp::PreparedDiskLamp(const SpotLight& light)
       blend_(static_cast<float>(light.blend)),
       is_spot_(true) {}
 
-glm::vec3 PreparedDiskLamp::radiance(const glm::vec3& dir) const {
+glm::vec3 DiskLight::radiance(const glm::vec3& dir) const {
   if (!is_spot_) return radiance_;
   return radiance_ * spot_attenuation(glm::dot(-dir, axis_), cos_half_angle_, blend_);
 }
 
-std::optional<LightSample> PreparedDiskLamp::sample(const glm::vec3& p, const ReceivingDirections& receiving,
+std::optional<LightSample> DiskLight::sample(const glm::vec3& p, const ReceivingDirections& receiving,
                                                     glm::vec2 u) const {
   const glm::vec3 to_p = p - center_;
   const float d = glm::length(to_p);
@@ -61,7 +61,7 @@ std::optional<LightSample> PreparedDiskLamp::sample(const glm::vec3& p, const Re
   return s;
 }
 
-float PreparedDiskLamp::importance(const glm::vec3& p, const ReceivingDirections& receiving) const {
+float DiskLight::importance(const glm::vec3& p, const ReceivingDirections& receiving) const {
   const glm::vec3 to_center = center_ - p;
   const float distance2 = glm::dot(to_center, to_center);
   const float distance = std::sqrt(distance2);
@@ -71,7 +71,7 @@ float PreparedDiskLamp::importance(const glm::vec3& p, const ReceivingDirections
          std::max(distance2, radius_ * radius_);
 }
 
-float PreparedDiskLamp::pdf(const glm::vec3& p, const glm::vec3& wi, float t) const {
+float DiskLight::pdf(const glm::vec3& p, const glm::vec3& wi, float t) const {
   const glm::vec3 facing = glm::normalize(p - center_);
   const float cos_light = -glm::dot(facing, wi);
   if (!(cos_light > 0.0f)) return 0.0f;
@@ -79,7 +79,7 @@ float PreparedDiskLamp::pdf(const glm::vec3& p, const glm::vec3& wi, float t) co
   return t * t / (cos_light * kPi * radius_ * radius_);
 }
 
-std::optional<float> PreparedDiskLamp::intersect(const glm::vec3& origin, const glm::vec3& dir, float t_max) const {
+std::optional<float> DiskLight::intersect(const glm::vec3& origin, const glm::vec3& dir, float t_max) const {
   const glm::vec3 from_center = origin - center_;
   const float height = glm::length(from_center);
   if (!(height > 0.0f)) return std::nullopt;

@@ -4,11 +4,11 @@
 #include <vector>
 
 #include "matgeom/light_rig.h"
-#include "matrender/light.h"
+#include "matrender/lamp.h"
 
 namespace matrender {
 
-Light rig_light(const matgeom::RigLight& light);
-std::vector<Light> rig_lights(const matgeom::LightRig& rig);
+Lamp rig_lamp(const matgeom::RigLight& light);
+std::vector<Lamp> rig_lamps(const matgeom::LightRig& rig);
 
 }  // namespace matrender

@@ -12,14 +12,14 @@
 
 #include "lights/light_sample.h"
 #include "lights/light_type.h"
-#include "matrender/light.h"
+#include "matrender/lamp.h"
 
 namespace matrender {
 
-class PreparedDiskLamp {
+class DiskLight {
  public:
-  explicit PreparedDiskLamp(const PointLight& light);
-  explicit PreparedDiskLamp(const SpotLight& light);
+  explicit DiskLight(const PointLamp& light);
+  explicit DiskLight(const SpotLamp& light);
 
   static constexpr LightType type() { return LightType::Area; }
 
