@@ -200,7 +200,8 @@ TEST_CASE("A black map is no light: nothing sampled, and the light set leaves it
   CHECK(light.pdf({0, 0, 1}) == 0.0f);
   const LightSampler sampler({}, WorldLight(light));
   CHECK(sampler.empty());
-  CHECK(sampler.escaped_radiance({0, 0, 1}, 1.0f, false, false, sampler.site(glm::vec3(0.0f), {})) == glm::vec3(0.0f));
+  const PickSite site = sampler.site(glm::vec3(0.0f), {});
+  CHECK(sampler.escaped_radiance({0, 0, 1}, ScatteredRay{1.0f, false, false, &site}) == glm::vec3(0.0f));
   // Strength 0 blackens any map.
   CHECK(EnvironmentLight(EnvironmentMap{probe_map(), 0.0, 0.0}).radiance({1, 0, 0}) == glm::vec3(0.0f));
 }

@@ -208,7 +208,7 @@ TEST_CASE("Without lamps nothing is drawn, and a black background is no light", 
   CHECK(dark.empty());
   CHECK_FALSE(dark.pick(site, &u));
   CHECK_FALSE(dark.sample(site, glm::vec2(0.5f)));
-  CHECK(dark.escaped_radiance(glm::vec3(0, 0, 1), 1.0f, false, false, site) == glm::vec3(0.0f));
+  CHECK(dark.escaped_radiance(glm::vec3(0, 0, 1), ScatteredRay{1.0f, false, false, &site}) == glm::vec3(0.0f));
   CHECK_FALSE(dark.has_area_lights());
 }
 
@@ -219,8 +219,8 @@ TEST_CASE("A ray leaving the scene sees the uniform background with MIS weight 1
   const PickSite site = sampler.site(glm::vec3(0.0f), {});
   for (float bsdf_pdf : {0.0f, 1e-30f, 0.3f, 1e30f})
     for (bool specular : {false, true})
-      CHECK(sampler.escaped_radiance(glm::normalize(glm::vec3(0.3f, -0.2f, 0.9f)), bsdf_pdf, specular, false, site) ==
-            background);
+      CHECK(sampler.escaped_radiance(glm::normalize(glm::vec3(0.3f, -0.2f, 0.9f)),
+                                     ScatteredRay{bsdf_pdf, specular, false, &site}) == background);
 }
 
 TEST_CASE("A light sample's pdf includes the probability of picking the light", "[render]") {
@@ -232,4 +232,26 @@ TEST_CASE("A light sample's pdf includes the probability of picking the light", 
   CHECK(s->pdf == 0.5f);
   CHECK(s->wi == glm::vec3(0.0f, 0.0f, 1.0f));
   CHECK(s->distance == 1.0f);
+}
+
+TEST_CASE("Every light a ray finds is weighed by one MIS rule", "[render]") {
+  const LightSampler sampler({rect_at(0.0), PointLamp{glm::dvec3(0.0, 0.0, 2.0), 10.0, glm::dvec3(1.0)}},
+                             UniformBackground(glm::vec3(0.5f)));
+  const PickSite site = sampler.site(glm::vec3(0.0f), {glm::vec3(0.0f, 0.0f, 1.0f), false});
+  int pdf_calls = 0;
+  auto light_pdf = [&pdf_calls] {
+    ++pdf_calls;
+    return 2.0f;
+  };
+  // No light sample competes with the camera's ray or a specular bounce: weight 1, no density asked.
+  CHECK(sampler.found_light_weight(0, ScatteredRay{0.7f, false, true, &site}, light_pdf) == 1.0f);
+  CHECK(sampler.found_light_weight(0, ScatteredRay{0.7f, true, false, &site}, light_pdf) == 1.0f);
+  CHECK(pdf_calls == 0);
+  // Otherwise the power heuristic against the pick's probability times the light's density.
+  const float light_density = sampler.pick_probability(0, site) * 2.0f;
+  CHECK(sampler.found_light_weight(0, ScatteredRay{0.7f, false, false, &site}, light_pdf) ==
+        Approx(0.49f / (0.49f + light_density * light_density)));
+  // A uniform background is outside light sampling's distribution: BSDF sampling alone finds it.
+  REQUIRE(sampler.sampled_count() == 2);
+  CHECK(sampler.found_light_weight(2, ScatteredRay{0.7f, false, false, &site}, light_pdf) == 1.0f);
 }

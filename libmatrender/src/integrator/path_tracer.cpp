@@ -72,20 +72,37 @@ PathTracer::PathTracer(const SceneData& scene, const LightSampler& lights, const
   }
 }
 
-glm::vec3 PathTracer::lamps_hit(const glm::vec3& origin, const glm::vec3& dir, float t_max, float bsdf_pdf,
-                                bool bsdf_delta, bool camera_ray, const PickSite& from) const {
-  glm::vec3 sum(0.0f);
-  lights_.for_each_area_hit(origin, dir, t_max, [&](size_t index, const auto& lamp, float t) {
-    if (camera_ray && !lamp.visible_to_camera()) return;
-    // The lamp's density from where the ray left: the scattering vertex `from`, not a surface the
-    // ray passed through since (origin).
-    const float weight =
-        bsdf_delta || camera_ray
-            ? 1.0f
-            : power_heuristic(bsdf_pdf, lights_.pick_probability(index, from) * lamp.pdf(from.p, dir, t + glm::length(origin - from.p)));
-    sum += weight * lamp.radiance(dir);
-  });
-  return sum;
+void PathTracer::add_emitters_found(glm::vec3& radiance, const glm::vec3& throughput, const glm::vec3& origin,
+                                    const glm::vec3& dir, const RayHit& hit, const SurfacePoint* surface,
+                                    const ScatteredRay& ray) const {
+  // Later rays see the lamps; camera rays only those visible to them.
+  if (lights_.has_area_lights() && (!ray.camera_ray || lights_.has_camera_visible_lamps())) {
+    glm::vec3 lamps(0.0f);
+    lights_.for_each_area_hit(origin, dir, hit.hit() ? hit.t : kInfinity, [&](size_t index, const auto& lamp, float t) {
+      if (ray.camera_ray && !lamp.visible_to_camera()) return;
+      // The lamp's density from where the ray left: the scattering vertex, not a surface the ray
+      // passed through since (origin).
+      const glm::vec3& from = ray.from->p;
+      lamps += lights_.found_light_weight(index, ray, [&] { return lamp.pdf(from, dir, t + glm::length(origin - from)); }) *
+               lamp.radiance(dir);
+    });
+    radiance += throughput * lamps;
+  }
+  if (!hit.hit()) {
+    if (!ray.camera_ray || !settings_.transparent_background) radiance += throughput * lights_.escaped_radiance(dir, ray);
+    return;
+  }
+  // Emission, seen by every ray including the camera's.
+  const glm::vec3 emitted = surface->emitted();
+  if (emitted == glm::vec3(0.0f)) return;
+  float weight = 1.0f;
+  if (const std::optional<size_t> emitter = lights_.emitter_index(hit.mesh)) {
+    const auto& mesh_emitter = std::get<MeshEmitter>(lights_.light(*emitter));
+    weight = lights_.found_light_weight(*emitter, ray, [&] {
+      return mesh_emitter.pdf(ray.from->p, dir, glm::length(surface->position - ray.from->p), hit.triangle);
+    });
+  }
+  radiance += throughput * emitted * weight;
 }
 
 glm::vec3 PathTracer::transmittance(const glm::vec3& origin, const glm::vec3& dir, float distance,
@@ -144,14 +161,9 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
     if (vertex > 0) ++result.rays;  // the camera's ray is the caller's
     // Still the camera's ray: it has passed only through transparent surfaces.
     const bool camera_ray = bounce == 0;
-    // Later rays see the lamps, weighted against NEE; camera rays only those visible to them,
-    // whole (no light sample competes).
-    if (lights_.has_area_lights() && (!camera_ray || lights_.has_camera_visible_lamps()))
-      result.radiance += throughput * lamps_hit(origin, dir, hit.hit() ? hit.t : kInfinity, bsdf_pdf, bsdf_delta,
-                                                camera_ray, scattered);
+    const ScatteredRay arrival{bsdf_pdf, bsdf_delta, camera_ray, &scattered};
     if (!hit.hit()) {
-      if (!camera_ray || !settings_.transparent_background)
-        result.radiance += throughput * lights_.escaped_radiance(dir, bsdf_pdf, bsdf_delta, camera_ray, scattered);
+      add_emitters_found(result.radiance, throughput, origin, dir, hit, nullptr, arrival);
       // What the camera sees through: the film's transparency (Cycles averages the channels).
       if (camera_ray) result.transparency = channel_average(throughput);
       break;
@@ -170,20 +182,7 @@ PathResult PathTracer::trace(const glm::vec3& camera_origin, const glm::vec3& ca
       result.first_distance = hit.t;
       if (first_surface) *first_surface = sp;
     }
-    // Emission, seen by every ray including the camera's; rays a BSDF sampled weigh it against
-    // the light sample the vertex that scattered them took of the same emitter.
-    const glm::vec3 emitted = sp.emitted();
-    if (emitted != glm::vec3(0.0f)) {
-      float weight = 1.0f;
-      const std::optional<size_t> emitter = lights_.emitter_index(hit.mesh);
-      if (!camera_ray && !bsdf_delta && emitter) {
-        const float t = glm::length(sp.position - scattered.p);
-        const auto& mesh_emitter = std::get<MeshEmitter>(lights_.light(*emitter));
-        weight = power_heuristic(bsdf_pdf, lights_.pick_probability(*emitter, scattered) *
-                                               mesh_emitter.pdf(scattered.p, dir, t, hit.triangle));
-      }
-      result.radiance += throughput * emitted * weight;
-    }
+    add_emitters_found(result.radiance, throughput, origin, dir, hit, &sp, arrival);
     // Cycles terminates here, after the lamp and background hits of the arriving ray counted.
     if (bounce > settings_.max_bounces || diffuse_bounces > settings_.max_diffuse_bounces ||
         glossy_bounces > settings_.max_glossy_bounces || transmission_bounces > settings_.max_transmission_bounces ||

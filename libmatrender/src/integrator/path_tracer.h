@@ -53,11 +53,14 @@ class PathTracer {
   // each transparent one. Counts the rays it traces into *rays.
   glm::vec3 transmittance(const glm::vec3& origin, const glm::vec3& dir, float distance, uint32_t* rays) const;
 
-  // MIS-weighted radiance of the area lamps in front of the segment [origin, origin + t_max dir].
-  // The radiance of the area lamps the ray from origin along dir meets before t_max, each
-  // weighed by MIS against light sampling at `from`, the vertex that scattered the ray.
-  glm::vec3 lamps_hit(const glm::vec3& origin, const glm::vec3& dir, float t_max, float bsdf_pdf,
-                      bool bsdf_delta, bool camera_ray, const PickSite& from) const;
+  // Every emitter the ray from origin along dir finds, times throughput, added to radiance: the
+  // area lamps it passes before its hit, then the emitting surface it hits (`surface`, shaded at
+  // `hit`) or, when it hits nothing, the infinite lights it sees (unless the camera's ray and a
+  // transparent background). The one path for every light a ray can reach, each weighed by
+  // LightSampler::found_light_weight.
+  void add_emitters_found(glm::vec3& radiance, const glm::vec3& throughput, const glm::vec3& origin,
+                          const glm::vec3& dir, const RayHit& hit, const SurfacePoint* surface,
+                          const ScatteredRay& ray) const;
 
   const SceneData& scene_;
   const LightSampler& lights_;

@@ -51,7 +51,7 @@ struct SubtendedCone {
 // The bound for a one-sided emitter of `power` (radiance times area, channel mean) within a sphere
 // of `radius` about `center`, emitting into the half-space away from unit `back`: 0 where p is
 // not in front of it. Written without early returns, so that a loop over emitters (the
-// rectangles of rect_lamp_importance.h) becomes vector instructions.
+// rectangles of rect_lights.h) becomes vector instructions.
 inline float one_sided_emitter_importance(const glm::vec3& center, const glm::vec3& back, float radius, float power,
                                           const glm::vec3& p, const ReceivingDirections& receiving) {
   const glm::vec3 to_center = center - p;

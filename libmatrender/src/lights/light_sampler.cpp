@@ -47,8 +47,7 @@ LightSampler::LightSampler(const std::vector<Lamp>& lights, const WorldLight& wo
   std::vector<RectLight> rects;
   for (const Light& light : prepared)
     if (const auto* rect = std::get_if<RectLight>(&light)) rects.push_back(*rect);
-  area_hits_ = RectLightHits(rects);
-  rect_importance_ = RectLampImportance(rects);
+  rects_ = RectLights(rects);
   lights_.assign(rects.begin(), rects.end());
   rect_count_ = rects.size();
   for (const RectLight& rect : rects) camera_visible_lamps_ = camera_visible_lamps_ || rect.visible_to_camera();
@@ -81,7 +80,7 @@ PickSite LightSampler::site(const glm::vec3& p, const ReceivingDirections& recei
   if (selection_ != LightSelection::Importance) return site;
   if (sampled_count_ <= PickSite::kKeptWeights) {
     // The rectangles all at once, then the other lights one by one.
-    rect_importance_.evaluate(p, receiving, site.weights.data());
+    rects_.importance(p, receiving, site.weights.data());
     for (size_t i = rect_count_; i < sampled_count_; ++i)
       site.weights[i] = with_light(lights_[i], [&](const auto& light) { return light.importance(p, receiving); });
   }
@@ -142,16 +141,13 @@ std::optional<LightSample> LightSampler::sample(const PickSite& site, glm::vec2 
   return s;
 }
 
-glm::vec3 LightSampler::escaped_radiance(const glm::vec3& dir, float bsdf_pdf, bool unweighted, bool camera_ray,
-                                         const PickSite& from) const {
+glm::vec3 LightSampler::escaped_radiance(const glm::vec3& dir, const ScatteredRay& ray) const {
   glm::vec3 sum(0.0f);
   for (size_t index : infinite_) {
     with_light(lights_[index], [&](const auto& light) {
       if constexpr (std::decay_t<decltype(light)>::type() == LightType::Infinite) {
-        if (camera_ray && !light.visible_to_camera()) return;
-        const float light_pdf = index < sampled_count_ ? pick_probability(index, from) * light.pdf(dir) : 0.0f;
-        const float weight = unweighted || camera_ray ? 1.0f : power_heuristic(bsdf_pdf, light_pdf);
-        sum += weight * light.radiance(dir);
+        if (ray.camera_ray && !light.visible_to_camera()) return;
+        sum += found_light_weight(index, ray, [&] { return light.pdf(dir); }) * light.radiance(dir);
       }
     });
   }
@@ -167,7 +163,7 @@ std::optional<glm::vec3> LightSampler::uniform_camera_background() const {
     });
     if (varies) return std::nullopt;
   }
-  return escaped_radiance(glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, false, true, PickSite());
+  return escaped_radiance(glm::vec3(0.0f, 0.0f, 1.0f), ScatteredRay());
 }
 
 }  // namespace matrender

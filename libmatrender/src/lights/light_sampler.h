@@ -15,10 +15,10 @@
 #include <glm/glm.hpp>
 
 #include "lights/light_sample.h"
-#include "lights/rect_lamp_importance.h"
-#include "lights/rect_light_hits.h"
+#include "lights/rect_lights.h"
 #include "lights/light.h"
 #include "lights/world_light.h"
+#include "sampling/warp.h"
 #include "matrender/lamp.h"
 #include "matrender/render_settings.h"
 
@@ -38,8 +38,19 @@ struct PickSite {
   std::array<float, kKeptWeights> weights;  // filled when the distribution has at most kKeptWeights
 };
 
+// How a ray that finds a light came to be, for MIS against the light sample the vertex that
+// scattered it took (Veach 1997, section 9.2): the solid-angle density of the BSDF sample that
+// made it, whether that bounce was specular, whether it is still the camera's ray, and the site
+// where that vertex picked its light.
+struct ScatteredRay {
+  float bsdf_pdf = 0.0f;
+  bool specular = false;
+  bool camera_ray = true;
+  const PickSite* from = nullptr;
+};
+
 // An area lamp other than a rectangle: rays find it by its own intersect(). Rectangles are
-// found together (rect_light_hits.h), emissive meshes by the rays' hits on the mesh.
+// found together (rect_lights.h), emissive meshes by the rays' hits on the mesh.
 template <class Prepared>
 constexpr bool is_shaped_lamp() {
   return Prepared::type() == LightType::Area && !std::is_same_v<Prepared, RectLight> &&
@@ -88,7 +99,7 @@ class LightSampler {
   // the pick. Lights wholly outside the site's receiving directions give no sample.
   std::optional<LightSample> sample(const PickSite& site, glm::vec2 u) const;
 
-  bool has_area_lights() const { return !area_hits_.empty() || shaped_lamp_count_ > 0; }
+  bool has_area_lights() const { return !rects_.empty() || shaped_lamp_count_ > 0; }
   // The index of the light that is a mesh's emitting triangles (a MeshEmitter), or
   // nothing.
   std::optional<size_t> emitter_index(uint32_t mesh) const {
@@ -104,7 +115,7 @@ class LightSampler {
   // by hitting the mesh.
   template <class Visit>
   void for_each_area_hit(const glm::vec3& origin, const glm::vec3& dir, float t_max, Visit&& visit) const {
-    area_hits_.for_each_hit(origin, dir, t_max, [&](size_t index, float t) {
+    rects_.for_each_hit(origin, dir, t_max, [&](size_t index, float t) {
       visit(index, *std::get_if<RectLight>(&lights_[index]), t);
     });
     for (size_t i = rect_count_; i < rect_count_ + shaped_lamp_count_; ++i)
@@ -114,12 +125,21 @@ class LightSampler {
       });
   }
 
-  // What a ray leaving the scene along dir sees of the infinite lights, each MIS-weighted
-  // against light sampling from the site it left (power heuristic) unless `unweighted`: the ray
-  // came from a specular lobe, where no light sample competes. A camera ray sees those visible
-  // to the camera, whole.
-  glm::vec3 escaped_radiance(const glm::vec3& dir, float bsdf_pdf, bool unweighted, bool camera_ray,
-                             const PickSite& from) const;
+  // The one MIS weight of every light a ray finds, light(index) (a lamp it meets, an emitting
+  // mesh it hits, an infinite light it sees): the power heuristic between the ray's BSDF density
+  // and the density of light sampling drawing that light and that direction from the ray's site,
+  // the pick's probability times light_pdf() (called only when needed); 1 where no light sample
+  // competes (a specular bounce, the camera's ray). A light outside the distribution (a uniform
+  // background) has no light-sampling density.
+  template <class LightPdf>
+  float found_light_weight(size_t index, const ScatteredRay& ray, LightPdf&& light_pdf) const {
+    if (ray.specular || ray.camera_ray) return 1.0f;
+    return power_heuristic(ray.bsdf_pdf, index < sampled_count_ ? pick_probability(index, *ray.from) * light_pdf() : 0.0f);
+  }
+
+  // What a ray leaving the scene along dir sees of the infinite lights, each weighed by
+  // found_light_weight. A camera ray sees those visible to the camera, whole.
+  glm::vec3 escaped_radiance(const glm::vec3& dir, const ScatteredRay& ray) const;
   // What a camera ray that meets nothing sees (its escaped_radiance) when that is the same in
   // every direction; nothing when an infinite light visible to the camera varies with direction.
   std::optional<glm::vec3> uniform_camera_background() const;
@@ -134,8 +154,7 @@ class LightSampler {
   // light(index)'s importance at the site: kept there, or evaluated again.
   float importance(size_t index, const PickSite& site) const;
 
-  RectLightHits area_hits_;       // over lights(0 .. rect_count_ - 1)
-  RectLampImportance rect_importance_;  // the same
+  RectLights rects_;  // lights(0 .. rect_count_ - 1), together
   size_t rect_count_ = 0;
   size_t shaped_lamp_count_ = 0;  // lights(rect_count_ .. rect_count_ + shaped_lamp_count_ - 1)
   std::vector<int32_t> emitter_of_mesh_;  // index into lights_ by mesh, -1 for none

@@ -1,10 +1,27 @@
-#include "lights/rect_lamp_importance.h"
+#include "lights/rect_lights.h"
 
 #include "lights/light_importance.h"
 
 namespace matrender {
 
-RectLampImportance::RectLampImportance(const std::vector<RectLight>& lamps) {
+RectLights::RectLights(const std::vector<RectLight>& lamps) {
+  Block padding{};
+  for (size_t i = 0; i < kBlock; ++i) padding.half_x[i] = padding.half_y[i] = padding.radius2[i] = -1.0f;
+  blocks_.assign((lamps.size() + kBlock - 1) / kBlock, padding);
+  for (size_t lamp = 0; lamp < lamps.size(); ++lamp) {
+    Block& k = blocks_[lamp / kBlock];
+    const size_t i = lamp % kBlock;
+    const Rectangle3& r = lamps[lamp].rectangle();
+    const glm::vec3 c = lamps[lamp].center();
+    k.center_x[i] = c.x, k.center_y[i] = c.y, k.center_z[i] = c.z;
+    k.x_x[i] = r.x.x, k.x_y[i] = r.x.y, k.x_z[i] = r.x.z;
+    k.y_x[i] = r.y.x, k.y_y[i] = r.y.y, k.y_z[i] = r.y.z;
+    k.z_x[i] = r.z.x, k.z_y[i] = r.z.y, k.z_z[i] = r.z.z;
+    k.half_x[i] = 0.5f * r.length_x;
+    k.half_y[i] = 0.5f * r.length_y;
+    // The half diagonal, 1 % larger.
+    k.radius2[i] = 1.0201f * (k.half_x[i] * k.half_x[i] + k.half_y[i] * k.half_y[i]);
+  }
   for (const RectLight& lamp : lamps) {
     const glm::vec3 c = lamp.center(), back = lamp.rectangle().z;
     center_x_.push_back(c.x), center_y_.push_back(c.y), center_z_.push_back(c.z);
@@ -14,7 +31,7 @@ RectLampImportance::RectLampImportance(const std::vector<RectLight>& lamps) {
   }
 }
 
-void RectLampImportance::evaluate(const glm::vec3& p, const ReceivingDirections& receiving, float* weights) const {
+void RectLights::importance(const glm::vec3& p, const ReceivingDirections& receiving, float* weights) const {
   // The same function as RectLight::importance, lamp by lamp; the compiler runs the
   // iterations side by side once `every_direction` is a constant in the loop (a select on it
   // would keep the loop scalar).

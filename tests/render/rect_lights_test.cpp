@@ -1,4 +1,4 @@
-// The blocked ray test against rectangular lamps (libmatrender/src/lights/rect_light_hits)
+// The blocked ray test against rectangular lamps (libmatrender/src/lights/rect_lights)
 // against a plain double-precision ray-rectangle intersection, on random rays and lamps.
 #include <catch2/catch.hpp>
 
@@ -8,7 +8,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "uniform_floats.h"
-#include "lights/rect_light_hits.h"
+#include "lights/rect_lights.h"
 
 using namespace matrender;
 
@@ -49,7 +49,7 @@ TEST_CASE("Blocked lamp hits equal a plain ray-rectangle test", "[render]") {
     lamps.push_back(lamp);
   }
   std::vector<RectLight> prepared(lamps.begin(), lamps.end());
-  const RectLightHits hits(prepared);
+  const RectLights hits(prepared);
   int total_hits = 0, decided = 0;
   for (int r = 0; r < 20000; ++r) {
     const glm::vec3 o = in_box(3.0f);
@@ -99,7 +99,7 @@ TEST_CASE("Rays aimed just inside a lamp's corners hit it", "[render]") {
     lamps.push_back(lamp);
   }
   std::vector<RectLight> prepared(lamps.begin(), lamps.end());
-  const RectLightHits hits(prepared);
+  const RectLights hits(prepared);
   int aimed = 0;
   for (size_t k = 0; k < lamps.size(); ++k) {
     const Rectangle3& r = prepared[k].rectangle();
