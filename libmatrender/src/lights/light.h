@@ -1,9 +1,11 @@
 #pragma once
-// The lights of a scene, prepared for rendering, behind one interface, as the lobes of a BSDF are.
-// A described light (matrender/lamp.h) becomes one of these by its LampPreparation's prepare
-// (light_kind.h), declared in the light's own file: a point lamp a PointLight, or a
-// DiskLight when it has a radius; a sun a DistantLight, or a SunLight when
-// it has an angle. Including this header includes every light's file, and so every LampPreparation.
+// The runtime lights of a scene, behind one interface, as the lobes of a BSDF are (pbrt-v4's
+// Light). A described lamp (matrender/lamp.h) becomes one of these by its LampPreparation's
+// prepare (lamp_preparation.h), declared in the light's own file: a point lamp a PointLight, or
+// a DiskLight when it has a radius; a sun a DistantLight, or a SunLight when it has an angle; a
+// rectangle lamp a RectLight. A mesh's emitting triangles are a MeshEmitter, the world an
+// EnvironmentLight or a UniformBackground. Including this header includes every light's file, and
+// so every LampPreparation.
 //
 // Every light:
 //   static constexpr LightType type();   what it is (light_type.h), which decides how the

@@ -2,7 +2,7 @@
 // What a lamp must be for single-precision shading to render it as described: finite values,
 // positions within the scene limit (matrender/scene_limits.h), a rectangle whose area and
 // radiance, and a point lamp whose intensity, are finite non-zero floats. Each light's
-// LampPreparation::check (light_kind.h) states its own with the checks below.
+// LampPreparation::check (lamp_preparation.h) states its own with the checks below.
 #include <cmath>
 #include <limits>
 #include <optional>

@@ -1,7 +1,7 @@
 #pragma once
 // A point lamp of radius 0, Cycles 3.4's conventions (intern/cycles/kernel/light/point.h;
 // docs/conventions.md, Lamps): intensity I = P c / (4 pi) W/sr in every direction, reached only by
-// light sampling. With a radius it is a disk lamp instead (disk_lamp.h).
+// light sampling. With a radius it is a disk lamp instead (disk_light.h).
 #include <cmath>
 #include <optional>
 #include <utility>

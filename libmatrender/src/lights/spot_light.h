@@ -2,7 +2,7 @@
 // A spot lamp of radius 0, Cycles 3.4's conventions: a point lamp's intensity I = P c / (4 pi)
 // W/sr (point_light.h) times cos t * smoothstep((cos t - cos_half) / ((1 - cos_half) blend))
 // inside its cone (intern/cycles/kernel/light/spot.h, spot_attenuation; docs/conventions.md,
-// Lamps), reached only by light sampling. With a radius it is a disk lamp instead (disk_lamp.h).
+// Lamps), reached only by light sampling. With a radius it is a disk lamp instead (disk_light.h).
 #include <cmath>
 #include <optional>
 #include <utility>
