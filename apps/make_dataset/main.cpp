@@ -43,6 +43,7 @@ struct Options {
   std::string shard = "0/1";
   int threads = 0;
   bool print_config = false;
+  bool list_render_keys = false;
   std::string verify;   // a dataset folder to check instead of rendering
   std::string preview;  // a dataset folder to draw contact sheets of
 };
@@ -135,6 +136,8 @@ void add_options(CLI::App& app, Options& options) {
                  "index.html linking them, into DIR/preview/, and exit")
       ->type_name("DIR");
   app.add_flag("--print-config", options.print_config, "print the configuration after overrides, and exit");
+  app.add_flag("--list-render-keys", options.list_render_keys,
+               "print the render settings the configuration's `render:` block takes (a markdown table), and exit");
 }
 
 std::vector<Override> overrides(const Options& options) {
@@ -169,6 +172,10 @@ int preview(const std::string& folder) {
 }
 
 int make(const Options& options) {
+  if (options.list_render_keys) {
+    fmt::print("{}", matdataset::dataset_render_keys_markdown());
+    return 0;
+  }
   const std::optional<matdataset::Shard> shard = matdataset::parse_shard(options.shard);
   if (!shard) throw matbase::InputError("--shard: expected K/N with 0 <= K < N, got " + options.shard);
   const matdataset::DatasetConfig config = matdataset::load_config(options.config_file, overrides(options));

@@ -142,6 +142,10 @@ int main(int argc, char** argv) {
       fmt::print("{}", matmaterial::material_parameters_markdown());
       return 0;
     }
+    if (options.list_settings) {
+      fmt::print("{}", matrender::render_settings_markdown());
+      return 0;
+    }
     if (options.list_materials) {
       fmt::print("{}\n{}\n{}", matmaterial::material_classes_markdown(), matmaterial::library_styles_markdown(),
                  matmaterial::library_ranges_markdown());

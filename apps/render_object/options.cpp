@@ -186,6 +186,10 @@ void add_scene_options(CLI::App& app, Options& o) {
   app.add_flag("--list-parameters", o.list_parameters,
                "print the material parameters scene files take (a markdown table) and exit")
       ->group(group);
+  app.add_flag("--list-settings", o.list_settings,
+               "print the render settings a scene file's \"render\" block takes, each also an option here (a "
+               "markdown table) and exit")
+      ->group(group);
   app.add_flag("--list-materials", o.list_materials,
                "print the material classes, their label ids and what each models, then the procedural library's "
                "styles and ranges (markdown tables) and exit")

@@ -26,6 +26,7 @@ struct Options {
   std::optional<std::string> object;  // NAME[:SEED]
   bool list_objects = false;
   bool list_parameters = false;
+  bool list_settings = false;
   bool list_materials = false;
   std::optional<std::string> material_dir;  // every object in this material folder
   std::optional<matmaterial::LibraryMaterialSpec> material;  // every object in this library material

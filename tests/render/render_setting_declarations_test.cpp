@@ -169,7 +169,7 @@ TEST_CASE("docs/scene_format.md's render table is the declarations' rows") {
   size_t rows = 0;
   for (const RenderSettingDeclaration& setting : matrender::render_setting_declarations()) {
     if (setting.scope != matrender::SettingScope::Scene) continue;
-    INFO("docs/scene_format.md needs the row\n" << matrender::render_setting_table_row(setting));
+    INFO("docs/scene_format.md needs the row of " << setting.name << " that render_object --list-settings prints");
     CHECK(section.find(matrender::render_setting_table_row(setting) + "\n") != std::string::npos);
     ++rows;
   }

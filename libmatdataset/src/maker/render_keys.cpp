@@ -83,4 +83,10 @@ std::string dataset_render_key_row(const DatasetRenderKey& key) {
                      setting.documentation, key.note.empty() ? "" : "; ", key.note);
 }
 
+std::string dataset_render_keys_markdown() {
+  std::string table = "| key | default | meaning |\n|---|---|---|\n";
+  for (const DatasetRenderKey& key : dataset_render_keys()) table += dataset_render_key_row(key) + "\n";
+  return table;
+}
+
 }  // namespace matdataset

@@ -104,5 +104,7 @@ std::optional<std::string> render_settings_problem(const RenderSettings& setting
 // The setting's row of a Markdown table | `name` | default | value |, as docs/scene_format.md
 // lists it: the default in the scene file's JSON spelling, then expectation(): documentation.
 std::string render_setting_table_row(const RenderSettingDeclaration& setting);
+// The table of every scene setting, header and rows (render_object --list-settings prints it).
+std::string render_settings_markdown();
 
 }  // namespace matrender

@@ -260,4 +260,11 @@ std::string render_setting_table_row(const RenderSettingDeclaration& setting) {
                      setting.documentation, exclusions);
 }
 
+std::string render_settings_markdown() {
+  std::string table = "| key | default | value |\n|---|---|---|\n";
+  for (const RenderSettingDeclaration& setting : render_setting_declarations())
+    if (setting.scope == SettingScope::Scene) table += render_setting_table_row(setting) + "\n";
+  return table;
+}
+
 }  // namespace matrender

@@ -40,5 +40,7 @@ std::vector<std::string> dataset_render_top_keys();
 
 // The key's row of docs/make_dataset.md's table: | `render.KEY` | default | value |.
 std::string dataset_render_key_row(const DatasetRenderKey& key);
+// Every key's row under the table's header (make_dataset --list-render-keys prints it).
+std::string dataset_render_keys_markdown();
 
 }  // namespace matdataset
