@@ -161,9 +161,10 @@ struct FloorPixels {
     const PixelEvaluator::Setup setup{data,
                                       tracer,
                                       rays,
+                                      blackman_harris_sampler(),
                                       camera.width,
                                       1,
-                                      pixels_seeing_box(rays, camera.width, camera.height, data.vertex_lower, data.vertex_upper),
+                                      pixels_seeing_box(rays, camera.width, camera.height, data.vertex_lower, data.vertex_upper, 1.5),
                                       uniform_background ? lights.uniform_camera_background() : std::nullopt,
                                       true,
                                       nullptr};

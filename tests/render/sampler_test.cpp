@@ -6,8 +6,11 @@
 #include <vector>
 
 #include "film/pixel_filter.h"
+#include "matrender/render.h"
+#include "matrender/scene.h"
 #include "sampling/pixel_sampler.h"
 #include "sampling/sample_packet.h"
+#include "test_scenes.h"
 
 using namespace matrender;
 
@@ -87,7 +90,7 @@ TEST_CASE("The pixel filter's inverse CDF follows Blackman-Harris", "[render]") 
   const int steps = 3000;
   for (int i = 0; i <= steps; ++i) {
     const double x = -1.5 + 3.0 * i / steps;
-    const double w = blackman_harris_weight(x) * ((i == 0 || i == steps) ? 1 : (i % 2 ? 4 : 2));
+    const double w = blackman_harris_weight(x, 1.5) * ((i == 0 || i == steps) ? 1 : (i % 2 ? 4 : 2));
     total += w;
     if (std::abs(x) < 0.5) inside += w;
   }
@@ -120,3 +123,54 @@ TEST_CASE("Sobol dimension 1 equals the direction-number recurrence", "[render]"
   CHECK(reverse_bits(1u) == 0x80000000u);
   CHECK(reverse_bits(0x00000F01u) == 0x80F00000u);
 }
+
+TEST_CASE("A pixel filter of another width is Blender's default one scaled", "[render]") {
+  // Blackman-Harris over [-r, r] is the window over [-1.5, 1.5] stretched by r / 1.5, and so is
+  // its inverse CDF; the default width's filter is the one made once.
+  const PixelFilterSampler& standard = blackman_harris_sampler();
+  CHECK(standard.radius() == 1.5);
+  for (const double radius : {0.01, 0.5, 4.0, 10.0}) {
+    const PixelFilterSampler filter(radius);
+    CHECK(filter.radius() == radius);
+    CHECK(filter.inverse_cdf(0.0f) == Approx(-radius));
+    CHECK(filter.inverse_cdf(1.0f) == Approx(radius));
+    for (int i = 0; i <= 64; ++i) {
+      const float u = i / 64.0f;
+      CHECK(filter.inverse_cdf(u) == Approx(standard.inverse_cdf(u) * radius / 1.5).margin(1e-5 * radius));
+    }
+  }
+  const PixelFilterSampler again(PixelFilterSampler::kDefaultRadius);
+  for (int i = 0; i <= 64; ++i) CHECK(again.inverse_cdf(i / 64.0f) == standard.inverse_cdf(i / 64.0f));
+}
+
+TEST_CASE("A wider pixel filter spreads an edge over more pixels", "[render]") {
+  // A white floor's straight edge against a black background, seen from above: the row's
+  // values rise from 0 to 1 over the pixels within the filter's reach of the edge.
+  Scene scene;
+  Material white = test_scenes::lambert(0.0f);
+  white.set(MaterialParameter::Emission, glm::vec3(1.0f));
+  white.set(MaterialParameter::EmissionStrength, 1.0f);
+  scene.add_mesh(test_scenes::horizontal_square(1.0), {scene.add_material(white)});
+  const Camera camera = Camera::look_at({0.5, 0, 2}, {0.5, 0, 0}, {0, 1, 0}, 0.4, 48, 4);  // the edge at x = 0.5
+  auto ramp_pixels = [&](double width) {
+    RenderSettings settings;
+    settings.samples_per_pixel = 256;
+    settings.filter_width = width;
+    settings.aovs = 0;
+    FrameBuffers frame;
+    render(scene, camera, settings, frame);
+    int partial = 0;
+    for (int x = 0; x < camera.width; ++x) {
+      const float v = frame.color[3 * (2 * camera.width + x)];
+      if (v > 0.02f && v < 0.98f) ++partial;
+    }
+    return partial;
+  };
+  const int narrow = ramp_pixels(0.5), standard = ramp_pixels(1.5), wide = ramp_pixels(4.0);
+  CAPTURE(narrow, standard, wide);
+  CHECK(narrow <= 2);
+  CHECK(standard > narrow);
+  CHECK(wide >= 2 * standard);
+  CHECK(wide <= 8 + 2);  // the window's reach either side, and a pixel of rounding
+}
+

@@ -3,13 +3,13 @@
 // surface. Row 0 is the image top; arrays are row-major, channels interleaved.
 //
 // How AOVs are filtered (docs/conventions.md): colour is the plain mean of all filter-sampled
-// camera samples (Cycles' Blackman-Harris 1.5 px, importance sampled, weight 1). alpha is the
-// fraction of samples that hit a surface. The material parameters and the normals are the mean
-// over the samples that hit (not premultiplied by alpha; each parameter clamped to its range in
-// the table, normals renormalised). Depth, label and part id come from the single hit sample
-// nearest the pixel centre and are never blended. Ambient occlusion is the mean over the hit
-// samples of the fraction of their occlusion rays that escape (RenderSettings). Pixels no sample
-// hit hold 0 (label 0, part id -1, depth 0).
+// camera samples (Cycles' Blackman-Harris of RenderSettings::filter_width, importance sampled,
+// weight 1). alpha is the fraction of samples that hit a surface. The material parameters and
+// the normals are the mean over the samples that hit (not premultiplied by alpha; each parameter
+// clamped to its range in the table, normals renormalised). Depth, label and part id come from
+// the single hit sample nearest the pixel centre and are never blended. Ambient occlusion is the
+// mean over the hit samples of the fraction of their occlusion rays that escape
+// (RenderSettings). Pixels no sample hit hold 0 (label 0, part id -1, depth 0).
 #include <array>
 #include <cstdint>
 #include <optional>

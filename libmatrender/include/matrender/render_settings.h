@@ -17,6 +17,7 @@ enum class LightSelection { Importance, Uniform };
 
 struct RenderSettings {
   int samples_per_pixel = 64;
+  double filter_width = 1.5;  // pixels, Blender's Film > Pixel Filter > Width
   // Adaptive sampling as Cycles 3.4 (docs/conventions.md): 0 = off.
   double noise_threshold = 0.0;
   int min_samples = 0;  // 0 = Cycles' automatic rule

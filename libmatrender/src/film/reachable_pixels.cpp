@@ -19,7 +19,7 @@ int clamped_floor(double v, int limit) { return static_cast<int>(std::clamp(std:
 }  // namespace
 
 PixelRect pixels_seeing_box(const CameraRays& rays, int width, int height, const glm::vec3& lower,
-                            const glm::vec3& upper) {
+                            const glm::vec3& upper, double filter_radius) {
   const PixelRect whole{0, 0, width, height};
   if (!(lower.x <= upper.x && lower.y <= upper.y && lower.z <= upper.z)) return PixelRect{};
   double min_x = INFINITY, min_y = INFINITY, max_x = -INFINITY, max_y = -INFINITY;
@@ -34,7 +34,7 @@ PixelRect pixels_seeing_box(const CameraRays& rays, int width, int height, const
     max_y = std::max(max_y, static_cast<double>(raster->y));
   }
   // Pixel x samples raster positions x + 0.5 +- the filter's radius.
-  const double reach = PixelFilterSampler::kRadius + kRoundingMargin;
+  const double reach = filter_radius + kRoundingMargin;
   PixelRect rect;
   rect.x0 = clamped_floor(min_x - 0.5 - reach, width);
   rect.x1 = clamped_floor(max_x - 0.5 + reach + 1.0, width);

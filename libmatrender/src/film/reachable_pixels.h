@@ -20,6 +20,6 @@ struct PixelRect {
 // width x height pixels. The whole image when some corner is not in front of the camera; no
 // pixel for an empty box (a lower bound above its upper one).
 PixelRect pixels_seeing_box(const CameraRays& rays, int width, int height, const glm::vec3& lower,
-                            const glm::vec3& upper);
+                            const glm::vec3& upper, double filter_radius);
 
 }  // namespace matrender

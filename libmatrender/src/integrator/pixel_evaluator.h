@@ -28,6 +28,7 @@ class PixelEvaluator {
     const SceneData& scene;
     const PathTracer& tracer;
     const CameraRays& rays;
+    const PixelFilterSampler& filter;  // of the settings' width
     int width;
     uint32_t seed;
     // Camera rays of pixels outside it meet nothing.
@@ -39,7 +40,7 @@ class PixelEvaluator {
   };
 
   PixelEvaluator(const Setup& setup, Film& film, RenderControl& control)
-      : setup_(setup), film_(film), control_(control), filter_(blackman_harris_sampler()) {}
+      : setup_(setup), film_(film), control_(control), filter_(setup.filter) {}
 
   // Takes samples [begin, end) of pixel (x, y) into `sums`, counting into `counts` and `progress`.
   // Stops between packets of samples once the render is cancelled.

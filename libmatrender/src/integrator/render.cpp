@@ -9,6 +9,7 @@
 #include "film/adaptive_sampling.h"
 #include "film/camera_rays.h"
 #include "film/film.h"
+#include "film/pixel_filter.h"
 #include "film/reachable_pixels.h"
 #include "integrator/ambient_occlusion.h"
 #include "integrator/path_tracer.h"
@@ -130,7 +131,12 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
   RenderControl control(settings, static_cast<uint64_t>(pixel_count) * spp);
   const AmbientOcclusionEstimator occlusion(data.accel, static_cast<float>(settings.ambient_occlusion_distance),
                                             settings.ambient_occlusion_error, settings.ambient_occlusion_rays);
-  PixelEvaluator::Setup setup{data, tracer, rays, camera.width, settings.seed, {}, {}, adaptive.has_value(),
+  // The pixel filter of the settings' width; Blender's default one is made once for every render.
+  const std::optional<PixelFilterSampler> own_filter =
+      settings.filter_width == PixelFilterSampler::kDefaultRadius ? std::nullopt
+                                                                  : std::optional<PixelFilterSampler>(settings.filter_width);
+  const PixelFilterSampler& filter = own_filter ? *own_filter : blackman_harris_sampler();
+  PixelEvaluator::Setup setup{data,          tracer, rays, filter, camera.width, settings.seed, {}, {}, adaptive.has_value(),
                               film.records_occlusion() ? &occlusion : nullptr};
   // Camera rays of pixels outside the box's image meet nothing: they see the background (and
   // lamps visible to the camera, which lie outside the vertices' box). When what they see does
@@ -138,7 +144,7 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
   setup.pixels_seeing_scene =
       lights.has_camera_visible_lamps()
           ? PixelRect{0, 0, camera.width, camera.height}
-          : pixels_seeing_box(rays, camera.width, camera.height, data.vertex_lower, data.vertex_upper);
+          : pixels_seeing_box(rays, camera.width, camera.height, data.vertex_lower, data.vertex_upper, filter.radius());
   setup.uniform_background = settings.transparent_background ? std::optional<glm::vec3>(glm::vec3(0.0f))
                                                              : lights.uniform_camera_background();
   const PixelEvaluator evaluator(setup, film, control);

@@ -14,9 +14,11 @@
 namespace matrender {
 namespace {
 
-// Cycles 3.4's own limits (its properties.py): at most 2^24 samples and 1024 bounces.
+// Cycles 3.4's own limits (its properties.py): at most 2^24 samples and 1024 bounces, a filter
+// width from 0.01 to 10 px.
 constexpr double kMaxSamplesPerPixel = 16777216.0;
 constexpr double kMaxBounceLimit = 1024.0;
+constexpr double kMinFilterWidth = 0.01, kMaxFilterWidth = 10.0;
 // At this many rays per hit ambient occlusion's stratified estimate is within 0.016 at one sample.
 constexpr double kMaxAmbientOcclusionRays = 1024.0;
 
@@ -45,6 +47,10 @@ std::vector<RenderSettingDeclaration> declare_settings() {
   return {
       whole_number("spp", &S::samples_per_pixel, 1, kMaxSamplesPerPixel,
                    "samples per pixel; with a noise threshold, the most a pixel takes"),
+      number("filter_width", &S::filter_width, kMinFilterWidth, kMaxFilterWidth, false, {},
+             "the pixel filter's width in pixels (Blender's Film > Pixel Filter > Width): each camera sample leaves "
+             "through a point drawn from a Blackman-Harris window spanning this many pixels either side of the "
+             "pixel's centre"),
       number("noise_threshold", &S::noise_threshold, 0.0, 1.0, false, {},
              "adaptive sampling as Cycles' Noise Threshold: a pixel stops once its relative error estimate is "
              "below it and its neighbours' are too (Blender's default is 0.01); 0 = off, every pixel takes every sample. "
