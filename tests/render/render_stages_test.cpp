@@ -122,13 +122,13 @@ TEST_CASE("The film resolves its sums into means: colour, alpha, variance, norma
   CHECK(frame.sample_count[0] == 0);
 }
 
-TEST_CASE("Repeated radiance sums as the same radiance added sample by sample", "[render]") {
+TEST_CASE("Repeated radiance sums as the same radiance added sample by sample, the second estimate too", "[render]") {
   FrameBuffers frame;
   Film film(frame, 1, 1, AovColorVariance, false, glm::mat3(1.0f));
   PixelSums one_by_one, repeated;
   const glm::vec3 background(0.1f, 0.3f, 0.7f);
   for (int k = 0; k < 37; ++k) film.add_radiance(one_by_one, background, k % 3 == 0);
-  film.add_repeated_radiance(repeated, background, 37, 13);
+  film.add_repeated_radiance(repeated, background, 37, true, [](uint32_t k) { return k % 3 == 0; });
   CHECK(std::memcmp(&one_by_one.color, &repeated.color, sizeof(glm::dvec3)) == 0);
   CHECK(std::memcmp(&one_by_one.second_estimate, &repeated.second_estimate, sizeof(glm::dvec3)) == 0);
   CHECK(one_by_one.luminance_squares == repeated.luminance_squares);
@@ -155,7 +155,7 @@ struct FloorPixels {
     const SceneData& data = scene.data();
     const LightSampler lights = LightSampler::for_scene(data, LightSelection::Importance);
     const CameraRays rays(camera);
-    const PathTracer tracer(data, lights, PathSettings());
+    const PathTracer tracer(data, lights, PathSettings(settings, rays.pixel_spread_angle()));
     Film film(frame, camera.width, camera.height, default_aovs(), false, glm::mat3(1.0f));
     RenderControl control(settings, 1u << 20);
     const PixelEvaluator::Setup setup{data,

@@ -72,10 +72,13 @@ class Film {
     return true;
   }
 
-  // `count` samples of the same radiance, `second_half` of them in the second estimate: what
-  // add_radiance sums for them, the colour still added sample by sample so that it rounds alike.
-  // False, and only the samples counted, when the radiance is NaN or infinite.
-  bool add_repeated_radiance(PixelSums& sums, const glm::vec3& radiance, uint32_t count, uint32_t second_half) const {
+  // `count` samples of the same radiance: what add_radiance sums for them, the colour still
+  // added sample by sample so that it rounds alike. With `second_estimate`, the k-th of them
+  // counts in the second estimate where in_second_half(k). False, and only the samples counted,
+  // when the radiance is NaN or infinite.
+  template <class InSecondHalf>
+  bool add_repeated_radiance(PixelSums& sums, const glm::vec3& radiance, uint32_t count, bool second_estimate,
+                             InSecondHalf&& in_second_half) const {
     sums.samples += count;
     if (!is_finite(radiance)) return false;
     const glm::dvec3 value(radiance);
@@ -84,7 +87,9 @@ class Film {
       const double l = matbase::rec709_luminance(radiance);
       for (uint32_t k = 0; k < count; ++k) sums.luminance_squares += l * l;
     }
-    for (uint32_t k = 0; k < second_half; ++k) sums.second_estimate += value;
+    if (second_estimate)
+      for (uint32_t k = 0; k < count; ++k)
+        if (in_second_half(k)) sums.second_estimate += value;
     return true;
   }
 

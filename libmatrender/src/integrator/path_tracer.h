@@ -8,25 +8,31 @@
 #include <glm/glm.hpp>
 
 #include "lights/light_sampler.h"
+#include "matrender/render_settings.h"
 #include "sampling/pixel_sampler.h"
 #include "scene/scene_data.h"
 #include "scene/surface_shading.h"
 
 namespace matrender {
 
+// What the path tracer follows of a render's settings (matrender/render_settings.h, whose
+// declarations give each one's meaning, range and default). Cycles parity reproduces Cycles 3.4's
+// own estimators, and looks textures up bilinearly as Cycles 3.4 on the CPU does.
 struct PathSettings {
-  int max_bounces = 12;
-  int max_diffuse_bounces = 4;
-  int max_glossy_bounces = 4;
-  int max_transmission_bounces = 12;
-  int max_transparent_bounces = 8;
-  bool transparent_background = false;
-  ClearcoatEstimator clearcoat_estimator = ClearcoatEstimator::Integral;
-  MultiscatterWalk multiscatter_walk = MultiscatterWalk::Exact;
+  PathSettings(const RenderSettings& settings, float camera_pixel_spread_angle);
+
+  int max_bounces;
+  int max_diffuse_bounces;
+  int max_glossy_bounces;
+  int max_transmission_bounces;
+  int max_transparent_bounces;
+  bool transparent_background;
+  ClearcoatEstimator clearcoat_estimator;
+  MultiscatterWalk multiscatter_walk;
   // The angle a camera ray's cone spreads by (about a pixel's); 0 turns mip-mapping off. Cones
   // continue through specular bounces and transparent passes; after any other bounce a lookup's
   // footprint is a camera pixel's at that distance from the camera.
-  float pixel_spread_angle = 0.0f;
+  float pixel_spread_angle;
 };
 
 struct PathResult {

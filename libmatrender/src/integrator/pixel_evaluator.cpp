@@ -11,7 +11,7 @@ namespace {
 
 // Whether camera sample `sample` of the pixel with `seeds` counts in adaptive sampling's second
 // estimate.
-bool in_second_half(uint32_t sample, const PixelSeeds& seeds) {
+[[gnu::always_inline]] inline bool in_second_half(uint32_t sample, const PixelSeeds& seeds) {
   return in_second_estimate(shuffled_sobol_index(reverse_bits(sample), seeds.pair(0)));
 }
 
@@ -28,10 +28,9 @@ void PixelEvaluator::take_background_samples(uint32_t pixel, uint32_t begin, uin
     const uint32_t count = std::min<uint32_t>(kPacketSamples, end - first);
     counts.samples += count;
     control_.pass(progress, count);
-    uint32_t second_half = 0;
-    if (setup_.second_estimate)
-      for (uint32_t sample = first; sample < first + count; ++sample) second_half += in_second_half(sample, seeds) ? 1 : 0;
-    if (!film_.add_repeated_radiance(sums, *setup_.uniform_background, count, second_half)) counts.discarded += count;
+    if (!film_.add_repeated_radiance(sums, *setup_.uniform_background, count, setup_.second_estimate,
+                                     [&](uint32_t k) { return in_second_half(first + k, seeds); }))
+      counts.discarded += count;
   }
 }
 

@@ -56,23 +56,6 @@ void check_render(const Camera& camera, const RenderSettings& settings) {
                           "render");
 }
 
-// What the path tracer follows from the settings. Cycles parity reproduces Cycles 3.4's own
-// estimators, and looks textures up bilinearly as Cycles 3.4 on the CPU does (no mip-mapping).
-PathSettings path_settings(const RenderSettings& settings, const CameraRays& rays) {
-  PathSettings path;
-  path.max_bounces = settings.max_bounces;
-  path.max_diffuse_bounces = settings.max_diffuse_bounces;
-  path.max_glossy_bounces = settings.max_glossy_bounces;
-  path.max_transmission_bounces = settings.max_transmission_bounces;
-  path.max_transparent_bounces = settings.max_transparent_bounces;
-  path.transparent_background = settings.transparent_background;
-  path.clearcoat_estimator = settings.cycles_parity ? ClearcoatEstimator::Cycles34 : ClearcoatEstimator::Integral;
-  path.multiscatter_walk = settings.cycles_parity ? MultiscatterWalk::Cycles34 : MultiscatterWalk::Exact;
-  const bool mipmaps = settings.mipmaps && !settings.cycles_parity;
-  path.pixel_spread_angle = mipmaps ? rays.pixel_spread_angle() : 0.0f;
-  return path;
-}
-
 // The filters run on the finished frame: the denoiser when asked for.
 void apply_post_filters(const RenderSettings& settings, FrameBuffers& frame) {
   if (!settings.denoise) return;
@@ -120,7 +103,7 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
   const LightSampler lights =
       LightSampler::for_scene(data, settings.cycles_parity ? LightSelection::Uniform : settings.light_selection);
   const CameraRays rays(camera);
-  const PathTracer tracer(data, lights, path_settings(settings, rays));
+  const PathTracer tracer(data, lights, PathSettings(settings, rays.pixel_spread_angle()));
   const glm::mat3 world_to_camera = glm::transpose(glm::mat3(rays.right(), rays.up(), rays.back()));
   Film film(frame, camera.width, camera.height, rendered_aovs(settings), settings.transparent_background,
             world_to_camera);
