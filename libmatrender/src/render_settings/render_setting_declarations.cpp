@@ -23,7 +23,6 @@ constexpr double kMinFilterWidth = 0.01, kMaxFilterWidth = 10.0;
 constexpr double kMaxAmbientOcclusionRays = 1024.0;
 
 using S = RenderSettings;
-using Field = RenderSettingDeclaration::Field;
 
 RenderSettingDeclaration whole_number(std::string_view name, int S::*field, double least, double most,
                                       std::string_view documentation, SettingScope scope = SettingScope::Scene) {
