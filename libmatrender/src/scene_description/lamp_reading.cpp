@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "matgeom/camera_grid.h"
+#include "matrender/blackbody.h"
 #include "scene_description/scene_file_values.h"
 
 namespace matrender {
@@ -18,12 +19,20 @@ using matbase::DocumentNode;
 template <class Description>
 struct SceneFileLamp;
 
+// A lamp's "color": [r, g, b], each at least 0, or {"blackbody": kelvin}, the colour of Blender's
+// Blackbody node at that temperature.
+glm::dvec3 read_lamp_color(const DocumentNode& node) {
+  if (!node.is_mapping()) return read_color(node);
+  node.expect_keys({"blackbody"});
+  return blackbody_color(node.required("blackbody").number_in(kMinBlackbodyKelvin, kMaxBlackbodyKelvin));
+}
+
 // What the scene file gives every lamp at a point, after its own keys: "power" (required),
 // "color" and "radius".
 template <class LampAtPoint>
 void read_lamp_at_point_emission(const DocumentNode& node, LampAtPoint& lamp) {
   lamp.power = node.required("power").non_negative();
-  if (auto color = node.find("color")) lamp.color = read_color(*color);
+  if (auto color = node.find("color")) lamp.color = read_lamp_color(*color);
   if (auto radius = node.find("radius")) lamp.radius = radius->non_negative();
 }
 
@@ -52,7 +61,7 @@ struct SceneFileLamp<RectLamp> {
       lamp.size_y = sides[1].positive();
     }
     lamp.power = node.required("power").non_negative();
-    if (auto color = node.find("color")) lamp.color = read_color(*color);
+    if (auto color = node.find("color")) lamp.color = read_lamp_color(*color);
     if (auto visible = node.find("visible_to_camera")) lamp.visible_to_camera = visible->boolean();
     return lamp;
   }
@@ -97,7 +106,7 @@ struct SceneFileLamp<SunLamp> {
     const glm::dvec3 position = read_vec3(node.required("position"));
     lamp.direction = glm::normalize(read_target(node, position) - position);
     lamp.strength = node.required("strength").non_negative();
-    if (auto color = node.find("color")) lamp.color = read_color(*color);
+    if (auto color = node.find("color")) lamp.color = read_lamp_color(*color);
     if (auto angle = node.find("angle_deg")) lamp.angle = glm::radians(angle->number_in(0.0, glm::degrees(kMaxSunAngle)));
     return lamp;
   }
