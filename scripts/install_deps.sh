@@ -5,7 +5,8 @@ set -euo pipefail
 # What the CMake build finds (cmake/MatpredictDependencies.cmake, MatpredictPython.cmake), and the
 # toolchain; the Python package's build and tests (pybind11, numpy, pytest); the tests'
 # independent references (Python's scikit-image, Pillow, torchvision, OpenImageIO's EXR reader; a
-# real browser for make_dataset's preview page).
+# real browser for make_dataset's preview page); blender-data for its eight CC0 HDR environments
+# (data only, it depends on python3 alone; matrender/builtin_environments.h).
 packages=(
   build-essential cmake ninja-build pkg-config
   libembree-dev libtbb-dev libglm-dev libeigen3-dev
@@ -16,6 +17,7 @@ packages=(
   python3-skimage python3-pil python3-torch python3-torchvision
   python3-dev pybind11-dev python3-numpy python3-pytest python3-openimageio
   chromium
+  blender-data
 )
 # Blender 3.4 is a reference for the optional tests against Cycles, never a build dependency.
 if [ "${MATPREDICT_BLENDER_TESTS:-0}" = 1 ]; then packages+=(blender); fi

@@ -13,6 +13,7 @@
 #include "common/thread_count.h"
 #include "matgeom/builtin/builtin_objects.h"
 #include "matgeom/shading_normals.h"
+#include "matrender/builtin_environments.h"
 #include "matrender/camera.h"
 #include "matrender/image_io.h"
 #include "matrender/paper_setup.h"
@@ -92,6 +93,13 @@ glm::dvec3 parse_point(const std::string& option, const std::string& text) {
   return point;
 }
 
+// "a, b, c".
+std::string joined(const std::vector<std::string>& names) {
+  std::string list;
+  for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+  return list;
+}
+
 // CLI::ExistingFile without its ":FILE" tag in --help, where the type name already says it.
 CLI::Validator existing_file() {
   CLI::Validator validator = CLI::ExistingFile;
@@ -157,11 +165,14 @@ void add_scene_options(CLI::App& app, Options& o) {
       ->type_name("FOLDER")
       ->group(group);
   library_material->excludes(material_dir);
+  const CLI::Validator file = existing_file();
   app.add_option("--environment", o.environment,
                  "light the scene with this equirectangular (latitude-longitude) image, as Blender's World > "
-                 "Environment Texture; camera rays that miss see it (replaces the scene's background)")
-      ->check(existing_file())
-      ->type_name("FILE.exr|hdr|png")
+                 "Environment Texture, or with one of the built-in ones (" + joined(matrender::builtin_environment_names()) +
+                     ", from Debian's blender-data); camera rays that miss see it (replaces the scene's background)")
+      ->check(CLI::Validator(
+          [file](std::string& text) { return matrender::is_builtin_environment(text) ? std::string() : file(text); }, ""))
+      ->type_name("FILE.exr|hdr|png|NAME")
       ->group(group);
   app.add_option_function<double>(
          "--environment-strength",
@@ -388,12 +399,6 @@ ObjectDescription object_from(std::variant<MeshFile, BuiltinObject> source, std:
   return object;
 }
 
-std::string joined(const std::vector<std::string>& names) {
-  std::string list;
-  for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
-  return list;
-}
-
 uint32_t parse_seed(const std::string& text) {
   if (const std::optional<std::string> problem =
           matbase::whole_number_problem(text, 0, std::numeric_limits<uint32_t>::max()))
@@ -457,7 +462,8 @@ matrender::SceneOverrides scene_overrides(const Options& o) {
   if (o.illuminance_lux) overrides.illuminance_lux = {*o.illuminance_lux, "--illuminance"};
   if (o.environment) {
     matrender::EnvironmentDescription environment;
-    environment.path = *o.environment;
+    environment.path =
+        matrender::is_builtin_environment(*o.environment) ? matrender::builtin_environment_path(*o.environment) : *o.environment;
     environment.origin = Origin{"--environment", std::nullopt};
     overrides.environment = environment;
   }

@@ -16,9 +16,12 @@
 #include "lights/light_sampler.h"
 #include "matbase/image/image_writing.h"
 #include "matbase/pi.h"
+#include "matbase/input_error.h"
+#include "matrender/builtin_environments.h"
 #include "matrender/camera.h"
 #include "matrender/render.h"
 #include "matrender/scene.h"
+#include "matrender/scene_file.h"
 #include "test_scenes.h"
 #include "texture/negative_radiance.h"
 #include "uniform_floats.h"
@@ -336,4 +339,47 @@ TEST_CASE("Negative texels are clamped where compression rings and refused where
     CHECK_THROWS_WITH(Texture::load_radiance(path, ColorSpace::NonColor), Catch::Contains("texel (1, 1) has G -5"));
     std::filesystem::remove(path);
   }
+}
+
+TEST_CASE("The eight built-in environments are Debian blender-data's HDR images, by name", "[render]") {
+  const std::vector<std::string>& names = builtin_environment_names();
+  REQUIRE(names.size() == 8);
+  CHECK(is_builtin_environment("forest"));
+  CHECK_FALSE(is_builtin_environment("forest.exr"));
+  CHECK_FALSE(is_builtin_environment("Forest"));
+  // scripts/install_deps.sh installs blender-data: every image is there and reads as a map.
+  for (const std::string& name : names) {
+    INFO(name);
+    const std::string path = builtin_environment_path(name);
+    const TexturePtr map = Texture::load_radiance(path, ColorSpace::NonColor);
+    REQUIRE(map);
+    CHECK(map->width() == 1024);
+    CHECK(map->height() == 512);
+  }
+  // Absent, the refusal names the folder searched and the package that fills it.
+  const std::filesystem::path empty = std::filesystem::temp_directory_path() / "matpredict_no_environments";
+  std::filesystem::create_directories(empty);
+  try {
+    builtin_environment_path("sunset", empty.string());
+    FAIL("no refusal");
+  } catch (const matbase::InputError& e) {
+    CHECK(std::string(e.what()) == "the built-in environment \"sunset\" is not in " + empty.string() +
+                                       " (Debian's blender-data package puts it there: apt-get install blender-data, "
+                                       "or bash scripts/install_deps.sh)");
+  }
+}
+
+TEST_CASE("A scene file's environment may be a built-in one's name", "[render]") {
+  auto background = [](const std::string& environment) {
+    return read_scene_text(R"({"camera": {"position": [1, -1, 0.5], "look_at": [0, 0, 0]}, "lights": [],
+                              "objects": [{"builtin": "vase"}], "background": {"environment": )" +
+                               environment + "}}",
+                           "s.json", ".")
+        .background;
+  };
+  const BackgroundDescription read = background("\"sunrise\"");
+  const auto* sunrise = std::get_if<EnvironmentDescription>(&read);
+  REQUIRE(sunrise);
+  CHECK(sunrise->path == builtin_environment_path("sunrise"));
+  CHECK_THROWS_WITH(background("\"sunrise.hdr\""), Catch::Contains("/background/environment: file not found"));
 }

@@ -20,6 +20,7 @@
 #include "matgeom/shading_normals.h"
 #include "matmaterial/material_classes.h"
 #include "matmaterial/material_parameters.h"
+#include "matrender/builtin_environments.h"
 #include "matrender/image_io.h"
 #include "matrender/render_setting_reading.h"
 #include "scene_description/lamp_reading.h"
@@ -173,7 +174,16 @@ BackgroundDescription read_background(const DocumentNode& node, const fs::path& 
   if (!node.is_mapping()) return glm::vec3(read_color(node));
   node.expect_keys({"environment", "strength", "rotation_z_deg", "color_space"});
   EnvironmentDescription environment;
-  environment.path = read_existing_file(node.required("environment"), folder);
+  const DocumentNode file = node.required("environment");
+  if (file.is_text() && is_builtin_environment(file.text())) {
+    try {
+      environment.path = builtin_environment_path(file.text());
+    } catch (const matbase::InputError& e) {
+      file.fail(e.what());
+    }
+  } else {
+    environment.path = read_existing_file(file, folder);
+  }
   environment.origin = origin_of(node);
   if (auto strength = node.find("strength"))
     environment.strength = strength->non_negative();
