@@ -12,7 +12,10 @@
 #include "matgeom/camera_grid.h"
 #include "matrender/asset.h"
 #include "matrender/render.h"
+#include "matrender/paper_setup.h"
 #include "matrender/scene.h"
+#include "matrender/scene_builder.h"
+#include "scene/scene_data.h"
 
 TEST_CASE("Every built-in object renders with finite pixels", "[render]") {
   const std::string name = GENERATE(from_range(matgeom::builtin_object_names()));
@@ -47,4 +50,26 @@ TEST_CASE("Every built-in object renders with finite pixels", "[render]") {
   for (const matmaterial::MaterialInputs& m : asset.materials) expected.insert(m.label_id);
   for (int32_t label : frame.label) seen.insert(label);
   CHECK(std::includes(expected.begin(), expected.end(), seen.begin(), seen.end()));
+}
+
+TEST_CASE("An object's uv_scale scales the UV pass's texel density", "[render]") {
+  // The pass gives each part s times the paper's texels per metre, so its UV area scales by s^2
+  // (the pillow's charts fit a tile at every s here, so none is shrunk to fit).
+  auto uv_area = [](double scale) {
+    matrender::ObjectDescription pillow;
+    pillow.source = matrender::BuiltinObject{"pillow", 0};
+    pillow.uv_pass = matrender::UvPassMode::Always;
+    pillow.uv_scale = scale;
+    const matrender::BuiltScene built = matrender::build_scene(matrender::paper_object_scene(pillow));
+    const matrender::MeshData& mesh = built.scene.data().meshes[built.object_meshes.front()];
+    double area = 0.0;
+    for (const glm::uvec3& t : mesh.triangles) {
+      const glm::vec2 a = mesh.uvs[t.x], b = mesh.uvs[t.y], c = mesh.uvs[t.z];
+      area += 0.5 * std::abs(static_cast<double>((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)));
+    }
+    return area;
+  };
+  const double unit = uv_area(1.0);
+  CHECK(uv_area(0.5) == Approx(0.25 * unit).epsilon(0.02));
+  CHECK(uv_area(0.2) == Approx(0.04 * unit).epsilon(0.02));
 }

@@ -118,6 +118,11 @@ std::vector<std::string> check_before_writing(const DatasetConfig& config) {
       throw matbase::InputError(config.source + ": " + object_key(o) +
                        ".uv_pass: never, but the mesh has no texture coordinates, so each material would show one "
                        "texel of its maps; use when_missing (the default) to give it the paper's UV pass");
+    // A scale of the UV pass's density needs the pass to run.
+    if (object.uv_scale != 1.0 && object.uv_pass == matrender::UvPassMode::WhenMissing && !asset.mesh.uvs.empty())
+      throw matbase::InputError(config.source + ": " + object_key(o) +
+                                ".uv_scale: the mesh has texture coordinates of its own, so the UV pass does not run "
+                                "(uv_pass: when_missing) and there is no texel density to scale; use uv_pass: always");
     check_object_in_view(config, o, asset.mesh);
     const size_t part_count = std::max({static_cast<size_t>(asset.mesh.part_count()), asset.materials.size(), size_t{1}});
     parts_of_slots(config, o, asset.mesh.part_names, part_count);

@@ -217,7 +217,7 @@ std::string folded_case(std::string name) {
 
 ObjectConfig read_object(const DocumentNode& v, const std::optional<DocumentNode>& defaults, const fs::path& base,
                          FolderNames& names) {
-  v.expect_keys({"name", "builtin", "mesh", "seed", "uv_pass", "auto_smooth_deg", "slots", "materials"});
+  v.expect_keys({"name", "builtin", "mesh", "seed", "uv_pass", "uv_scale", "auto_smooth_deg", "slots", "materials"});
   ObjectConfig object;
   const std::optional<DocumentNode> builtin = v.find("builtin"), mesh = v.find("mesh");
   if (builtin.has_value() == mesh.has_value())
@@ -261,6 +261,11 @@ ObjectConfig read_object(const DocumentNode& v, const std::optional<DocumentNode
     constexpr matrender::UvPassMode kModes[] = {matrender::UvPassMode::Never, matrender::UvPassMode::WhenMissing,
                                                 matrender::UvPassMode::Always};
     object.uv_pass = kModes[uv_pass->choice({"never", "when_missing", "always"})];
+  }
+  if (const std::optional<DocumentNode> scale = v.find("uv_scale")) {
+    object.uv_scale = scale->number_in(matrender::kMinUvScale, matrender::kMaxUvScale);
+    if (object.uv_pass == matrender::UvPassMode::Never)
+      scale->fail("the UV pass never runs (uv_pass: never), so there is no texel density to scale");
   }
   object.slots = read_slots(v, defaults, base);
   return object;

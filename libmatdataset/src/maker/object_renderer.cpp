@@ -31,6 +31,7 @@ matrender::SceneDescription object_scene(const DatasetConfig& config, size_t ind
   matrender::ObjectDescription description;
   std::visit([&description](const auto& source) { description.source = source; }, object.source);
   description.uv_pass = object.uv_pass;
+  description.uv_scale = object.uv_scale;
   description.origin = matrender::Origin{config.source, "/objects/" + std::to_string(index)};
   matrender::SceneDescription scene = matrender::paper_object_scene(std::move(description));
   matrender::SceneOverrides overrides;
@@ -251,6 +252,8 @@ std::string ObjectRenderer::provenance_json(const DatasetPlan& plan, size_t vari
   }
   const char* uv_pass[] = {"never", "when_missing", "always"};
   source["uv_pass"] = uv_pass[static_cast<int>(object_.uv_pass)];
+  // Recorded where it is not the default, so datasets made before it existed resume unchanged.
+  if (object_.uv_scale != 1.0) source["uv_scale"] = object_.uv_scale;
   json["object"] = {{"name", object_.name}, {"source", source}};
 
   ordered_json slots = ordered_json::array();

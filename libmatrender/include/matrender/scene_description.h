@@ -94,9 +94,15 @@ struct GivenObject {
 // placed: never, only when the mesh has no UVs of its own, or always.
 enum class UvPassMode { Never, WhenMissing, Always };
 
+// The paper's user scale s of the UV pass's texel density (its Figure 3 studies 0.1 to 2): the
+// range an object's uv_scale takes.
+constexpr double kMinUvScale = 0.01;
+constexpr double kMaxUvScale = 100.0;
+
 struct ObjectDescription {
   std::variant<MeshFile, BuiltinObject, GivenObject> source;
   UvPassMode uv_pass = UvPassMode::Never;
+  double uv_scale = 1.0;  // the UV pass's texel_density_scale, when it runs
   glm::dmat4 object_to_world{1.0};
   // Scene materials by name: `material` for every part, or `part_materials` by part name. Parts
   // not covered keep the object's own materials (glTF slots, built-in materials).

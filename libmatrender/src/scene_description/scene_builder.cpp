@@ -45,7 +45,9 @@ matgeom::ObjectAsset load_object(const ObjectDescription& object) {
                          (object.uv_pass == UvPassMode::WhenMissing && asset.mesh.uvs.empty());
   if (needs_uvs) {
     try {
-      asset.mesh = matgeom::uv_pass(asset.mesh).mesh;
+      matgeom::UvPassOptions options;
+      options.texel_density_scale = object.uv_scale;
+      asset.mesh = matgeom::uv_pass(asset.mesh, options).mesh;
     } catch (const std::exception& e) {
       throw object.origin.error("/uv_pass", e.what());
     }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "matbase/input_error.h"
+#include "matdataset/maker/dataset_checks.h"
 #include "matdataset/maker/dataset_config.h"
 #include "support/temp_dir.h"
 
@@ -130,4 +131,27 @@ TEST_CASE("A configuration that says one thing twice, or nothing, or something u
             .find("only a mesh file's faces can be smoothed") != std::string::npos);
   // An alias inside the list it names nests without end; it is refused, not followed.
   CHECK(refusal(kOneVase + "camera: {grid: &a [*a, 1]}\n").find("nest deeper than 256 levels") != std::string::npos);
+}
+
+TEST_CASE("An object's uv_scale is the UV pass's density scale, only where the pass runs", "[dataset]") {
+  const std::string pillow = "objects:\n  - {name: pillow, builtin: pillow, uv_pass: always, uv_scale: 0.5, "
+                             "materials: {all: [fabric/twill:1]}}\n";
+  const DatasetConfig config = parse_config(pillow, "test.yaml", fs::current_path(), {});
+  CHECK(config.objects[0].uv_scale == 0.5);
+  CHECK(matdataset::check_before_writing(config).empty());
+  CHECK(refusal(pillow, {{"objects.0.uv_scale", "0", "--set objects.0.uv_scale=0"}}) ==
+        "--set objects.0.uv_scale=0 (objects.0.uv_scale): expected a number from 0.01 to 100, got 0");
+  CHECK(refusal("objects:\n  - {name: vase, builtin: vase, uv_pass: never, uv_scale: 2, materials: {all: [wood/raw:1]}}\n") ==
+        "test.yaml: objects.0.uv_scale: the UV pass never runs (uv_pass: never), so there is no texel density to scale");
+  // A built-in object has UVs of its own: when_missing (the default) does not run the pass.
+  const DatasetConfig builtin_uvs =
+      parse_config("objects:\n  - {name: vase, builtin: vase, uv_scale: 2, materials: {all: [wood/raw:1]}}\n",
+                   "test.yaml", fs::current_path(), {});
+  try {
+    matdataset::check_before_writing(builtin_uvs);
+    FAIL("no refusal");
+  } catch (const matbase::InputError& e) {
+    CHECK(std::string(e.what()).find("objects.0.uv_scale: the mesh has texture coordinates of its own") !=
+          std::string::npos);
+  }
 }

@@ -42,6 +42,9 @@ struct ObjectConfig {
   std::string name;  // the dataset's object folder
   std::variant<matrender::MeshFile, matrender::BuiltinObject> source;
   matrender::UvPassMode uv_pass = matrender::UvPassMode::WhenMissing;
+  // The paper's s: the UV pass's texel density times this, so the materials' maps repeat 1/s
+  // times as often. Only where the pass runs (dataset_checks.h).
+  double uv_scale = 1.0;
   std::vector<SlotConfig> slots;
 };
 
