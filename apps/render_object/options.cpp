@@ -137,6 +137,13 @@ void add_scene_options(CLI::App& app, Options& o) {
       ->type_name("DEG")
       ->needs(mesh)
       ->group(group);
+  app.add_option_function<double>(
+         "--uv-scale", [&o](const double& scale) { o.uv_scale = scale; },
+         "give the --mesh or --object new texture coordinates from the paper's UV pass, at S times its texel "
+         "density (the paper's user scale s: a material's maps repeat 1/S times as often)")
+      ->check(app_support::number_in(matrender::kMinUvScale, matrender::kMaxUvScale, false))
+      ->type_name("S")
+      ->group(group);
   auto* library_material =
       app.add_option_function<std::string>(
              "--material",
@@ -417,11 +424,23 @@ ObjectDescription builtin_object(const std::string& argument) {
   return object_from(builtin, "--object");
 }
 
+// The --mesh or --object, with the UV pass --uv-scale asks for.
+ObjectDescription single_object(const Options& options) {
+  ObjectDescription object = options.mesh_file
+                                 ? object_from(MeshFile{*options.mesh_file, {options.auto_smooth_deg}}, "--mesh")
+                                 : builtin_object(*options.object);
+  if (options.uv_scale) {
+    object.uv_pass = matrender::UvPassMode::Always;
+    object.uv_scale = *options.uv_scale;
+  }
+  return object;
+}
+
 SceneDescription chosen_scene(const Options& options) {
+  if (options.uv_scale && !options.mesh_file && !options.object)
+    throw InputError("--uv-scale: needs --mesh or --object (a scene file gives each object its own \"uv_scale\")");
   if (options.scene_file) return matrender::read_scene_file(*options.scene_file);
-  if (options.mesh_file)
-    return matrender::paper_object_scene(object_from(MeshFile{*options.mesh_file, {options.auto_smooth_deg}}, "--mesh"));
-  if (options.object) return matrender::paper_object_scene(builtin_object(*options.object));
+  if (options.mesh_file || options.object) return matrender::paper_object_scene(single_object(options));
   return matrender::default_scene();
 }
 

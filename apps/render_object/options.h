@@ -23,6 +23,7 @@ struct Options {
   std::optional<std::string> scene_file;
   std::optional<std::string> mesh_file;
   std::optional<double> auto_smooth_deg;  // --auto-smooth, for --mesh
+  std::optional<double> uv_scale;         // --uv-scale, for --mesh or --object
   std::optional<std::string> object;  // NAME[:SEED]
   bool list_objects = false;
   bool list_parameters = false;

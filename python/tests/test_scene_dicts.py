@@ -92,3 +92,18 @@ def test_a_dict_renders_as_render_object_renders_the_same_file(tmp_path, monkeyp
         assert np.array_equal(reference, frame[name]), name
     assert len(np.unique(frame["base_color"].reshape(-1, 3), axis=0)) > 20  # the chair, textured, is in view
     assert 0.02 < frame["color"].mean() < 1  # lit by the rig and the sky
+
+
+def test_lamps_of_a_temperature_under_a_built_in_environment():
+    """A dict's lamp takes {"blackbody": K} and its environment a built-in name, as a scene file's."""
+    def scene(color, environment):
+        description = vase_scene([0.9, -0.9, 0.45], 0.5, [0.7, 0.7, 0.7], environment)
+        description["lights"][0]["color"] = color
+        description["render"] = {"spp": 4}
+        return description
+    warm = matpredict.render(matpredict.load_scene(scene({"blackbody": 2700}, "night")), threads=2)["color"]
+    cool = matpredict.render(matpredict.load_scene(scene({"blackbody": 9000}, "night")), threads=2)["color"]
+    # The warm sun reddens the lit vase, the cool one blues it; same seed, same paths otherwise.
+    assert (warm[..., 0] - warm[..., 2]).mean() > (cool[..., 0] - cool[..., 2]).mean() + 0.01
+    with pytest.raises(matpredict.InputError, match=r"/lights/0/color/blackbody: expected a number from 800 to 12000, got 100"):
+        matpredict.load_scene(scene({"blackbody": 100}, "night"))

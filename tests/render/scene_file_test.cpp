@@ -119,3 +119,23 @@ TEST_CASE("an object given in memory is read with a mesh object's keys, and only
         "s.json: /objects/0/mesh: an object given in memory, but none was given: in a scene file, \"mesh\" is a "
         "file's path");
 }
+
+TEST_CASE("An object's uv_pass and uv_scale reach the UV pass, and a scale it cannot apply is refused", "[render]") {
+  auto scene = [](const std::string& keys) {
+    return R"({"camera": {"position": [1, -1, 0.5], "look_at": [0, 0, 0]}, "lights": {"rig": {}},
+               "objects": [{"builtin": "pillow")" +
+           keys + "}]}";
+  };
+  const matrender::SceneDescription read =
+      matrender::read_scene_text(scene(R"(, "uv_pass": "always", "uv_scale": 0.5)"), "s.json", ".");
+  CHECK(read.objects[0].uv_pass == matrender::UvPassMode::Always);
+  CHECK(read.objects[0].uv_scale == 0.5);
+  CHECK_NOTHROW(matrender::build_scene(read));
+  // The pillow has UVs of its own: without uv_pass "always" no pass runs to scale.
+  const matrender::SceneDescription unscalable =
+      matrender::read_scene_text(scene(R"(, "uv_scale": 0.5)"), "s.json", ".");
+  CHECK_THROWS_WITH(matrender::build_scene(unscalable),
+                    Catch::StartsWith("s.json: /objects/0/uv_scale: the UV pass does not run on this object"));
+  CHECK_THROWS_WITH(matrender::read_scene_text(scene(R"(, "uv_scale": 1000)"), "s.json", "."),
+                    "s.json: /objects/0/uv_scale: expected a number from 0.01 to 100, got 1000");
+}

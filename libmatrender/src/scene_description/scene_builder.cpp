@@ -43,6 +43,10 @@ matgeom::ObjectAsset load_object(const ObjectDescription& object) {
   matgeom::ObjectAsset asset = read_source(object);
   const bool needs_uvs = object.uv_pass == UvPassMode::Always ||
                          (object.uv_pass == UvPassMode::WhenMissing && asset.mesh.uvs.empty());
+  if (object.uv_scale != 1.0 && !needs_uvs)
+    throw object.origin.error("/uv_scale",
+                              "the UV pass does not run on this object (it has texture coordinates of its own, or "
+                              "uv_pass is never), so there is no texel density to scale; use uv_pass \"always\"");
   if (needs_uvs) {
     try {
       matgeom::UvPassOptions options;

@@ -1,6 +1,7 @@
 #include "matrender/scene_file.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -461,17 +462,22 @@ ObjectDescription read_object(const DocumentNode& node, const fs::path& folder,
   ObjectDescription object;
   object.origin = origin_of(node);
   if (node.has("mesh")) {
-    node.expect_keys({"mesh", "auto_smooth_deg", "transform", "material", "materials", "shadow_terminator_geometry_offset"});
+    node.expect_keys({"mesh", "auto_smooth_deg", "uv_pass", "uv_scale", "transform", "material", "materials",
+                      "shadow_terminator_geometry_offset"});
     object.source = read_mesh_source(node, folder, given);
   } else {
-    node.expect_keys(
-        {"builtin", "seed", "transform", "material", "materials", "shadow_terminator_geometry_offset"});
+    node.expect_keys({"builtin", "seed", "uv_pass", "uv_scale", "transform", "material", "materials",
+                      "shadow_terminator_geometry_offset"});
     BuiltinObject builtin;
     const std::vector<std::string> names = matgeom::builtin_object_names();
     builtin.name = names[node.required("builtin").choice(names)];
     if (auto seed = node.find("seed")) builtin.seed = seed->uint32();
     object.source = builtin;
   }
+  if (auto mode = node.find("uv_pass"))
+    object.uv_pass = std::array{UvPassMode::Never, UvPassMode::WhenMissing,
+                                UvPassMode::Always}[mode->choice({"never", "when_missing", "always"})];
+  if (auto scale = node.find("uv_scale")) object.uv_scale = scale->number_in(kMinUvScale, kMaxUvScale);
   if (auto transform = node.find("transform")) object.object_to_world = read_transform(*transform);
   if (auto offset = node.find("shadow_terminator_geometry_offset"))
     object.shadow_terminator_geometry_offset = static_cast<float>(
