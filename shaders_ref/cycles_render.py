@@ -114,6 +114,13 @@ def add_lamps(scene, lamps):
         kind = lamp["type"]
         light = bpy.data.lights.new(f"lamp_{k}", {"area": "AREA", "point": "POINT", "spot": "SPOT", "sun": "SUN"}[kind])
         light.color = lamp["color"]
+        if "blackbody_kelvin" in lamp:
+            # The lamp's emission coloured by Blender's own Blackbody node.
+            light.use_nodes = True
+            tree = light.node_tree
+            blackbody = tree.nodes.new("ShaderNodeBlackbody")
+            blackbody.inputs["Temperature"].default_value = lamp["blackbody_kelvin"]
+            tree.links.new(blackbody.outputs["Color"], tree.nodes["Emission"].inputs["Color"])
         if kind == "area":
             light.shape = "RECTANGLE"
             light.size = lamp["size_x"]

@@ -131,7 +131,14 @@ json describe(const CyclesScene& scene) {
     description = describe_mesh_object(scene);
   }
   json lamps = json::array();
-  for (const matrender::Lamp& lamp : scene.lamps) lamps.push_back(describe_lamp(lamp));
+  for (const matrender::Lamp& lamp : scene.lamps) {
+    json described = describe_lamp(lamp);
+    if (scene.lamp_blackbody_kelvin) {
+      described["color"] = {1.0, 1.0, 1.0};
+      described["blackbody_kelvin"] = *scene.lamp_blackbody_kelvin;
+    }
+    lamps.push_back(described);
+  }
   description["lamps"] = lamps;
   const matrender::Camera& c = scene.camera;
   description["camera"] = {{"camera_to_world", column_major(c.camera_to_world)},

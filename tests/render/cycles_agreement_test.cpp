@@ -24,6 +24,7 @@
 #include "matgeom/camera_grid.h"
 #include "matgeom/io/mesh_io.h"
 #include "matgeom/tangents.h"
+#include "matrender/blackbody.h"
 #include "matrender/image_io.h"
 #include "matrender/paper_setup.h"
 #include "matrender/render.h"
@@ -415,6 +416,28 @@ TEST_CASE("Point and spot lamps with a radius and a sun with an angle agree with
   for (const auto& [name, lamps] : cases) {
     shaders_ref::CyclesScene scene = paper_scene(glossy, 48, 0.1f);
     scene.lamps = lamps;
+    const Agreement a = agreement_with_cycles(scene, name);
+    CHECK(a.mean_cycles > 0.0);
+    check_agreement(name, a);
+  }
+}
+
+// A lamp's colour from a temperature: ours from matrender::blackbody_color, Cycles' from its own
+// Blackbody node on the lamp. A warm and a cool sun over the grey sphere, each compared alone.
+TEST_CASE("Lamps coloured by a blackbody temperature agree with Cycles' Blackbody node", "[render][blender]") {
+  REQUIRE(shaders_ref::cycles_available());
+  matrender::Material grey;
+  grey.set(matrender::MaterialParameter::BaseColor, glm::vec3(0.8f));
+  grey.set(matrender::MaterialParameter::Roughness, 0.5f);
+  for (const double kelvin : {2000.0, 3000.0, 9000.0}) {
+    matrender::SunLamp sun;
+    sun.direction = glm::normalize(glm::dvec3(-0.4, 0.5, -0.6));
+    sun.strength = 2.0;
+    sun.color = matrender::blackbody_color(kelvin);
+    shaders_ref::CyclesScene scene = paper_scene(grey, 48, 0.1f);
+    scene.lamps = {sun};
+    scene.lamp_blackbody_kelvin = kelvin;
+    const std::string name = "blackbody_" + std::to_string(static_cast<int>(kelvin));
     const Agreement a = agreement_with_cycles(scene, name);
     CHECK(a.mean_cycles > 0.0);
     check_agreement(name, a);

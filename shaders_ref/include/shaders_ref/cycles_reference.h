@@ -51,6 +51,10 @@ struct CyclesScene {
   // every slot in `material`.
   std::string mesh_file_path;
   std::vector<matrender::Lamp> lamps;
+  // When set, Blender colours every lamp with its own Blackbody node at this temperature (the
+  // lamp's colour white there), while libmatrender renders `lamps` as they are: their colours
+  // are then what matrender::blackbody_color makes of the same temperature.
+  std::optional<double> lamp_blackbody_kelvin;
   matrender::Camera camera;
   glm::vec3 background{0.0f};
   std::optional<CyclesEnvironment> environment;  // replaces the background
