@@ -302,6 +302,25 @@ std::string value_name(const matrender::RenderSettingDeclaration& setting) {
   return choices;
 }
 
+// An option taking a value of `setting`, checked against its declaration as it is read and then
+// handed to `take` as text; --help shows its documentation, range and default.
+template <class Take>
+void add_setting_value_option(CLI::App& app, const matrender::RenderSettingDeclaration& setting, const std::string& option,
+                              const std::string& group, Take take) {
+  app.add_option_function<std::string>(
+         option,
+         [&setting, option, take](const std::string& text) {
+           matrender::RenderSettings checked;
+           if (const std::optional<std::string> problem = matrender::assign_text(checked, setting, text))
+             throw CLI::ValidationError(option, *problem);
+           take(text, checked);
+         },
+         std::string(setting.documentation) + " (" + matrender::expectation(setting) + ")")
+      ->type_name(value_name(setting))
+      ->default_str(matrender::default_text(setting))
+      ->group(group);
+}
+
 // One option per declared setting of `scope`: a switch is a flag that turns it from its default
 // (--no-NAME where it is on), any other setting takes a value its declaration checks.
 void add_setting_options(CLI::App& app, Options& o, matrender::SettingScope scope, const std::string& group) {
@@ -320,18 +339,9 @@ void add_setting_options(CLI::App& app, Options& o, matrender::SettingScope scop
       continue;
     }
     const std::string option = option_spelling(setting);
-    app.add_option_function<std::string>(
-           option,
-           [&o, &setting, option](const std::string& text) {
-             matrender::RenderSettings checked;
-             if (const std::optional<std::string> problem = matrender::assign_text(checked, setting, text))
-               throw CLI::ValidationError(option, *problem);
-             o.render_settings.push_back({&setting, option, text});
-           },
-           documentation + " (" + matrender::expectation(setting) + ")")
-        ->type_name(value_name(setting))
-        ->default_str(matrender::default_text(setting))
-        ->group(group);
+    add_setting_value_option(app, setting, option, group, [&o, &setting, option](const std::string& text, const auto&) {
+      o.render_settings.push_back({&setting, option, text});
+    });
   }
 }
 
@@ -367,19 +377,8 @@ void add_render_options(CLI::App& app, Options& o) {
 
 void add_run_options(CLI::App& app, Options& o) {
   const std::string group = "Run";
-  const matrender::RenderSettingDeclaration& threads = matrender::render_setting("threads");
-  app.add_option_function<std::string>(
-         "--threads",
-         [&o, &threads](const std::string& text) {
-           matrender::RenderSettings checked;
-           if (const std::optional<std::string> problem = matrender::assign_text(checked, threads, text))
-             throw CLI::ValidationError("--threads", *problem);
-           o.threads = checked.threads;
-         },
-         std::string(threads.documentation) + " (" + matrender::expectation(threads) + ")")
-      ->type_name(value_name(threads))
-      ->default_str(matrender::default_text(threads))
-      ->group(group);
+  add_setting_value_option(app, matrender::render_setting("threads"), "--threads", group,
+                           [&o](const std::string&, const matrender::RenderSettings& checked) { o.threads = checked.threads; });
   app.add_option("--texture-memory", o.texture_memory_mib,
                  "most memory the textures' texels may take, in MiB; past it the least recently used mip "
                  "levels are dropped and made again when needed (0 = half of this process's memory)")

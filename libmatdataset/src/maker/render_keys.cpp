@@ -18,6 +18,14 @@ std::pair<std::string, std::string> split_key(std::string_view key) {
   return {std::string(key.substr(0, dot)), std::string(key.substr(dot + 1))};
 }
 
+// The value of dotted `key` ("bounces.max") under `render`, or nothing.
+std::optional<matbase::DocumentNode> find_key(const matbase::DocumentNode& render, std::string_view key) {
+  const auto [group, name] = split_key(key);
+  if (group.empty()) return render.find(name);
+  const std::optional<matbase::DocumentNode> parent = render.find(group);
+  return parent ? parent->find(name) : std::nullopt;
+}
+
 }  // namespace
 
 const std::vector<DatasetRenderKey>& dataset_render_keys() {
@@ -68,12 +76,9 @@ void read_dataset_render_keys(const matbase::DocumentNode& render, matrender::Re
   }
   for (const auto& [group, names] : group_keys)
     if (const std::optional<matbase::DocumentNode> node = render.find(group)) node->expect_keys(names);
-  for (const DatasetRenderKey& key : dataset_render_keys()) {
-    const auto [group, name] = split_key(key.key);
-    const std::optional<matbase::DocumentNode> parent = group.empty() ? std::nullopt : render.find(group);
-    const std::optional<matbase::DocumentNode> node = group.empty() ? render.find(name) : parent ? parent->find(name) : std::nullopt;
-    if (node) matrender::read_render_setting(*node, dataset_declaration(key), settings);
-  }
+  for (const DatasetRenderKey& key : dataset_render_keys())
+    if (const std::optional<matbase::DocumentNode> node = find_key(render, key.key))
+      matrender::read_render_setting(*node, dataset_declaration(key), settings);
 }
 
 std::string dataset_render_key_row(const DatasetRenderKey& key) {

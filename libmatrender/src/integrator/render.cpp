@@ -119,18 +119,19 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
       settings.filter_width == PixelFilterSampler::kDefaultRadius ? std::nullopt
                                                                   : std::optional<PixelFilterSampler>(settings.filter_width);
   const PixelFilterSampler& filter = own_filter ? *own_filter : blackman_harris_sampler();
-  PixelEvaluator::Setup setup{data,          tracer, rays, filter, camera.width, settings.seed, {}, {}, adaptive.has_value(),
-                              film.records_occlusion() ? &occlusion : nullptr};
   // Camera rays of pixels outside the box's image meet nothing: they see the background (and
   // lamps visible to the camera, which lie outside the vertices' box). When what they see does
   // not depend on the direction, their samples need no ray at all.
-  setup.pixels_seeing_scene =
+  const PixelRect pixels_seeing_scene =
       lights.has_camera_visible_lamps()
           ? PixelRect{0, 0, camera.width, camera.height}
           : pixels_seeing_box(rays, camera.width, camera.height, data.vertex_lower, data.vertex_upper, filter.radius());
-  setup.uniform_background = settings.transparent_background ? std::optional<glm::vec3>(glm::vec3(0.0f))
-                                                             : lights.uniform_camera_background();
-  const PixelEvaluator evaluator(setup, film, control);
+  const std::optional<glm::vec3> uniform_background =
+      settings.transparent_background ? std::optional<glm::vec3>(glm::vec3(0.0f)) : lights.uniform_camera_background();
+  const PixelEvaluator evaluator({data, tracer, rays, filter, camera.width, settings.seed, pixels_seeing_scene,
+                                  uniform_background, adaptive.has_value(),
+                                  film.records_occlusion() ? &occlusion : nullptr},
+                                 film, control);
 
   TileSchedule schedule(camera.width, camera.height, settings.threads);
   std::vector<SampleCounts> tile_counts(schedule.tiles().size());
