@@ -8,8 +8,8 @@
 
 #include "matbase/image/srgb.h"
 #include "matbase/pi.h"
-#include "matbase/smoothstep.h"
 #include "matgeom/camera_grid.h"
+#include "matgeom/lamp_irradiance.h"
 
 namespace matgeom {
 namespace {
@@ -46,94 +46,16 @@ RigLight lamp_aimed_at(const glm::dvec3& position, const glm::dvec3& center) {
   return light;
 }
 
-// Irradiance per unit radiance (the projected solid angle) at the origin, on a surface with
-// unit normal `normal`, from a uniform Lambertian polygon with vertices `polygon` (relative to
-// the receiving point).
-// Lambert's formula: E = L/2 sum_i angle(v_i, v_{i+1}) n . unit(v_i x v_{i+1}); the polygon is
-// first clipped to the hemisphere above the surface, where the formula holds.
-double polygon_irradiance_per_radiance(const std::array<glm::dvec3, 4>& polygon,
-                                       const glm::dvec3& normal) {
-  // Sutherland-Hodgman against the plane n.v = 0: a quad keeps at most five vertices.
-  std::array<glm::dvec3, 5> clipped;
-  size_t count = 0;
-  for (size_t k = 0; k < polygon.size(); ++k) {
-    const glm::dvec3& current = polygon[k];
-    const glm::dvec3& next = polygon[(k + 1) % polygon.size()];
-    const double height_current = glm::dot(normal, current);
-    const double height_next = glm::dot(normal, next);
-    if (height_current >= 0.0) clipped[count++] = current;
-    if ((height_current >= 0.0) != (height_next >= 0.0)) {
-      const double t = height_current / (height_current - height_next);
-      clipped[count++] = current + t * (next - current);
-    }
-  }
-
-  double sum = 0.0;
-  for (size_t k = 0; k < count; ++k) {
-    const glm::dvec3& a = clipped[k];
-    const glm::dvec3& b = clipped[(k + 1) % count];
-    const glm::dvec3 a_cross_b = glm::cross(a, b);
-    const double sine_part = glm::length(a_cross_b);
-    if (!(sine_part > 0.0)) continue;  // coincident directions subtend no angle
-    const double angle = std::atan2(sine_part, glm::dot(a, b));
-    sum += angle * glm::dot(normal, a_cross_b) / sine_part;
-  }
-  // The sign follows the winding as seen from the point; the irradiance is its magnitude.
-  return 0.5 * std::abs(sum);
-}
-
-// Radiant irradiance (W/m^2 weighted by colour luminance) from an area lamp on a small surface
-// at `point` with unit normal `normal`. Cycles' area lamp: one-sided (down its -Z), uniform
-// radiance L = P c / (4 a b) (docs/conventions.md, "Lamps").
-double area_lamp_irradiance(const RigLight& light, const glm::dvec3& point, const glm::dvec3& normal) {
-  const glm::dvec3 axis_x(light.light_to_world[0]);
-  const glm::dvec3 axis_y(light.light_to_world[1]);
-  const glm::dvec3 backward(light.light_to_world[2]);
-  const glm::dvec3 center(light.light_to_world[3]);
-  const glm::dvec3 to_lamp = center - point;
-  // Only points on the emitting (-Z) side see the lamp's front.
-  if (!(glm::dot(to_lamp, backward) > 0.0)) return 0.0;
-
-  const glm::dvec3 half_x = 0.5 * light.size_x * axis_x;
-  const glm::dvec3 half_y = 0.5 * light.size_y * axis_y;
-  const std::array<glm::dvec3, 4> corners{to_lamp - half_x - half_y, to_lamp + half_x - half_y,
-                                          to_lamp + half_x + half_y, to_lamp - half_x + half_y};
-  const double radiance =
-      light.power * matbase::rec709_luminance(light.color) / (4.0 * light.size_x * light.size_y);
-  return radiance * polygon_irradiance_per_radiance(corners, normal);
-}
-
-// Radiant irradiance from a radius-0 Cycles spot lamp on a small surface at `point` with unit
-// normal `normal`: E = I a(w) cos / d^2 with on-axis intensity I = P c / (4 pi) (not concentrated
-// into the cone), a(w) = cos t smoothstep((cos t - cos_half) / ((1 - cos_half) blend)) inside the
-// cone (docs/conventions.md, "Lamps"; t is the angle from the spot's axis) and cos that between
-// the normal and the direction to the lamp.
-double spot_lamp_irradiance(const RigLight& light, const glm::dvec3& point, const glm::dvec3& normal) {
-  const glm::dvec3 forward = -glm::dvec3(light.light_to_world[2]);
-  const glm::dvec3 to_point = point - glm::dvec3(light.light_to_world[3]);
-  const double distance_squared = glm::dot(to_point, to_point);
-  // A delta lamp gives no defined irradiance at its own position.
-  if (!(distance_squared > 0.0)) return 0.0;
-  const double distance = std::sqrt(distance_squared);
-  const double cos_surface = std::min(1.0, -glm::dot(normal, to_point) / distance);
-  if (!(cos_surface > 0.0)) return 0.0;
-
-  const double cos_axis = glm::dot(forward, to_point) / distance;
-  const double cos_half = std::cos(0.5 * light.spot_angle);
-  if (!(cos_axis > cos_half)) return 0.0;
-  double falloff = cos_axis;
-  const double smooth_width = (1.0 - cos_half) * light.spot_blend;
-  const double into_cone = cos_axis - cos_half;
-  if (into_cone < smooth_width) {
-    falloff *= matbase::smoothstep(into_cone / smooth_width);
-  }
-  const double intensity = light.power * matbase::rec709_luminance(light.color) / (4.0 * kPi);
-  return intensity * falloff * cos_surface / distance_squared;
-}
-
+// Radiant irradiance (W/m^2 weighted by the colour's luminance) from a rig lamp on a small surface
+// at `point` with unit normal `normal`, by Cycles' conventions (docs/conventions.md, "Lamps"): an
+// area lamp's radiance is P c / (4 a b), a spot's on-axis intensity P c / (4 pi).
 double lamp_irradiance(const RigLight& light, const glm::dvec3& point, const glm::dvec3& normal) {
-  return light.kind == RigLightKind::Area ? area_lamp_irradiance(light, point, normal)
-                                          : spot_lamp_irradiance(light, point, normal);
+  const double power = light.power * matbase::rec709_luminance(light.color);
+  if (light.kind == RigLightKind::Area)
+    return rect_lamp_irradiance(light.light_to_world, light.size_x, light.size_y,
+                                power / (4.0 * light.size_x * light.size_y), point, normal);
+  return spot_lamp_irradiance(glm::dvec3(light.light_to_world[3]), -glm::dvec3(light.light_to_world[2]),
+                              light.spot_angle, light.spot_blend, power / (4.0 * kPi), point, normal);
 }
 
 }  // namespace
@@ -150,12 +72,6 @@ double rig_illuminance_lux(const std::vector<RigLight>& lights, const glm::dvec3
     const double distance = glm::length(to_lamp);
     if (distance > 0.0) irradiance += lamp_irradiance(light, point, to_lamp / distance);
   }
-  return kLuxPerWattPerSquareMetre * irradiance;
-}
-
-double card_illuminance_lux(const std::vector<RigLight>& lights, const glm::dvec3& point, const glm::dvec3& normal) {
-  double irradiance = 0.0;
-  for (const RigLight& light : lights) irradiance += lamp_irradiance(light, point, normal);
   return kLuxPerWattPerSquareMetre * irradiance;
 }
 

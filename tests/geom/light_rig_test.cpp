@@ -261,33 +261,6 @@ TEST_CASE("spot lamp illuminance uses Cycles' intensity and falloff", "[geom][re
   CHECK(matgeom::rig_illuminance_lux({spot}, point) == Approx(expected).epsilon(1e-9));
 }
 
-TEST_CASE("a card's illuminance follows the cosine of its tilt", "[geom][render]") {
-  // A spot straight above the card, and a small area lamp 5 m above it facing down: a card
-  // facing the lamp reads what the rig's photometer reads, tilted by 60 degrees half of it (the
-  // area lamp: within its angular size, 0.1 m at 5 m), turned away nothing.
-  RigLight spot;
-  spot.kind = RigLightKind::Spot;
-  spot.power = 40.0;
-  spot.spot_angle = 30.0 * kDegrees;
-  spot.light_to_world[3] = glm::dvec4(0, 0, 3, 1);
-  RigLight area;
-  area.kind = RigLightKind::Area;
-  area.power = 100.0;
-  area.size_x = area.size_y = 0.1;
-  area.light_to_world[3] = glm::dvec4(0, 0, 5, 1);
-  const glm::dvec3 tilted(std::sin(60.0 * kDegrees), 0.0, std::cos(60.0 * kDegrees));
-  for (const RigLight& lamp : {spot, area}) {
-    const double facing = matgeom::rig_illuminance_lux({lamp}, glm::dvec3(0.0));
-    REQUIRE(facing > 0.0);
-    CHECK(matgeom::card_illuminance_lux({lamp}, glm::dvec3(0.0), glm::dvec3(0, 0, 1)) == Approx(facing).epsilon(1e-9));
-    CHECK(matgeom::card_illuminance_lux({lamp}, glm::dvec3(0.0), tilted) == Approx(0.5 * facing).epsilon(1e-3));
-    CHECK(matgeom::card_illuminance_lux({lamp}, glm::dvec3(0.0), glm::dvec3(0, 0, -1)) == 0.0);
-    // Edge-on: the spot's direction grazes the card; half the area lamp stays above its plane,
-    // at most 0.01 rad from it.
-    CHECK(matgeom::card_illuminance_lux({lamp}, glm::dvec3(0.0), glm::dvec3(1, 0, 0)) == Approx(0.0).margin(0.01 * facing));
-  }
-}
-
 TEST_CASE("rig illuminance at c against an independent sum", "[geom][render]") {
   const glm::dvec3 c(0.2, 0.3, 0.9);
   for (const double r : {0.1, 0.5, 1.0}) {

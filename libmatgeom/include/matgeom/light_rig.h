@@ -44,11 +44,6 @@ LightRig make_light_rig(const glm::dvec3& center, double radius, const LightRigO
 // Illuminance (lux) that the rig's lights give at `point` (see light_rig.cpp for the definition).
 double rig_illuminance_lux(const std::vector<RigLight>& lights, const glm::dvec3& point);
 
-// Illuminance (lux) on a small one-sided surface at `point` with unit normal `normal` (a grey
-// card held there): each lamp's irradiance through the hemisphere the normal faces, Cycles' lamp
-// units converted with 683 lm/W and the lamp colour's Rec.709 luminance.
-double card_illuminance_lux(const std::vector<RigLight>& lights, const glm::dvec3& point, const glm::dvec3& normal);
-
 // Luminous efficacy that defines the lumen: 683 lm per watt of 555 nm light. Blender watts are
 // radiometric, so lux = 683 x (W/m^2 weighted by the lamp colour's Rec.709 luminance).
 constexpr double kLuxPerWattPerSquareMetre = 683.0;

@@ -35,14 +35,7 @@ matgeom::LightRig paper_rig(const matgeom::Sphere& bounds, std::optional<double>
 // The same around the minimal enclosing sphere of `surface`.
 matgeom::LightRig paper_rig(const matgeom::TriangleMesh& surface,
                             std::optional<double> target_lux = kPaperTargetIlluminanceLux);
-// The grey-card exposure in stops (incident-light metering, docs/make_dataset.md "Exposure"):
-// the exposure at which a Lambertian card at the grid's centre, turned to face the camera, shows
-// half its albedo, for the card's illuminance E (lux) averaged over the grid's views. Its
-// luminance is albedo E / (683 pi) in Blender's units, so 2^s E / (683 pi) = 1/2 gives
-// s = log2(683 pi / mean E) - 1: the stop kept in hand is for surfaces that face a lamp more
-// squarely than the card faces the camera (at 0 stops in hand, half of a white vase's pixels
-// clip). 0 when no lamp lights the card.
-constexpr double kGreyCardHeadroomStops = 1.0;
+// The grey-card exposure in stops (light_meter.h) under the rig alone.
 double grey_card_exposure(const matgeom::LightRig& rig, const matgeom::CameraGridSpec& grid);
 // Adds the rig's lamps to the scene.
 void add_rig(Scene& scene, const matgeom::LightRig& rig);

@@ -7,6 +7,7 @@
 
 #include "matbase/image/image_writing.h"
 #include "matbase/pi.h"
+#include "matrender/light_meter.h"
 #include "matrender/rig_lamps.h"
 
 namespace matrender {
@@ -22,14 +23,7 @@ matgeom::LightRig paper_rig(const matgeom::TriangleMesh& surface, std::optional<
 }
 
 double grey_card_exposure(const matgeom::LightRig& rig, const matgeom::CameraGridSpec& grid) {
-  double illuminance = 0.0;
-  const std::vector<matgeom::GridCamera> cameras = matgeom::camera_grid(grid);
-  for (const matgeom::GridCamera& camera : cameras)
-    illuminance += matgeom::card_illuminance_lux(rig.lights, grid.center, glm::normalize(camera.position - grid.center));
-  illuminance /= static_cast<double>(cameras.size());
-  if (!(illuminance > 0.0)) return 0.0;
-  const double stops = std::log2(matgeom::kLuxPerWattPerSquareMetre * matbase::kPi / illuminance) - kGreyCardHeadroomStops;
-  return std::clamp(stops, -matbase::kMaxExposureStops, matbase::kMaxExposureStops);
+  return grey_card_exposure(rig_lamps(rig), glm::vec3(0.0f), grid);
 }
 
 void add_rig(Scene& scene, const matgeom::LightRig& rig) {
