@@ -603,7 +603,7 @@ int main(int argc, char** argv) {
       for (size_t k = 0; k < frames.size() && referenced < reference_frames; ++k, ++referenced) {
         if (!reference_renderer) {
           reference_renderer = std::make_unique<matdataset::ObjectRenderer>(reference, object);
-          reference_renderer->select_variant(plan.variants[object][variant]);
+          reference_renderer->select_variant(variant, plan.variants[object][variant]);
         }
         frame_names.push_back(fmt::format("{} view {} ({})", frames[k].object, frames[k].view,
                                           reference_renderer->slot_materials().front().material));
@@ -612,7 +612,7 @@ int main(int argc, char** argv) {
       for (size_t m = 0; m < modes.size(); ++m) {
         const Clock::time_point setup = Clock::now();
         matdataset::ObjectRenderer renderer(configs[m], object);
-        renderer.select_variant(plan.variants[object][variant]);
+        renderer.select_variant(variant, plan.variants[object][variant]);
         setup_seconds += seconds_since(setup) / static_cast<double>(modes.size());
         if (m == 0)
           fmt::print("{} variant {} ({}): set up in {:.1f} s\n", frames.front().object, variant,

@@ -374,12 +374,7 @@ DatasetConfig read_config(const DocumentNode& root, const fs::path& base) {
   if (config.objects.empty()) objects.fail("the list is empty");
   if (const std::optional<DocumentNode> camera = root.find("camera")) read_camera(*camera, config.camera);
   if (const std::optional<DocumentNode> render = root.find("render")) read_render(*render, config.render);
-  if (const std::optional<DocumentNode> lights = root.find("lights")) {
-    lights->expect_keys({"rig", "illuminance_lux"});
-    if (const std::optional<DocumentNode> rig = lights->find("rig")) rig->choice({"paper"});
-    if (const std::optional<DocumentNode> lux = lights->find("illuminance_lux"))
-      config.illuminance_lux = lux->number_in(0.0, 1e9, true);
-  }
+  if (const std::optional<DocumentNode> lights = root.find("lights")) config.lighting = read_lighting(*lights, base);
   if (const std::optional<DocumentNode> splits = root.find("splits")) read_splits(*splits, config);
   if (const std::optional<DocumentNode> n = root.find("paper_texture_layout")) config.paper_texture_layout = n->boolean();
   return config;

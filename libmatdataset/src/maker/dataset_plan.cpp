@@ -10,6 +10,7 @@
 #include "matdataset/format/dataset_folders.h"
 #include "matdataset/format/dataset_splits.h"
 #include "matdataset/format/dataset_writer.h"
+#include "matdataset/maker/seed_stream.h"
 
 namespace matdataset {
 namespace {
@@ -29,15 +30,6 @@ std::vector<SlotCandidates> slot_candidates(const ObjectConfig& object) {
   return slots;
 }
 
-// SplitMix64 (Steele, Lea and Flood 2014), a bijective finaliser: mixing each index in turn
-// gives seeds that differ in every bit for neighbouring frames.
-uint64_t mix(uint64_t x) {
-  x += 0x9e3779b97f4a7c15ull;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-  return x ^ (x >> 31);
-}
-
 }  // namespace
 
 std::optional<Shard> parse_shard(const std::string& text) {
@@ -51,7 +43,8 @@ std::optional<Shard> parse_shard(const std::string& text) {
 
 DatasetPlan plan_dataset(const DatasetConfig& config) {
   DatasetPlan plan;
-  plan.views = static_cast<size_t>(config.camera.n_phi) * static_cast<size_t>(config.camera.n_theta);
+  plan.grid_views = static_cast<size_t>(config.camera.n_phi) * static_cast<size_t>(config.camera.n_theta);
+  plan.views = plan.grid_views * config.lighting.rounds();
   // Counted before anything is listed: an uncapped product of many slots would not fit in memory.
   long double frames = 0;
   for (size_t o = 0; o < config.objects.size(); ++o) {
@@ -89,8 +82,8 @@ fs::path variant_folder(const DatasetConfig& config, const DatasetPlan& plan, si
 std::string view_stem(const DatasetPlan& plan, size_t view) { return frame_stem(view, plan.views); }
 
 uint32_t frame_seed(uint64_t seed, const FrameRef& frame) {
-  uint64_t h = mix(seed);
-  for (const size_t index : {frame.object, frame.variant, frame.view}) h = mix(h ^ static_cast<uint64_t>(index));
+  uint64_t h = splitmix64(seed);
+  for (const size_t index : {frame.object, frame.variant, frame.view}) h = splitmix64(h ^ static_cast<uint64_t>(index));
   return static_cast<uint32_t>(h >> 32);
 }
 

@@ -26,7 +26,7 @@ double seconds_since(Clock::time_point start) {
 
 // The variant's records; a folder that holds a variant made with other settings is refused
 // rather than mixed with this run's frames.
-void write_variant_records(const DatasetConfig& config, const DatasetPlan& plan, const ObjectRenderer& renderer,
+void write_variant_records(const DatasetConfig& config, const DatasetPlan& plan, ObjectRenderer& renderer,
                            size_t object, size_t variant) {
   const fs::path folder = variant_folder(config, plan, object, variant);
   fs::create_directories(folder);
@@ -95,7 +95,7 @@ RunSummary run_dataset(const DatasetConfig& config, const DatasetPlan& plan, con
     }
     if (frame.variant != current_variant) {
       try {
-        renderer->select_variant(plan.variants[frame.object][frame.variant], options.cancel);
+        renderer->select_variant(frame.variant, plan.variants[frame.object][frame.variant], options.cancel);
       } catch (const matbase::Cancelled&) {
         summary.cancelled = true;
         break;

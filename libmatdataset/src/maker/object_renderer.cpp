@@ -15,6 +15,7 @@
 #include "matmaterial/folder/material_folder.h"
 #include "matmaterial/library/material_library.h"
 #include "matmaterial/material_classes.h"
+#include "matrender/light_meter.h"
 #include "matrender/paper_setup.h"
 #include "matrender/scene_overrides.h"
 
@@ -38,7 +39,6 @@ matrender::SceneDescription object_scene(const DatasetConfig& config, size_t ind
   overrides.placement = matrender::MatrixPlacement{};
   overrides.width = config.render.width;
   overrides.height = config.render.height;
-  overrides.illuminance_lux = {config.illuminance_lux, config.source + ": lights.illuminance_lux"};
   for (size_t s = 0; s < object.slots.size(); ++s)
     for (size_t k = 0; k < object.slots[s].candidates.size(); ++k) {
       const MaterialCandidate& candidate = object.slots[s].candidates[k];
@@ -135,11 +135,12 @@ ObjectRenderer::ObjectRenderer(const DatasetConfig& config, size_t object)
   grid_.theta_max = camera.theta_max_deg * kDegree;
   grid_.n_phi = camera.n_phi;
   grid_.n_theta = camera.n_theta;
-  exposure_stops_ = config.render.exposure_stops ? *config.render.exposure_stops
-                                                 : matrender::grey_card_exposure(*built_.rig, grid_);
+  grid_views_ = static_cast<size_t>(camera.n_phi) * static_cast<size_t>(camera.n_theta);
 }
 
-void ObjectRenderer::select_variant(const MaterialVariant& variant, const std::atomic<bool>* cancel) {
+void ObjectRenderer::select_variant(size_t index, const MaterialVariant& variant, const std::atomic<bool>* cancel) {
+  if (index != variant_index_ || variant != variant_) lighting_.clear();
+  variant_index_ = index;
   variant_ = variant;
   built_.materials.cancel_on(cancel);
   matrender::ObjectDescription materials;
@@ -188,16 +189,50 @@ matgeom::ObjectAsset ObjectRenderer::variant_asset() const {
 
 matrender::Camera ObjectRenderer::view_camera(size_t view) const {
   const auto n_theta = static_cast<size_t>(grid_.n_theta);
-  return matrender::grid_view(grid_, static_cast<int>(view / n_theta), static_cast<int>(view % n_theta),
+  const size_t cell = view % grid_views_;
+  return matrender::grid_view(grid_, static_cast<int>(cell / n_theta), static_cast<int>(cell % n_theta),
                               config_.render.width, config_.render.height, config_.camera.vertical_fov_deg * kDegree);
 }
 
-FramePose ObjectRenderer::view_pose(size_t view, const std::string& stem) const {
+void ObjectRenderer::light_view(size_t view) {
+  const ViewLighting& lighting = view_lighting(view);
+  if (lit_view_ == view) return;
+  matrender::set_scene_lighting(built_, lighting.scene.lights, lighting.scene.background, &environment_images_);
+  lit_view_ = view;
+}
+
+const ObjectRenderer::ViewLighting& ObjectRenderer::view_lighting(size_t view) {
+  if (const auto found = lighting_.find(view); found != lighting_.end()) return found->second;
+  ViewLighting lighting;
+  lighting.drawn = draw_frame_lighting(config_.lighting, config_.seed, {object_index_, variant_index_, view}, grid_views_,
+                                       built_.bounds);
+  const std::string where = fmt::format("{}: the lighting of {} view {}", config_.source, object_.name, view);
+  lighting.scene = matrender::read_lighting_text(scene_lighting_json(lighting.drawn).dump(), where, ".");
+  matrender::set_scene_lighting(built_, lighting.scene.lights, lighting.scene.background, &environment_images_);
+  lit_view_ = view;
+  lighting.exposure_stops =
+      config_.render.exposure_stops
+          ? *config_.render.exposure_stops
+          : matrender::grey_card_exposure(built_.scene.lamps(), built_.scene.background(), grid_);
+  return lighting_.emplace(view, std::move(lighting)).first->second;
+}
+
+std::string ObjectRenderer::view_lighting_json(size_t view) {
+  const ViewLighting& lighting = view_lighting(view);
+  ordered_json json = scene_lighting_json(lighting.drawn);
+  json["setup"] = lighting.drawn.setup;
+  json["background_visible"] = lighting.drawn.background_visible;
+  json["exposure_stops"] = lighting.exposure_stops;
+  return json.dump();
+}
+
+FramePose ObjectRenderer::view_pose(size_t view, const std::string& stem) {
   const glm::dmat4 m = view_camera(view).camera_to_world;
   FramePose pose;
   pose.stem = stem;
   for (int r = 0; r < 4; ++r)
     for (int c = 0; c < 4; ++c) pose.camera_to_world[static_cast<size_t>(r)][static_cast<size_t>(c)] = m[c][r];
+  pose.lighting_json = view_lighting_json(view);
   return pose;
 }
 
@@ -210,10 +245,12 @@ int ObjectRenderer::fewest_samples() const { return matrender::fewest_samples_pe
 
 bool ObjectRenderer::render(size_t view, uint32_t seed, int threads, const std::atomic<bool>* cancel,
                             FrameMaps& maps, matrender::RenderStats* stats) {
+  light_view(view);
+  const ViewLighting& lighting = view_lighting(view);
   matrender::RenderSettings settings = config_.render.settings;
   settings.seed = seed;
   settings.threads = threads;
-  settings.transparent_background = true;
+  settings.transparent_background = !lighting.drawn.background_visible;
   using P = matrender::MaterialParameter;
   settings.aovs = dataset_aovs();
   settings.cancel = cancel;
@@ -234,11 +271,18 @@ bool ObjectRenderer::render(size_t view, uint32_t seed, int threads, const std::
   maps.depth = std::move(frame.depth);
   maps.label = std::move(frame.label);
   maps.sample_count = std::move(frame.sample_count);
-  maps.exposure_stops = exposure_stops_;
+  maps.exposure_stops = lighting.exposure_stops;
+  maps.opaque_background = lighting.drawn.background_visible;
   return true;
 }
 
-std::string ObjectRenderer::provenance_json(const DatasetPlan& plan, size_t variant) const {
+std::optional<double> ObjectRenderer::shared_exposure_stops() {
+  if (!lights_every_frame_alike(config_.lighting)) return std::nullopt;
+  light_view(0);
+  return view_lighting(0).exposure_stops;
+}
+
+std::string ObjectRenderer::provenance_json(const DatasetPlan& plan, size_t variant) {
   const size_t object = object_index_;
   ordered_json json;
   json["software"] = {{"name", "matpredict make_dataset"}, {"version", MATPREDICT_VERSION}};
@@ -291,20 +335,35 @@ std::string ObjectRenderer::provenance_json(const DatasetPlan& plan, size_t vari
                     {"width", config_.render.width},
                     {"height", config_.render.height}};
 
-  ordered_json lamps = ordered_json::array();
-  for (const matgeom::RigLight& lamp : built_.rig->lights)
-    lamps.push_back({{"kind", lamp.kind == matgeom::RigLightKind::Area ? "area" : "spot"},
-                     {"light_to_world", matrix_json(lamp.light_to_world)},
-                     {"size", {lamp.size_x, lamp.size_y}},
-                     {"spot_angle", lamp.spot_angle},
-                     {"spot_blend", lamp.spot_blend},
-                     {"power_w", lamp.power},
-                     {"color", vector_json(lamp.color)}});
-  json["lights"] = {{"rig", "paper"},
-                    {"illuminance_lux", built_.rig->illuminance_lux},
-                    {"power_scale", built_.rig->power_scale},
-                    {"bounds", {{"center", vector_json(built_.bounds.center)}, {"radius", built_.bounds.radius}}},
-                    {"lamps", lamps}};
+  // One fixed rig lights every frame alike: its lamps are recorded here, as before lighting setups
+  // existed, so that such datasets resume unchanged. Otherwise each frame's lighting is in
+  // transforms.json.
+  const std::optional<double> exposure = shared_exposure_stops();
+  if (exposure) {
+    const matgeom::LightRig& rig = *built_.rig;
+    ordered_json lamps = ordered_json::array();
+    for (const matgeom::RigLight& lamp : rig.lights)
+      lamps.push_back({{"kind", lamp.kind == matgeom::RigLightKind::Area ? "area" : "spot"},
+                       {"light_to_world", matrix_json(lamp.light_to_world)},
+                       {"size", {lamp.size_x, lamp.size_y}},
+                       {"spot_angle", lamp.spot_angle},
+                       {"spot_blend", lamp.spot_blend},
+                       {"power_w", lamp.power},
+                       {"color", vector_json(lamp.color)}});
+    json["lights"] = {{"rig", "paper"},
+                      {"illuminance_lux", rig.illuminance_lux},
+                      {"power_scale", rig.power_scale},
+                      {"bounds", {{"center", vector_json(built_.bounds.center)}, {"radius", built_.bounds.radius}}},
+                      {"lamps", lamps}};
+  } else {
+    const char* rules[] = {"per_view", "per_variant", "every_setup"};
+    ordered_json setups = ordered_json::array();
+    for (const LightingSetup& setup : config_.lighting.setups) setups.push_back(setup.name);
+    json["lights"] = {{"setups", setups},
+                      {"assign", rules[static_cast<int>(config_.lighting.assignment)]},
+                      {"bounds", {{"center", vector_json(built_.bounds.center)}, {"radius", built_.bounds.radius}}},
+                      {"each_frame", "transforms.json: frames[].lighting, as a scene file's lights and background"}};
+  }
 
   const RenderConfig& r = config_.render;
   const matrender::RenderSettings& rs = r.settings;
@@ -321,12 +380,13 @@ std::string ObjectRenderer::provenance_json(const DatasetPlan& plan, size_t vari
                     {"max_diffuse_bounces", rs.max_diffuse_bounces},
                     {"max_glossy_bounces", rs.max_glossy_bounces},
                     {"max_transmission_bounces", rs.max_transmission_bounces},
-                    {"exposure_stops", exposure_stops_},
+                    {"exposure_stops", exposure ? ordered_json(*exposure) : ordered_json("per frame (transforms.json)")},
                     {"exposure_rule", r.exposure_stops ? "configured"
                                                        : "grey card: a Lambertian card at the grid's centre facing the "
-                                                         "camera shows half its albedo, for its illuminance averaged over "
-                                                         "the grid's views (log2(683 pi / lux) - 1)"},
-                    {"transparent_background", true},
+                                                         "camera shows half its albedo, for its illuminance under the "
+                                                         "frame's lighting averaged over the grid's views "
+                                                         "(log2(683 pi / lux) - 1)"},
+                    {"transparent_background", !any_background_visible(config_.lighting)},
                     {"ambient_occlusion",
                      {{"distance_m", rs.ambient_occlusion_distance},
                       {"standard_error_at_most", rs.ambient_occlusion_error},

@@ -2,6 +2,7 @@
 // Turning a SceneDescription into what the renderer takes: loads meshes and textures, places the
 // objects, assigns materials, makes the lights and the camera, and builds the BVH.
 #include <atomic>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,5 +49,14 @@ Camera scene_camera(const CameraDescription& description, const BuiltScene& buil
 // not name keep the material they have. The BVH is not rebuilt. Throws matbase::InputError for an unknown
 // part name or a material input that fails to load, std::out_of_range for an unknown material.
 void assign_object_materials(BuiltScene& built, size_t object, const ObjectDescription& materials);
+
+// Environment images by file, each loaded once however many frames light with it.
+using EnvironmentImages = std::map<std::string, TexturePtr>;
+
+// The built scene's lamps and world replaced by `lights` (the paper's rig around built.bounds,
+// recorded in built.rig) and `background`, the BVH kept. With `images`, an environment's image is
+// taken from it, or loaded and kept there. Throws matbase::InputError as build_scene does.
+void set_scene_lighting(BuiltScene& built, const LightsDescription& lights, const BackgroundDescription& background,
+                        EnvironmentImages* images = nullptr);
 
 }  // namespace matrender

@@ -20,6 +20,13 @@ SceneDescription read_scene_text(const std::string& json, const std::string& sou
                                  const std::vector<GivenObject>& given = {});
 // A scene file's "camera" value alone, as JSON text; pointers start at it ("the camera: /grid/cell/0: ...").
 CameraDescription read_camera_text(const std::string& json, const std::string& source);
+// A scene file's lighting alone: a JSON object with its "lights" (required) and "background"
+// (default black), read as the scene file reads them.
+struct SceneLighting {
+  LightsDescription lights;
+  BackgroundDescription background = glm::vec3(0.0f);
+};
+SceneLighting read_lighting_text(const std::string& json, const std::string& source, const std::string& folder);
 // A mesh object's "auto_smooth_deg" (matgeom::ObjectReadOptions), an angle in (0, 180]: the one
 // reading of it, which make_dataset's objects share.
 double read_auto_smooth_deg(const matbase::DocumentNode& node);

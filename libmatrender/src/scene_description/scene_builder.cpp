@@ -176,20 +176,30 @@ std::string frame_stem(const CameraDescription& camera) {
   return grid ? view_name(grid->i, grid->j) : "view";
 }
 
-Background load_background(const BackgroundDescription& description) {
+Background load_background(const BackgroundDescription& description, EnvironmentImages* images = nullptr) {
   const auto* environment = std::get_if<EnvironmentDescription>(&description);
   if (!environment) return std::get<glm::vec3>(description);
   try {
     const ColorSpace space = environment->color_space ? *environment->color_space
                                                       : blender_default_color_space(environment->path);
-    return EnvironmentMap{Texture::load_radiance(environment->path, space), environment->strength,
-                          environment->rotation_z};
+    const std::string key = environment->path + (space == ColorSpace::SRGB ? " (sRGB)" : "");
+    TexturePtr image = images && images->count(key) ? images->at(key) : Texture::load_radiance(environment->path, space);
+    if (images) images->emplace(key, image);
+    return EnvironmentMap{image, environment->strength, environment->rotation_z};
   } catch (const std::exception& e) {
     throw environment->origin.error("/environment", e.what());
   }
 }
 
 }  // namespace
+
+void set_scene_lighting(BuiltScene& built, const LightsDescription& lights, const BackgroundDescription& background,
+                        EnvironmentImages* images) {
+  built.scene.clear_lamps();
+  built.rig.reset();
+  add_lights(lights, built);
+  built.scene.set_background(load_background(background, images));
+}
 
 BuiltScene build_scene(const SceneDescription& description, const std::atomic<bool>* cancel) {
   std::vector<matgeom::ObjectAsset> assets;

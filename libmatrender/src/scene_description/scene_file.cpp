@@ -557,4 +557,15 @@ CameraDescription read_camera_text(const std::string& json, const std::string& s
   return read_camera(DocumentNode(document, matbase::DocumentSource(source, matbase::PathStyle::JsonPointer)));
 }
 
+SceneLighting read_lighting_text(const std::string& json, const std::string& source, const std::string& folder) {
+  std::istringstream text(json);
+  const matbase::DocumentValue document = matbase::parse_json_document(text, source);
+  const DocumentNode root(document, matbase::DocumentSource(source, matbase::PathStyle::JsonPointer));
+  root.expect_keys({"lights", "background"});
+  SceneLighting lighting;
+  lighting.lights = read_lights(root.required("lights"));
+  if (auto background = root.find("background")) lighting.background = read_background(*background, folder);
+  return lighting;
+}
+
 }  // namespace matrender

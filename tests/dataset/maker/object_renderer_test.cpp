@@ -21,7 +21,7 @@ TEST_CASE("The exported variant reads every map where the dataset's frames read 
       "camera: {grid: [1, 1]}\nrender: {resolution: 16, samples: 1, material_resolution: 32}\n",
       "object_renderer_test", std::filesystem::temp_directory_path(), {});
   matdataset::ObjectRenderer renderer(config, 0);
-  renderer.select_variant({0});
+  renderer.select_variant(0, {0});
   const matgeom::ObjectAsset exported = renderer.variant_asset();
   const std::vector<uint32_t>& ids = renderer.part_materials();
   REQUIRE(exported.materials.size() == ids.size());

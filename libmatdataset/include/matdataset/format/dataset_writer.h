@@ -58,6 +58,8 @@ struct FrameMaps {
   std::vector<int32_t> label;            // label id from one hit sample, 0 where nothing hit
   std::vector<int32_t> sample_count;     // camera samples the pixel took (adaptive sampling stops some early)
   double exposure_stops = 0.0;           // applied to the image before encoding
+  // The image's background is the world camera rays see: its alpha is 1, not the coverage.
+  bool opaque_background = false;
 };
 
 // Writes the frame's eight files into `variant_folder`'s map folders (made if missing), each
@@ -85,6 +87,9 @@ struct FramePose {
   // Camera to world, rows of the 4 x 4 matrix, Blender's camera axes (+X right, +Y up, looking
   // down -Z), world Z up, metres.
   std::array<std::array<double, 4>, 4> camera_to_world{};
+  // The frame's lighting as a JSON object (make_dataset's frame_lighting.h), recorded under
+  // "lighting"; empty: none recorded.
+  std::string lighting_json;
 };
 
 // transforms.json: the repository's keys (camera_angle_x, and per frame transform_matrix,

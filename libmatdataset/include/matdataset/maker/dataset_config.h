@@ -2,7 +2,7 @@
 // make_dataset's configuration (docs/make_dataset.md, "Configuration"): what to render (objects,
 // their material slots and candidates, how variants combine), how (resolution, samples,
 // bounces, ambient occlusion's error), from where (the paper's camera grid and a radius rule)
-// and under what light (the paper's rig and its illuminance). It comes from the embedded default
+// and under what light (lighting setups, lighting_setups.h). It comes from the embedded default
 // or a YAML/JSON file, then command-line overrides (--set KEY=VALUE and the named options, which
 // set the same keys); every value is checked, and an error names the file or option and the key.
 #include <cstdint>
@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "matdataset/format/dataset_splits.h"
+#include "matdataset/maker/lighting_setups.h"
 #include "matdataset/maker/material_variants.h"
 #include "matdataset/maker/render_keys.h"
 #include "matmaterial/library/material_library.h"
@@ -71,8 +72,8 @@ struct RenderConfig {
   // The render settings the configuration sets (render_keys.h); the maker sets the others per
   // frame: the seed, the threads, the transparent background, the AOVs.
   matrender::RenderSettings settings = dataset_render_defaults();
-  // Applied to the images; none: the grey-card rule (matrender::grey_card_exposure), one value
-  // per object for all its views and variants.
+  // Applied to the images; none: the grey-card rule (matrender::grey_card_exposure) under each
+  // frame's own lighting.
   std::optional<double> exposure_stops;
   int material_resolution = 1024;  // texels per side of the library's maps
 };
@@ -87,7 +88,7 @@ struct DatasetConfig {
   std::vector<ObjectConfig> objects;
   CameraConfig camera;
   RenderConfig render;
-  double illuminance_lux = matrender::kPaperTargetIlluminanceLux;
+  LightingConfig lighting;  // the paper's rig at 1000 lx unless set
   uint64_t split_seed = 42;
   SplitRatios split_ratios;
   double paper_train_fraction = 0.8;

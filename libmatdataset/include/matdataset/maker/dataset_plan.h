@@ -28,13 +28,16 @@ std::optional<Shard> parse_shard(const std::string& text);
 struct FrameRef {
   size_t object = 0;
   size_t variant = 0;  // among the object's variants
-  size_t view = 0;     // grid index i * n_theta + j
+  // The grid's index i * n_theta + j, plus the grid's size times the setup's index when every
+  // lighting setup renders every view (LightingAssignment::EverySetup).
+  size_t view = 0;
 };
 
 struct DatasetPlan {
   // Per object, its variants: for each slot in order, the index of its candidate.
   std::vector<std::vector<MaterialVariant>> variants;
-  size_t views = 0;
+  size_t grid_views = 0;  // n_phi x n_theta
+  size_t views = 0;       // the grid's views times the lighting's rounds
   std::vector<FrameRef> frames;  // object by object, variant by variant, view by view
 };
 

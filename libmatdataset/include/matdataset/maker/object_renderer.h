@@ -3,16 +3,19 @@
 // its scene (one BVH) holds every candidate material, a variant only changes which material
 // each part uses, and the grid's cameras are placed by the radius rule around the object.
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "matdataset/format/dataset_writer.h"
 #include "matdataset/maker/dataset_config.h"
 #include "matdataset/maker/dataset_plan.h"
+#include "matdataset/maker/frame_lighting.h"
 #include "matgeom/bounding_sphere.h"
 #include "matgeom/object_asset.h"
 #include "matrender/render.h"
 #include "matrender/scene_builder.h"
+#include "matrender/scene_file.h"
 
 namespace matdataset {
 
@@ -31,10 +34,10 @@ class ObjectRenderer {
   // when the object cannot be loaded or a part is in no slot.
   ObjectRenderer(const DatasetConfig& config, size_t object);
 
-  // Puts the object in the variant's materials (loading those not used before); throws
-  // matbase::InputError for a material that cannot be loaded or has no material class, and
-  // matbase::Cancelled soon after `cancel` (when given) is set.
-  void select_variant(const MaterialVariant& variant, const std::atomic<bool>* cancel = nullptr);
+  // Puts the object in the materials of variant `index` of the plan (loading those not used
+  // before); throws matbase::InputError for a material that cannot be loaded or has no material
+  // class, and matbase::Cancelled soon after `cancel` (when given) is set.
+  void select_variant(size_t index, const MaterialVariant& variant, const std::atomic<bool>* cancel = nullptr);
 
   // The materials of the selected variant, slot by slot.
   const std::vector<SlotMaterial>& slot_materials() const { return slot_materials_; }
@@ -45,27 +48,40 @@ class ObjectRenderer {
   // again.
   matgeom::ObjectAsset variant_asset() const;
 
-  // The scene the views are rendered in: its lamps and background.
+  // The scene the views are rendered in: its lamps and background are those of the view lit last.
   const matrender::Scene& scene() const { return built_.scene; }
+
+  // A view's lighting in the selected variant (frame_lighting.h), drawn the first time it is asked
+  // for, and the exposure its images take: the configuration's, or the grey-card rule's under it.
+  struct ViewLighting {
+    FrameLighting drawn;
+    matrender::SceneLighting scene;
+    double exposure_stops = 0.0;
+  };
+  const ViewLighting& view_lighting(size_t view);
+  // What transforms.json records of a view's lighting: the setup's name, the scene file's
+  // "lights" and "background", whether camera rays see it, and the exposure.
+  std::string view_lighting_json(size_t view);
   // The scene material each part of the object renders with in the selected variant.
   const std::vector<uint32_t>& part_materials() const {
     return built_.scene.part_materials(built_.object_meshes.front());
   }
 
   matrender::Camera view_camera(size_t view) const;
-  FramePose view_pose(size_t view, const std::string& stem) const;
+  // The view's camera and its lighting's record.
+  FramePose view_pose(size_t view, const std::string& stem);
   CameraIntrinsics intrinsics() const;
 
   // The fewest camera samples a pixel takes (adaptive sampling may stop pixels early).
   int fewest_samples() const;
 
-  // Renders one view with `seed`, its figures into *stats when given; false when cancelled (the
-  // maps are then incomplete).
+  // Renders one view with `seed` under its lighting, its figures into *stats when given; false
+  // when cancelled (the maps are then incomplete).
   bool render(size_t view, uint32_t seed, int threads, const std::atomic<bool>* cancel, FrameMaps& maps,
               matrender::RenderStats* stats = nullptr);
 
   // Everything needed to render a frame of the selected variant again, as a JSON object.
-  std::string provenance_json(const DatasetPlan& plan, size_t variant) const;
+  std::string provenance_json(const DatasetPlan& plan, size_t variant);
 
  private:
   const DatasetConfig& config_;
@@ -73,8 +89,17 @@ class ObjectRenderer {
   const ObjectConfig& object_;
   matrender::BuiltScene built_;
   matgeom::CameraGridSpec grid_;
-  double exposure_stops_ = 0.0;  // the configuration's, or the grey-card rule's for this object
+  size_t grid_views_ = 0;
+  size_t variant_index_ = 0;
   MaterialVariant variant_;  // the selected one
+  std::map<size_t, ViewLighting> lighting_;  // the selected variant's views lit so far
+  matrender::EnvironmentImages environment_images_;
+  // The exposure of every frame when one fixed rig lights them all alike (what metadata.json
+  // records then), none otherwise.
+  std::optional<double> shared_exposure_stops();
+  // Puts the view's lighting in the scene; the view that is there already stays.
+  void light_view(size_t view);
+  size_t lit_view_ = SIZE_MAX;
   std::vector<SlotMaterial> slot_materials_;
   std::vector<std::vector<uint32_t>> slot_parts_;  // the parts of each slot
 };
