@@ -18,6 +18,8 @@
 #include "matrender/image_io.h"
 #include "matrender/paper_setup.h"
 #include "matrender/render.h"
+#include "matdataset/maker/frame_scene.h"
+#include "matdataset/maker/object_renderer.h"
 #include "matrender/scene_file.h"
 #include "matrender/scene_overrides.h"
 
@@ -126,8 +128,17 @@ void add_scene_options(CLI::App& app, Options& o) {
                         "render a built-in object (NAME or NAME:SEED) under the paper's rig and grid camera")
                      ->type_name("NAME[:SEED]")
                      ->group(group);
-  scene->excludes(mesh)->excludes(object);
-  mesh->excludes(object);
+  auto* dataset_frame =
+      app.add_option_function<std::string>(
+             "--dataset-frame", [&o](const std::string& path) { o.dataset_frame = path; },
+             "render one frame of a make_dataset dataset again from its records (its configuration in metadata.json, "
+             "its camera, lighting and exposure in transforms.json), e.g. dataset_out/vase/var000/003: the colour "
+             "PNG is the dataset's image")
+          ->type_name("VARIANT/STEM")
+          ->group(group);
+  scene->excludes(mesh)->excludes(object)->excludes(dataset_frame);
+  mesh->excludes(object)->excludes(dataset_frame);
+  object->excludes(dataset_frame);
   app.add_option_function<double>(
          "--auto-smooth", [&o](const double& degrees) { o.auto_smooth_deg = degrees; },
          "shade the --mesh faces the file gives no normals smooth, except across edges sharper than DEG "
@@ -387,7 +398,11 @@ void add_run_options(CLI::App& app, Options& o) {
       ->default_str("0")
       ->group(group);
   app.add_option_function<std::string>(
-         "--aovs", [&o](const std::string& list) { o.aovs = parse_aov_list(list); },
+         "--aovs",
+         [&o](const std::string& list) {
+           o.aovs = parse_aov_list(list);
+           o.aovs_given = true;
+         },
          aov_help())
       ->type_name("LIST")
       ->default_str("default")
@@ -439,6 +454,10 @@ SceneDescription chosen_scene(const Options& options) {
   if (options.uv_scale && !options.mesh_file && !options.object)
     throw InputError("--uv-scale: needs --mesh or --object (a scene file gives each object its own \"uv_scale\")");
   if (options.scene_file) return matrender::read_scene_file(*options.scene_file);
+  if (options.dataset_frame) {
+    const matdataset::FrameScene frame = matdataset::dataset_frame_scene(*options.dataset_frame);
+    return matrender::read_scene_text(frame.json, *options.dataset_frame + " (its scene)", frame.folder);
+  }
   if (options.mesh_file || options.object) return matrender::paper_object_scene(single_object(options));
   return matrender::default_scene();
 }
@@ -459,7 +478,8 @@ void apply_render_options(const Options& o, SceneDescription& scene) {
   }
   if (o.exposure) scene.exposure_stops = *o.exposure;
   s.threads = app_support::announced_worker_threads("render_object", "--threads", o.threads);
-  s.aovs = o.aovs;
+  // A dataset's frame takes the dataset's AOVs unless told otherwise.
+  s.aovs = o.dataset_frame && !o.aovs_given ? matdataset::dataset_aovs() : o.aovs;
 }
 
 // The scene changes the options ask for, each named by its option.

@@ -25,6 +25,7 @@ struct Options {
   std::optional<double> auto_smooth_deg;  // --auto-smooth, for --mesh
   std::optional<double> uv_scale;         // --uv-scale, for --mesh or --object
   std::optional<std::string> object;  // NAME[:SEED]
+  std::optional<std::string> dataset_frame;  // a make_dataset frame: VARIANT_FOLDER/STEM
   bool list_objects = false;
   bool list_parameters = false;
   bool list_settings = false;
@@ -62,6 +63,7 @@ struct Options {
   int threads = 0;  // 0 = all hardware threads
   uint64_t texture_memory_mib = 0;  // 0 = matrender::default_texture_memory_limit()
   uint32_t aovs = matrender::default_aovs();
+  bool aovs_given = false;
   std::string output_folder = "./render_out";
 };
 

@@ -89,8 +89,8 @@ void add_group(const LampGroup& group, const matgeom::Sphere& bounds, SeedStream
     const glm::dvec3 direction = shell_direction(draw(group.elevation_deg, draws), draw(group.azimuth_deg, draws));
     const glm::dvec3 offset = group.at.empty() ? distance * direction : group.at[static_cast<size_t>(k)];
     const glm::dvec3 position = centre + bounds.radius * offset;
-    ordered_json lamp = {{"type", lamp_kind_name(group.kind)}, {"position", vec3_json(position)},
-                         {"look_at", vec3_json(centre)}};
+    ordered_json lamp = {{"type", lamp_kind_name(group.kind)}, {"position", vec3_json(position)}};
+    if (group.kind != LampKind::Point) lamp["look_at"] = vec3_json(centre);
     const double power = draw(group.power_w, draws), strength = draw(group.strength, draws);
     const double angle = draw(group.angle_deg, draws), cone = draw(group.cone_deg, draws);
     const double blend = draw(group.blend, draws), size = draw(group.size, draws);

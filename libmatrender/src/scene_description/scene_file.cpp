@@ -560,7 +560,8 @@ CameraDescription read_camera_text(const std::string& json, const std::string& s
 SceneLighting read_lighting_text(const std::string& json, const std::string& source, const std::string& folder) {
   std::istringstream text(json);
   const matbase::DocumentValue document = matbase::parse_json_document(text, source);
-  const DocumentNode root(document, matbase::DocumentSource(source, matbase::PathStyle::JsonPointer));
+  const matbase::DocumentSource where(source, matbase::PathStyle::JsonPointer);
+  const DocumentNode root(document, where);
   root.expect_keys({"lights", "background"});
   SceneLighting lighting;
   lighting.lights = read_lights(root.required("lights"));

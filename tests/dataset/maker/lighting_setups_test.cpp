@@ -1,0 +1,227 @@
+// make_dataset's lighting (matdataset/maker/lighting_setups.h, frame_lighting.h): setups read key
+// by key and refused with the key named; each frame's draw reproducible from its seed, within
+// its ranges, shared or not as the assignment says, and its setups chosen in proportion to their
+// weights (a chi-square test with a fixed seed).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "matbase/input_error.h"
+#include "matdataset/maker/dataset_config.h"
+#include "matdataset/maker/frame_lighting.h"
+#include "matrender/builtin_environments.h"
+#include "matrender/scene_file.h"
+
+namespace fs = std::filesystem;
+using matdataset::DatasetConfig;
+using matdataset::FrameLighting;
+using matdataset::LightingAssignment;
+using nlohmann::ordered_json;
+
+namespace {
+
+const std::string kOneVase = "objects:\n  - {name: vase, builtin: vase, materials: {all: [wood/raw:1]}}\n";
+
+DatasetConfig read(const std::string& lights) {
+  return matdataset::parse_config(kOneVase + lights, "test.yaml", fs::current_path(), {});
+}
+
+std::string refusal(const std::string& lights) {
+  try {
+    read(lights);
+  } catch (const matbase::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+bool builtin_environments_installed() {
+  return fs::exists(fs::path(matrender::kBuiltinEnvironmentFolder) / "forest.exr");
+}
+
+const matgeom::Sphere kBounds{glm::dvec3(0.1, -0.2, 0.3), 0.25};
+
+FrameLighting draw(const DatasetConfig& config, size_t object, size_t variant, size_t view, size_t grid_views = 8) {
+  return matdataset::draw_frame_lighting(config.lighting, config.seed, {object, variant, view}, grid_views, kBounds);
+}
+
+}  // namespace
+
+TEST_CASE("Without setups a dataset is lit by the paper's rig at 1000 lx, every frame alike", "[dataset]") {
+  const DatasetConfig config = read("");
+  REQUIRE(config.lighting.setups.size() == 1);
+  CHECK(config.lighting.setups[0].name == "rig");
+  CHECK(matdataset::lights_every_frame_alike(config.lighting));
+  CHECK(draw(config, 0, 0, 3).lights == ordered_json::parse(R"({"rig": {"target_illuminance_lux": 1000.0}})"));
+  const DatasetConfig brighter = read("lights: {rig: paper, illuminance_lux: 2500}\n");
+  CHECK(draw(brighter, 0, 0, 0).lights["rig"]["target_illuminance_lux"] == 2500.0);
+  const DatasetConfig ranged = read("lights: {setups: [{rig: {illuminance_lux: [200, 2000]}}]}\n");
+  CHECK_FALSE(matdataset::lights_every_frame_alike(ranged.lighting));
+  const DatasetConfig formula = read("lights: {setups: [{rig: {powers: paper}}]}\n");
+  CHECK(draw(formula, 0, 0, 0).lights == ordered_json::parse(R"({"rig": {}})"));
+}
+
+TEST_CASE("Lamp groups are drawn within their ranges, on their shell, aimed at the object", "[dataset]") {
+  const DatasetConfig config = read(R"(lights:
+  setups:
+    - lamps:
+        - {type: spot, count: [1, 3], distance: [2, 4], elevation_deg: [10, 60], azimuth_deg: [0, 360],
+           power_w: [10, 1000], cone_deg: [30, 50], blend: [0.1, 0.3], color: {blackbody: [3000, 6500]}}
+        - {type: sun, elevation_deg: 45, azimuth_deg: 90, strength: 2, angle_deg: 0.5, color: [1, 0.9, 0.8]}
+)");
+  std::vector<double> log_powers;
+  std::map<size_t, int> counts;
+  for (size_t view = 0; view < 400; ++view) {
+    const FrameLighting lighting = draw(config, 0, 0, view);
+    REQUIRE(lighting.lights.is_array());
+    size_t spots = 0;
+    for (const ordered_json& lamp : lighting.lights) {
+      const glm::dvec3 position(lamp["position"][0], lamp["position"][1], lamp["position"][2]);
+      const glm::dvec3 look_at(lamp["look_at"][0], lamp["look_at"][1], lamp["look_at"][2]);
+      CHECK(look_at == kBounds.center);
+      const glm::dvec3 offset = (position - kBounds.center) / kBounds.radius;
+      const double elevation = glm::degrees(std::asin(offset.z / glm::length(offset)));
+      if (lamp["type"] == "sun") {
+        CHECK(elevation == Approx(45.0));
+        CHECK(lamp["strength"] == 2.0);
+        CHECK(lamp["angle_deg"] == 0.5);
+        CHECK(lamp["color"] == ordered_json::parse("[1, 0.9, 0.8]"));
+        continue;
+      }
+      ++spots;
+      CHECK(lamp["type"] == "spot");
+      CHECK(glm::length(offset) >= 2.0 - 1e-12);
+      CHECK(glm::length(offset) <= 4.0 + 1e-12);
+      CHECK(elevation >= 10.0 - 1e-9);
+      CHECK(elevation <= 60.0 + 1e-9);
+      const double power = lamp["power"];
+      CHECK(power >= 10.0);
+      CHECK(power <= 1000.0);
+      log_powers.push_back(std::log10(power));
+      CHECK(lamp["spot_angle_deg"].get<double>() >= 30.0);
+      CHECK(lamp["spot_angle_deg"].get<double>() <= 50.0);
+      const double kelvin = lamp["color"]["blackbody"];
+      CHECK(kelvin >= 3000.0);
+      CHECK(kelvin <= 6500.0);
+    }
+    ++counts[spots];
+  }
+  // Counts 1, 2, 3 alike, and powers uniform in their logarithm: the mean of log10 P is 2 with a
+  // standard error of (2 / sqrt 12) / sqrt n.
+  for (size_t spots = 1; spots <= 3; ++spots) CHECK(counts[spots] > 100);
+  CHECK(counts.size() == 3);
+  double mean = 0.0;
+  for (const double x : log_powers) mean += x / static_cast<double>(log_powers.size());
+  CHECK(std::abs(mean - 2.0) < 4.0 * (2.0 / std::sqrt(12.0)) / std::sqrt(static_cast<double>(log_powers.size())));
+}
+
+TEST_CASE("A frame's draw follows from its seed alone; the assignment says which frames share one", "[dataset]") {
+  const std::string setups = R"(  setups:
+    - {name: spots, lamps: [{type: spot, power_w: [10, 100]}]}
+    - {name: points, lamps: [{type: point, power_w: [10, 100]}]}
+)";
+  const DatasetConfig per_view = read("lights:\n  assign: per_view\n" + setups);
+  CHECK(draw(per_view, 1, 2, 3).lights == draw(per_view, 1, 2, 3).lights);
+  CHECK(draw(per_view, 1, 2, 3).lights != draw(per_view, 1, 2, 4).lights);
+  CHECK(draw(per_view, 1, 2, 3).lights != draw(per_view, 1, 3, 3).lights);
+  const DatasetConfig per_variant = read("lights:\n  assign: per_variant\n" + setups);
+  CHECK(draw(per_variant, 1, 2, 3).lights == draw(per_variant, 1, 2, 7).lights);
+  CHECK(draw(per_variant, 1, 2, 3).lights != draw(per_variant, 1, 3, 3).lights);
+  // Every setup for every view: the views repeat, setup by setup.
+  const DatasetConfig every = read("lights:\n  assign: every_setup\n" + setups);
+  CHECK(every.lighting.rounds() == 2);
+  CHECK(matdataset::plan_dataset(every).views == 2 * matdataset::plan_dataset(every).grid_views);
+  CHECK(draw(every, 0, 0, 5, 8).setup == "spots");
+  CHECK(draw(every, 0, 0, 13, 8).setup == "points");
+  CHECK(draw(every, 0, 0, 13, 8).lights[0]["type"] == "point");
+  // Another configuration seed draws otherwise.
+  DatasetConfig reseeded = per_view;
+  reseeded.seed = 1;
+  CHECK(draw(reseeded, 1, 2, 3).lights != draw(per_view, 1, 2, 3).lights);
+}
+
+TEST_CASE("Setups are chosen in proportion to their weights", "[dataset]") {
+  const DatasetConfig config = read(R"(lights:
+  setups:
+    - {name: a, weight: 1, lamps: [{type: point}]}
+    - {name: b, weight: 2, lamps: [{type: point}]}
+    - {name: c, weight: 5, lamps: [{type: point}]}
+)");
+  std::map<std::string, double> observed;
+  const size_t n = 4000;
+  for (size_t view = 0; view < n; ++view)
+    ++observed[matdataset::choose_lighting(config.lighting, config.seed, {0, 0, view}, n).setup == 0   ? "a"
+               : matdataset::choose_lighting(config.lighting, config.seed, {0, 0, view}, n).setup == 1 ? "b"
+                                                                                                      : "c"];
+  // Chi-square with 2 degrees of freedom: 13.8 is its 0.999 quantile.
+  const std::map<std::string, double> expected = {{"a", n / 8.0}, {"b", n / 4.0}, {"c", 5.0 * n / 8.0}};
+  double chi_square = 0.0;
+  for (const auto& [name, count] : expected) chi_square += std::pow(observed[name] - count, 2) / count;
+  CHECK(chi_square < 13.8);
+}
+
+TEST_CASE("Every frame's lighting reads back as a scene file's lights and background", "[dataset]") {
+  // scripts/install_deps.sh installs Debian's blender-data, whose images these are.
+  REQUIRE(builtin_environments_installed());
+  const DatasetConfig config = read(R"(lights:
+  setups:
+    - {environment: {images: [forest, sunset], strength: [0.5, 2], rotation_deg: [0, 360], visible: true}}
+    - {environment: {images: studio}, lamps: [{type: area, elevation_deg: 90, size: 0.5, power_w: 50}]}
+)");
+  std::map<std::string, int> images;
+  for (size_t view = 0; view < 40; ++view) {
+    const FrameLighting lighting = draw(config, 0, 0, view);
+    const matrender::SceneLighting scene =
+        matrender::read_lighting_text(matdataset::scene_lighting_json(lighting).dump(), "frame", ".");
+    const auto& environment = std::get<matrender::EnvironmentDescription>(scene.background);
+    ++images[fs::path(environment.path).stem().string()];
+    if (lighting.setup == "environment") {
+      CHECK(lighting.background_visible);
+      CHECK(environment.strength >= 0.5);
+      CHECK(environment.strength <= 2.0);
+    } else {
+      CHECK(lighting.setup == "environment+area");
+      // Straight above: its edge along +X, so the look-at has an up to lean on.
+      const auto& lamps = std::get<std::vector<matrender::Lamp>>(scene.lights);
+      REQUIRE(lamps.size() == 1);
+      const auto& area = std::get<matrender::RectLamp>(lamps[0]);
+      CHECK(area.size_x == Approx(0.5 * kBounds.radius));
+      CHECK(glm::dvec3(area.light_to_world[2]).z == Approx(1.0));
+    }
+  }
+  CHECK(images.size() == 3);
+}
+
+TEST_CASE("Lighting keys are refused where they are read, naming the key and the value", "[dataset]") {
+  CHECK_THAT(refusal("lights: {setups: [{rig: {illuminance_lux: [2000, 200]}}]}\n"),
+             Catch::Contains("lights.setups.0.rig.illuminance_lux") && Catch::Contains("swap"));
+  CHECK_THAT(refusal("lights: {setups: [{environment: {images: [no_such.exr]}}]}\n"),
+             Catch::Contains("lights.setups.0.environment.images.0") && Catch::Contains("no_such.exr") &&
+                 Catch::Contains("looked up in"));
+  CHECK_THAT(refusal("lights: {setups: [{lamps: [{type: spot, color: {blackbody: 500}}]}]}\n"),
+             Catch::Contains("lights.setups.0.lamps.0.color.blackbody") && Catch::Contains("800"));
+  CHECK_THAT(refusal("lights: {setups: [{lamps: [{type: point, at: [[0.5, 0, 0]]}]}]}\n"),
+             Catch::Contains("lights.setups.0.lamps.0.at.0") && Catch::Contains("inside"));
+  CHECK_THAT(refusal("lights: {setups: [{lamps: [{type: point, distance: 0.5}]}]}\n"),
+             Catch::Contains("lights.setups.0.lamps.0.distance"));
+  CHECK_THAT(refusal("lights: {setups: [{lamps: [{type: sun, distance: 2}]}]}\n"),
+             Catch::Contains("a sun has no distance"));
+  CHECK_THAT(refusal("lights: {setups: [{lamps: [{type: sun, power_w: 2}]}]}\n"), Catch::Contains("power_w"));
+  CHECK_THAT(refusal("lights: {setups: [{rig: paper, lamps: [{type: sun}]}]}\n"),
+             Catch::Contains("lights.setups.0.lamps") && Catch::Contains("setup of their own"));
+  CHECK_THAT(refusal("lights: {setups: []}\n"), Catch::Contains("lights.setups") && Catch::Contains("empty"));
+  CHECK_THAT(refusal("lights: {setups: [{name: x, weight: 1}]}\n"), Catch::Contains("no light"));
+  CHECK_THAT(refusal("lights: {setups: [{name: a, lamps: [{type: sun}]}, {name: a, lamps: [{type: sun}]}]}\n"),
+             Catch::Contains("two setups are named \"a\""));
+  CHECK_THAT(refusal("lights: {illuminance_lux: 500, setups: [{rig: paper}]}\n"),
+             Catch::Contains("lights.illuminance_lux"));
+  CHECK_THAT(refusal("lights: {assign: per_frame, setups: [{rig: paper}]}\n"), Catch::Contains("lights.assign"));
+  CHECK_THAT(refusal("lights: {setups: [{lamps: [{type: spot, count: 1.5}]}]}\n"), Catch::Contains("whole number"));
+  // Unnamed setups of the same parts are numbered.
+  const DatasetConfig twins = read("lights: {setups: [{lamps: [{type: sun}]}, {lamps: [{type: sun}]}]}\n");
+  CHECK(twins.lighting.setups[1].name == "sun_2");
+}
