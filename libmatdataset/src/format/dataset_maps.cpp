@@ -154,6 +154,7 @@ void write_frame_maps(const fs::path& variant_folder, const std::string& stem, c
   const std::vector<float> sample_count(maps.sample_count.begin(), maps.sample_count.end());
   matbase::write_data_png(path(DatasetMap::SampleCount), w, h, 1, sample_count.data(), 1.0, 0.0, true, &set);
 
+  // Over a background camera rays see, every pixel is opaque (alpha 1, not the coverage).
   const std::vector<float> opaque = maps.opaque_background ? std::vector<float>(n, 1.0f) : std::vector<float>();
   matbase::write_display_png(path(DatasetMap::Images), w, h, maps.color.data(),
                              maps.opaque_background ? opaque.data() : maps.coverage.data(), maps.exposure_stops, &set);
