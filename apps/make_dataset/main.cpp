@@ -218,7 +218,8 @@ int make(const Options& options) {
     fmt::print("split {}: {} train, {} val, {} test{}\n", split.name, split.train.size(), split.val.size(),
                split.test.size(),
                split.train.empty() || split.test.empty() || (split.val.empty() && split.strategy != "random")
-                   ? " (too few groups to fill every split)"
+                   ? (split.strategy == "lighting_disjoint" ? " (too few lightings to fill every split)"
+                                                            : " (too few groups to fill every split)")
                    : "");
   std::string folders;
   for (const matdataset::DatasetMapInfo& map : matdataset::dataset_maps()) folders += std::string(map.folder) + "/, ";

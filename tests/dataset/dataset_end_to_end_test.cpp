@@ -184,8 +184,9 @@ TEST_CASE("--verify finds damaged depth, segmentation maps that contradict the l
   CHECK_THAT(text, Catch::Contains("object_disjoint_v1.yaml: counts.total is 17, but its three lists 18 frames"));
   CHECK_THAT(text, Catch::Contains("paper_random_v1.yaml: 6 frames of the dataset are in none of its lists (the "
                                    "first: vase_again/var000/000)"));
+  CHECK_THAT(text, Catch::Contains("lighting_disjoint_v1.yaml: 6 frames of the dataset are in none of its lists"));
   // Nothing else: an undamaged frame, map or file is not reported.
-  CHECK_THAT(text, Catch::Contains(": 15 problems"));
+  CHECK_THAT(text, Catch::Contains(": 16 problems"));
 }
 
 // Overwrites an image with zeros of the same size, channels and type: a frame without the object.
@@ -589,5 +590,41 @@ TEST_CASE("The grey-card rule exposes the object well under every setup: no fram
     CHECK(lit > 0.15);
     CHECK(median < 0.8);
     CHECK(clipped < static_cast<int>(luma.size() / 4));
+  }
+}
+
+TEST_CASE("The lighting split holds lighting out: no environment image and no lamp setup lights frames of two "
+          "splits",
+          "[dataset]") {
+  // Each frame's lighting as transforms.json records it: its environment image, else its setup.
+  std::map<std::string, std::string> lighting_of;
+  for (const auto& entry : fs::recursive_directory_iterator(lit_dataset()))
+    if (entry.path().filename() == "transforms.json") {
+      const fs::path variant = entry.path().parent_path();
+      const std::string prefix = variant.parent_path().filename().string() + "/" + variant.filename().string() + "/";
+      const nlohmann::json transforms = nlohmann::json::parse(text_of(entry.path()));
+      for (const nlohmann::json& frame : transforms["frames"]) {
+        const std::string stem = fs::path(frame["file_path"].get<std::string>()).stem().string();
+        lighting_of[prefix + stem] = frame["envmap"].is_null() ? "setup " + frame["lighting"]["setup"].get<std::string>()
+                                                               : "image " + frame["envmap"].dump();
+      }
+    }
+  REQUIRE(lighting_of.size() == 24);
+  const matdataset::SplitFile split = matdataset::read_split_file(lit_dataset() / "config" / "lighting_disjoint_v1.yaml");
+  CHECK(split.strategy == "lighting_disjoint");
+  CHECK(split.train.size() + split.val.size() + split.test.size() == 24);
+  CHECK(!split.train.empty());
+  CHECK(!split.test.empty());
+  std::map<std::string, std::set<std::string>> splits_of;
+  for (const auto& [name, list] : {std::pair{"train", &split.train}, {"val", &split.val}, {"test", &split.test}})
+    for (const std::string& id : *list) {
+      REQUIRE(lighting_of.count(id) == 1);
+      splits_of[lighting_of[id]].insert(name);
+    }
+  // Four setups, the second with four images: seven lightings, of which the draws use several.
+  CHECK(splits_of.size() >= 4);
+  for (const auto& [lighting, names] : splits_of) {
+    INFO(lighting);
+    CHECK(names.size() == 1);
   }
 }

@@ -141,6 +141,15 @@ SplitFile material_disjoint_split(const std::vector<SampleId>& samples,
   return file;
 }
 
+SplitFile lighting_disjoint_split(const std::vector<SampleId>& samples, const std::vector<std::string>& lighting_of,
+                                  const SplitRatios& ratios, uint64_t seed) {
+  if (samples.size() != lighting_of.size()) throw std::invalid_argument("lighting split: one lighting key per sample");
+  SplitFile file = balanced_group_split(samples, lighting_of, ratios, seed);
+  file.name = "lighting_disjoint_v1";
+  file.strategy = "lighting_disjoint";
+  return file;
+}
+
 SplitFile random_split(const std::vector<SampleId>& samples, double train_fraction, uint64_t seed) {
   if (!(train_fraction >= 0.0 && train_fraction <= 1.0))
     throw std::invalid_argument("random split: the training fraction must be in [0, 1]");

@@ -10,6 +10,7 @@
 #include "matdataset/format/dataset_folders.h"
 #include "matdataset/format/dataset_splits.h"
 #include "matdataset/format/dataset_writer.h"
+#include "matdataset/maker/frame_lighting.h"
 #include "matdataset/maker/seed_stream.h"
 
 namespace matdataset {
@@ -98,10 +99,14 @@ std::vector<SplitFile> write_dataset_records(const DatasetConfig& config, const 
   fs::create_directories(root / kConfigFolder);
   matbase::remove_stale_temporaries(root / kSegmentationMapFile, false);
   for (const char* split : kSplitFiles) matbase::remove_stale_temporaries(root / kConfigFolder / split, false);
+  matbase::remove_stale_temporaries(root / kConfigFolder / kLightingSplitFile, false);
   write_segmentation_map_yaml(root);
   std::vector<SampleId> samples;
   std::vector<std::vector<std::string>> materials;
+  std::vector<std::string> lightings;
   for (const FrameRef& frame : plan.frames) {
+    lightings.push_back(
+        lighting_key(config.lighting, choose_lighting(config.lighting, config.seed, frame, plan.grid_views)));
     samples.push_back({config.objects[frame.object].name,
                        variant_folder_name(frame.variant, plan.variants[frame.object].size()),
                        view_stem(plan, frame.view)});
@@ -113,7 +118,9 @@ std::vector<SplitFile> write_dataset_records(const DatasetConfig& config, const 
   std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return samples[a].str() < samples[b].str(); });
   std::vector<SampleId> sorted;
   std::vector<std::vector<std::string>> sorted_materials;
-  for (const size_t k : order) sorted.push_back(samples[k]), sorted_materials.push_back(materials[k]);
+  std::vector<std::string> sorted_lightings;
+  for (const size_t k : order)
+    sorted.push_back(samples[k]), sorted_materials.push_back(materials[k]), sorted_lightings.push_back(lightings[k]);
 
   const std::string dataset_root = "..";  // the split files' folder's parent: relative, so any copy reads the same
   const SplitRatios& ratios = config.split_ratios;
@@ -122,7 +129,8 @@ std::vector<SplitFile> write_dataset_records(const DatasetConfig& config, const 
       {object_disjoint_split(sorted, ratios, config.split_seed), ratios},
       {variant_disjoint_split(sorted, ratios, config.split_seed), ratios},
       {material_disjoint_split(sorted, sorted_materials, ratios, config.split_seed), ratios},
-      {random_split(sorted, train, config.split_seed), {train, 0.0, 1.0 - train}}};
+      {random_split(sorted, train, config.split_seed), {train, 0.0, 1.0 - train}},
+      {lighting_disjoint_split(sorted, sorted_lightings, ratios, config.split_seed), ratios}};
   std::vector<SplitFile> written;
   for (const auto& [split, split_ratios] : splits) {
     write_split_file(root / kConfigFolder / (split.name + ".yaml"), split, split_ratios, dataset_root);

@@ -132,7 +132,8 @@ LightingChoice choose_lighting(const LightingConfig& lighting, uint64_t seed, co
 std::string lighting_key(const LightingConfig& lighting, const LightingChoice& choice) {
   const LightingSetup& setup = lighting.setups[choice.setup];
   if (!choice.image) return setup.name;
-  return setup.name + "/" + std::filesystem::path(setup.environment->images[*choice.image]).stem().string();
+  // A built-in name, or the file's path: images of one stem in two folders stay apart.
+  return "environment:" + setup.environment->images[*choice.image];
 }
 
 FrameLighting draw_frame_lighting(const LightingConfig& lighting, uint64_t seed, const FrameRef& frame,

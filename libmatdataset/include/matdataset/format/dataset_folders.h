@@ -16,6 +16,9 @@ inline constexpr const char* kSegmentationMapFile = "material_segmentation_map.y
 // The split files in config/, each listing every frame once (docs/dataset_format.md, "Splits").
 inline constexpr const char* kSplitFiles[] = {"object_disjoint_v1.yaml", "variance_disjoint_v1.yaml",
                                               "material_disjoint_v1.yaml", "paper_random_v1.yaml"};
+// make_dataset's split that holds lighting out, written beside them since lighting setups exist
+// (--verify reads it where it is, and does not ask older datasets for it).
+inline constexpr const char* kLightingSplitFile = "lighting_disjoint_v1.yaml";
 
 // What keeps `name` from naming an object's folder on every file system a dataset is copied to
 // ("it is 300 bytes long, more than the 255 a file name may have"), or nothing.

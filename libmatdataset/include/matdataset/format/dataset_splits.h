@@ -38,6 +38,11 @@ SplitFile material_disjoint_split(const std::vector<SampleId>& samples,
                                   const std::vector<std::vector<std::string>>& materials_of,
                                   const SplitRatios& ratios, uint64_t seed);
 
+// No lighting in two splits (Kubric's rule for its HDRIs: test frames are lit by what no training
+// frame is): samples grouped by lighting_of[k], samples[k]'s lighting key (its environment image,
+// else its setup), and the groups split as above.
+SplitFile lighting_disjoint_split(const std::vector<SampleId>& samples, const std::vector<std::string>& lighting_of,
+                                  const SplitRatios& ratios, uint64_t seed);
 // The paper's split: the samples shuffled with random.Random(seed), the first
 // floor(train_fraction x count) for training and the rest for testing (val is empty).
 SplitFile random_split(const std::vector<SampleId>& samples, double train_fraction, uint64_t seed);

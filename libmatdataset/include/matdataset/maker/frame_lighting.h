@@ -24,8 +24,9 @@ struct LightingChoice {
 };
 LightingChoice choose_lighting(const LightingConfig& lighting, uint64_t seed, const FrameRef& frame,
                                size_t grid_views);
-// "environment+sun", or "environment+sun/forest" for a setup's image: what the lighting split
-// holds out.
+// What the lighting split groups frames by: the environment image's name ("forest", "hdri_04"),
+// whichever setup shows it, or else the setup's name ("spot+area"), so that no image and no
+// lamp-lit setup is in two splits.
 std::string lighting_key(const LightingConfig& lighting, const LightingChoice& choice);
 
 struct FrameLighting {
