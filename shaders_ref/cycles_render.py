@@ -158,9 +158,9 @@ def add_camera(scene, camera):
     scene.render.resolution_percentage = 100
 
 
-def set_world(scene, background, environment):
-    """A uniform colour, or an equirectangular EXR looked up along a Mapping node's Z rotation of
-    the ray direction (Generated coordinates of a world are its direction)."""
+def set_world(scene, background, environment, sky):
+    """A uniform colour, an equirectangular EXR looked up along a Mapping node's Z rotation of
+    the ray direction (Generated coordinates of a world are its direction), or a Sky Texture."""
     world = bpy.data.worlds.new("world")
     world.use_nodes = True
     nodes, links = world.node_tree.nodes, world.node_tree.links
@@ -180,6 +180,14 @@ def set_world(scene, background, environment):
         links.new(mapping.outputs["Vector"], texture.inputs["Vector"])
         links.new(texture.outputs["Color"], node.inputs["Color"])
         node.inputs["Strength"].default_value = environment["strength"]
+    if sky:
+        texture = nodes.new("ShaderNodeTexSky")
+        texture.sky_type = "NISHITA"
+        for key in ("sun_elevation", "sun_rotation", "sun_size", "sun_intensity", "sun_disc", "altitude",
+                    "air_density", "dust_density", "ozone_density"):
+            setattr(texture, key, sky[key])
+        links.new(texture.outputs["Color"], node.inputs["Color"])
+        node.inputs["Strength"].default_value = sky["strength"]
     scene.world = world
 
 
@@ -227,7 +235,7 @@ def main():
         add_mesh(scene, description["mesh"], material)
     add_lamps(scene, description["lamps"])
     add_camera(scene, description["camera"])
-    set_world(scene, description["background"], description.get("environment"))
+    set_world(scene, description["background"], description.get("environment"), description.get("sky"))
     set_cycles(scene, description["threads"], description["settings"], description["bounces"])
 
     timings = {}

@@ -22,6 +22,7 @@
 #include "matmaterial/material_classes.h"
 #include "matmaterial/material_parameters.h"
 #include "matrender/image_io.h"
+#include "matrender/light_meter.h"
 #include "matrender/render.h"
 #include "matrender/texture_cache.h"
 #include "options.h"
@@ -103,8 +104,14 @@ int render_and_write(const Options& options) {
   progress.finish();
   if (stats.cancelled) return report_error("interrupted; nothing written", app_support::interrupted_exit_code());
 
+  double exposure_stops = description.exposure_stops;
+  if (options.exposure_auto) {
+    exposure_stops = matrender::grey_card_exposure(built.scene.lamps(), built.scene.background(), built.bounds.center,
+                                                   glm::dvec3(built.camera.camera_to_world[3]));
+    fmt::print("exposure: {:+.2f} stops by the grey-card rule at the objects' centre\n", exposure_stops);
+  }
   const std::vector<std::string> files =
-      matrender::write_frame(frame, options.output_folder, built.frame_stem, description.exposure_stops);
+      matrender::write_frame(frame, options.output_folder, built.frame_stem, exposure_stops);
   report_files(files, options.output_folder);
   report_rig(built);
   report_summary(stats, built, settings);

@@ -1,8 +1,10 @@
 #include "options.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <variant>
 #include <vector>
 
@@ -39,6 +41,40 @@ using matrender::SceneDescription;
 constexpr int kMaxGridSize = 65536;
 
 // Thrown from an option callback, CLI11 reports it like its own errors ("--spp: expected ...").
+// --sky default, or --sky sun_elevation_deg=30,air=2,sun_disc=false,strength=0.5: the scene
+// file's sky keys (matrender::sky_settings) with their ranges.
+matrender::NishitaSky parse_sky(const std::string& text) {
+  matrender::NishitaSky sky;
+  if (text == "default") return sky;
+  std::stringstream items(text);
+  std::string item;
+  while (std::getline(items, item, ',')) {
+    const size_t equals = item.find('=');
+    if (equals == std::string::npos)
+      throw CLI::ValidationError("--sky", "\"" + item + "\" is not KEY=VALUE (or give \"default\")");
+    const std::string key = item.substr(0, equals), value = item.substr(equals + 1);
+    if (key == "sun_disc") {
+      if (value != "true" && value != "false") throw CLI::ValidationError("--sky", "sun_disc is true or false");
+      sky.sun_disc = value == "true";
+      continue;
+    }
+    double number = 0.0;
+    const char* end = value.data() + value.size();
+    if (value.empty() || std::from_chars(value.data(), end, number).ptr != end || !std::isfinite(number))
+      throw CLI::ValidationError("--sky", key + ": \"" + value + "\" is not a finite number");
+    const auto& settings = matrender::sky_settings();
+    const auto setting = std::find_if(settings.begin(), settings.end(), [&](const auto& s) { return s.key == key; });
+    if (key == "strength")
+      sky.strength = number;
+    else if (setting != settings.end())
+      sky.*(setting->field) = number * setting->unit;
+    else
+      throw CLI::ValidationError("--sky", "unknown key \"" + key + "\"");
+  }
+  if (const std::optional<std::string> problem = matrender::sky_problem(sky)) throw CLI::ValidationError("--sky", *problem);
+  return sky;
+}
+
 void require(bool ok, const std::string& option, const std::string& expectation) {
   if (!ok) throw CLI::ValidationError(option, "expected " + expectation);
 }
@@ -211,6 +247,16 @@ void add_scene_options(CLI::App& app, Options& o) {
       ->type_name("DEG")
       ->default_str("0")
       ->group(group);
+  std::string sky_keys = "sun_disc, strength";
+  for (const matrender::SkySetting& setting : matrender::sky_settings()) sky_keys += std::string(", ") + setting.key;
+  app.add_option_function<std::string>(
+         "--sky", [&o](const std::string& text) { o.sky = parse_sky(text); },
+         "light the scene with a daylight sky and sun, Blender 3.4's Sky Texture (Nishita), in place of the "
+         "background: \"default\" (the sun 15 degrees up towards +Y) or KEY=VALUE,... of " + sky_keys +
+             " (docs/scene_format.md, \"Sky\"); daylight is bright: add --exposure auto")
+      ->type_name("default|KEY=VALUE,...")
+      ->excludes("--environment")
+      ->group(group);
   app.add_flag("--list-objects", o.list_objects, "print the built-in object names and exit")->group(group);
   app.add_flag("--list-parameters", o.list_parameters,
                "print the material parameters scene files take (a markdown table) and exit")
@@ -359,14 +405,24 @@ void add_setting_options(CLI::App& app, Options& o, matrender::SettingScope scop
 void add_render_options(CLI::App& app, Options& o) {
   const std::string group = "Render (override the scene file's render block)";
   add_setting_options(app, o, matrender::SettingScope::Scene, group);
-  app.add_option_function<double>(
+  app.add_option_function<std::string>(
          "--exposure",
-         [&o](const double& stops) {
-           require(std::abs(stops) <= matbase::kMaxExposureStops, "--exposure",
-                   fmt::format("a number of stops in [{}, {}]", -matbase::kMaxExposureStops, matbase::kMaxExposureStops));
+         [&o](const std::string& text) {
+           if (text == "auto") {
+             o.exposure_auto = true;
+             return;
+           }
+           double stops = 0.0;
+           const char* end = text.data() + text.size();
+           const bool number = !text.empty() && std::from_chars(text.data(), end, stops).ptr == end;
+           require(number && std::abs(stops) <= matbase::kMaxExposureStops, "--exposure",
+                   fmt::format("\"auto\" or a number of stops in [{}, {}]", -matbase::kMaxExposureStops,
+                               matbase::kMaxExposureStops));
            o.exposure = stops;
          },
-         "display PNG exposure in stops")
+         "display PNG exposure in stops, or \"auto\": the grey-card rule (docs/make_dataset.md, \"Exposure\") for "
+         "a card at the objects' centre facing the camera, under the scene's lamps and world")
+      ->type_name("STOPS|auto")
       ->default_str("0")
       ->group(group);
   app.add_option_function<double>(
@@ -505,6 +561,7 @@ matrender::SceneOverrides scene_overrides(const Options& o) {
     environment.origin = Origin{"--environment", std::nullopt};
     overrides.environment = environment;
   }
+  if (o.sky) overrides.sky = matrender::SkyDescription{*o.sky, Origin{"--sky", std::nullopt}};
   if (o.environment_strength) overrides.environment_strength = {*o.environment_strength, "--environment-strength"};
   if (o.environment_rotation_deg)
     overrides.environment_rotation_z = {glm::radians(*o.environment_rotation_deg), "--environment-rotation"};

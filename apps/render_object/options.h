@@ -11,6 +11,7 @@
 #include "matrender/frame.h"
 #include "matrender/render.h"
 #include "matrender/scene_description.h"
+#include "matrender/sky.h"
 
 namespace CLI {
 class App;
@@ -34,6 +35,7 @@ struct Options {
   std::optional<matmaterial::LibraryMaterialSpec> material;  // every object in this library material
   int material_resolution = matrender::LibraryMaterialRequest::kDefaultLibraryResolution;
   std::optional<std::string> environment;  // replaces the scene's background
+  std::optional<matrender::NishitaSky> sky;  // replaces the scene's background
   std::optional<double> environment_strength;
   std::optional<double> environment_rotation_deg;
 
@@ -56,6 +58,7 @@ struct Options {
   std::optional<glm::dvec3> look_at;
   std::optional<double> fov_deg;
   std::optional<double> exposure;
+  bool exposure_auto = false;  // --exposure auto: metered by the grey-card rule
   std::optional<double> illuminance_lux;
   bool paper_powers = false;
 

@@ -79,6 +79,14 @@ json describe_lamp(const matrender::Lamp& light) {
 
 // The mesh in its one material, as cycles_render.py rebuilds them.
 // The material, with at most a base colour image file (on the mesh's UVs, when `with_uvs`).
+// The Sky Texture node's settings by their Blender names (cycles_render.py, blender_sky_probe.py).
+json sky_json(const matrender::NishitaSky& sky) {
+  return {{"sun_elevation", sky.sun_elevation}, {"sun_rotation", sky.sun_rotation}, {"sun_size", sky.sun_size},
+          {"sun_intensity", sky.sun_intensity}, {"sun_disc", sky.sun_disc},        {"altitude", sky.altitude},
+          {"air_density", sky.air_density},     {"dust_density", sky.dust_density}, {"ozone_density", sky.ozone_density},
+          {"strength", sky.strength}};
+}
+
 json describe_material(const CyclesScene& scene, bool with_uvs) {
   const matrender::Material& m = scene.material;
   // One texture is passed: a base colour image file under a white factor, on the mesh's UVs.
@@ -146,6 +154,8 @@ json describe(const CyclesScene& scene) {
                            {"width", c.width},
                            {"height", c.height}};
   description["background"] = {scene.background.r, scene.background.g, scene.background.b};
+  description["sky"] = nullptr;
+  if (scene.sky) description["sky"] = sky_json(*scene.sky);
   description["environment"] = nullptr;
   if (scene.environment)
     description["environment"] = {{"path", scene.environment->exr_path},
@@ -251,6 +261,27 @@ std::vector<UdimProbe> probe_udim_with_blender(const std::string& folder, const 
     result.push_back({name, glm::vec2(uv.at(0), uv.at(1)), glm::vec3(rgb.at(0), rgb.at(1), rgb.at(2))});
   }
   return result;
+}
+
+SkyProbe probe_sky_with_blender(const matrender::NishitaSky& sky, int width, const std::string& folder,
+                                const std::string& blender) {
+  std::filesystem::create_directories(folder);
+  const std::string sky_path = folder + "/sky.json", directions_path = folder + "/directions.exr",
+                    radiance_path = folder + "/sky.exr";
+  json description = sky_json(sky);
+  description["width"] = width;
+  std::ofstream(sky_path) << description.dump(2);
+  run_blender_script(blender, MATPREDICT_SKY_PROBE_SCRIPT, {sky_path, directions_path, radiance_path},
+                     folder + "/blender.log", "Blender's sky probe failed");
+  const std::vector<float> encoded = read_rgb_exr(directions_path, width, width / 2);
+  const std::vector<float> radiance = read_rgb_exr(radiance_path, width, width / 2);
+  SkyProbe probe;
+  for (size_t i = 0; i < encoded.size(); i += 3) {
+    // The script's world shows (d + 1) / 2.
+    probe.directions.push_back(glm::normalize(2.0 * glm::dvec3(encoded[i], encoded[i + 1], encoded[i + 2]) - 1.0));
+    probe.radiance.emplace_back(radiance[i], radiance[i + 1], radiance[i + 2]);
+  }
+  return probe;
 }
 
 std::vector<float> read_rgb_exr(const std::string& path, int width, int height) {

@@ -22,6 +22,7 @@
 #include "matrender/render.h"
 #include "matrender/scene.h"
 #include "matrender/scene_file.h"
+#include "matrender/sky.h"
 #include "test_scenes.h"
 #include "texture/negative_radiance.h"
 #include "uniform_floats.h"
@@ -129,6 +130,13 @@ TEST_CASE("A Z rotation looks the map up along R_z(angle) d, as a Mapping node's
   }
 }
 
+TexturePtr hazy_sky_map() {
+  matrender::NishitaSky sky;
+  sky.sun_elevation = 5.0 * matbase::kPi / 180.0;
+  sky.dust_density = 6.0;
+  return matrender::sky_lighting(sky, 256).map.image;
+}
+
 TEST_CASE("Environment sampling fits its pdf (chi-square), and the pdf covers every lit direction", "[render]") {
   struct Case {
     const char* name;
@@ -146,6 +154,8 @@ TEST_CASE("Environment sampling fits its pdf (chi-square), and the pdf covers ev
       // A real map with its sun in it: blender-data's sunrise, 1024 x 512, peaking at 33,664
       // against a mean of 0.47.
       {"sunrise", Texture::load_radiance(builtin_environment_path("sunrise"), ColorSpace::NonColor), 0.0},
+      // A Nishita sky baked for a low sun in haze: its bright aureole on a black ground.
+      {"hazy sky", hazy_sky_map(), 0.0},
   };
   constexpr int kBinsU = 64, kBinsV = 32, kSamples = 1000000;
   const double significance = 0.01 / static_cast<double>(cases.size());

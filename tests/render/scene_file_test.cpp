@@ -52,6 +52,9 @@ const Refusal kRefusals[] = {
     {"far_object", R"(/objects/1: after its transform, vertex [0-9]+ at .* lies beyond 65536 m of the origin.*)"},
     {"huge_scale", R"(/objects/0: after its transform, vertex [0-9]+ at .* lies beyond 65536 m of the origin.*)"},
     {"sun_angle", R"(/lights/0/angle_deg: expected a number from 0 to 179, got 180)"},
+    {"sky_elevation",
+     R"(/background/sky/sun_elevation_deg: sun_elevation_deg -5 is not in \[0, 90\] \(the sun's height above the horizon\))"},
+    {"sky_key", R"(/background/sky/turbidity: unknown key.*)"},
     {"tiny_radius",
      R"(/lights/0: its disk's area 3.14159e-60 m\^2 \(radius 1e-30 m\) is below the 1.17549e-38 single precision holds.*)"},
 };

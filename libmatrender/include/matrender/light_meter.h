@@ -39,6 +39,11 @@ class WorldIlluminance {
 constexpr double kGreyCardHeadroomStops = 1.0;
 double grey_card_stops(double lux);
 
+// The grey-card rule for one view: the card at `point` facing `viewer`, lit by `lamps` and
+// `background`.
+double grey_card_exposure(const std::vector<Lamp>& lamps, const Background& background, const glm::dvec3& point,
+                          const glm::dvec3& viewer);
+
 // The grey-card rule for one lighting: the card at the grid's centre facing each of its cameras
 // in turn, lit by `lamps` and `background`, its illuminance averaged over the views.
 double grey_card_exposure(const std::vector<Lamp>& lamps, const Background& background,

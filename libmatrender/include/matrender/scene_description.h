@@ -24,6 +24,7 @@
 #include "matrender/lamp.h"
 #include "matrender/material.h"
 #include "matrender/render.h"
+#include "matrender/sky.h"
 #include "matrender/texture.h"
 
 namespace matrender {
@@ -128,8 +129,14 @@ struct EnvironmentDescription {
   double rotation_z = 0.0;  // radians
   Origin origin;
 };
-// A uniform radiance or an environment map.
-using BackgroundDescription = std::variant<glm::vec3, EnvironmentDescription>;
+// World > Sky Texture (Nishita) on the Background's Color (matrender/sky.h); sky.strength is the
+// Background's Strength.
+struct SkyDescription {
+  NishitaSky sky;
+  Origin origin;
+};
+// A uniform radiance, an environment map or a sky.
+using BackgroundDescription = std::variant<glm::vec3, EnvironmentDescription, SkyDescription>;
 
 struct LookAtPlacement {
   glm::dvec3 position{0.0};

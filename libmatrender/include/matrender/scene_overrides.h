@@ -40,6 +40,7 @@ struct SceneOverrides {
   // An environment map in place of the background; its strength and turn about Z (radians),
   // which need a map: this one or the scene's.
   std::optional<EnvironmentDescription> environment;
+  std::optional<SkyDescription> sky;  // a sky in place of the background (no strength or turn applies)
   std::optional<Requested<double>> environment_strength;
   std::optional<Requested<double>> environment_rotation_z;
 

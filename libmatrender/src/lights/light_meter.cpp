@@ -94,17 +94,30 @@ double grey_card_stops(double lux) {
   return std::clamp(stops, -matbase::kMaxExposureStops, matbase::kMaxExposureStops);
 }
 
+namespace {
+
+// The card at `point` facing `viewer`.
+double card_lux(const std::vector<Lamp>& lamps, const WorldIlluminance& world, const glm::dvec3& point,
+                const glm::dvec3& viewer) {
+  const glm::dvec3 normal = glm::normalize(viewer - point);
+  double lux = world.lux(normal);
+  for (const Lamp& lamp : lamps) lux += lamp_card_illuminance_lux(lamp, point, normal);
+  return lux;
+}
+
+}  // namespace
+
+double grey_card_exposure(const std::vector<Lamp>& lamps, const Background& background, const glm::dvec3& point,
+                          const glm::dvec3& viewer) {
+  return grey_card_stops(card_lux(lamps, WorldIlluminance(background), point, viewer));
+}
+
 double grey_card_exposure(const std::vector<Lamp>& lamps, const Background& background,
                           const matgeom::CameraGridSpec& grid) {
   const WorldIlluminance world(background);
   double lux = 0.0;
   const std::vector<matgeom::GridCamera> cameras = matgeom::camera_grid(grid);
-  for (const matgeom::GridCamera& camera : cameras) {
-    const glm::dvec3 normal = glm::normalize(camera.position - grid.center);
-    double card = world.lux(normal);
-    for (const Lamp& lamp : lamps) card += lamp_card_illuminance_lux(lamp, grid.center, normal);
-    lux += card;
-  }
+  for (const matgeom::GridCamera& camera : cameras) lux += card_lux(lamps, world, grid.center, camera.position);
   return grey_card_stops(lux / static_cast<double>(cameras.size()));
 }
 

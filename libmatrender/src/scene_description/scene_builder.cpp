@@ -176,16 +176,30 @@ std::string frame_stem(const CameraDescription& camera) {
   return grid ? view_name(grid->i, grid->j) : "view";
 }
 
-Background load_background(const BackgroundDescription& description, EnvironmentImages* images = nullptr) {
+// The world of `description`; a sky's sun is added to the lamps (matrender/sky.h).
+void add_world(const BackgroundDescription& description, BuiltScene& built, EnvironmentImages* images = nullptr) {
+  if (const auto* sky = std::get_if<SkyDescription>(&description)) {
+    try {
+      const SkyLighting lighting = sky_lighting(sky->sky);
+      built.scene.set_background(lighting.map);
+      if (lighting.sun) built.scene.add_lamp(*lighting.sun);
+    } catch (const std::invalid_argument& e) {
+      throw sky->origin.error("/sky", e.what());
+    }
+    return;
+  }
   const auto* environment = std::get_if<EnvironmentDescription>(&description);
-  if (!environment) return std::get<glm::vec3>(description);
+  if (!environment) {
+    built.scene.set_background(std::get<glm::vec3>(description));
+    return;
+  }
   try {
     const ColorSpace space = environment->color_space ? *environment->color_space
                                                       : blender_default_color_space(environment->path);
     const std::string key = environment->path + (space == ColorSpace::SRGB ? " (sRGB)" : "");
     TexturePtr image = images && images->count(key) ? images->at(key) : Texture::load_radiance(environment->path, space);
     if (images) images->emplace(key, image);
-    return EnvironmentMap{image, environment->strength, environment->rotation_z};
+    built.scene.set_background(EnvironmentMap{image, environment->strength, environment->rotation_z});
   } catch (const std::exception& e) {
     throw environment->origin.error("/environment", e.what());
   }
@@ -198,7 +212,7 @@ void set_scene_lighting(BuiltScene& built, const LightsDescription& lights, cons
   built.scene.clear_lamps();
   built.rig.reset();
   add_lights(lights, built);
-  built.scene.set_background(load_background(background, images));
+  add_world(background, built, images);
 }
 
 BuiltScene build_scene(const SceneDescription& description, const std::atomic<bool>* cancel) {
@@ -221,7 +235,7 @@ BuiltScene build_scene(const SceneDescription& description, const std::atomic<bo
     built.object_surfaces.push_back(std::move(assets[k].mesh));
   }
   add_lights(description.lights, built);
-  built.scene.set_background(load_background(description.background));
+  add_world(description.background, built);
   built.centroid = matgeom::surface_centroid(surface);
   built.camera = scene_camera(description.camera, built);
   built.frame_stem = frame_stem(description.camera);

@@ -170,9 +170,32 @@ LightsDescription read_lights(const DocumentNode& node) {
   return lights;
 }
 
-// [r, g, b], or {"environment": path, "strength", "rotation_z_deg", "color_space"}.
+// {"sky": {"sun_elevation_deg": 30, ...}, "strength": s}: the keys of sky_settings() and sun_disc,
+// each checked against its range where it is read.
+SkyDescription read_sky(const DocumentNode& node) {
+  node.expect_keys({"sky", "strength"});
+  const DocumentNode settings = node.required("sky");
+  if (!settings.is_mapping()) settings.fail_expected("a mapping of the sky's settings");
+  std::vector<const char*> keys = {"sun_disc"};
+  for (const SkySetting& setting : sky_settings()) keys.push_back(setting.key);
+  settings.expect_keys(keys);
+  SkyDescription description;
+  description.origin = origin_of(node);
+  NishitaSky& sky = description.sky;
+  for (const SkySetting& setting : sky_settings())
+    if (auto value = settings.find(setting.key)) {
+      sky.*setting.field = value->number() * setting.unit;
+      if (const std::optional<std::string> problem = sky_problem(sky)) value->fail(*problem);
+    }
+  if (auto disc = settings.find("sun_disc")) sky.sun_disc = disc->boolean();
+  if (auto strength = node.find("strength")) sky.strength = strength->non_negative();
+  return description;
+}
+
+// [r, g, b], {"environment": path, "strength", "rotation_z_deg", "color_space"}, or a sky.
 BackgroundDescription read_background(const DocumentNode& node, const fs::path& folder) {
   if (!node.is_mapping()) return glm::vec3(read_color(node));
+  if (node.has("sky")) return read_sky(node);
   node.expect_keys({"environment", "strength", "rotation_z_deg", "color_space"});
   EnvironmentDescription environment;
   const DocumentNode file = node.required("environment");

@@ -50,6 +50,7 @@ void apply_lights(const SceneOverrides& o, LightsDescription& lights) {
 
 void apply_background(const SceneOverrides& o, BackgroundDescription& background) {
   if (o.environment) background = *o.environment;
+  if (o.sky) background = *o.sky;
   if (!o.environment_strength && !o.environment_rotation_z) return;
   auto* environment = std::get_if<EnvironmentDescription>(&background);
   if (!environment)

@@ -14,6 +14,7 @@
 #include "matrender/camera.h"
 #include "matrender/lamp.h"
 #include "matrender/material.h"
+#include "matrender/sky.h"
 
 namespace shaders_ref {
 
@@ -58,6 +59,7 @@ struct CyclesScene {
   matrender::Camera camera;
   glm::vec3 background{0.0f};
   std::optional<CyclesEnvironment> environment;  // replaces the background
+  std::optional<matrender::NishitaSky> sky;       // a Sky Texture (Nishita) instead
   float shadow_terminator_geometry_offset = 0.1f;  // Cycles' default, as matrender::MeshOptions
   CyclesBounces bounces;
   CyclesSettings settings = CyclesSettings::Parity;
@@ -114,6 +116,17 @@ struct UdimProbe {
 // Renders shaders_ref/blender_udim_probe.py's quads; the tiles are left in `folder` as
 // probe.<UDIM>.png. Throws std::runtime_error naming Blender's log on failure.
 std::vector<UdimProbe> probe_udim_with_blender(const std::string& folder, const std::string& blender = "blender");
+
+// Blender's Sky Texture (Nishita) of `sky` as Cycles shows it as a World, seen by an
+// equirectangular camera of width x width / 2 pixels (shaders_ref/blender_sky_probe.py): per pixel,
+// row 0 at the top, the direction Cycles looked along and the linear RGB it found there (without
+// the Background's strength). Works in `folder`; throws std::runtime_error naming Blender's log.
+struct SkyProbe {
+  std::vector<glm::dvec3> directions;
+  std::vector<glm::dvec3> radiance;
+};
+SkyProbe probe_sky_with_blender(const matrender::NishitaSky& sky, int width, const std::string& folder,
+                                const std::string& blender = "blender");
 
 // Linear RGB of an EXR, row 0 at the top; throws if the size differs.
 std::vector<float> read_rgb_exr(const std::string& path, int width, int height);
