@@ -33,7 +33,7 @@ def test_a_dict_makes_the_command_lines_dataset_byte_for_byte(tmp_path):
     assert summary["frames"] == 4 and summary["rendered"] == 4 and summary["skipped"] == 0
     assert summary["output"] == str(tmp_path / "python")
     assert set(summary["splits"]) == {"object_disjoint_v1", "variance_disjoint_v1", "material_disjoint_v1",
-                                      "paper_random_v1"}
+                                      "paper_random_v1", "lighting_disjoint_v1"}
     assert seen[-1] == (4, 4) and [d for d, _ in seen] == sorted(d for d, _ in seen)
     files = all_files(cli)
     assert files == all_files(tmp_path / "python") and len(files) > 20

@@ -107,3 +107,22 @@ def test_lamps_of_a_temperature_under_a_built_in_environment():
     assert (warm[..., 0] - warm[..., 2]).mean() > (cool[..., 0] - cool[..., 2]).mean() + 0.01
     with pytest.raises(matpredict.InputError, match=r"/lights/0/color/blackbody: expected a number from 800 to 12000, got 100"):
         matpredict.load_scene(scene({"blackbody": 100}, "night"))
+
+
+def test_a_daylight_sky_from_a_dict():
+    """A dict's background takes a sky as a scene file's: a sun near the horizon lights the vase
+    redder than a high one; a sun below the horizon is refused at its place."""
+    def scene(elevation):
+        description = vase_scene([0.9, -0.9, 0.45], 0.5, [0.7, 0.7, 0.7], "night")
+        description["lights"] = []
+        description["background"] = {"sky": {"sun_elevation_deg": elevation, "sun_rotation_deg": 135}, "strength": 0.02}
+        description["render"] = {"spp": 8}
+        return description
+    high = matpredict.render(matpredict.load_scene(scene(60)), threads=2)["color"]
+    low = matpredict.render(matpredict.load_scene(scene(3)), threads=2)["color"]
+    assert np.isfinite(high).all() and np.isfinite(low).all()
+    lit = high.sum(axis=-1) > 0
+    redness = lambda image: image[lit][:, 0].sum() / image[lit][:, 2].sum()
+    assert redness(low) > 1.2 * redness(high)
+    with pytest.raises(matpredict.InputError, match=r"/background/sky/sun_elevation_deg: sun_elevation_deg -2 is not in \[0, 90\]"):
+        matpredict.load_scene(scene(-2))
