@@ -557,8 +557,8 @@ TEST_CASE("Every frame under varied light renders again from its records: render
       const nlohmann::json transforms = nlohmann::json::parse(text_of(entry.path()));
       for (const nlohmann::json& frame : transforms["frames"]) setups.insert(frame["lighting"]["setup"].get<std::string>());
     }
-  CHECK(setups.size() == 4);
-  for (const char* setup : {"rig", "environment", "city_sun", "spot+area+point"}) CHECK(setups.count(setup) == 1);
+  CHECK(setups.size() == 5);
+  for (const char* setup : {"rig", "environment", "city_sun", "spot+area+point", "sky"}) CHECK(setups.count(setup) == 1);
   const std::string missing = std::string(MATPREDICT_RENDER_OBJECT) + " --dataset-frame " +
                               (lit_dataset() / "vase" / "var000" / "999").string() + " > /dev/null 2>&1";
   const int status = std::system(missing.c_str());
@@ -621,7 +621,7 @@ TEST_CASE("The lighting split holds lighting out: no environment image and no la
       REQUIRE(lighting_of.count(id) == 1);
       splits_of[lighting_of[id]].insert(name);
     }
-  // Four setups, the second with four images: seven lightings, of which the draws use several.
+  // Five setups, the second with four images: eight lightings, of which the draws use several.
   CHECK(splits_of.size() >= 4);
   for (const auto& [lighting, names] : splits_of) {
     INFO(lighting);

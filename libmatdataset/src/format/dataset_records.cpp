@@ -60,8 +60,9 @@ void write_transforms(const fs::path& variant_folder, const CameraIntrinsics& k,
     entry["rotation"] = kPlaceholderRotation;
     const ordered_json lighting = frame.lighting_json.empty() ? ordered_json() : ordered_json::parse(frame.lighting_json);
     // The repository's key for the frame's environment map: the image, when one lights it.
-    const bool environment = lighting.is_object() && lighting["background"].is_object();
-    entry["envmap"] = environment ? lighting["background"]["environment"] : ordered_json(nullptr);
+    const bool environment = lighting.is_object() && lighting.contains("background") &&
+                             lighting.at("background").is_object() && lighting.at("background").contains("environment");
+    entry["envmap"] = environment ? lighting.at("background").at("environment") : ordered_json(nullptr);
     entry["transform_matrix"] = frame.camera_to_world;
     if (!lighting.is_null()) entry["lighting"] = lighting;
     json["frames"].push_back(std::move(entry));

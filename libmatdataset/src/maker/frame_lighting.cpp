@@ -5,6 +5,7 @@
 
 #include "matbase/pi.h"
 #include "matdataset/maker/seed_stream.h"
+#include "matrender/sky.h"
 
 namespace matdataset {
 namespace {
@@ -158,6 +159,16 @@ FrameLighting draw_frame_lighting(const LightingConfig& lighting, uint64_t seed,
                          {"strength", strength},
                          {"rotation_z_deg", rotation}};
     result.background_visible = environment.visible;
+  }
+  if (setup.sky) {
+    const SkySetup& sky = *setup.sky;
+    ordered_json settings = ordered_json::object();
+    for (const matrender::SkySetting& setting : matrender::sky_settings())
+      if (const auto given = sky.settings.find(setting.key); given != sky.settings.end())
+        settings[setting.key] = draw(given->second, draws);
+    settings["sun_disc"] = sky.sun_disc;
+    result.background = {{"sky", settings}, {"strength", draw(sky.strength, draws)}};
+    result.background_visible = sky.visible;
   }
   for (const LampGroup& group : setup.lamps) add_group(group, bounds, draws, result.lights);
   return result;

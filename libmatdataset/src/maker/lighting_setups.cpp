@@ -9,6 +9,7 @@
 #include "matrender/blackbody.h"
 #include "matrender/builtin_environments.h"
 #include "matrender/lamp.h"
+#include "matrender/sky.h"
 
 namespace matdataset {
 namespace {
@@ -169,21 +170,42 @@ LampGroup read_lamp_group(const DocumentNode& node) {
   return group;
 }
 
+// The scene file's sky keys (matrender::sky_settings, each in its range) as values or ranges.
+SkySetup read_sky(const DocumentNode& node) {
+  std::vector<const char*> keys = {"sun_disc", "strength", "visible"};
+  for (const matrender::SkySetting& setting : matrender::sky_settings()) keys.push_back(setting.key);
+  node.expect_keys(keys);
+  SkySetup sky;
+  for (const matrender::SkySetting& setting : matrender::sky_settings())
+    if (const auto n = node.find(setting.key))
+      sky.settings[setting.key] = read_drawn(*n, setting.low, setting.high, false, setting.low_open);
+  if (const auto n = node.find("sun_disc")) sky.sun_disc = n->boolean();
+  if (const auto n = node.find("strength")) sky.strength = read_drawn(*n, 0.0, kMaxPower, true, true);
+  if (const auto n = node.find("visible")) sky.visible = n->boolean();
+  return sky;
+}
+
 LightingSetup read_setup(const DocumentNode& node, const fs::path& base) {
-  node.expect_keys({"name", "weight", "rig", "environment", "lamps"});
+  node.expect_keys({"name", "weight", "rig", "environment", "sky", "lamps"});
   LightingSetup setup;
   if (const auto n = node.find("rig")) setup.rig = n->is_word("paper") ? RigSetup{} : read_rig(*n);
   if (const auto n = node.find("environment")) setup.environment = read_environment(*n, base);
+  if (const auto n = node.find("sky")) {
+    if (setup.environment) n->fail("a setup has one world: an environment or a sky, not both");
+    setup.sky = read_sky(*n);
+  }
   if (const auto n = node.find("lamps"))
     for (const DocumentNode& group : n->items("a list of lamp groups")) setup.lamps.push_back(read_lamp_group(group));
   // A scene file's lights are the rig or a list of lamps (docs/scene_format.md), as a frame records them.
   if (setup.rig && !setup.lamps.empty())
-    node.required("lamps").fail("the rig lights alone (or with an environment): put these lamps in a setup of their own");
-  if (!setup.rig && !setup.environment && setup.lamps.empty())
-    node.fail("a setup with no light: give it a rig, an environment or lamps");
+    node.required("lamps").fail(
+        "the rig lights alone (or with an environment or a sky): put these lamps in a setup of their own");
+  if (!setup.rig && !setup.environment && !setup.sky && setup.lamps.empty())
+    node.fail("a setup with no light: give it a rig, an environment, a sky or lamps");
   std::vector<std::string> parts;
   if (setup.rig) parts.push_back("rig");
   if (setup.environment) parts.push_back("environment");
+  if (setup.sky) parts.push_back("sky");
   for (const LampGroup& group : setup.lamps)
     if (std::find(parts.begin(), parts.end(), lamp_kind_name(group.kind)) == parts.end())
       parts.push_back(lamp_kind_name(group.kind));
@@ -201,13 +223,13 @@ LightingSetup read_setup(const DocumentNode& node, const fs::path& base) {
 bool lights_every_frame_alike(const LightingConfig& lighting) {
   if (lighting.setups.size() != 1) return false;
   const LightingSetup& setup = lighting.setups.front();
-  return setup.rig && !setup.environment && setup.lamps.empty() &&
+  return setup.rig && !setup.environment && !setup.sky && setup.lamps.empty() &&
          (!setup.rig->illuminance_lux || setup.rig->illuminance_lux->low == setup.rig->illuminance_lux->high);
 }
 
 bool any_background_visible(const LightingConfig& lighting) {
   for (const LightingSetup& setup : lighting.setups)
-    if (setup.environment && setup.environment->visible) return true;
+    if ((setup.environment && setup.environment->visible) || (setup.sky && setup.sky->visible)) return true;
   return false;
 }
 

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -196,6 +197,34 @@ TEST_CASE("Every frame's lighting reads back as a scene file's lights and backgr
   CHECK(images.size() == 3);
 }
 
+TEST_CASE("A sky setup draws its settings within their ranges and reads back as a scene file's sky", "[dataset]") {
+  const DatasetConfig config = read(R"(lights:
+  setups:
+    - {sky: {sun_elevation_deg: [10, 40], dust: [1, 3], sun_disc: false, strength: [0.1, 1]}, lamps: [{type: point}]}
+)");
+  std::set<double> elevations;
+  for (size_t view = 0; view < 20; ++view) {
+    const FrameLighting lighting = draw(config, 0, 0, view);
+    CHECK(lighting.setup == "sky+point");
+    CHECK_FALSE(lighting.background_visible);
+    const matrender::SceneLighting scene =
+        matrender::read_lighting_text(matdataset::scene_lighting_json(lighting).dump(), "frame", ".");
+    const auto& sky = std::get<matrender::SkyDescription>(scene.background).sky;
+    CHECK(sky.sun_elevation >= glm::radians(10.0) - 1e-12);
+    CHECK(sky.sun_elevation <= glm::radians(40.0) + 1e-12);
+    CHECK(sky.dust_density >= 1.0);
+    CHECK(sky.dust_density <= 3.0);
+    CHECK_FALSE(sky.sun_disc);
+    CHECK(sky.strength >= 0.1);
+    CHECK(sky.strength <= 1.0);
+    // What the setup does not give keeps Blender's default.
+    CHECK(sky.air_density == 1.0);
+    CHECK(sky.sun_size == matrender::NishitaSky{}.sun_size);
+    elevations.insert(sky.sun_elevation);
+  }
+  CHECK(elevations.size() == 20);
+}
+
 TEST_CASE("Lighting keys are refused where they are read, naming the key and the value", "[dataset]") {
   CHECK_THAT(refusal("lights: {setups: [{rig: {illuminance_lux: [2000, 200]}}]}\n"),
              Catch::Contains("lights.setups.0.rig.illuminance_lux") && Catch::Contains("swap"));
@@ -221,6 +250,12 @@ TEST_CASE("Lighting keys are refused where they are read, naming the key and the
              Catch::Contains("lights.illuminance_lux"));
   CHECK_THAT(refusal("lights: {assign: per_frame, setups: [{rig: paper}]}\n"), Catch::Contains("lights.assign"));
   CHECK_THAT(refusal("lights: {setups: [{lamps: [{type: spot, count: 1.5}]}]}\n"), Catch::Contains("whole number"));
+  // A sky's sun below the horizon, a key the sky does not have, a sky and an environment at once.
+  CHECK_THAT(refusal("lights: {setups: [{sky: {sun_elevation_deg: [-5, 30]}}]}\n"),
+             Catch::Contains("lights.setups.0.sky.sun_elevation_deg.0") && Catch::Contains("-5"));
+  CHECK_THAT(refusal("lights: {setups: [{sky: {turbidity: 3}}]}\n"), Catch::Contains("lights.setups.0.sky.turbidity"));
+  CHECK_THAT(refusal("lights: {setups: [{environment: {images: forest}, sky: {}}]}\n"),
+             Catch::Contains("lights.setups.0.sky") && Catch::Contains("one world"));
   // Unnamed setups of the same parts are numbered.
   const DatasetConfig twins = read("lights: {setups: [{lamps: [{type: sun}]}, {lamps: [{type: sun}]}]}\n");
   CHECK(twins.lighting.setups[1].name == "sun_2");

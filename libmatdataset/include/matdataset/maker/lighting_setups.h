@@ -1,10 +1,11 @@
 #pragma once
 // make_dataset's lighting (docs/make_dataset.md, "Lighting"): a list of setups, each the paper's
-// rig, an environment map, groups of lamps (suns, spots, points, areas) or a mix, with every
+// rig, an environment map, a daylight sky, groups of lamps (suns, spots, points, areas) or a mix, with every
 // quantity a value or a range drawn for each frame, and the rule by which frames get them. What a
 // frame is drawn is frame_lighting.h's.
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -50,6 +51,16 @@ struct EnvironmentSetup {
   bool visible = false;
 };
 
+// A daylight sky and sun (matrender/sky.h) with any of its settings, by the scene file's keys
+// ("sun_elevation_deg", "dust", ...), a value or a range; those not given keep Blender's
+// defaults. Like an environment, seen by camera rays or not.
+struct SkySetup {
+  std::map<std::string, DrawnNumber> settings;
+  bool sun_disc = true;
+  DrawnNumber strength = DrawnNumber::value(1.0, true);
+  bool visible = false;
+};
+
 enum class LampKind { Sun, Spot, Point, Area };
 
 // `count` lamps of one kind, each placed on a shell about the object's bounding sphere (centre c,
@@ -76,6 +87,7 @@ struct LightingSetup {
   double weight = 1.0;  // the share of frames drawn under it
   std::optional<RigSetup> rig;
   std::optional<EnvironmentSetup> environment;
+  std::optional<SkySetup> sky;  // a world of its own: never with an environment
   std::vector<LampGroup> lamps;
 };
 
@@ -84,7 +96,7 @@ struct LightingSetup {
 enum class LightingAssignment { PerView, PerVariant, EverySetup };
 
 struct LightingConfig {
-  std::vector<LightingSetup> setups = {LightingSetup{"rig", 1.0, RigSetup{}, std::nullopt, {}}};
+  std::vector<LightingSetup> setups = {LightingSetup{"rig", 1.0, RigSetup{}, std::nullopt, std::nullopt, {}}};
   LightingAssignment assignment = LightingAssignment::PerView;
   // The frames each grid view is rendered in: the setups' count under EverySetup, else 1.
   size_t rounds() const { return assignment == LightingAssignment::EverySetup ? setups.size() : 1; }
@@ -100,7 +112,7 @@ LightingConfig read_lighting(const matbase::DocumentNode& lights, const std::fil
 // Whether every frame gets the same lighting: one setup, the rig alone at a fixed illuminance
 // (or the formula's powers).
 bool lights_every_frame_alike(const LightingConfig& lighting);
-// Whether any setup's environment is seen by camera rays.
+// Whether any setup's environment or sky is seen by camera rays.
 bool any_background_visible(const LightingConfig& lighting);
 
 // "sun", "spot", "point", "area".
