@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@
 #include "matdataset/format/dataset_folders.h"
 #include "matdataset/format/dataset_writer.h"
 #include "matdataset/format/decoded_image.h"
+#include "matdataset/maker/lighting_panorama.h"
 #include "matmaterial/material_classes.h"
 
 namespace matdataset {
@@ -38,7 +40,7 @@ struct Column {
   const char* folder;
   const char* extension;
 };
-constexpr std::array<Column, 10> kColumns = {{{"image", "images", ".png"},
+constexpr std::array<Column, 11> kColumns = {{{"image", "images", ".png"},
                                              {"albedo", "albedo", ".png"},
                                              {"roughness", "ORM", ".png"},
                                              {"metallic", "ORM", ".png"},
@@ -47,7 +49,10 @@ constexpr std::array<Column, 10> kColumns = {{{"image", "images", ".png"},
                                              {"normal (map)", "normal_mat", ".png"},
                                              {"depth", "depth", ".exr"},
                                              {"label", "label", ".png"},
-                                             {"samples", "sample_count", ".png"}}};
+                                             {"samples", "sample_count", ".png"},
+                                             {"lighting", "", ""}}};
+// The last column is drawn from transforms.json's record of the frame's lighting, not a map.
+constexpr size_t kLightingColumn = kColumns.size() - 1;
 
 // A heat map of t in [0, 1], dark purple (few) through red to pale yellow (many): five
 // display-encoded stops of matplotlib's "inferno", linearly interpolated.
@@ -94,7 +99,8 @@ std::vector<std::vector<Rgb>> draw_frame(const fs::path& variant, const std::str
   std::map<std::string, std::optional<Map>> maps;
   const bool sample_counts = fs::is_directory(variant / "sample_count");
   for (const Column& column : kColumns)
-    if (!maps.count(column.folder) && (sample_counts || std::string(column.folder) != "sample_count"))
+    if (*column.folder && !maps.count(column.folder) &&
+        (sample_counts || std::string(column.folder) != "sample_count"))
       maps[column.folder] = read_map(variant / column.folder / (stem + column.extension), w, h, damaged);
   const std::optional<Map>& label = maps.at("label");
   const std::optional<Map>& depth = maps.at("depth");
@@ -216,6 +222,7 @@ struct VariantSheet {
 // file for a list or size that is not there or not usable.
 struct FrameList {
   std::vector<std::string> stems;
+  std::vector<nlohmann::json> lighting;  // each frame's "lighting" record, or null
   int width = 0, height = 0;
 };
 FrameList read_frame_list(const fs::path& file) {
@@ -236,6 +243,7 @@ FrameList read_frame_list(const fs::path& file) {
       throw std::runtime_error(file.string() + ": a frame has no file_path");
     const std::string path = frame["file_path"].get<std::string>();
     list.stems.push_back(path.substr(path.rfind('/') + 1));
+    list.lighting.push_back(frame.value("lighting", nlohmann::json()));
   }
   if (list.stems.empty()) throw std::runtime_error(file.string() + ": lists no frame");
   return list;
@@ -264,6 +272,34 @@ void describe_variant(const nlohmann::json& metadata, VariantSheet& sheet) {
   }
 }
 
+// The object's bounding sphere, where metadata.json records it (provenance.lights.bounds).
+std::optional<matgeom::Sphere> lighting_bounds(const nlohmann::json& metadata) {
+  const nlohmann::json::json_pointer center("/provenance/lights/bounds/center"), radius("/provenance/lights/bounds/radius");
+  if (!metadata.contains(center) || !metadata.contains(radius) || !metadata[radius].is_number()) return std::nullopt;
+  const nlohmann::json& c = metadata[center];
+  if (!c.is_array() || c.size() != 3 || !c[0].is_number() || !c[1].is_number() || !c[2].is_number()) return std::nullopt;
+  return matgeom::Sphere{glm::dvec3(c[0].get<double>(), c[1].get<double>(), c[2].get<double>()), metadata[radius].get<double>()};
+}
+
+// The lighting column's cell: the frame's lighting panorama (lighting_panorama.h), twice as wide
+// as high, across the middle of a w x h cell of the background; the background alone for a frame
+// whose lighting is not recorded (the repository's datasets, the rig's before lighting setups).
+std::vector<Rgb> draw_lighting(const nlohmann::json& lighting, const std::optional<matgeom::Sphere>& bounds,
+                               const fs::path& variant, int w, int h, std::vector<std::string>& damaged) {
+  std::vector<Rgb> cell(static_cast<size_t>(w) * static_cast<size_t>(h), Rgb{kBackground, kBackground, kBackground});
+  if (!lighting.is_object() || !bounds) return cell;
+  const int band = std::max(1, std::min(h, w / 2)), top = (h - band) / 2;
+  try {
+    const std::vector<Rgb> panorama = draw_lighting_panorama(lighting, *bounds, variant, w, band);
+    std::copy(panorama.begin(), panorama.end(), cell.begin() + static_cast<std::ptrdiff_t>(top) * w);
+  } catch (const std::exception& e) {
+    damaged.push_back((variant / "transforms.json").string() + ": a frame's lighting: " + e.what());
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) cell[static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x)] = broken_tile(x, y);
+  }
+  return cell;
+}
+
 // Writes the variant's sheet into `out`; returns what the page says of it.
 VariantSheet write_sheet(const fs::path& variant, const fs::path& out, const PreviewOptions& options) {
   VariantSheet sheet;
@@ -274,9 +310,18 @@ VariantSheet write_sheet(const fs::path& variant, const fs::path& out, const Pre
   const std::vector<std::string>& stems = list.stems;
   sheet.frames = stems.size();
   const size_t rows = std::min<size_t>(stems.size(), static_cast<size_t>(options.views));
-  for (size_t r = 0; r < rows; ++r)
-    sheet.stems.push_back(stems[rows == 1 ? 0 : r * (stems.size() - 1) / (rows - 1)]);
-  if (fs::is_regular_file(variant / "metadata.json")) describe_variant(read_json(variant / "metadata.json"), sheet);
+  std::vector<const nlohmann::json*> lightings;
+  for (size_t r = 0; r < rows; ++r) {
+    const size_t frame = rows == 1 ? 0 : r * (stems.size() - 1) / (rows - 1);
+    sheet.stems.push_back(stems[frame]);
+    lightings.push_back(&list.lighting[frame]);
+  }
+  std::optional<matgeom::Sphere> bounds;
+  if (fs::is_regular_file(variant / "metadata.json")) {
+    const nlohmann::json metadata = read_json(variant / "metadata.json");
+    describe_variant(metadata, sheet);
+    bounds = lighting_bounds(metadata);
+  }
 
   const int w = list.width, h = list.height;
   const int cw = w >= h ? options.cell : std::max(1, options.cell * w / h);
@@ -286,8 +331,8 @@ VariantSheet write_sheet(const fs::path& variant, const fs::path& out, const Pre
   const int sheet_h = static_cast<int>(rows) * (ch + kGapPixels) + kGapPixels;
   std::vector<float> pixels(static_cast<size_t>(sheet_w) * static_cast<size_t>(sheet_h) * 3, kGap);
   for (size_t r = 0; r < rows; ++r) {
-    const std::vector<std::vector<Rgb>> columns =
-        draw_frame(variant, sheet.stems[r], w, h, sheet.max_samples, sheet.damaged);
+    std::vector<std::vector<Rgb>> columns = draw_frame(variant, sheet.stems[r], w, h, sheet.max_samples, sheet.damaged);
+    columns[kLightingColumn] = draw_lighting(*lightings[r], bounds, variant, w, h, sheet.damaged);
     for (size_t c = 0; c < columns.size(); ++c) {
       const std::vector<Rgb> cell = shrink(columns[c], w, h, cw, ch);
       const int ox = kGapPixels + static_cast<int>(c) * (cw + kGapPixels);

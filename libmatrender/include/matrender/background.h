@@ -21,4 +21,14 @@ struct EnvironmentMap {
 // A uniform radiance (black: no world light), or an environment map.
 using Background = std::variant<glm::vec3, EnvironmentMap>;
 
+// Cycles 3.4's equirectangular mapping of a unit direction d in the map's own frame to (u, v):
+// u = 0.5 - atan2(d.y, d.x) / (2 pi), v = 1 - acos(d.z) / pi (+X at the centre column, +Y a
+// quarter to its left, +Z at the top row), and its inverse.
+glm::vec2 equirectangular_uv(const glm::vec3& direction);
+glm::vec3 equirectangular_direction(glm::vec2 uv);
+
+// The radiance a ray leaving the scene along unit `direction` sees: the uniform colour, or the
+// map's bilinear lookup (docs/conventions.md, "Environment") times its strength.
+glm::vec3 background_radiance(const Background& background, const glm::vec3& direction);
+
 }  // namespace matrender

@@ -126,4 +126,13 @@ glm::vec3 EnvironmentLight::radiance(const glm::vec3& d) const {
   return strength_ * glm::vec3(image_->sample(equirectangular_uv(to_map(d))));
 }
 
+glm::vec3 background_radiance(const Background& background, const glm::vec3& direction) {
+  if (const auto* uniform = std::get_if<glm::vec3>(&background)) return *uniform;
+  const auto& map = std::get<EnvironmentMap>(background);
+  // Looked up along R_z(rotation) d, as EnvironmentLight::to_map turns it.
+  const float c = std::cos(static_cast<float>(map.rotation_z)), s = std::sin(static_cast<float>(map.rotation_z));
+  const glm::vec3 turned(c * direction.x - s * direction.y, s * direction.x + c * direction.y, direction.z);
+  return static_cast<float>(map.strength) * glm::vec3(map.image->sample(equirectangular_uv(turned)));
+}
+
 }  // namespace matrender

@@ -17,10 +17,6 @@
 
 namespace matrender {
 
-// The mapping above and its inverse, for unit directions in the map's own frame.
-glm::vec2 equirectangular_uv(const glm::vec3& direction);
-glm::vec3 equirectangular_direction(glm::vec2 uv);
-
 class EnvironmentLight {
  public:
   // Builds the sampling density: each texel weighs the integral of the bilinear lookup's channel
