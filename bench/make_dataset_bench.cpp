@@ -495,64 +495,40 @@ void print_frames_at(const std::vector<SeriesCurves>& series, const ErrorLevel& 
   }
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  CLI::App app{
-      "make_dataset_bench: frames per hour at the paper's settings, their error against a high-sample "
-      "reference, and the time and disk this projects for the paper-scale dataset, for each way of "
-      "rendering side by side (and Blender 3.4 Cycles with --cycles), as time to equal error"};
-  std::string config_file = MATPREDICT_PAPER_CONFIG;
-  // Wood, fabric (velvet), metal and glass (configs/paper.yaml's variants 6, 1, 3 and 13).
-  std::vector<std::string> objects = {"chair:6", "vase:3", "sofa:1", "bottle:13"};
-  // The adaptive series may take up to 4x the configuration's 128 samples, as Cycles does (CyclesOptions).
-  std::vector<std::string> mode_texts = {
-      "fixed:render.samples=32|64|128", "adaptive:render.noise_threshold=0.05|0.02|0.01|0.005,render.samples=512",
-      "adaptive+denoise:render.noise_threshold=0.05|0.02|0.01|0.005,render.samples=512,render.denoise=true"};
-  std::vector<std::string> set_texts;
+// What the command line asks for, the same for every lighting measured.
+struct Request {
+  std::string config_file;
+  std::vector<std::string> objects, mode_texts;
+  std::vector<Series> series;
+  std::vector<Mode> modes;  // every series' points, in order
   int views = 1, reference_frames = 4, reference_factor = 8, threads = 0;
   double target_percent = 1.6;
   CyclesOptions cycles;
   std::string images;
-  app.add_option("--config", config_file, "the configuration whose settings are measured")->capture_default_str();
-  app.add_option("--set", set_texts, "KEY=VALUE: set a key of the configuration for every mode and the reference");
-  app.add_option("--objects", objects, "objects of the configuration to render, NAME or NAME:VARIANT (default: the "
-                                       "object's index modulo its variants)")
-      ->capture_default_str();
-  app.add_option("--mode", mode_texts,
-                 "NAME or NAME:KEY=VALUE,...: a way of rendering, compared on the same frames; one VALUE may be "
-                 "v1|v2|..., a series of one point per value, listed by increasing cost")
-      ->capture_default_str();
-  app.add_option("--views", views, "views per object, spread over the grid")->capture_default_str()->check(CLI::Range(1, 64));
-  app.add_option("--reference-frames", reference_frames, "frames also rendered as a reference (the first ones)")
-      ->capture_default_str()
-      ->check(CLI::Range(0, 64));
-  app.add_option("--reference-factor", reference_factor, "the reference's samples and AO trials over the frame's")
-      ->capture_default_str()
-      ->check(CLI::Range(2, 256));
-  app.add_option("--target-error", target_percent,
-                 "image RMSE, % of the object's mean, on every frame: where the times to equal error and the "
-                 "paper-scale projection are read, beside the error the configuration's own sampling has on each")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  app.add_flag("--cycles", cycles.enabled, "also render the referenced frames with Blender 3.4 Cycles");
-  app.add_option("--blender", cycles.blender, "Blender 3.4 executable")->capture_default_str();
-  app.add_option("--cycles-thresholds", cycles.thresholds, "Cycles' noise thresholds, a render each, the loosest first")
-      ->capture_default_str()
-      ->check(CLI::Range(1e-6, 1.0));
-  app.add_option("--cycles-max-samples", cycles.max_samples, "Cycles' Max Samples under adaptive sampling")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 1 << 16));
-  app.add_option("--images", images, "folder for the converged references as PNGs (ours, and Cycles' with --cycles)");
-  app.add_option("--threads", threads, "render threads, 0 every hardware thread")->capture_default_str()->check(CLI::NonNegativeNumber);
-  CLI11_PARSE(app, argc, argv);
-  try {
-    std::vector<matdataset::Override> sets;
-    for (const std::string& text : set_texts) sets.push_back(parse_override(text, "--set"));
-    std::vector<Series> series;
-    for (const std::string& text : mode_texts) series.push_back(parse_series(text));
-    std::vector<Mode> modes;  // every series' points, in order
-    for (const Series& s : series) modes.insert(modes.end(), s.points.begin(), s.points.end());
+};
+
+// One lighting's curves, ours only, and the error its frames reach as configured (per frame):
+// what the lighting comparison reads.
+struct LightingCurves {
+  std::string name;
+  std::vector<SeriesCurves> series;
+  std::optional<ErrorLevel> as_configured;
+};
+
+// Measures every mode on the request's frames under the configuration with `sets`, references
+// included, and prints the tables; `name` heads them.
+LightingCurves measure_lighting(const Request& request, const std::vector<matdataset::Override>& sets,
+                                const std::string& name) {
+  const std::string& config_file = request.config_file;
+  const std::vector<Series>& series = request.series;
+  const std::vector<Mode>& modes = request.modes;
+  const std::vector<std::string>& mode_texts = request.mode_texts;
+  const CyclesOptions& cycles = request.cycles;
+  const int reference_factor = request.reference_factor, views = request.views,
+            reference_frames = request.reference_frames, threads = request.threads;
+  const std::vector<std::string>& objects = request.objects;
+  const double target_percent = request.target_percent;
+  const std::string& images = request.images;
     std::vector<matdataset::DatasetConfig> configs;
     for (const Mode& mode : modes) {
       std::vector<matdataset::Override> overrides = sets;
@@ -628,7 +604,7 @@ int main(int argc, char** argv) {
                config.render.material_resolution, setup_seconds / objects.size());
     print_points(modes, figures, scratch, cycles.thresholds, cycles_figures, paper, workers);
     fs::remove_all(scratch);
-    if (referenced == 0) return 0;
+    if (referenced == 0) return {name, {}, std::nullopt};
 
     std::vector<SeriesCurves> curves;
     for (size_t s = 0, first = 0; s < series.size(); first += series[s].points.size(), ++s) {
@@ -664,6 +640,114 @@ int main(int argc, char** argv) {
     if (cycles_curves) curves.push_back(*cycles_curves);
     print_projection(curves, {levels.begin(), levels.begin() + static_cast<std::ptrdiff_t>(projected)}, paper, workers);
     for (size_t l = 0; l < projected; ++l) print_frames_at(curves, levels[l], frame_names);
+    LightingCurves result{name, curves, std::nullopt};
+    if (configured < modes.size()) result.as_configured = levels[1];
+    return result;
+}
+
+// Under each lighting, the render seconds a frame each series needs to reach the error the first
+// lighting's frames have as configured (the rig's at 128 samples for paper.yaml), and their ratio
+// to the first lighting's: what a lighting costs at equal error.
+void print_lighting_costs(const std::vector<LightingCurves>& lightings) {
+  const LightingCurves& first = lightings.front();
+  if (!first.as_configured) return;
+  const ErrorLevel& level = *first.as_configured;
+  fmt::print("\nRender seconds a frame under each lighting to the image error {} reaches {} (mean over the "
+             "frames, each at its own error under {}), and over {}'s:\n\n| lighting |",
+             first.name, level.label, first.name, first.name);
+  std::string rule = "|---|";
+  for (const SeriesCurves& s : first.series) fmt::print(" {0} | {0} / {1} |", s.name, first.name), rule += "---:|---:|";
+  fmt::print("\n{}\n", rule);
+  for (const LightingCurves& lighting : lightings) {
+    fmt::print("| {} |", lighting.name);
+    for (size_t k = 0; k < first.series.size(); ++k) {
+      const std::optional<Reach> base = mean_reach(first.series[k], level);
+      const std::optional<Reach> here =
+          k < lighting.series.size() ? mean_reach(lighting.series[k], level) : std::optional<Reach>();
+      fmt::print(" {} | {} |", reach_text(here), ratio_text(here, base));
+    }
+    fmt::print("\n");
+  }
+}
+
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "make_dataset_bench: frames per hour at the paper's settings, their error against a high-sample "
+      "reference, and the time and disk this projects for the paper-scale dataset, for each way of "
+      "rendering side by side (and Blender 3.4 Cycles with --cycles), as time to equal error"};
+  std::string config_file = MATPREDICT_PAPER_CONFIG;
+  // Wood, fabric (velvet), metal and glass (configs/paper.yaml's variants 6, 1, 3 and 13).
+  std::vector<std::string> objects = {"chair:6", "vase:3", "sofa:1", "bottle:13"};
+  // The adaptive series may take up to 4x the configuration's 128 samples, as Cycles does (CyclesOptions).
+  std::vector<std::string> mode_texts = {
+      "fixed:render.samples=32|64|128", "adaptive:render.noise_threshold=0.05|0.02|0.01|0.005,render.samples=512",
+      "adaptive+denoise:render.noise_threshold=0.05|0.02|0.01|0.005,render.samples=512,render.denoise=true"};
+  std::vector<std::string> set_texts, lighting_texts;
+  int views = 1, reference_frames = 4, reference_factor = 8, threads = 0;
+  double target_percent = 1.6;
+  CyclesOptions cycles;
+  std::string images;
+  app.add_option("--config", config_file, "the configuration whose settings are measured")->capture_default_str();
+  app.add_option("--set", set_texts, "KEY=VALUE: set a key of the configuration for every mode and the reference");
+  app.add_option("--objects", objects, "objects of the configuration to render, NAME or NAME:VARIANT (default: the "
+                                       "object's index modulo its variants)")
+      ->capture_default_str();
+  app.add_option("--mode", mode_texts,
+                 "NAME or NAME:KEY=VALUE,...: a way of rendering, compared on the same frames; one VALUE may be "
+                 "v1|v2|..., a series of one point per value, listed by increasing cost")
+      ->capture_default_str();
+  app.add_option("--views", views, "views per object, spread over the grid")->capture_default_str()->check(CLI::Range(1, 64));
+  app.add_option("--reference-frames", reference_frames, "frames also rendered as a reference (the first ones)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 64));
+  app.add_option("--reference-factor", reference_factor, "the reference's samples and AO trials over the frame's")
+      ->capture_default_str()
+      ->check(CLI::Range(2, 256));
+  app.add_option("--target-error", target_percent,
+                 "image RMSE, % of the object's mean, on every frame: where the times to equal error and the "
+                 "paper-scale projection are read, beside the error the configuration's own sampling has on each")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  app.add_option("--lighting", lighting_texts,
+                 "NAME=YAML: a `lights` value (docs/make_dataset.md, \"Lighting\"); every mode is measured under each "
+                 "in turn, references included, and a last table gives each lighting's render seconds to the error "
+                 "the first one's frames have as configured, over the first one's");
+  app.add_flag("--cycles", cycles.enabled, "also render the referenced frames with Blender 3.4 Cycles");
+  app.add_option("--blender", cycles.blender, "Blender 3.4 executable")->capture_default_str();
+  app.add_option("--cycles-thresholds", cycles.thresholds, "Cycles' noise thresholds, a render each, the loosest first")
+      ->capture_default_str()
+      ->check(CLI::Range(1e-6, 1.0));
+  app.add_option("--cycles-max-samples", cycles.max_samples, "Cycles' Max Samples under adaptive sampling")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1 << 16));
+  app.add_option("--images", images, "folder for the converged references as PNGs (ours, and Cycles' with --cycles)");
+  app.add_option("--threads", threads, "render threads, 0 every hardware thread")->capture_default_str()->check(CLI::NonNegativeNumber);
+  CLI11_PARSE(app, argc, argv);
+  try {
+    std::vector<matdataset::Override> sets;
+    for (const std::string& text : set_texts) sets.push_back(parse_override(text, "--set"));
+    std::vector<Series> series;
+    for (const std::string& text : mode_texts) series.push_back(parse_series(text));
+    std::vector<Mode> modes;
+    for (const Series& s : series) modes.insert(modes.end(), s.points.begin(), s.points.end());
+    Request request{config_file, objects, mode_texts, series, modes, views, reference_frames, reference_factor,
+                    threads, target_percent, cycles, images};
+    if (lighting_texts.empty()) {
+      measure_lighting(request, sets, "the configuration's lighting");
+      return 0;
+    }
+    std::vector<LightingCurves> lightings;
+    for (const std::string& text : lighting_texts) {
+      const matdataset::Override lighting = parse_override(text, "--lighting");
+      std::vector<matdataset::Override> lit = sets;
+      lit.push_back({"lights", lighting.value, "--lighting " + lighting.key});
+      fmt::print("\n## Lighting {}: {}\n\n", lighting.key, lighting.value);
+      lightings.push_back(measure_lighting(request, lit, lighting.key));
+    }
+    print_lighting_costs(lightings);
     return 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "make_dataset_bench: %s\n", e.what());

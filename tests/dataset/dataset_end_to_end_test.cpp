@@ -530,7 +530,7 @@ TEST_CASE("Every frame under varied light renders again from its records: render
           "the dataset's image",
           "[dataset]") {
   const std::vector<fs::path> images = lit_images();
-  REQUIRE(images.size() == 24);
+  REQUIRE(images.size() == 36);
   std::set<std::string> setups;
   for (size_t k = 0; k < images.size(); ++k) {
     const fs::path again = fs::temp_directory_path() / "matpredict_lit_again" / std::to_string(k);
@@ -609,10 +609,10 @@ TEST_CASE("The lighting split holds lighting out: no environment image and no la
                                                                : "image " + frame["envmap"].dump();
       }
     }
-  REQUIRE(lighting_of.size() == 24);
+  REQUIRE(lighting_of.size() == 36);
   const matdataset::SplitFile split = matdataset::read_split_file(lit_dataset() / "config" / "lighting_disjoint_v1.yaml");
   CHECK(split.strategy == "lighting_disjoint");
-  CHECK(split.train.size() + split.val.size() + split.test.size() == 24);
+  CHECK(split.train.size() + split.val.size() + split.test.size() == 36);
   CHECK(!split.train.empty());
   CHECK(!split.test.empty());
   std::map<std::string, std::set<std::string>> splits_of;
@@ -627,4 +627,28 @@ TEST_CASE("The lighting split holds lighting out: no environment image and no la
     INFO(lighting);
     CHECK(names.size() == 1);
   }
+}
+
+TEST_CASE("A list of UV scales makes a variant per scale: each recorded, each with its own texture scale", "[dataset]") {
+  // The mug: wood then metal, each at scales 0.5 and 2 (var000 to var003).
+  const std::vector<double> scales = {0.5, 2.0, 0.5, 2.0};
+  for (size_t v = 0; v < scales.size(); ++v) {
+    const fs::path variant = lit_dataset() / "mug" / ("var00" + std::to_string(v));
+    const nlohmann::json metadata = nlohmann::json::parse(text_of(variant / "metadata.json"));
+    CHECK(metadata["provenance"]["object"]["source"]["uv_scale"].get<double>() == scales[v]);
+  }
+  // The same view of the same wood at the two scales: the grain repeats four times as often at
+  // 2 (four times the texels per metre) as at 0.5, so the albedo differs over much of the mug.
+  const matbase::FloatImage coarse = matdataset::decode(lit_dataset() / "mug" / "var000" / "albedo" / "002.png");
+  const matbase::FloatImage fine = matdataset::decode(lit_dataset() / "mug" / "var001" / "albedo" / "002.png");
+  REQUIRE(coarse.width == fine.width);
+  int covered = 0, differing = 0;
+  for (int y = 0; y < coarse.height; ++y)
+    for (int x = 0; x < coarse.width; ++x) {
+      if (coarse.at(x, y, 3) < 1.0f || fine.at(x, y, 3) < 1.0f) continue;
+      ++covered;
+      differing += std::abs(coarse.at(x, y, 0) - fine.at(x, y, 0)) > 2.0f / 255.0f;
+    }
+  REQUIRE(covered > 50);
+  CHECK(differing > covered / 4);
 }

@@ -119,7 +119,7 @@ std::vector<std::string> check_before_writing(const DatasetConfig& config) {
                        ".uv_pass: never, but the mesh has no texture coordinates, so each material would show one "
                        "texel of its maps; use when_missing (the default) to give it the paper's UV pass");
     // A scale of the UV pass's density needs the pass to run.
-    if (object.uv_scale != 1.0 && object.uv_pass == matrender::UvPassMode::WhenMissing && !asset.mesh.uvs.empty())
+    if (object.uv_scales != std::vector<double>{1.0} && object.uv_pass == matrender::UvPassMode::WhenMissing && !asset.mesh.uvs.empty())
       throw matbase::InputError(config.source + ": " + object_key(o) +
                                 ".uv_scale: the mesh has texture coordinates of its own, so the UV pass does not run "
                                 "(uv_pass: when_missing) and there is no texel density to scale; use uv_pass: always");

@@ -263,7 +263,15 @@ ObjectConfig read_object(const DocumentNode& v, const std::optional<DocumentNode
     object.uv_pass = kModes[uv_pass->choice({"never", "when_missing", "always"})];
   }
   if (const std::optional<DocumentNode> scale = v.find("uv_scale")) {
-    object.uv_scale = scale->number_in(matrender::kMinUvScale, matrender::kMaxUvScale);
+    object.uv_scales.clear();
+    for (const DocumentNode& item : scale->is_list() ? scale->items("a scale or a list of scales")
+                                                     : std::vector<DocumentNode>{*scale}) {
+      const double s = item.number_in(matrender::kMinUvScale, matrender::kMaxUvScale);
+      if (std::find(object.uv_scales.begin(), object.uv_scales.end(), s) != object.uv_scales.end())
+        item.fail(fmt::format("{} is listed twice: each scale makes its own variants", s));
+      object.uv_scales.push_back(s);
+    }
+    if (object.uv_scales.empty()) scale->fail("an empty list: give a scale");
     if (object.uv_pass == matrender::UvPassMode::Never)
       scale->fail("the UV pass never runs (uv_pass: never), so there is no texel density to scale");
   }

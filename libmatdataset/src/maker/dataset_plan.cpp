@@ -56,7 +56,8 @@ DatasetPlan plan_dataset(const DatasetConfig& config) {
       throw matbase::InputError(config.source + ": objects." + std::to_string(o) + ": " + e.what());
     }
     if (config.max_variants) variants = std::min(variants, *config.max_variants);
-    frames += static_cast<long double>(variants) * static_cast<long double>(plan.views);
+    frames += static_cast<long double>(variants) * static_cast<long double>(config.objects[o].uv_scales.size()) *
+              static_cast<long double>(plan.views);
   }
   if (frames > static_cast<long double>(kMaxFrames))
     throw matbase::InputError(fmt::format("{}: the plan has {:.4g} frames, more than the {} one dataset may have; cap the "
@@ -68,6 +69,17 @@ DatasetPlan plan_dataset(const DatasetConfig& config) {
                                               config.max_variants, config.variant_seed));
     } catch (const std::invalid_argument& e) {
       throw matbase::InputError(config.source + ": objects." + std::to_string(o) + ": " + e.what());
+    }
+    // Several UV scales: every material variant once per scale, the scales varying fastest.
+    const size_t scales = config.objects[o].uv_scales.size();
+    if (scales > 1) {
+      std::vector<MaterialVariant> scaled;
+      for (const MaterialVariant& variant : plan.variants.back())
+        for (size_t k = 0; k < scales; ++k) {
+          scaled.push_back(variant);
+          scaled.back().push_back(k);
+        }
+      plan.variants.back() = std::move(scaled);
     }
     for (size_t v = 0; v < plan.variants.back().size(); ++v)
       for (size_t view = 0; view < plan.views; ++view) plan.frames.push_back({o, v, view});

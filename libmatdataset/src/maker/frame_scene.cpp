@@ -94,7 +94,14 @@ FrameScene dataset_frame_scene(const fs::path& frame) {
   }
   const char* uv_pass[] = {"never", "when_missing", "always"};
   object_json["uv_pass"] = uv_pass[static_cast<int>(object->uv_pass)];
-  if (object->uv_pass != matrender::UvPassMode::Never) object_json["uv_scale"] = object->uv_scale;
+  // The variant's UV scale, as its provenance records it (1 where it records none).
+  if (object->uv_pass != matrender::UvPassMode::Never) {
+    const ordered_json& source = member(member(provenance, "object", metadata_file), "source", metadata_file);
+    const auto scale = source.find("uv_scale");
+    if (scale != source.end() && !scale->is_number())
+      throw matbase::InputError(metadata_file.string() + ": provenance.object.source.uv_scale is not a number");
+    object_json["uv_scale"] = scale != source.end() ? scale->get<double>() : 1.0;
+  }
 
   // The variant's material in each slot, by the name the provenance records.
   ordered_json materials = ordered_json::object(), part_materials = ordered_json::object();

@@ -25,14 +25,15 @@ namespace {
 using nlohmann::ordered_json;
 constexpr double kDegree = matbase::kPi / 180.0;
 
-// The paper's scene of the object (its rig at the configured illuminance), with every candidate
-// material of its slots among the scene's materials; each frame places the camera itself.
-matrender::SceneDescription object_scene(const DatasetConfig& config, size_t index) {
+// The paper's scene of the object (its rig at the configured illuminance) at UV scale
+// `uv_scale`, with every candidate material of its slots among the scene's materials; each frame
+// places the camera itself.
+matrender::SceneDescription object_scene(const DatasetConfig& config, size_t index, double uv_scale) {
   const ObjectConfig& object = config.objects[index];
   matrender::ObjectDescription description;
   std::visit([&description](const auto& source) { description.source = source; }, object.source);
   description.uv_pass = object.uv_pass;
-  description.uv_scale = object.uv_scale;
+  description.uv_scale = uv_scale;
   description.origin = matrender::Origin{config.source, "/objects/" + std::to_string(index)};
   matrender::SceneDescription scene = matrender::paper_object_scene(std::move(description));
   matrender::SceneOverrides overrides;
@@ -121,7 +122,11 @@ uint32_t dataset_aovs() {
 }
 
 ObjectRenderer::ObjectRenderer(const DatasetConfig& config, size_t object)
-    : config_(config), object_index_(object), object_(config.objects[object]), built_(matrender::build_scene(object_scene(config, object))) {
+    : config_(config),
+      object_index_(object),
+      object_(config.objects[object]),
+      built_(matrender::build_scene(object_scene(config, object, object_.uv_scales.front()))),
+      built_uv_scale_(object_.uv_scales.front()) {
   const matgeom::TriangleMesh& mesh = built_.object_surfaces.front();
   const size_t part_count = built_.scene.part_materials(built_.object_meshes.front()).size();
   slot_parts_ = parts_of_slots(config, object, mesh.part_names, part_count);
@@ -140,6 +145,13 @@ ObjectRenderer::ObjectRenderer(const DatasetConfig& config, size_t object)
 
 void ObjectRenderer::select_variant(size_t index, const MaterialVariant& variant, const std::atomic<bool>* cancel) {
   if (index != variant_index_ || variant != variant_) lighting_.clear();
+  // Another UV scale is another UV pass: the object is built again (its geometry, and so the
+  // camera grid, stay as they are), lit again view by view.
+  if (const double scale = object_.uv_scale_of(variant); scale != built_uv_scale_) {
+    built_ = matrender::build_scene(object_scene(config_, object_index_, scale), cancel);
+    built_uv_scale_ = scale;
+    lit_view_ = SIZE_MAX;
+  }
   variant_index_ = index;
   variant_ = variant;
   built_.materials.cancel_on(cancel);
@@ -297,7 +309,7 @@ std::string ObjectRenderer::provenance_json(const DatasetPlan& plan, size_t vari
   const char* uv_pass[] = {"never", "when_missing", "always"};
   source["uv_pass"] = uv_pass[static_cast<int>(object_.uv_pass)];
   // Recorded where it is not the default, so datasets made before it existed resume unchanged.
-  if (object_.uv_scale != 1.0) source["uv_scale"] = object_.uv_scale;
+  if (const double scale = object_.uv_scale_of(plan.variants[object][variant]); scale != 1.0) source["uv_scale"] = scale;
   json["object"] = {{"name", object_.name}, {"source", source}};
 
   ordered_json slots = ordered_json::array();

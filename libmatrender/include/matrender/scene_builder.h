@@ -20,6 +20,7 @@ struct BuiltScene {
   Scene scene;  // committed
   Camera camera;
   std::vector<uint32_t> object_meshes;   // the scene mesh of each described object, in order
+  std::vector<double> object_uv_scales;  // the scale each object's UV pass ran at (1 where it did not)
   std::string frame_stem;                // output file prefix: "view_005_016" for grid cell (5, 16), else "view"
   matgeom::Sphere bounds;                // minimal enclosing sphere of all objects
   glm::dvec3 centroid{0.0};              // surface centroid of all objects, where grid cameras look by default

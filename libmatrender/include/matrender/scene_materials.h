@@ -33,8 +33,12 @@ class SceneMaterials {
   uint32_t id(Scene& scene, const std::string& name);
 
   // The material on part `part` of `mesh`: a material whose maps have a physical size (a folder's
-  // metadata, the library's tiles) repeats them as often per UV unit as that part's UVs need.
-  uint32_t id_on_part(Scene& scene, const std::string& name, const matgeom::TriangleMesh& mesh, uint32_t part);
+  // metadata, the library's tiles) repeats them as often per UV unit as that part's UVs need at
+  // the UV pass's own density. UVs made at `uv_scale` s times that density keep those repeats
+  // per UV unit, so the maps repeat s times as often across the part (the paper's Figure 3);
+  // without the scale they would be brought back to their physical size and s would show nothing.
+  uint32_t id_on_part(Scene& scene, const std::string& name, const matgeom::TriangleMesh& mesh, uint32_t part,
+                      double uv_scale = 1.0);
 
  private:
   TexturePtr texture(const std::optional<TextureFile>& file);

@@ -83,18 +83,20 @@ std::string quoted_part_names(const matgeom::TriangleMesh& mesh) {
 
 // The scene material of each of the `parts` parts of `mesh` the description assigns one to;
 // parts left out keep the object's own material.
+// `uv_scale` is the scale the object's UV pass ran at (SceneMaterials::id_on_part).
 std::vector<std::optional<uint32_t>> assigned_materials(const ObjectDescription& object, const matgeom::TriangleMesh& mesh,
-                                                        size_t parts, SceneMaterials& materials, Scene& scene) {
+                                                        size_t parts, double uv_scale, SceneMaterials& materials,
+                                                        Scene& scene) {
   std::vector<std::optional<uint32_t>> assigned(parts);
   if (object.material)
     for (size_t k = 0; k < assigned.size(); ++k)
-      assigned[k] = materials.id_on_part(scene, *object.material, mesh, static_cast<uint32_t>(k));
+      assigned[k] = materials.id_on_part(scene, *object.material, mesh, static_cast<uint32_t>(k), uv_scale);
   const std::vector<std::string>& names = mesh.part_names;
   for (const auto& [part, material] : object.part_materials) {
     bool found = false;
     for (size_t k = 0; k < assigned.size() && k < names.size(); ++k) {
       if (names[k] != part) continue;
-      assigned[k] = materials.id_on_part(scene, material, mesh, static_cast<uint32_t>(k));
+      assigned[k] = materials.id_on_part(scene, material, mesh, static_cast<uint32_t>(k), uv_scale);
       found = true;
     }
     if (!found)
@@ -107,7 +109,7 @@ std::vector<std::optional<uint32_t>> assigned_materials(const ObjectDescription&
 void add_object(Scene& scene, const ObjectDescription& object, const matgeom::ObjectAsset& asset,
                 SceneMaterials& materials) {
   const std::vector<std::optional<uint32_t>> assigned =
-      assigned_materials(object, asset.mesh, part_count(asset), materials, scene);
+      assigned_materials(object, asset.mesh, part_count(asset), object.uv_scale, materials, scene);
   // A mesh or slot the renderer rejects (non-finite vertex, bad image index) is a bad input file.
   try {
     MeshOptions options;
@@ -232,6 +234,7 @@ BuiltScene build_scene(const SceneDescription& description, const std::atomic<bo
       for (const std::string& note : assets[k].notes) matgeom::add_note(built.notes, file->path + ": " + note);
     add_object(built.scene, description.objects[k], assets[k], built.materials);
     built.object_meshes.push_back(static_cast<uint32_t>(built.scene.mesh_count() - 1));
+    built.object_uv_scales.push_back(description.objects[k].uv_scale);
     built.object_surfaces.push_back(std::move(assets[k].mesh));
   }
   add_lights(description.lights, built);
@@ -258,7 +261,8 @@ void assign_object_materials(BuiltScene& built, size_t object, const ObjectDescr
   const uint32_t mesh = built.object_meshes.at(object);
   std::vector<uint32_t> ids = built.scene.part_materials(mesh);
   const std::vector<std::optional<uint32_t>> assigned =
-      assigned_materials(materials, built.object_surfaces[object], ids.size(), built.materials, built.scene);
+      assigned_materials(materials, built.object_surfaces[object], ids.size(), built.object_uv_scales.at(object),
+                         built.materials, built.scene);
   for (size_t k = 0; k < ids.size(); ++k)
     if (assigned[k]) ids[k] = *assigned[k];
   built.scene.set_part_materials(mesh, ids);

@@ -22,11 +22,12 @@ uint32_t SceneMaterials::id(Scene& scene, const std::string& name) {
 }
 
 uint32_t SceneMaterials::id_on_part(Scene& scene, const std::string& name, const matgeom::TriangleMesh& mesh,
-                                    uint32_t part) {
+                                    uint32_t part, double uv_scale) {
   const uint32_t base = id(scene, name);
   const auto tile = tile_sizes_.find(name);
   if (tile == tile_sizes_.end()) return base;
-  const double repeats = matgeom::texture_repeats(mesh, part, tile->second);
+  // The part's metres per UV unit are 1/s of the unscaled pass's: s times them is its repeats.
+  const double repeats = matgeom::texture_repeats(mesh, part, tile->second) * uv_scale;
   if (repeats == 1.0) return base;
   const auto key = std::make_pair(name, static_cast<float>(repeats));
   if (const auto it = repeated_ids_.find(key); it != repeated_ids_.end()) return it->second;

@@ -137,7 +137,7 @@ TEST_CASE("An object's uv_scale is the UV pass's density scale, only where the p
   const std::string pillow = "objects:\n  - {name: pillow, builtin: pillow, uv_pass: always, uv_scale: 0.5, "
                              "materials: {all: [fabric/twill:1]}}\n";
   const DatasetConfig config = parse_config(pillow, "test.yaml", fs::current_path(), {});
-  CHECK(config.objects[0].uv_scale == 0.5);
+  CHECK(config.objects[0].uv_scales == std::vector<double>{0.5});
   CHECK(matdataset::check_before_writing(config).empty());
   CHECK(refusal(pillow, {{"objects.0.uv_scale", "0", "--set objects.0.uv_scale=0"}}) ==
         "--set objects.0.uv_scale=0 (objects.0.uv_scale): expected a number from 0.01 to 100, got 0");

@@ -64,6 +64,40 @@ TEST_CASE("A variant cap keeps a seeded subset in the full list's order", "[data
   CHECK(plan_with("variants: {max_variants: 9}\n").variants[0].size() == 5);
 }
 
+TEST_CASE("A list of UV scales renders every material variant once per scale, the scales varying fastest", "[dataset]") {
+  const std::string yaml =
+      "objects:\n  - {name: pillow, builtin: pillow, uv_pass: always, uv_scale: [0.1, 0.5, 2]}\n"
+      "  - {name: vase, builtin: vase}\n"
+      "materials:\n  all: [fabric:1, leather:2]\n"
+      "camera: {grid: [1, 2]}\n";
+  const matdataset::DatasetConfig config =
+      matdataset::parse_config(yaml, "test.yaml", std::filesystem::current_path(), {});
+  const DatasetPlan plan = matdataset::plan_dataset(config);
+  REQUIRE(plan.variants[0].size() == 6);
+  CHECK(plan.variants[1].size() == 2);
+  CHECK(plan.frames.size() == (6 + 2) * 2);
+  const matdataset::ObjectConfig& pillow = config.objects[0];
+  const std::vector<double> scales = {0.1, 0.5, 2.0, 0.1, 0.5, 2.0};
+  for (size_t v = 0; v < 6; ++v) {
+    CHECK(plan.variants[0][v][0] == v / 3);  // the material
+    CHECK(pillow.uv_scale_of(plan.variants[0][v]) == scales[v]);
+  }
+  CHECK(config.objects[1].uv_scale_of(plan.variants[1][0]) == 1.0);
+  auto refusal = [&](const std::string& scale) -> std::string {
+    try {
+      matdataset::parse_config("objects:\n  - {name: pillow, builtin: pillow, uv_pass: always, uv_scale: " + scale +
+                                   "}\n",
+                               "test.yaml", std::filesystem::current_path(), {});
+    } catch (const matbase::InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  CHECK_THAT(refusal("[0.5, 0.5]"), Catch::Contains("objects.0.uv_scale.1") && Catch::Contains("listed twice"));
+  CHECK_THAT(refusal("[]"), Catch::Contains("objects.0.uv_scale") && Catch::Contains("empty"));
+  CHECK_THAT(refusal("[0.5, 1000]"), Catch::Contains("objects.0.uv_scale.1"));
+}
+
 TEST_CASE("A plan beyond 50 million frames is refused with its size before it is listed", "[dataset]") {
   matdataset::DatasetConfig config = matdataset::load_config("", {});
   config.camera.n_phi = 10000;

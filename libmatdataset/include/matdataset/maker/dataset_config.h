@@ -43,9 +43,14 @@ struct ObjectConfig {
   std::string name;  // the dataset's object folder
   std::variant<matrender::MeshFile, matrender::BuiltinObject> source;
   matrender::UvPassMode uv_pass = matrender::UvPassMode::WhenMissing;
-  // The paper's s: the UV pass's texel density times this, so the materials' maps repeat 1/s
-  // times as often. Only where the pass runs (dataset_checks.h).
-  double uv_scale = 1.0;
+  // The paper's s: the UV pass's texel density times this, so the materials' maps repeat s
+  // times as often. Only where the pass runs (dataset_checks.h). Several (its Figure 3 study)
+  // render every material variant once per scale: the variant's last index picks it
+  // (material_variants.h).
+  std::vector<double> uv_scales = {1.0};
+  double uv_scale_of(const MaterialVariant& variant) const {
+    return uv_scales.size() > 1 ? uv_scales.at(variant.back()) : uv_scales.front();
+  }
   std::vector<SlotConfig> slots;
 };
 

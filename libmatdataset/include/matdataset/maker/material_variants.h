@@ -21,7 +21,8 @@ struct SlotCandidates {
   std::vector<std::string> materials;  // at least one
 };
 
-// One variant: for each slot, in the order given, the index of its candidate.
+// One variant: for each slot, in the order given, the index of its candidate; for an object with
+// several UV scales (ObjectConfig::uv_scales), then the index of its scale.
 using MaterialVariant = std::vector<size_t>;
 
 // The variants, in the order of the full list; with a cap below its size, a uniformly random
