@@ -23,6 +23,10 @@
 //                                    Blender 3.4 Cycles on the referenced frames, adaptive
 //                                    sampling at each noise threshold
 //   --images DIR                     the converged references as PNGs, to look at
+//   --lighting NAME=YAML ...         a `lights` value: everything above is measured under each
+//                                    lighting in turn (references included), and a last table
+//                                    gives each one's render seconds to the error the first
+//                                    one's frames have as configured, and their ratio to it
 //   --threads N
 //
 // Image error is the RMSE over the image (every pixel and channel, linear radiance) against the
