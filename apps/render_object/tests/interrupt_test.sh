@@ -6,7 +6,8 @@
 set -u
 binary=$1
 output=$2
-log=$(mktemp)
+# Beside the output folder, in the build tree: nothing else a test run does touches it there.
+log="$output.stderr"
 trap 'rm -f "$log"' EXIT
 status=0
 
