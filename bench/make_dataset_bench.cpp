@@ -631,10 +631,13 @@ LightingCurves measure_lighting(const Request& request, const std::vector<matdat
     };
     const size_t configured =
         static_cast<size_t>(std::find_if(configs.begin(), configs.end(), as_configured) - configs.begin());
-    if (configured < modes.size())
-      levels.push_back({fmt::format("as {}, mean {:.2f} %", modes[configured].name,
-                                    100.0 * average(figures[configured].image_errors)),
-                        figures[configured].image_errors});
+    LightingCurves result{name, curves, std::nullopt};
+    if (configured < modes.size()) {
+      result.as_configured = ErrorLevel{fmt::format("as {}, mean {:.2f} %", modes[configured].name,
+                                                    100.0 * average(figures[configured].image_errors)),
+                                        figures[configured].image_errors};
+      levels.push_back(*result.as_configured);
+    }
     const size_t projected = levels.size();
     for (size_t t = 0; cycles_curves && t < cycles.thresholds.size(); ++t)
       levels.push_back({fmt::format("as Cycles 3.4 threshold {}, mean {:.2f} %", cycles.thresholds[t],
@@ -644,8 +647,6 @@ LightingCurves measure_lighting(const Request& request, const std::vector<matdat
     if (cycles_curves) curves.push_back(*cycles_curves);
     print_projection(curves, {levels.begin(), levels.begin() + static_cast<std::ptrdiff_t>(projected)}, paper, workers);
     for (size_t l = 0; l < projected; ++l) print_frames_at(curves, levels[l], frame_names);
-    LightingCurves result{name, curves, std::nullopt};
-    if (configured < modes.size()) result.as_configured = levels[1];
     return result;
 }
 

@@ -1,10 +1,8 @@
 #include "options.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <variant>
 #include <vector>
 
@@ -13,6 +11,7 @@
 
 #include "common/number_options.h"
 #include "common/thread_count.h"
+#include "matbase/number_text.h"
 #include "matgeom/builtin/builtin_objects.h"
 #include "matgeom/shading_normals.h"
 #include "matrender/builtin_environments.h"
@@ -41,14 +40,16 @@ using matrender::SceneDescription;
 constexpr int kMaxGridSize = 65536;
 
 // Thrown from an option callback, CLI11 reports it like its own errors ("--spp: expected ...").
+void require(bool ok, const std::string& option, const std::string& expectation) {
+  if (!ok) throw CLI::ValidationError(option, "expected " + expectation);
+}
+
 // --sky default, or --sky sun_elevation_deg=30,air=2,sun_disc=false,strength=0.5: the scene
 // file's sky keys (matrender::sky_settings) with their ranges.
 matrender::NishitaSky parse_sky(const std::string& text) {
   matrender::NishitaSky sky;
   if (text == "default") return sky;
-  std::stringstream items(text);
-  std::string item;
-  while (std::getline(items, item, ',')) {
+  for (const std::string& item : CLI::detail::split(text, ',')) {
     const size_t equals = item.find('=');
     if (equals == std::string::npos)
       throw CLI::ValidationError("--sky", "\"" + item + "\" is not KEY=VALUE (or give \"default\")");
@@ -58,25 +59,19 @@ matrender::NishitaSky parse_sky(const std::string& text) {
       sky.sun_disc = value == "true";
       continue;
     }
-    double number = 0.0;
-    const char* end = value.data() + value.size();
-    if (value.empty() || std::from_chars(value.data(), end, number).ptr != end || !std::isfinite(number))
-      throw CLI::ValidationError("--sky", key + ": \"" + value + "\" is not a finite number");
+    const std::optional<double> number = matbase::finite_number(value);
+    if (!number) throw CLI::ValidationError("--sky", key + ": \"" + value + "\" is not a finite number");
     const auto& settings = matrender::sky_settings();
     const auto setting = std::find_if(settings.begin(), settings.end(), [&](const auto& s) { return s.key == key; });
     if (key == "strength")
-      sky.strength = number;
+      sky.strength = *number;
     else if (setting != settings.end())
-      sky.*(setting->field) = number * setting->unit;
+      sky.*(setting->field) = *number * setting->unit;
     else
       throw CLI::ValidationError("--sky", "unknown key \"" + key + "\"");
   }
   if (const std::optional<std::string> problem = matrender::sky_problem(sky)) throw CLI::ValidationError("--sky", *problem);
   return sky;
-}
-
-void require(bool ok, const std::string& option, const std::string& expectation) {
-  if (!ok) throw CLI::ValidationError(option, "expected " + expectation);
 }
 
 uint32_t parse_aov_list(const std::string& text) {
@@ -412,13 +407,11 @@ void add_render_options(CLI::App& app, Options& o) {
              o.exposure_auto = true;
              return;
            }
-           double stops = 0.0;
-           const char* end = text.data() + text.size();
-           const bool number = !text.empty() && std::from_chars(text.data(), end, stops).ptr == end;
-           require(number && std::abs(stops) <= matbase::kMaxExposureStops, "--exposure",
+           const std::optional<double> stops = matbase::finite_number(text);
+           require(stops && std::abs(*stops) <= matbase::kMaxExposureStops, "--exposure",
                    fmt::format("\"auto\" or a number of stops in [{}, {}]", -matbase::kMaxExposureStops,
                                matbase::kMaxExposureStops));
-           o.exposure = stops;
+           o.exposure = *stops;
          },
          "display PNG exposure in stops, or \"auto\": the grey-card rule (docs/make_dataset.md, \"Exposure\") for "
          "a card at the objects' centre facing the camera, under the scene's lamps and world")

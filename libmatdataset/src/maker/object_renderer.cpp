@@ -125,8 +125,7 @@ ObjectRenderer::ObjectRenderer(const DatasetConfig& config, size_t object)
     : config_(config),
       object_index_(object),
       object_(config.objects[object]),
-      built_(matrender::build_scene(object_scene(config, object, object_.uv_scales.front()))),
-      built_uv_scale_(object_.uv_scales.front()) {
+      built_(matrender::build_scene(object_scene(config, object, object_.uv_scales.front()))) {
   const matgeom::TriangleMesh& mesh = built_.object_surfaces.front();
   const size_t part_count = built_.scene.part_materials(built_.object_meshes.front()).size();
   slot_parts_ = parts_of_slots(config, object, mesh.part_names, part_count);
@@ -147,9 +146,8 @@ void ObjectRenderer::select_variant(size_t index, const MaterialVariant& variant
   if (index != variant_index_ || variant != variant_) lighting_.clear();
   // Another UV scale is another UV pass: the object is built again (its geometry, and so the
   // camera grid, stay as they are), lit again view by view.
-  if (const double scale = object_.uv_scale_of(variant); scale != built_uv_scale_) {
+  if (const double scale = object_.uv_scale_of(variant); scale != built_.object_uv_scales.front()) {
     built_ = matrender::build_scene(object_scene(config_, object_index_, scale), cancel);
-    built_uv_scale_ = scale;
     lit_view_ = SIZE_MAX;
   }
   variant_index_ = index;

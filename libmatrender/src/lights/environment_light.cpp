@@ -16,6 +16,11 @@ namespace {
 
 constexpr float kTwoPiSquared = 2.0f * kPi * kPi;
 
+// d turned about +Z by the angle whose cosine and sine these are.
+glm::vec3 turned_about_z(const glm::vec3& d, float cosine, float sine) {
+  return {cosine * d.x - sine * d.y, sine * d.x + cosine * d.y, d.z};
+}
+
 // Over one texel's cell, the bilinear lookup (texel centres at cell centres) integrates to
 // 1/8, 3/4, 1/8 of the previous, own and next texel in each axis. Every texel the lookup blends
 // into a cell thus gives it weight, so the density is positive wherever the radiance is.
@@ -89,13 +94,9 @@ EnvironmentLight::EnvironmentLight(const EnvironmentMap& map) : image_(map.image
   importance_ = static_cast<float>(matbase::kPi * strength_ * 0.5 * matbase::kPi * distribution_->integral());
 }
 
-glm::vec3 EnvironmentLight::to_map(const glm::vec3& d) const {
-  return {cos_rotation_ * d.x - sin_rotation_ * d.y, sin_rotation_ * d.x + cos_rotation_ * d.y, d.z};
-}
+glm::vec3 EnvironmentLight::to_map(const glm::vec3& d) const { return turned_about_z(d, cos_rotation_, sin_rotation_); }
 
-glm::vec3 EnvironmentLight::from_map(const glm::vec3& d) const {
-  return {cos_rotation_ * d.x + sin_rotation_ * d.y, -sin_rotation_ * d.x + cos_rotation_ * d.y, d.z};
-}
+glm::vec3 EnvironmentLight::from_map(const glm::vec3& d) const { return turned_about_z(d, cos_rotation_, -sin_rotation_); }
 
 std::optional<LightSample> EnvironmentLight::sample(const glm::vec3& /*p*/,
                                                             const ReceivingDirections& /*receiving*/,
@@ -130,8 +131,8 @@ glm::vec3 background_radiance(const Background& background, const glm::vec3& dir
   if (const auto* uniform = std::get_if<glm::vec3>(&background)) return *uniform;
   const auto& map = std::get<EnvironmentMap>(background);
   // Looked up along R_z(rotation) d, as EnvironmentLight::to_map turns it.
-  const float c = std::cos(static_cast<float>(map.rotation_z)), s = std::sin(static_cast<float>(map.rotation_z));
-  const glm::vec3 turned(c * direction.x - s * direction.y, s * direction.x + c * direction.y, direction.z);
+  const glm::vec3 turned = turned_about_z(direction, static_cast<float>(std::cos(map.rotation_z)),
+                                          static_cast<float>(std::sin(map.rotation_z)));
   return static_cast<float>(map.strength) * glm::vec3(map.image->sample(equirectangular_uv(turned)));
 }
 

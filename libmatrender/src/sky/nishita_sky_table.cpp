@@ -26,6 +26,10 @@ double sun_azimuth(double rotation) { return kPi / 2.0 - rotation; }
 
 double fraction(double x) { return x - std::floor(x); }
 
+// Cycles' xyz_to_rgb_clamped: scene-linear Rec.709, negative components (colours outside its
+// gamut) set to 0.
+glm::dvec3 clamped_rgb(const glm::dvec3& xyz) { return glm::max(xyz_to_linear_rec709(xyz), glm::dvec3(0.0)); }
+
 }  // namespace
 
 NishitaSkyTable::NishitaSkyTable(const NishitaSky& sky)
@@ -74,11 +78,11 @@ glm::dvec3 NishitaSkyTable::sky(const glm::dvec3& direction) const {
   const double x = fraction(longitude / (2.0 * kPi) + 0.5);
   if (direction.z >= 0.0) {
     const double elevation = std::asin(std::min(direction.z, 1.0));
-    return glm::max(xyz_to_linear_rec709(table_xyz(x, std::sqrt(elevation / (kPi / 2.0)))), glm::dvec3(0.0));
+    return clamped_rgb(table_xyz(x, std::sqrt(elevation / (kPi / 2.0))));
   }
   if (direction.z < -0.4) return glm::dvec3(0.0);
   const double fade = std::pow(1.0 + 2.5 * direction.z, 3.0);
-  return glm::max(xyz_to_linear_rec709(table_xyz(x, 0.0)), glm::dvec3(0.0)) * fade;
+  return clamped_rgb(table_xyz(x, 0.0)) * fade;
 }
 
 glm::dvec3 NishitaSkyTable::disc(const glm::dvec3& direction) const {
@@ -96,7 +100,7 @@ glm::dvec3 NishitaSkyTable::disc(const glm::dvec3& direction) const {
   // Limb darkening with coefficient 0.6: 1 - 0.6 (1 - cos of the angle inside the sun's sphere).
   const double r = angle / half;
   const double limb = 1.0 - 0.6 * (1.0 - std::sqrt(1.0 - r * r));
-  return glm::max(xyz_to_linear_rec709(xyz * sky_.sun_intensity), glm::dvec3(0.0)) * limb;
+  return clamped_rgb(xyz * sky_.sun_intensity) * limb;
 }
 
 }  // namespace matrender

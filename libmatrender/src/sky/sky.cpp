@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
-#include "lights/environment_light.h"
+#include "matbase/image/srgb.h"
 #include "sky/nishita_sky_table.h"
 
 namespace matrender {
@@ -99,7 +99,7 @@ SkyLighting sky_lighting(const NishitaSky& sky, int map_width) {
       Texture::from_pixelsf(width, height, 3, pixels.data(), ColorSpace::NonColor, TextureWrap::Repeat, "Nishita sky");
   lighting.map.strength = sky.strength;
   const glm::dvec3 irradiance = disc_irradiance_over_sky(table, sky.sun_size) * sky.strength;
-  const double luminance = 0.2126 * irradiance.r + 0.7152 * irradiance.g + 0.0722 * irradiance.b;
+  const double luminance = matbase::rec709_luminance(irradiance);
   if (luminance > 0.0) {
     SunLamp sun;
     sun.direction = -table.to_sun();

@@ -88,7 +88,6 @@ class ObjectRenderer {
   size_t object_index_;
   const ObjectConfig& object_;
   matrender::BuiltScene built_;
-  double built_uv_scale_;  // the UV scale built_'s object was made at
   matgeom::CameraGridSpec grid_;
   size_t grid_views_ = 0;
   size_t variant_index_ = 0;
