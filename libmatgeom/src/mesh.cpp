@@ -111,6 +111,13 @@ Bounds3 mesh_bounds(const TriangleMesh& mesh) {
   return bounds;
 }
 
+double surface_area(const TriangleMesh& mesh) {
+  double area = 0.0;
+  for (const glm::uvec3& t : mesh.triangles)
+    area += triangle_area(glm::dvec3(mesh.positions[t[0]]), glm::dvec3(mesh.positions[t[1]]), glm::dvec3(mesh.positions[t[2]]));
+  return area;
+}
+
 glm::dvec3 surface_centroid(const TriangleMesh& mesh) {
   if (mesh.positions.empty()) return glm::dvec3(0.0);
   // Accumulate relative to one vertex so that a small object far from the origin keeps its

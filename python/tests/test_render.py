@@ -15,7 +15,7 @@ import matpredict
 from conftest import EXAMPLES, RENDER_OBJECT, read_exr, write_scene
 
 
-INT_AOVS = {"label", "part_id", "sample_count"}
+INT_AOVS = {"label", "part_id", "object_id", "sample_count"}
 
 
 def test_render_equals_the_cli_bit_for_bit(tmp_path, small_scene):

@@ -171,8 +171,8 @@ TEST_CASE("--verify finds damaged depth, segmentation maps that contradict the l
   const std::string text = text_of(report);
   INFO(text);
   const std::string depth = (dir / "chair" / "var000" / "depth" / "001.exr").string();
-  CHECK_THAT(text, Catch::Contains(depth + ": 1 of the object's pixels have a depth that is NaN or infinite"));
-  CHECK_THAT(text, Catch::Contains(depth + ": 1 of the object's pixels have a depth of 0 or less"));
+  CHECK_THAT(text, Catch::Contains(depth + ": 1 covered pixels have a depth that is NaN or infinite"));
+  CHECK_THAT(text, Catch::Contains(depth + ": 1 covered pixels have a depth of 0 or less"));
   CHECK_THAT(text, Catch::Contains(depth + ": 1 of the object's pixels have a depth outside"));
   CHECK_THAT(text, Catch::Contains((dir / "chair" / "var001" / "images" / "002.png").string() +
                                    ": declares 8 x 8 pixels, but transforms.json says the frames are 48 x 48"));
@@ -651,4 +651,152 @@ TEST_CASE("A list of UV scales makes a variant per scale: each recorded, each wi
     }
   REQUIRE(covered > 50);
   CHECK(differing > covered / 4);
+}
+
+namespace {
+
+// The dataset with surroundings (room.yaml): a floor, a box room and a cyclorama.
+const fs::path& room_dataset() {
+  static const fs::path root = [] {
+    const fs::path folder = fs::temp_directory_path() / "matpredict_room_dataset";
+    fs::remove_all(folder);
+    REQUIRE(run(std::string("--config ") + MATPREDICT_ROOM_CONFIG + " --output " + folder.string() + " --threads 2") ==
+            0);
+    return folder;
+  }();
+  return root;
+}
+
+std::vector<fs::path> room_images() {
+  std::vector<fs::path> images;
+  for (const auto& entry : fs::recursive_directory_iterator(room_dataset()))
+    if (entry.path().parent_path().filename() == "images") images.push_back(entry.path());
+  std::sort(images.begin(), images.end());
+  return images;
+}
+
+nlohmann::json json_of(const fs::path& file) { return nlohmann::json::parse(text_of(file)); }
+
+}  // namespace
+
+TEST_CASE("With surroundings the label is the target's first hits alone, the region map says what each pixel is, "
+          "and --verify agrees",
+          "[dataset]") {
+  const std::vector<fs::path> images = room_images();
+  // Three objects, two variants each, 2 x 2 views.
+  REQUIRE(images.size() == 24);
+  const fs::path report = fs::temp_directory_path() / "matpredict_room_verify.txt";
+  CHECK(verify(room_dataset(), report) == 0);
+  INFO(text_of(report));
+  for (const fs::path& image : images) {
+    const fs::path variant = image.parent_path().parent_path();
+    const std::string stem = image.stem().string();
+    INFO(image);
+    const matdataset::DecodedIds label = matdataset::decode_ids(variant / "label" / (stem + ".png"));
+    const matdataset::DecodedIds region = matdataset::decode_ids(variant / "region" / (stem + ".png"));
+    const matbase::FloatImage depth = matdataset::decode(variant / "depth" / (stem + ".exr"));
+    size_t target = 0, surroundings = 0, mismatched = 0;
+    for (size_t p = 0; p < label.ids.size(); ++p) {
+      target += region.ids[p] == 2;
+      surroundings += region.ids[p] == 1;
+      mismatched += (label.ids[p] > 0) != (region.ids[p] == 2);
+      // The data maps cover the surroundings too: depth there is the floor's or the wall's.
+      if (region.ids[p] == 1) CHECK(depth.values[4 * p + 3] > 0.0f);
+    }
+    CHECK(mismatched == 0);
+    CHECK(target > 20);         // the object is the subject
+    CHECK(surroundings > 20);   // and the floor is seen around it
+    const nlohmann::json transforms = json_of(variant / "transforms.json");
+    CHECK(transforms["frames"][0]["file_path_region"] == "region/" + transforms["frames"][0]["file_path"].get<std::string>().substr(7));
+  }
+  // The objects alone in empty space have no region map, and old readers' folders are as they were.
+  const nlohmann::json metadata = json_of(room_dataset() / "vase" / "var000" / "metadata.json");
+  const nlohmann::json& structure = metadata["render_summary"]["output_structure"];
+  CHECK(std::find(structure.begin(), structure.end(), "region") != structure.end());
+}
+
+TEST_CASE("Surroundings are drawn per variant and recorded: the room, its materials, and a frame renders again from "
+          "its records",
+          "[dataset]") {
+  std::set<std::string> floors;
+  for (const char* object : {"vase", "mug", "chair"})
+    for (const char* variant : {"var000", "var001"}) {
+      const nlohmann::json metadata = json_of(room_dataset() / object / variant / "metadata.json");
+      const nlohmann::json& surroundings = metadata["provenance"]["surroundings"];
+      REQUIRE(surroundings.is_object());
+      CHECK(surroundings["kind"] == "floor");
+      floors.insert(surroundings["materials"]["floor"]["name"].get<std::string>());
+      const std::string walls = surroundings["room"]["walls"];
+      CHECK(walls == (std::string(object) == "mug" ? "box" : std::string(object) == "chair" ? "cyclorama" : "none"));
+      CHECK(surroundings["materials"].contains("walls") == (walls != "none"));
+    }
+  // Library candidates without a seed get one drawn: the six variants do not all share a floor.
+  CHECK(floors.size() >= 3);
+  // render_object renders a frame again from its records, bit for bit.
+  const std::vector<fs::path> images = room_images();
+  for (const size_t k : {size_t{0}, size_t{9}, size_t{23}}) {
+    const fs::path again = fs::temp_directory_path() / "matpredict_room_again" / std::to_string(k);
+    const std::string command = std::string(MATPREDICT_RENDER_OBJECT) + " --dataset-frame " + images[k].string() +
+                                " --threads 1 --output " + again.string() + " > /dev/null 2>&1";
+    REQUIRE(std::system(command.c_str()) == 0);
+    const matbase::FloatImage dataset = matdataset::decode(images[k]);
+    const matbase::FloatImage rendered = matdataset::decode(again / "view_color.png");
+    REQUIRE(dataset.width == rendered.width);
+    int differing = 0;
+    for (int y = 0; y < dataset.height; ++y)
+      for (int x = 0; x < dataset.width; ++x)
+        for (int c = 0; c < 3; ++c) differing += code(dataset, x, y, c) != code(rendered, x, y, c);
+    INFO(images[k]);
+    CHECK(differing == 0);
+  }
+}
+
+TEST_CASE("--verify finds a region map that contradicts the label, and a missing one", "[dataset]") {
+  const fs::path copy = fs::temp_directory_path() / "matpredict_room_tampered";
+  fs::remove_all(copy);
+  fs::copy(room_dataset(), copy, fs::copy_options::recursive);
+  const fs::path region = copy / "mug" / "var000" / "region" / "000.png";
+  // Every pixel said to be the target: the label disagrees wherever the floor is.
+  const int width = 40;
+  std::vector<uint8_t> all_target(static_cast<size_t>(width * width), 2);
+  OIIO::ImageSpec spec(width, width, 1, OIIO::TypeDesc::UINT8);
+  auto out = OIIO::ImageOutput::create(region.string());
+  REQUIRE(out);
+  REQUIRE(out->open(region.string(), spec));
+  REQUIRE(out->write_image(OIIO::TypeDesc::UINT8, all_target.data()));
+  REQUIRE(out->close());
+  fs::remove(copy / "chair" / "var001" / "region" / "001.png");
+  const fs::path report = fs::temp_directory_path() / "matpredict_room_tampered.txt";
+  CHECK(verify(copy, report) != 0);
+  const std::string text = text_of(report);
+  CHECK(text.find("mug/var000/label/000.png: at ") != std::string::npos);
+  CHECK(text.find("chair/var001/region/001.png: missing") != std::string::npos);
+}
+
+TEST_CASE("Surroundings that cannot be made are refused before the first file, naming the key", "[dataset]") {
+  const fs::path dir = fs::temp_directory_path() / "matpredict_room_refusals";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"surroundings: {kind: floor, floor_materials: [granite]}", "surroundings.floor_materials"},
+      {"surroundings: {kind: floor}", "floor_materials"},
+      {"surroundings: {kind: floor, floor_materials: [wood], walls: box}", "wall_materials"},
+      {"surroundings: {kind: floor, floor_materials: [wood], walls: cyclorama, wall_materials: [plaster], ceiling: "
+       "true}",
+       "surroundings.ceiling"},
+      {"surroundings: {kind: floor, floor_materials: [{matsynth: nowhere}]}", "nowhere"},
+      {"surroundings: {kind: floor, floor_materials: [wood], size: 0.5}", "surroundings.size"},
+      {"surroundings: {kind: sand}", "surroundings.kind"},
+  };
+  for (size_t k = 0; k < cases.size(); ++k) {
+    const fs::path config = dir / ("case" + std::to_string(k) + ".yaml");
+    std::ofstream(config) << "objects: [{builtin: vase}]\nmaterials: {all: [wood]}\n" << cases[k].first << "\n";
+    const fs::path errors = dir / ("case" + std::to_string(k) + ".txt");
+    INFO(cases[k].first);
+    CHECK(run("--config " + config.string() + " --output " + (dir / "out").string(), errors) == 2);
+    const std::string text = text_of(errors);
+    INFO(text);
+    CHECK(text.find(cases[k].second) != std::string::npos);
+    CHECK_FALSE(fs::exists(dir / "out"));
+  }
 }

@@ -77,7 +77,7 @@ TEST_CASE("Progress rises to 1 in batches, and a cancel is seen", "[render]") {
 
 TEST_CASE("The film resolves its sums into means: colour, alpha, variance, normals, parameters, nearest hit", "[render]") {
   FrameBuffers frame;
-  const uint32_t aovs = default_aovs() | AovColorVariance | AovSampleCount;
+  const uint32_t aovs = default_aovs() | AovColorVariance | AovSampleCount | AovObjectId;
   const glm::mat3 world_to_camera(1.0f);
   Film film(frame, 2, 1, aovs, false, world_to_camera);
   CHECK(film.records_surfaces());
@@ -98,7 +98,7 @@ TEST_CASE("The film resolves its sums into means: colour, alpha, variance, norma
   film.add_surface(sums, 1, sp);
   sums.hits = 2;
   REQUIRE(Film::nearer_than_kept(sums, 0.5f));
-  Film::keep_nearest(sums, 0.5f, 2.0f, 7, 3);
+  Film::keep_nearest(sums, 0.5f, 2.0f, 7, 3, 1);
   CHECK_FALSE(Film::nearer_than_kept(sums, 0.6f));
   OcclusionFigures figures;
   film.resolve(1, sums, figures);
@@ -116,9 +116,11 @@ TEST_CASE("The film resolves its sums into means: colour, alpha, variance, norma
   CHECK(frame.depth[1] == 2.0f);
   CHECK(frame.label[1] == 7);
   CHECK(frame.part_id[1] == 3);
+  CHECK(frame.object_id[1] == 1);
   // A pixel no sample reached keeps the background's values.
   film.resolve(0, PixelSums(), figures);
   CHECK(frame.part_id[0] == -1);
+  CHECK(frame.object_id[0] == -1);
   CHECK(frame.sample_count[0] == 0);
 }
 

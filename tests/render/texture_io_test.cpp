@@ -150,9 +150,9 @@ TEST_CASE("write_frame writes EXR values exactly and leaves no temporary files",
   frame.label[4] = 7;
   const auto written = write_frame(frame, (dir / "out").string(), "v");
   // Colour, then an EXR and a PNG per material parameter (named as in the table) and per
-  // other AOV (three normals, ambient occlusion, colour variance, depth, label, part id, sample
-  // count), and the alpha PNG.
-  CHECK(written.size() == 2 + 2 * matmaterial::kMaterialParameterCount + 2 * 9 + 1);
+  // other AOV (three normals, ambient occlusion, colour variance, depth, label, part id, object
+  // id, sample count), and the alpha PNG.
+  CHECK(written.size() == 2 + 2 * matmaterial::kMaterialParameterCount + 2 * 10 + 1);
   for (const auto& path : written) CHECK(fs::exists(path));
   for (const matmaterial::MaterialParameterInfo& info : matmaterial::kMaterialParameters)
     for (const char* extension : {".exr", ".png"})

@@ -17,21 +17,25 @@ namespace fs = std::filesystem;
 
 // The encodings, one line each, are the docs' table (docs/dataset_format.md, "Per frame").
 constexpr std::array<DatasetMapInfo, kDatasetMapCount> kMaps = {{
-    {DatasetMap::Albedo, "albedo", ".png", 4, "file_path_albedo", true,
+    {DatasetMap::Albedo, "albedo", ".png", 4, "file_path_albedo", true, false,
      "base colour, sRGB-encoded 8-bit, straight alpha = coverage"},
-    {DatasetMap::Orm, "ORM", ".png", 4, "file_path_orm", true,
-     "R ambient occlusion, G roughness, B metallic, linear 8-bit; A = 255 where the object is"},
-    {DatasetMap::Depth, "depth", ".exr", 4, "file_path_depth", true,
+    {DatasetMap::Orm, "ORM", ".png", 4, "file_path_orm", true, false,
+     "R ambient occlusion, G roughness, B metallic, linear 8-bit; A = 255 where a surface is"},
+    {DatasetMap::Depth, "depth", ".exr", 4, "file_path_depth", true, false,
      "R = G = B = depth along the camera axis in metres (32-bit float, never scaled by coverage); A = coverage"},
-    {DatasetMap::NormalMaterial, "normal_mat", ".png", 4, "file_path_normal_mat", true,
-     "the normal map's tangent-space normal, 0.5 n + 0.5, 8-bit; A = 255 where the object is"},
-    {DatasetMap::NormalObject, "normal_obj", ".png", 4, "file_path_normal", true,
-     "world-space shading normal, 0.5 n + 0.5, 8-bit; A = 255 where the object is"},
-    {DatasetMap::Label, "label", ".png", 1, "file_path_label", true,
-     "material class id (8-bit grey) of one sample per pixel, nonzero exactly where coverage > 0"},
-    {DatasetMap::SampleCount, "sample_count", ".png", 1, "file_path_sample_count", false,
+    {DatasetMap::NormalMaterial, "normal_mat", ".png", 4, "file_path_normal_mat", true, false,
+     "the normal map's tangent-space normal, 0.5 n + 0.5, 8-bit; A = 255 where a surface is"},
+    {DatasetMap::NormalObject, "normal_obj", ".png", 4, "file_path_normal", true, false,
+     "world-space shading normal, 0.5 n + 0.5, 8-bit; A = 255 where a surface is"},
+    {DatasetMap::Label, "label", ".png", 1, "file_path_label", true, false,
+     "material class id (8-bit grey) of one sample per pixel, nonzero exactly where that sample is on the target "
+     "object: the object mask (for an object alone, exactly where coverage > 0)"},
+    {DatasetMap::SampleCount, "sample_count", ".png", 1, "file_path_sample_count", false, false,
      "camera samples the pixel took (16-bit grey, every pixel): the render's samples, or fewer where adaptive sampling stopped it"},
-    {DatasetMap::Images, "images", ".png", 4, "file_path", true,
+    {DatasetMap::Region, "region", ".png", 1, "file_path_region", false, true,
+     "frames with surroundings only: what the label's sample is on, 0 background, 1 surroundings, 2 the target "
+     "(8-bit grey); 2 exactly where the label is nonzero"},
+    {DatasetMap::Images, "images", ".png", 4, "file_path", true, false,
      "the render, sRGB-encoded 8-bit, straight alpha = coverage"},
 }};
 
@@ -62,6 +66,16 @@ void check_sizes(const FrameMaps& maps) {
   check_size(maps.depth, n, "depth");
   check_size(maps.label, n, "label");
   check_size(maps.sample_count, n, "sample_count");
+  if (maps.region.empty()) return;
+  check_size(maps.region, n, "region");
+  for (size_t p = 0; p < n; ++p) {
+    const int32_t region = maps.region[p];
+    if (region < static_cast<int32_t>(FrameRegion::Background) || region > static_cast<int32_t>(FrameRegion::Target))
+      throw std::invalid_argument("frame maps: region " + std::to_string(region) + " is none of 0, 1, 2");
+    if ((region == static_cast<int32_t>(FrameRegion::Target)) != (maps.label[p] > 0 && maps.coverage[p] > 0.0f))
+      throw std::invalid_argument("frame maps: at pixel " + std::to_string(p) + " the region (" + std::to_string(region) +
+                                  ") and the label (" + std::to_string(maps.label[p]) + ") disagree on the target");
+  }
 }
 
 // A data map's pixel: the values where the object is, with A = 1 so that readers which
@@ -119,7 +133,9 @@ void write_frame_maps(const fs::path& variant_folder, const std::string& stem, c
     if (count < 1 || count > kMaxSampleCount)
       throw std::invalid_argument("frame maps: sample count " + std::to_string(count) +
                                   " does not fit the 16-bit sample count map (1 to 65535)");
-  for (const DatasetMapInfo& info : kMaps) fs::create_directories(variant_folder / info.folder);
+  const bool surroundings = !maps.region.empty();
+  for (const DatasetMapInfo& info : kMaps)
+    if (frame_has_map(info, surroundings)) fs::create_directories(variant_folder / info.folder);
   matbase::AtomicFileSet set(map_file(variant_folder, kMaps.back(), stem));
   auto path = [&](DatasetMap map) { return map_file(variant_folder, kMaps[static_cast<size_t>(map)], stem).string(); };
 
@@ -154,6 +170,11 @@ void write_frame_maps(const fs::path& variant_folder, const std::string& stem, c
   const std::vector<float> sample_count(maps.sample_count.begin(), maps.sample_count.end());
   matbase::write_data_png(path(DatasetMap::SampleCount), w, h, 1, sample_count.data(), 1.0, 0.0, true, &set);
 
+  if (surroundings) {
+    const std::vector<float> region(maps.region.begin(), maps.region.end());
+    matbase::write_data_png(path(DatasetMap::Region), w, h, 1, region.data(), 1.0, 0.0, false, &set);
+  }
+
   // Over a background camera rays see, every pixel is opaque (alpha 1, not the coverage).
   const std::vector<float> opaque = maps.opaque_background ? std::vector<float>(n, 1.0f) : std::vector<float>();
   matbase::write_display_png(path(DatasetMap::Images), w, h, maps.color.data(),
@@ -161,8 +182,10 @@ void write_frame_maps(const fs::path& variant_folder, const std::string& stem, c
   set.commit();
 }
 
-bool frame_is_complete(const fs::path& variant_folder, const std::string& stem, int width, int height) {
+bool frame_is_complete(const fs::path& variant_folder, const std::string& stem, int width, int height,
+                       bool surroundings) {
   for (const DatasetMapInfo& info : kMaps) {
+    if (!frame_has_map(info, surroundings)) continue;
     const fs::path file = map_file(variant_folder, info, stem);
     std::error_code error;
     if (!fs::is_regular_file(file, error)) return false;

@@ -163,6 +163,7 @@ struct VariantExpectations {
   std::set<int> labels;        // metadata.json's used_materials
   std::optional<int> samples;  // metadata.json's provenance.render.samples, where it says
   std::optional<Sphere> bounds;  // metadata.json's provenance.lights.bounds, where it says
+  bool surroundings = false;     // metadata.json's provenance records surroundings: frames have region maps
 };
 
 // The object's bounding sphere as the variant's metadata.json states it.
@@ -208,8 +209,11 @@ std::optional<CameraAxis> camera_axis(const nlohmann::json& matrix) {
 // Depth along the camera axis at the object's pixels: finite, positive, and within the range the
 // object's bounding sphere spans along the axis (with room for rounding); a NaN, a 0 or a depth
 // beyond the object is no depth of it.
+// `object_ids`, when given, says which covered pixels are the object's (with surroundings, the
+// label's): only there must the depth be within its bounds.
 void verify_depth(const fs::path& file, const matbase::FloatImage& depth, const std::optional<Sphere>& bounds,
-                  const std::optional<CameraAxis>& camera, std::vector<std::string>& problems) {
+                  const std::optional<CameraAxis>& camera, const std::vector<int32_t>* object_ids,
+                  std::vector<std::string>& problems) {
   double near = 0.0, far = INFINITY;
   if (bounds && camera) {
     const double centre = glm::dot(bounds->center - camera->position, camera->forward);
@@ -219,14 +223,15 @@ void verify_depth(const fs::path& file, const matbase::FloatImage& depth, const 
   }
   size_t not_finite = 0, not_positive = 0, outside = 0;
   for (size_t p = 0; p < depth.values.size() / 4; ++p) {
-    if (depth.values[4 * p + 3] <= 0.0f) continue;  // not the object
+    if (depth.values[4 * p + 3] <= 0.0f) continue;  // no surface
     const float d = depth.values[4 * p];
+    const bool object = !object_ids || (p < object_ids->size() && (*object_ids)[p] > 0);
     if (!std::isfinite(d)) ++not_finite;
     else if (d <= 0.0f) ++not_positive;
-    else if (d < near || d > far) ++outside;
+    else if (object && (d < near || d > far)) ++outside;
   }
-  if (not_finite > 0) problems.push_back(fmt::format("{}: {} of the object's pixels have a depth that is NaN or infinite", file.string(), not_finite));
-  if (not_positive > 0) problems.push_back(fmt::format("{}: {} of the object's pixels have a depth of 0 or less", file.string(), not_positive));
+  if (not_finite > 0) problems.push_back(fmt::format("{}: {} covered pixels have a depth that is NaN or infinite", file.string(), not_finite));
+  if (not_positive > 0) problems.push_back(fmt::format("{}: {} covered pixels have a depth of 0 or less", file.string(), not_positive));
   if (outside > 0)
     problems.push_back(fmt::format("{}: {} of the object's pixels have a depth outside {:.4g} to {:.4g} m, the "
                                    "object's bounding sphere along the camera axis",
@@ -279,7 +284,9 @@ void verify_frame(const fs::path& folder, const std::string& stem, const Variant
   for (const DatasetMapInfo& info : dataset_maps()) {
     // Our own maps are checked where the variant has their folder: the repository's datasets
     // have none of them.
-    if (!info.repository && !fs::is_directory(folder / info.folder)) continue;
+    if (!info.repository && !fs::is_directory(folder / info.folder) &&
+        !(info.surroundings_only && expected.surroundings))
+      continue;
     const fs::path file = folder / info.folder / (stem + info.extension);
     if (!fs::is_regular_file(file)) {
       problems.push_back(file.string() + ": missing");
@@ -308,28 +315,67 @@ void verify_frame(const fs::path& folder, const std::string& stem, const Variant
     verify_sample_counts(folder / "sample_count" / (stem + ".png"), counts->second, expected.samples, problems);
   const std::set<int>& labels = expected.labels;
   const auto label = maps.find(DatasetMap::Label), depth = maps.find(DatasetMap::Depth), orm = maps.find(DatasetMap::Orm);
-  if (depth != maps.end())
-    verify_depth(folder / "depth" / (stem + ".exr"), depth->second, expected.bounds, camera, problems);
-  if (label == maps.end()) return;
-  const fs::path label_file = folder / "label" / (stem + ".png");
+  const fs::path depth_file = folder / "depth" / (stem + ".exr"), label_file = folder / "label" / (stem + ".png");
+  // Alone, every covered pixel is the object's; with surroundings only the label's are, so there
+  // the depth is held to the object's bounds once the label is read (and not at all without it).
+  if (depth != maps.end() && !expected.surroundings)
+    verify_depth(depth_file, depth->second, expected.bounds, camera, nullptr, problems);
+  const auto depth_without_label = [&] {
+    if (depth != maps.end() && expected.surroundings)
+      verify_depth(depth_file, depth->second, std::nullopt, camera, nullptr, problems);
+  };
+  if (label == maps.end()) return depth_without_label();
   // The ids as written, 8 or 16 bits (decoded as floats a 16-bit 7 would read as 0).
   DecodedIds ids;
   try {
     ids = decode_ids(label_file);
   } catch (const std::runtime_error& e) {
     problems.push_back(one_line(e.what()));
-    return;
+    return depth_without_label();
+  }
+  if (depth != maps.end() && expected.surroundings)
+    verify_depth(depth_file, depth->second, expected.bounds, camera, &ids.ids, problems);
+  // With surroundings the label is the target's alone: nonzero exactly where the region map says
+  // the target is the first hit, while coverage, depth and ORM cover every surface.
+  std::optional<DecodedIds> regions;
+  const fs::path region_file = folder / "region" / (stem + ".png");
+  if (maps.count(DatasetMap::Region)) {
+    try {
+      regions = decode_ids(region_file);
+    } catch (const std::runtime_error& e) {
+      problems.push_back(one_line(e.what()));
+    }
   }
   std::set<int> found;
-  size_t mask_disagreements = 0;
+  size_t mask_disagreements = 0, region_disagreements = 0, unknown_regions = 0;
   for (size_t p = 0; p < ids.ids.size(); ++p) {
     const int id = ids.ids[p];
     found.insert(id);
     const bool object = id > 0;
     const bool covered = depth != maps.end() && depth->second.values[4 * p + 3] > 0.0f;
     const bool orm_alpha = orm != maps.end() && orm->second.values[4 * p + 3] > 0.0f;
-    if ((depth != maps.end() && object != covered) || (orm != maps.end() && object != orm_alpha)) ++mask_disagreements;
+    if (regions) {
+      const int32_t region = regions->ids[p];
+      if (region < 0 || region > static_cast<int32_t>(FrameRegion::Target)) {
+        ++unknown_regions;
+        continue;
+      }
+      const bool surface = region != static_cast<int32_t>(FrameRegion::Background);
+      if (object != (region == static_cast<int32_t>(FrameRegion::Target)) ||
+          (depth != maps.end() && surface != covered) || (orm != maps.end() && surface != orm_alpha))
+        ++region_disagreements;
+    } else if ((depth != maps.end() && object != covered) || (orm != maps.end() && object != orm_alpha)) {
+      ++mask_disagreements;
+    }
   }
+  if (unknown_regions > 0)
+    problems.push_back(fmt::format("{}: {} pixels hold a region that is none of 0 (background), 1 (surroundings) and "
+                                   "2 (the target)",
+                                   region_file.string(), unknown_regions));
+  if (region_disagreements > 0)
+    problems.push_back(fmt::format("{}: at {} pixels the label's object mask is not where the region map's first hit is "
+                                   "the target, or a surface of the region map has no coverage in depth/ or ORM's alpha",
+                                   label_file.string(), region_disagreements));
   if (found.size() == 1 && found.count(0))
     problems.push_back(label_file.string() + ": the object is in no pixel of the frame (is the camera too far, or "
                                              "looking away?)");
@@ -357,6 +403,7 @@ void verify_variant(const fs::path& folder, VerifyReport& report, std::set<std::
   expected.labels = used_labels(folder, metadata, problems);
   expected.samples = stated_samples(metadata);
   expected.bounds = stated_bounds(metadata);
+  expected.surroundings = metadata.is_object() && metadata.contains(nlohmann::json::json_pointer("/provenance/surroundings"));
   verify_segmentation_json(folder / "material_segmentation_map.json", problems);
   if (!transforms.is_object()) return;
   if (!transforms.contains("w") || !transforms.contains("h") || !transforms["w"].is_number_integer() ||

@@ -136,32 +136,6 @@ void apply_override(YAML::Node root, const Override& o) {
   }
 }
 
-MaterialCandidate read_candidate(const DocumentNode& v, const fs::path& base) {
-  MaterialCandidate candidate;
-  if (v.is_text()) {
-    candidate.spelled = v.text();
-    try {
-      const matmaterial::LibraryMaterialSpec spec = matmaterial::parse_library_material(candidate.spelled);
-      candidate.source = spec;
-      const matmaterial::LibraryStyleInfo& style = matmaterial::resolved_style(spec);
-      candidate.name = fmt::format("{}_{}_{}", matmaterial::material_class(spec.material_class).name, style.name, spec.seed);
-    } catch (const std::invalid_argument& e) {
-      v.fail(e.what());
-    }
-    return candidate;
-  }
-  v.expect_keys({"matsynth"});
-  const DocumentNode folder_node = v.required("matsynth");
-  const std::string folder = folder_node.text();
-  const fs::path path = fs::path(folder).is_absolute() ? fs::path(folder) : base / folder;
-  if (!fs::is_directory(path)) folder_node.fail("no folder at " + path.string());
-  candidate.spelled = folder;
-  candidate.source = path.lexically_normal().string();
-  candidate.name = path.lexically_normal().filename().string();
-  if (candidate.name.empty()) candidate.name = path.lexically_normal().parent_path().filename().string();
-  return candidate;
-}
-
 // The slots of an object: its part lists (`slots`) and candidates (`materials`, or the
 // configuration's top-level `materials`).
 std::vector<SlotConfig> read_slots(const DocumentNode& object, const std::optional<DocumentNode>& defaults,
@@ -182,7 +156,7 @@ std::vector<SlotConfig> read_slots(const DocumentNode& object, const std::option
     config.key = slot;
     config.parts = parts[slot];
     for (const DocumentNode& item : list.items()) {
-      MaterialCandidate candidate = read_candidate(item, base);
+      MaterialCandidate candidate = read_material_candidate(item, base);
       for (const MaterialCandidate& earlier : config.candidates)
         if (earlier.name == candidate.name)
           item.fail("\"" + earlier.spelled + "\" and \"" + candidate.spelled + "\" are both \"" + candidate.name +
@@ -215,10 +189,13 @@ std::string folded_case(std::string name) {
   return name;
 }
 
-ObjectConfig read_object(const DocumentNode& v, const std::optional<DocumentNode>& defaults, const fs::path& base,
-                         FolderNames& names) {
-  v.expect_keys({"name", "builtin", "mesh", "seed", "uv_pass", "uv_scale", "auto_smooth_deg", "slots", "materials"});
+ObjectConfig read_object(const DocumentNode& v, const std::optional<DocumentNode>& defaults,
+                         const SurroundingsConfig& surroundings, const fs::path& base, FolderNames& names) {
+  v.expect_keys({"name", "builtin", "mesh", "seed", "uv_pass", "uv_scale", "auto_smooth_deg", "slots", "materials",
+                 "surroundings"});
   ObjectConfig object;
+  object.surroundings = surroundings;
+  if (const std::optional<DocumentNode> own = v.find("surroundings")) object.surroundings = read_surroundings(*own, base);
   const std::optional<DocumentNode> builtin = v.find("builtin"), mesh = v.find("mesh");
   if (builtin.has_value() == mesh.has_value())
     v.fail("give exactly one of `builtin` (a built-in object's name) and `mesh` (a file)");
@@ -357,7 +334,7 @@ void read_splits(const DocumentNode& v, DatasetConfig& config) {
 
 DatasetConfig read_config(const DocumentNode& root, const fs::path& base) {
   root.expect_keys({"output", "seed", "variants", "materials", "objects", "camera", "render", "lights", "splits",
-                    "paper_texture_layout"});
+                    "paper_texture_layout", "surroundings"});
   DatasetConfig config;
   if (const std::optional<DocumentNode> output = root.find("output")) {
     config.output = output->text();
@@ -378,9 +355,21 @@ DatasetConfig read_config(const DocumentNode& root, const fs::path& base) {
   if (!root.has("objects")) root.fail("no objects: the configuration needs an `objects` list");
   const DocumentNode objects = root.required("objects");
   const std::optional<DocumentNode> materials = root.find("materials");
-  for (const DocumentNode& object : objects.items()) config.objects.push_back(read_object(object, materials, base, names));
+  SurroundingsConfig surroundings;
+  if (const std::optional<DocumentNode> node = root.find("surroundings")) surroundings = read_surroundings(*node, base);
+  for (const DocumentNode& object : objects.items())
+    config.objects.push_back(read_object(object, materials, surroundings, base, names));
   if (config.objects.empty()) objects.fail("the list is empty");
   if (const std::optional<DocumentNode> camera = root.find("camera")) read_camera(*camera, config.camera);
+  // Cameras under the floor would see its underside: until the plan leaves them out, the grid
+  // stays at or above the grid centre's horizon when there is a floor.
+  if (config.camera.phi_max_deg > 90.0)
+    for (size_t o = 0; o < config.objects.size(); ++o)
+      if (config.objects[o].surroundings.kind != SurroundingsKind::None)
+        (root.has("camera") ? root.required("camera") : root)
+            .fail(fmt::format("camera.phi_deg reaches {} degrees, below the horizon, and object {} stands on a floor: "
+                              "keep the grid's polar angles within [0, 90] with surroundings",
+                              config.camera.phi_max_deg, config.objects[o].name));
   if (const std::optional<DocumentNode> render = root.find("render")) read_render(*render, config.render);
   if (const std::optional<DocumentNode> lights = root.find("lights")) config.lighting = read_lighting(*lights, base);
   if (const std::optional<DocumentNode> splits = root.find("splits")) read_splits(*splits, config);

@@ -36,6 +36,7 @@ void write_variant_records(const DatasetConfig& config, const DatasetPlan& plan,
   metadata.height = config.render.height;
   metadata.samples = config.render.settings.samples_per_pixel;
   metadata.provenance_json = renderer.provenance_json(plan, variant);
+  metadata.surroundings = renderer.has_surroundings();
   for (const char* record : {"metadata.json", "transforms.json", "material_segmentation_map.json"})
     matbase::remove_stale_temporaries(folder / record, false);
   const fs::path metadata_file = folder / "metadata.json";
@@ -53,7 +54,7 @@ void write_variant_records(const DatasetConfig& config, const DatasetPlan& plan,
   std::vector<FramePose> poses;
   for (size_t view = 0; view < plan.views; ++view)
     poses.push_back(renderer.view_pose(view, view_stem(plan, view)));
-  write_transforms(folder, renderer.intrinsics(), poses);
+  write_transforms(folder, renderer.intrinsics(), poses, renderer.has_surroundings());
   write_segmentation_map_json(folder);
 }
 
@@ -110,7 +111,8 @@ RunSummary run_dataset(const DatasetConfig& config, const DatasetPlan& plan, con
         variant_material_names(config.objects[frame.object], plan.variants[frame.object][frame.variant]).front();
     const fs::path screenshot = texture_target_screenshot_path(
         texture_target_root(config), config.objects[frame.object].name, material, stem);
-    if (frame_is_complete(folder, stem, config.render.width, config.render.height) &&
+    if (frame_is_complete(folder, stem, config.render.width, config.render.height,
+                          config.objects[frame.object].surroundings.kind != SurroundingsKind::None) &&
         (!config.paper_texture_layout || texture_target_screenshot_is_complete(screenshot))) {
       ++summary.skipped;
       if (!shows_object(decode(folder / "label" / (stem + ".png")).values))

@@ -48,15 +48,6 @@ ordered_json render_block(const matrender::RenderSettings& settings) {
   return render;
 }
 
-ordered_json material_json(const MaterialCandidate& candidate, int resolution) {
-  if (const auto* folder = std::get_if<std::string>(&candidate.source)) return {{"matsynth", *folder}};
-  const auto& spec = std::get<matmaterial::LibraryMaterialSpec>(candidate.source);
-  return {{"class", matmaterial::material_class(spec.material_class).name},
-          {"style", matmaterial::resolved_style(spec).name},
-          {"seed", spec.seed},
-          {"resolution", resolution}};
-}
-
 }  // namespace
 
 FrameScene dataset_frame_scene(const fs::path& frame) {
@@ -116,7 +107,7 @@ FrameScene dataset_frame_scene(const fs::path& frame) {
     if (!chosen)
       throw matbase::InputError(metadata_file.string() + ": slot \"" + key + "\" has no material \"" + name +
                                 "\" in the recorded configuration");
-    materials[name] = material_json(*chosen, config.render.material_resolution);
+    materials[name] = candidate_scene_json(*chosen, config.render.material_resolution);
     const ordered_json& parts = member(slot, "parts", metadata_file);
     bool every_part = false;
     for (const SlotConfig& config_slot : object->slots) every_part |= config_slot.key == key && config_slot.parts.empty();
@@ -125,8 +116,20 @@ FrameScene dataset_frame_scene(const fs::path& frame) {
       for (const ordered_json& part : parts) part_materials[part.get<std::string>()] = name;
   }
   if (!part_materials.empty()) object_json["materials"] = part_materials;
-  scene["materials"] = materials;
   scene["objects"] = ordered_json::array({object_json});
+  // The room the variant drew, as recorded, in its recorded materials.
+  if (const auto surroundings = provenance.find("surroundings"); surroundings != provenance.end()) {
+    ordered_json room_json = {{"room", member(*surroundings, "room", metadata_file)}, {"surroundings", true}};
+    ordered_json room_materials = ordered_json::object();
+    for (const auto& [part, material] : member(*surroundings, "materials", metadata_file).items()) {
+      const std::string name = member(material, "name", metadata_file);
+      materials[name] = member(material, "scene", metadata_file);
+      room_materials[part] = name;
+    }
+    room_json["materials"] = room_materials;
+    scene["objects"].push_back(room_json);
+  }
+  scene["materials"] = materials;
 
   const ordered_json transforms = read_json(transforms_file);
   const ordered_json* entry = nullptr;

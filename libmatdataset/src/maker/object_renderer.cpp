@@ -25,17 +25,32 @@ namespace {
 using nlohmann::ordered_json;
 constexpr double kDegree = matbase::kPi / 180.0;
 
-// The paper's scene of the object (its rig at the configured illuminance) at UV scale
-// `uv_scale`, with every candidate material of its slots among the scene's materials; each frame
-// places the camera itself.
-matrender::SceneDescription object_scene(const DatasetConfig& config, size_t index, double uv_scale) {
+// The object as the scene describes it, at UV scale `uv_scale`.
+matrender::ObjectDescription object_description(const DatasetConfig& config, size_t index, double uv_scale) {
   const ObjectConfig& object = config.objects[index];
   matrender::ObjectDescription description;
   std::visit([&description](const auto& source) { description.source = source; }, object.source);
   description.uv_pass = object.uv_pass;
   description.uv_scale = uv_scale;
   description.origin = matrender::Origin{config.source, "/objects/" + std::to_string(index)};
-  matrender::SceneDescription scene = matrender::paper_object_scene(std::move(description));
+  return description;
+}
+
+// The paper's scene of the object (its rig at the configured illuminance) at UV scale
+// `uv_scale`, in `room` when it has one (the scene's second object, surroundings), with every
+// candidate material of its slots among the scene's materials; each frame places the camera
+// itself.
+matrender::SceneDescription object_scene(const DatasetConfig& config, size_t index, double uv_scale,
+                                         const std::optional<matgeom::RoomSpec>& room) {
+  const ObjectConfig& object = config.objects[index];
+  matrender::SceneDescription scene = matrender::paper_object_scene(object_description(config, index, uv_scale));
+  if (room) {
+    matrender::ObjectDescription surroundings;
+    surroundings.source = matrender::RoomObject{*room};
+    surroundings.surroundings = true;
+    surroundings.origin = matrender::Origin{config.source, "/objects/" + std::to_string(index) + "/surroundings"};
+    scene.objects.push_back(std::move(surroundings));
+  }
   matrender::SceneOverrides overrides;
   overrides.placement = matrender::MatrixPlacement{};
   overrides.width = config.render.width;
@@ -45,12 +60,8 @@ matrender::SceneDescription object_scene(const DatasetConfig& config, size_t ind
       const MaterialCandidate& candidate = object.slots[s].candidates[k];
       const matrender::Origin origin{config.source, fmt::format("/objects/{}/materials/{}/{}", index,
                                                                 object.slots[s].key, k)};
-      matrender::MaterialDescription material;
-      if (const auto* spec = std::get_if<matmaterial::LibraryMaterialSpec>(&candidate.source))
-        material.library = matrender::LibraryMaterialRequest{*spec, config.render.material_resolution, origin};
-      else
-        material.folder = matrender::MaterialFolderFile{std::get<std::string>(candidate.source), origin};
-      overrides.materials.emplace(candidate.name, std::move(material));
+      overrides.materials.emplace(candidate.name,
+                                  candidate_scene_material(candidate, config.render.material_resolution, origin));
     }
   matrender::apply_scene_overrides(overrides, scene);
   return scene;
@@ -122,16 +133,14 @@ uint32_t dataset_aovs() {
 }
 
 ObjectRenderer::ObjectRenderer(const DatasetConfig& config, size_t object)
-    : config_(config),
-      object_index_(object),
-      object_(config.objects[object]),
-      built_(matrender::build_scene(object_scene(config, object, object_.uv_scales.front()))) {
-  const matgeom::TriangleMesh& mesh = built_.object_surfaces.front();
-  const size_t part_count = built_.scene.part_materials(built_.object_meshes.front()).size();
-  slot_parts_ = parts_of_slots(config, object, mesh.part_names, part_count);
+    : config_(config), object_index_(object), object_(config.objects[object]) {
+  // The grid (and the room it sizes) from the object's surface as placed, before its UV pass,
+  // which moves no vertex: the room is built into the object's scene with it.
+  const matgeom::TriangleMesh surface =
+      matrender::placed_object_surface(object_description(config, object, object_.uv_scales.front()));
   const CameraConfig& camera = config.camera;
-  grid_.center = matgeom::surface_centroid(mesh);
-  grid_.radius = camera_grid_radius(camera, mesh, built_.bounds, grid_.center,
+  grid_.center = matgeom::surface_centroid(surface);
+  grid_.radius = camera_grid_radius(camera, surface, matgeom::minimal_enclosing_sphere(surface.positions), grid_.center,
                                     static_cast<double>(config.render.width) / config.render.height);
   grid_.phi_min = camera.phi_min_deg * kDegree;
   grid_.phi_max = camera.phi_max_deg * kDegree;
@@ -140,6 +149,11 @@ ObjectRenderer::ObjectRenderer(const DatasetConfig& config, size_t object)
   grid_.n_phi = camera.n_phi;
   grid_.n_theta = camera.n_theta;
   grid_views_ = static_cast<size_t>(camera.n_phi) * static_cast<size_t>(camera.n_theta);
+  if (object_.surroundings.kind != SurroundingsKind::None) room_ = surroundings_room(object_.surroundings, surface, grid_);
+  built_ = matrender::build_scene(object_scene(config, object, object_.uv_scales.front(), room_));
+  const matgeom::TriangleMesh& mesh = built_.object_surfaces.front();
+  const size_t part_count = built_.scene.part_materials(built_.object_meshes.front()).size();
+  slot_parts_ = parts_of_slots(config, object, mesh.part_names, part_count);
 }
 
 void ObjectRenderer::select_variant(size_t index, const MaterialVariant& variant, const std::atomic<bool>* cancel) {
@@ -147,7 +161,7 @@ void ObjectRenderer::select_variant(size_t index, const MaterialVariant& variant
   // Another UV scale is another UV pass: the object is built again (its geometry, and so the
   // camera grid, stay as they are), lit again view by view.
   if (const double scale = object_.uv_scale_of(variant); scale != built_.object_uv_scales.front()) {
-    built_ = matrender::build_scene(object_scene(config_, object_index_, scale), cancel);
+    built_ = matrender::build_scene(object_scene(config_, object_index_, scale, room_), cancel);
     lit_view_ = SIZE_MAX;
   }
   variant_index_ = index;
@@ -178,6 +192,25 @@ void ObjectRenderer::select_variant(size_t index, const MaterialVariant& variant
                        "after its class (\"wood_oak\") or give its metadata.json a category");
     slot_materials_.push_back({object_.slots[s].key, candidate.name, label});
   }
+  if (room_) put_surroundings_in_materials();
+}
+
+void ObjectRenderer::put_surroundings_in_materials() {
+  surroundings_ = draw_surroundings(object_.surroundings, config_.seed, object_index_, variant_index_);
+  matrender::ObjectDescription materials;
+  materials.origin = matrender::Origin{config_.source, "/objects/" + std::to_string(object_index_) + "/surroundings"};
+  const auto describe = [&](const MaterialCandidate& candidate, const char* key) {
+    built_.materials.describe(candidate.name,
+                              candidate_scene_material(candidate, config_.render.material_resolution,
+                                                       matrender::Origin{config_.source, materials.origin.pointer.value() + "/" + key}));
+    return candidate.name;
+  };
+  materials.part_materials[matgeom::kRoomFloorPart] = describe(*surroundings_.floor, "floor_materials");
+  if (surroundings_.walls) {
+    materials.part_materials[matgeom::kRoomWallsPart] = describe(*surroundings_.walls, "wall_materials");
+    if (room_->ceiling) materials.part_materials[matgeom::kRoomCeilingPart] = surroundings_.walls->name;
+  }
+  matrender::assign_object_materials(built_, 1, materials);
 }
 
 matgeom::ObjectAsset ObjectRenderer::variant_asset() const {
@@ -262,7 +295,7 @@ bool ObjectRenderer::render(size_t view, uint32_t seed, int threads, const std::
   settings.threads = threads;
   settings.transparent_background = !lighting.drawn.background_visible;
   using P = matrender::MaterialParameter;
-  settings.aovs = dataset_aovs();
+  settings.aovs = dataset_aovs() | (room_ ? matrender::AovObjectId : 0u);
   settings.cancel = cancel;
   matrender::FrameBuffers frame;
   const matrender::RenderStats result = matrender::render(built_.scene, view_camera(view), settings, frame);
@@ -280,6 +313,19 @@ bool ObjectRenderer::render(size_t view, uint32_t seed, int threads, const std::
   maps.normal_tangent = std::move(frame.normal_tangent);
   maps.depth = std::move(frame.depth);
   maps.label = std::move(frame.label);
+  if (room_) {
+    // The label is the target's alone; the region says what each pixel's labelled sample is on.
+    const int32_t target = static_cast<int32_t>(built_.object_meshes.front());
+    maps.region.resize(frame.object_id.size());
+    for (size_t p = 0; p < maps.region.size(); ++p) {
+      const int32_t hit = frame.object_id[p];
+      const FrameRegion region = hit < 0 ? FrameRegion::Background
+                                 : hit == target ? FrameRegion::Target
+                                                 : FrameRegion::Surroundings;
+      maps.region[p] = static_cast<int32_t>(region);
+      if (region != FrameRegion::Target) maps.label[p] = 0;
+    }
+  }
   maps.sample_count = std::move(frame.sample_count);
   maps.exposure_stops = lighting.exposure_stops;
   maps.opaque_background = lighting.drawn.background_visible;
@@ -404,6 +450,21 @@ std::string ObjectRenderer::provenance_json(const DatasetPlan& plan, size_t vari
                                "its own trials, sqrt(p (1 - p) / n) with p = (escaped + 1) / (n + 2), is at most the "
                                "bound; stratified directions make the true error smaller"}}},
                     {"frame_seeds", seeds}};
+  // Recorded only where there are surroundings, so datasets made before they existed resume unchanged.
+  if (room_) {
+    ordered_json materials = ordered_json::object();
+    const int resolution = config_.render.material_resolution;
+    const auto material = [&](const MaterialCandidate& candidate) {
+      return ordered_json{{"name", candidate.name}, {"scene", candidate_scene_json(candidate, resolution)}};
+    };
+    materials[matgeom::kRoomFloorPart] = material(*surroundings_.floor);
+    if (surroundings_.walls) materials[matgeom::kRoomWallsPart] = material(*surroundings_.walls);
+    if (room_->ceiling) materials[matgeom::kRoomCeilingPart] = material(*surroundings_.walls);
+    json["surroundings"] = {{"kind", surroundings_kind_name(object_.surroundings.kind)},
+                            {"room", ordered_json::parse(room_scene_json(*room_))},
+                            {"materials", materials},
+                            {"drawn", "per variant, from the configuration's seed and the object's and variant's indices"}};
+  }
   json["configuration"] = config_.canonical_yaml;
   return json.dump();
 }

@@ -38,6 +38,9 @@ struct Bounds3 {
 };
 Bounds3 mesh_bounds(const TriangleMesh& mesh);
 
+// The surface's area: the sum of its triangles' (square metres for a mesh in metres).
+double surface_area(const TriangleMesh& mesh);
+
 // Area-weighted centroid of the surface.
 glm::dvec3 surface_centroid(const TriangleMesh& mesh);
 

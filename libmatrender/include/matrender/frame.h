@@ -6,10 +6,10 @@
 // camera samples (Cycles' Blackman-Harris of RenderSettings::filter_width, importance sampled,
 // weight 1). alpha is the fraction of samples that hit a surface. The material parameters and
 // the normals are the mean over the samples that hit (not premultiplied by alpha; each parameter
-// clamped to its range in the table, normals renormalised). Depth, label and part id come from
+// clamped to its range in the table, normals renormalised). Depth, label, part and object id come from
 // the single hit sample nearest the pixel centre and are never blended. Ambient occlusion is the
 // mean over the hit samples of the fraction of their occlusion rays that escape
-// (RenderSettings). Pixels no sample hit hold 0 (label 0, part id -1, depth 0).
+// (RenderSettings). Pixels no sample hit hold 0 (label 0, part and object id -1, depth 0).
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -44,8 +44,12 @@ enum Aov : uint32_t {
   // The variance of the pixel's colour estimate (of the mean of its samples' Rec.709 luminance):
   // what the denoiser weighs neighbours by.
   AovColorVariance = 1u << 9,
+  // Which object of the scene the hit nearest the pixel centre is on: the scene's mesh index
+  // (BuiltScene::object_meshes maps described objects to them), -1 for the background. What
+  // tells a subject from its surroundings, pixel by pixel.
+  AovObjectId = 1u << 10,
 };
-constexpr uint32_t kFirstParameterAovBit = 10;
+constexpr uint32_t kFirstParameterAovBit = 11;
 static_assert(kFirstParameterAovBit + matmaterial::kMaterialParameterCount <= 32, "AOV bits fit in 32");
 
 // The AOV of a material parameter: its value at the first hit, named as in the table.
@@ -56,7 +60,7 @@ constexpr uint32_t kGeometricAovs =
 
 // Every AOV.
 constexpr uint32_t all_aovs() {
-  uint32_t mask = kGeometricAovs | AovAmbientOcclusion | AovSampleCount | AovColorVariance;
+  uint32_t mask = kGeometricAovs | AovAmbientOcclusion | AovSampleCount | AovColorVariance | AovObjectId;
   for (const matmaterial::MaterialParameterInfo& info : matmaterial::kMaterialParameters) mask |= parameter_aov(info.id);
   return mask;
 }
@@ -100,6 +104,7 @@ struct FrameBuffers {
   std::vector<float> depth;          // metres along the camera axis
   std::vector<int32_t> label;        // material label id
   std::vector<int32_t> part_id;      // part id, -1 for background
+  std::vector<int32_t> object_id;    // the scene's mesh index, -1 for background
   std::vector<int32_t> sample_count;  // camera samples taken
   std::vector<float> color_variance;  // of the mean luminance, from the spread of the samples
 

@@ -22,8 +22,8 @@ struct BuiltScene {
   std::vector<uint32_t> object_meshes;   // the scene mesh of each described object, in order
   std::vector<double> object_uv_scales;  // the scale each object's UV pass ran at (1 where it did not)
   std::string frame_stem;                // output file prefix: "view_005_016" for grid cell (5, 16), else "view"
-  matgeom::Sphere bounds;                // minimal enclosing sphere of all objects
-  glm::dvec3 centroid{0.0};              // surface centroid of all objects, where grid cameras look by default
+  matgeom::Sphere bounds;                // minimal enclosing sphere of the objects that are not surroundings
+  glm::dvec3 centroid{0.0};              // their surface centroid, where grid cameras look by default
   std::optional<matgeom::LightRig> rig;  // when the paper's rig lights the scene
   // The described materials (those no part uses yet are loaded when first assigned) and each
   // object's surface in world space: what assign_object_materials needs.
@@ -38,6 +38,11 @@ struct BuiltScene {
 // (unreadable mesh or texture, unknown part name), and matbase::Cancelled soon after `cancel`
 // (when given) is set while materials load (SceneMaterials::cancel_on).
 BuiltScene build_scene(const SceneDescription& description, const std::atomic<bool>* cancel = nullptr);
+
+// Object `object`'s surface in world space as build_scene places it, without the UV pass: what
+// sizes the things put around it before its scene is built. Throws matbase::InputError as
+// build_scene does for an object that cannot be read.
+matgeom::TriangleMesh placed_object_surface(const ObjectDescription& object);
 
 // The camera `description` places in the built scene (a grid centred on "centroid" around
 // built.centroid). Throws matbase::InputError for a look-at whose up is along its view, a cell

@@ -19,6 +19,7 @@
 #include "matgeom/camera_grid.h"
 #include "matgeom/io/mesh_io.h"
 #include "matgeom/object_asset.h"
+#include "matgeom/room.h"
 #include "matmaterial/library/material_library.h"
 #include "matrender/camera.h"
 #include "matrender/lamp.h"
@@ -90,6 +91,11 @@ struct BuiltinObject {
 struct GivenObject {
   std::shared_ptr<const matgeom::ObjectAsset> asset;
 };
+// A floor, walls and a ceiling made to measure (matgeom/room.h), its parts "floor", "walls" and
+// "ceiling" in the scene's default material unless the description assigns them others.
+struct RoomObject {
+  matgeom::RoomSpec spec;
+};
 
 // When an object's mesh gets new UVs from the paper's UV pass (matgeom/uv/uv_pass.h) before it is
 // placed: never, only when the mesh has no UVs of its own, or always.
@@ -101,7 +107,7 @@ constexpr double kMinUvScale = 0.01;
 constexpr double kMaxUvScale = 100.0;
 
 struct ObjectDescription {
-  std::variant<MeshFile, BuiltinObject, GivenObject> source;
+  std::variant<MeshFile, BuiltinObject, GivenObject, RoomObject> source;
   UvPassMode uv_pass = UvPassMode::Never;
   double uv_scale = 1.0;  // the UV pass's texel_density_scale, when it runs
   glm::dmat4 object_to_world{1.0};
@@ -111,6 +117,10 @@ struct ObjectDescription {
   std::map<std::string, std::string> part_materials;
   // Cycles' Shading > Shadow Terminator > Geometry Offset of the object (Blender's default 0.1).
   float shadow_terminator_geometry_offset = 0.1f;
+  // Around the subject rather than the subject: left out of the bounds and the centroid that the
+  // paper's rig and a grid camera are placed by (BuiltScene::bounds), so a floor under an object
+  // does not move its lamps or its cameras.
+  bool surroundings = false;
   Origin origin;
 };
 

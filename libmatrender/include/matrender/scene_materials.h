@@ -22,6 +22,11 @@ class SceneMaterials {
       : described_(std::move(described)) {}
 
   bool has(const std::string& name) const { return described_.count(name) != 0; }
+  // Describes one more material, for a tool that draws materials after the scene is built (make_dataset's
+  // surroundings); a name already described keeps its description.
+  void describe(const std::string& name, MaterialDescription description) {
+    described_.emplace(name, std::move(description));
+  }
 
   // Loading stops with matbase::Cancelled once `cancel` is set: before each texture and folder,
   // and within a row of a library material's maps. A run's, not the scene's: set by the app.

@@ -68,6 +68,7 @@ void Film::resolve(size_t i, const PixelSums& sums, OcclusionFigures& figures) {
   if (!frame.depth.empty()) frame.depth[i] = sums.depth;
   if (!frame.label.empty()) frame.label[i] = sums.label;
   if (!frame.part_id.empty()) frame.part_id[i] = sums.part;
+  if (!frame.object_id.empty()) frame.object_id[i] = sums.object;
 }
 
 }  // namespace matrender

@@ -36,6 +36,7 @@ struct PixelSums {
   float depth = 0.0f;
   int32_t label = 0;
   int32_t part = -1;
+  int32_t object = -1;
 };
 
 // What resolve() found of a pixel's ambient occlusion, for the render's statistics.
@@ -115,14 +116,15 @@ class Film {
       for (int c = 0; c < 3; ++c) frame_.normal_tangent[3 * pixel + c] += sp.tangent_space_normal[c];
   }
 
-  // Depth, label and part come from the hit nearest the pixel centre, never blended: whether a
-  // hit at squared distance offset2 from it is nearer than those so far, and keeping it.
+  // Depth, label, part and object come from the hit nearest the pixel centre, never blended:
+  // whether a hit at squared distance offset2 from it is nearer than those so far, and keeping it.
   static bool nearer_than_kept(const PixelSums& sums, float offset2) { return offset2 < sums.nearest_offset2; }
-  static void keep_nearest(PixelSums& sums, float offset2, float depth, int32_t label, int32_t part) {
+  static void keep_nearest(PixelSums& sums, float offset2, float depth, int32_t label, int32_t part, int32_t object) {
     sums.nearest_offset2 = offset2;
     sums.depth = depth;
     sums.label = label;
     sums.part = part;
+    sums.object = object;
   }
 
   // Turns pixel `pixel`'s sums into its values, and adds its ambient occlusion's error to `figures`.

@@ -29,6 +29,7 @@ void visit_buffers(FrameBuffers& frame, Visit&& visit) {
   visit(frame.depth, AovDepth, 1, 0.0f);
   visit(frame.label, AovLabel, 1, int32_t{0});
   visit(frame.part_id, AovPartId, 1, int32_t{-1});
+  visit(frame.object_id, AovObjectId, 1, int32_t{-1});
   visit(frame.sample_count, AovSampleCount, 1, int32_t{0});
   visit(frame.color_variance, AovColorVariance, 1, 0.0f);
 }
@@ -70,6 +71,9 @@ const std::vector<AovName>& aov_names() {
                   "nothing was hit"},
                  {"label", AovLabel, "the material label id of the hit nearest the pixel centre; 0 for the background"},
                  {"part_id", AovPartId, "the object part's id at the hit nearest the pixel centre; -1 for the background"},
+                 {"object_id", AovObjectId,
+                  "the scene object of the hit nearest the pixel centre, numbered as the scene lists its objects "
+                  "from 0; -1 for the background"},
                  {"alpha", AovAlpha, "coverage: the fraction of the pixel's camera samples that hit a surface"},
                  {"sample_count", AovSampleCount,
                   "the camera samples the pixel took: the samples per pixel, fewer where adaptive sampling stopped "

@@ -90,7 +90,7 @@ void PixelEvaluator::take_samples(int x, int y, uint32_t begin, uint32_t end, Pi
       const float offset2 = glm::dot(offsets[lane], offsets[lane]);
       if (Film::nearer_than_kept(sums, offset2))
         Film::keep_nearest(sums, offset2, path.first_distance * glm::dot(dirs[lane], rays.forward()),
-                           scene.materials[sp.material].label_id, sp.part);
+                           scene.materials[sp.material].label_id, sp.part, static_cast<int32_t>(sp.mesh));
     }
   }
   if (setup_.occlusion)

@@ -88,6 +88,7 @@ std::vector<std::string> write_frame(const FrameBuffers& frame, const std::strin
   };
   write_id_pass("label", frame.label, 0.0);
   write_id_pass("part_id", frame.part_id, 1.0);  // PNG value = part id + 1, 0 = background
+  write_id_pass("object_id", frame.object_id, 1.0);
   write_id_pass("sample_count", frame.sample_count, 0.0);
   if (!frame.alpha.empty()) {
     written.push_back(file("alpha", "png"));

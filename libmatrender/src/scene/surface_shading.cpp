@@ -84,6 +84,7 @@ SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm:
   const Material& material = scene.materials[material_index];
   SurfacePoint sp(material);
   sp.part = static_cast<int32_t>(part);
+  sp.mesh = hit.mesh;
   sp.material = material_index;
   // Interpolating the vertices is more precise than origin + t dir.
   sp.position = b0 * p0 + b1 * p1 + b2 * p2;

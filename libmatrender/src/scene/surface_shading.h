@@ -32,6 +32,7 @@ struct SurfacePoint {
   glm::vec2 uv{0.0f};
   uint32_t material = 0;
   int32_t part = 0;
+  uint32_t mesh = 0;  // the scene's index of the mesh hit
   PrincipledInputs inputs;
 
   // Radiance the surface emits toward the viewer: Cycles' emission closure, the same from both

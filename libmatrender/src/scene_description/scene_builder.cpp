@@ -30,6 +30,13 @@ matgeom::ObjectAsset read_source(const ObjectDescription& object) {
     }
   }
   if (const auto* given = std::get_if<GivenObject>(&object.source)) return *given->asset;
+  if (const auto* room = std::get_if<RoomObject>(&object.source)) {
+    try {
+      return matgeom::ObjectAsset{matgeom::room_mesh(room->spec), {}, {}, {}};
+    } catch (const std::invalid_argument& e) {
+      throw object.origin.error("/room", e.what());
+    }
+  }
   const auto& builtin = std::get<BuiltinObject>(object.source);
   try {
     return matgeom::make_builtin_object(builtin.name, builtin.seed);
@@ -59,11 +66,14 @@ matgeom::ObjectAsset load_object(const ObjectDescription& object) {
   return asset;
 }
 
-// All objects as one surface, so that the rig is sized and the grid camera centred for
-// everything in the scene rather than for one object.
-matgeom::TriangleMesh merged_surface(const std::vector<matgeom::ObjectAsset>& assets) {
+// The objects that are not surroundings as one surface, so that the rig is sized and the grid
+// camera centred for every subject in the scene rather than for one object.
+matgeom::TriangleMesh merged_surface(const std::vector<matgeom::ObjectAsset>& assets,
+                                     const std::vector<ObjectDescription>& objects) {
   matgeom::TriangleMesh merged;
-  for (const matgeom::ObjectAsset& asset : assets) {
+  for (size_t k = 0; k < assets.size(); ++k) {
+    if (objects[k].surroundings) continue;
+    const matgeom::ObjectAsset& asset = assets[k];
     const auto offset = static_cast<uint32_t>(merged.positions.size());
     merged.positions.insert(merged.positions.end(), asset.mesh.positions.begin(), asset.mesh.positions.end());
     for (const glm::uvec3& triangle : asset.mesh.triangles) merged.triangles.push_back(triangle + offset);
@@ -223,7 +233,10 @@ BuiltScene build_scene(const SceneDescription& description, const std::atomic<bo
     assets.push_back(load_object(object));
     place_object(object, assets.back().mesh);
   }
-  const matgeom::TriangleMesh surface = merged_surface(assets);
+  const matgeom::TriangleMesh surface = merged_surface(assets, description.objects);
+  if (surface.positions.empty() && !description.objects.empty())
+    throw description.objects.front().origin.error(
+        "/surroundings", "every object of the scene is surroundings: name at least one the cameras and lamps are about");
 
   BuiltScene built;
   built.bounds = matgeom::minimal_enclosing_sphere(surface.positions);
@@ -244,6 +257,12 @@ BuiltScene build_scene(const SceneDescription& description, const std::atomic<bo
   built.frame_stem = frame_stem(description.camera);
   built.scene.commit();
   return built;
+}
+
+matgeom::TriangleMesh placed_object_surface(const ObjectDescription& object) {
+  matgeom::TriangleMesh mesh = read_source(object).mesh;
+  place_object(object, mesh);
+  return mesh;
 }
 
 Camera scene_camera(const CameraDescription& description, const BuiltScene& built) {

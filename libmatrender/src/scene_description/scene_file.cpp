@@ -478,19 +478,43 @@ decltype(ObjectDescription::source) read_mesh_source(const DocumentNode& node, c
   return file;
 }
 
+// A room's measurements (matgeom/room.h): "floor_center", "half_width", "height", "walls",
+// "ceiling", "cove_radius", "metres_per_uv", "turn_z_deg".
+RoomObject read_room(const DocumentNode& node) {
+  node.expect_keys({"floor_center", "half_width", "height", "walls", "ceiling", "cove_radius", "metres_per_uv", "turn_z_deg"});
+  matgeom::RoomSpec spec;
+  spec.floor_center = read_vec3(node.required("floor_center"));
+  spec.half_width = node.required("half_width").positive();
+  if (auto height = node.find("height")) spec.height = height->positive();
+  if (auto walls = node.find("walls"))
+    spec.walls = std::array{matgeom::RoomWalls::None, matgeom::RoomWalls::Box,
+                            matgeom::RoomWalls::Cyclorama}[walls->choice({"none", "box", "cyclorama"})];
+  if (auto ceiling = node.find("ceiling")) spec.ceiling = ceiling->boolean();
+  if (auto radius = node.find("cove_radius")) spec.cove_radius = radius->positive();
+  if (auto length = node.find("metres_per_uv")) spec.metres_per_uv = length->positive();
+  if (auto turn = node.find("turn_z_deg")) spec.turn_z = glm::radians(turn->number_in(-360.0, 360.0));
+  if (const std::optional<std::string> problem = matgeom::room_spec_problem(spec)) node.fail(*problem);
+  return {spec};
+}
+
 ObjectDescription read_object(const DocumentNode& node, const fs::path& folder,
                               std::map<std::string, MaterialDescription>& materials, const std::vector<GivenObject>& given) {
   if (!node.is_mapping()) node.fail_expected("a mapping of keys");
-  if (node.has("mesh") == node.has("builtin")) node.fail("expected exactly one of \"mesh\" or \"builtin\"");
+  if (node.has("mesh") + node.has("builtin") + node.has("room") != 1)
+    node.fail("expected exactly one of \"mesh\", \"builtin\" or \"room\"");
   ObjectDescription object;
   object.origin = origin_of(node);
   if (node.has("mesh")) {
     node.expect_keys({"mesh", "auto_smooth_deg", "uv_pass", "uv_scale", "transform", "material", "materials",
-                      "shadow_terminator_geometry_offset"});
+                      "shadow_terminator_geometry_offset", "surroundings"});
     object.source = read_mesh_source(node, folder, given);
+  } else if (node.has("room")) {
+    node.expect_keys({"room", "material", "materials", "surroundings"});
+    object.source = read_room(node.required("room"));
+    object.surroundings = true;
   } else {
     node.expect_keys({"builtin", "seed", "uv_pass", "uv_scale", "transform", "material", "materials",
-                      "shadow_terminator_geometry_offset"});
+                      "shadow_terminator_geometry_offset", "surroundings"});
     BuiltinObject builtin;
     const std::vector<std::string> names = matgeom::builtin_object_names();
     builtin.name = names[node.required("builtin").choice(names)];
@@ -509,6 +533,7 @@ ObjectDescription read_object(const DocumentNode& node, const fs::path& folder,
   if (auto material = node.find("material")) object.material = read_object_material(*material, folder, materials);
   if (auto parts = node.find("materials"))
     for (const auto& [part, name] : parts->members()) object.part_materials[part] = read_material_name(name, materials);
+  if (auto surroundings = node.find("surroundings")) object.surroundings = surroundings->boolean();
   return object;
 }
 

@@ -162,18 +162,18 @@ TEST_CASE("A frame's eight maps hold the documented encodings", "[learn]") {
 TEST_CASE("A frame is complete only when every map decodes whole at its size", "[learn]") {
   const fs::path variant = fresh_dir("matpredict_writer_complete") / "o" / "var000";
   matdataset::write_frame_maps(variant, "000", test_frame());
-  CHECK(matdataset::frame_is_complete(variant, "000", kWidth, kHeight));
-  CHECK_FALSE(matdataset::frame_is_complete(variant, "000", kWidth + 1, kHeight));
-  CHECK_FALSE(matdataset::frame_is_complete(variant, "001", kWidth, kHeight));
+  CHECK(matdataset::frame_is_complete(variant, "000", kWidth, kHeight, false));
+  CHECK_FALSE(matdataset::frame_is_complete(variant, "000", kWidth + 1, kHeight, false));
+  CHECK_FALSE(matdataset::frame_is_complete(variant, "001", kWidth, kHeight, false));
   // A file cut short since it was written.
   const fs::path orm = variant / "ORM" / "000.png";
   const auto size = fs::file_size(orm);
   fs::resize_file(orm, size / 2);
-  CHECK_FALSE(matdataset::frame_is_complete(variant, "000", kWidth, kHeight));
+  CHECK_FALSE(matdataset::frame_is_complete(variant, "000", kWidth, kHeight, false));
   matdataset::write_frame_maps(variant, "000", test_frame());
-  CHECK(matdataset::frame_is_complete(variant, "000", kWidth, kHeight));
+  CHECK(matdataset::frame_is_complete(variant, "000", kWidth, kHeight, false));
   fs::remove(variant / "depth" / "000.exr");
-  CHECK_FALSE(matdataset::frame_is_complete(variant, "000", kWidth, kHeight));
+  CHECK_FALSE(matdataset::frame_is_complete(variant, "000", kWidth, kHeight, false));
   // No temporary is left beside the maps.
   for (const auto& entry : fs::recursive_directory_iterator(variant))
     CHECK(entry.path().filename().string().rfind(".", 0) != 0);

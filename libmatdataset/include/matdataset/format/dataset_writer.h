@@ -13,11 +13,14 @@
 
 namespace matdataset {
 
-// The eight maps of a frame (the repository's seven and the sample count), in the order a frame's
-// files are staged: images/ last, because readers look for it first, so a frame whose image
-// exists has every other map too.
-enum class DatasetMap { Albedo, Orm, Depth, NormalMaterial, NormalObject, Label, SampleCount, Images };
-constexpr size_t kDatasetMapCount = 8;
+// The maps of a frame (the repository's seven, the sample count and, in frames with surroundings,
+// the region), in the order a frame's files are staged: images/ last, because readers look for it
+// first, so a frame whose image exists has every other map too.
+enum class DatasetMap { Albedo, Orm, Depth, NormalMaterial, NormalObject, Label, SampleCount, Region, Images };
+constexpr size_t kDatasetMapCount = 9;
+
+// The region map's values: what the hit nearest the pixel centre is on.
+enum class FrameRegion : int32_t { Background = 0, Surroundings = 1, Target = 2 };
 
 // The most camera samples the 16-bit sample count map holds.
 constexpr int32_t kMaxSampleCount = 65535;
@@ -29,9 +32,12 @@ struct DatasetMapInfo {
   int channels;                // as written
   const char* transforms_key;  // the frame's key for the file in transforms.json
   bool repository;             // the MatPredict repository writes it too (not: ours only)
+  bool surroundings_only;      // written only in frames with surroundings (an object alone has none)
   const char* content;         // one line for the docs
 };
 const std::array<DatasetMapInfo, kDatasetMapCount>& dataset_maps();
+// Whether a frame with (or without) surroundings has the map.
+inline bool frame_has_map(const DatasetMapInfo& info, bool surroundings) { return surroundings || !info.surroundings_only; }
 // The table as the markdown of docs/dataset_format.md (a test holds the docs to it).
 std::string dataset_maps_markdown();
 
@@ -47,7 +53,7 @@ struct FrameMaps {
   int width = 0;
   int height = 0;
   std::vector<float> color;              // linear RGB premultiplied by coverage (transparent background)
-  std::vector<float> coverage;           // the fraction of the pixel's samples that hit the object
+  std::vector<float> coverage;           // the fraction of the pixel's samples that hit a surface
   std::vector<float> base_color;         // linear RGB, the mean over the samples that hit
   std::vector<float> roughness;          // the mean over the hits
   std::vector<float> metallic;           // the mean over the hits
@@ -55,23 +61,29 @@ struct FrameMaps {
   std::vector<float> normal_world;       // unit XYZ, world space, shading normal
   std::vector<float> normal_tangent;     // unit XYZ, the normal map's tangent space
   std::vector<float> depth;              // metres along the camera axis, from one hit sample
-  std::vector<int32_t> label;            // label id from one hit sample, 0 where nothing hit
+  std::vector<int32_t> label;            // label id from one hit sample, 0 where it is not on the target
+  // FrameRegion of the hit sample the label comes from, per pixel; empty for an object alone
+  // (then the region map is not written).
+  std::vector<int32_t> region;
   std::vector<int32_t> sample_count;     // camera samples the pixel took (adaptive sampling stops some early)
   double exposure_stops = 0.0;           // applied to the image before encoding
   // The image's background is the world camera rays see: its alpha is 1, not the coverage.
   bool opaque_background = false;
 };
 
-// Writes the frame's eight files into `variant_folder`'s map folders (made if missing), each
+// Writes the frame's files (eight, nine with a region) into `variant_folder`'s map folders (made if missing), each
 // under a temporary name renamed when all are written, images/ last (matbase::AtomicFileSet):
 // after a crash a frame is there whole or not at all. Throws std::invalid_argument for arrays
-// of the wrong size, a label beyond 255 or a sample count outside [1, 65535], std::runtime_error naming the file a write failed on.
+// of the wrong size, a label beyond 255, a region that is no FrameRegion or that disagrees with the label (a
+// label off the target, the target without one), or a sample count outside [1, 65535], std::runtime_error naming the file a write failed on.
 void write_frame_maps(const std::filesystem::path& variant_folder, const std::string& stem, const FrameMaps& maps);
 
 // Whether every map of the frame is there and decodes whole at width x height with its channel
 // count: what a resumed run checks before skipping a frame, so a file damaged or cut short
 // since is rendered again.
-bool frame_is_complete(const std::filesystem::path& variant_folder, const std::string& stem, int width, int height);
+// `surroundings`: the frame has a region map too.
+bool frame_is_complete(const std::filesystem::path& variant_folder, const std::string& stem, int width, int height,
+                       bool surroundings);
 
 // A pinhole camera's intrinsics in pixels (OpenCV's convention: fl_x = fx, cx = principal point
 // from the left edge of the image, pixel centres at half-integers).
@@ -96,8 +108,9 @@ struct FramePose {
 // file_path, file_path_albedo, file_path_normal, file_path_orm, file_path_depth, rotation,
 // envmap) plus what it lacks: camera_angle_y, fl_x, fl_y, cx, cy, w, h, and the paths of the
 // label and normal_mat maps.
+// With `surroundings`, the frames' region maps are listed too (file_path_region).
 void write_transforms(const std::filesystem::path& variant_folder, const CameraIntrinsics& intrinsics,
-                      const std::vector<FramePose>& frames);
+                      const std::vector<FramePose>& frames, bool surroundings = false);
 
 // The material of one slot of a variant.
 struct SlotMaterial {
@@ -113,6 +126,7 @@ struct VariantMetadata {
   // the materials and their seeds, the camera grid, the lights, the render settings, the
   // software's version), as the tool that rendered describes it: stored under "provenance".
   std::string provenance_json;
+  bool surroundings = false;  // the frames have region maps (output_structure lists them)
 };
 
 // metadata.json: the repository's variant_map, used_materials and render_summary, plus

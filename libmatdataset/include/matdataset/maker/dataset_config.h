@@ -16,8 +16,10 @@
 
 #include "matdataset/format/dataset_splits.h"
 #include "matdataset/maker/lighting_setups.h"
+#include "matdataset/maker/material_candidate.h"
 #include "matdataset/maker/material_variants.h"
 #include "matdataset/maker/render_keys.h"
+#include "matdataset/maker/surroundings.h"
 #include "matmaterial/library/material_library.h"
 #include "matrender/paper_setup.h"
 #include "matrender/scene_description.h"
@@ -25,13 +27,6 @@
 namespace matdataset {
 
 using matbase::InputError;
-
-// A candidate material of a slot: a library material or a MatSynth-style material folder.
-struct MaterialCandidate {
-  std::string spelled;  // as the configuration gives it ("wood/raw:3", "materials/oak_01")
-  std::variant<matmaterial::LibraryMaterialSpec, std::string> source;  // the folder path, resolved
-  std::string name;  // its name in the dataset: "wood_raw_3" (library), the folder's name
-};
 
 struct SlotConfig {
   std::string key;                 // "all", "mat1", ...: the variant_map key
@@ -52,6 +47,8 @@ struct ObjectConfig {
     return uv_scales.size() > 1 ? uv_scales.at(variant.back()) : uv_scales.front();
   }
   std::vector<SlotConfig> slots;
+  // The object's own `surroundings`, else the configuration's.
+  SurroundingsConfig surroundings;
 };
 
 // How far the cameras are from the object's centroid.

@@ -42,6 +42,9 @@ class ObjectRenderer {
   // The materials of the selected variant, slot by slot.
   const std::vector<SlotMaterial>& slot_materials() const { return slot_materials_; }
 
+  // Whether the object stands in surroundings (its frames then have region maps).
+  bool has_surroundings() const { return room_.has_value(); }
+
   // The selected variant as an asset a glTF writer takes (for another renderer to get the same
   // object): the object's surface in world space, each part in its slot's material with the maps
   // repeated per UV unit as this renderer repeats them. The materials are loaded (generated)
@@ -102,6 +105,11 @@ class ObjectRenderer {
   size_t lit_view_ = SIZE_MAX;
   std::vector<SlotMaterial> slot_materials_;
   std::vector<std::vector<uint32_t>> slot_parts_;  // the parts of each slot
+  // The room the object stands in (the scene's object 1), and the selected variant's draw of its
+  // materials.
+  std::optional<matgeom::RoomSpec> room_;
+  DrawnSurroundings surroundings_;
+  void put_surroundings_in_materials();
 };
 
 }  // namespace matdataset
