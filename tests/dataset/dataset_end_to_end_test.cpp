@@ -505,24 +505,28 @@ paper_texture_layout: true
 
 namespace {
 
-// The lighting configuration's dataset, made once.
-const fs::path& lit_dataset() {
-  static const fs::path root = [] {
-    const fs::path folder = fs::temp_directory_path() / "matpredict_lit_dataset";
-    fs::remove_all(folder);
-    REQUIRE(run(std::string("--config ") + MATPREDICT_LIT_CONFIG + " --output " + folder.string() + " --threads 2") == 0);
-    return folder;
-  }();
-  return root;
+// The dataset `config` makes in the temporary folder `name`, made once for all the checks below.
+fs::path made_dataset(const std::string& config, const std::string& name) {
+  static std::map<std::string, fs::path> made;
+  if (const auto found = made.find(name); found != made.end()) return found->second;
+  const fs::path folder = fs::temp_directory_path() / name;
+  fs::remove_all(folder);
+  REQUIRE(run("--config " + config + " --output " + folder.string() + " --threads 2") == 0);
+  return made.emplace(name, folder).first->second;
 }
 
-std::vector<fs::path> lit_images() {
+// Every image of a dataset, in order.
+std::vector<fs::path> images_of(const fs::path& root) {
   std::vector<fs::path> images;
-  for (const auto& entry : fs::recursive_directory_iterator(lit_dataset()))
+  for (const auto& entry : fs::recursive_directory_iterator(root))
     if (entry.path().parent_path().filename() == "images") images.push_back(entry.path());
   std::sort(images.begin(), images.end());
   return images;
 }
+
+// The lighting configuration's dataset.
+fs::path lit_dataset() { return made_dataset(MATPREDICT_LIT_CONFIG, "matpredict_lit_dataset"); }
+std::vector<fs::path> lit_images() { return images_of(lit_dataset()); }
 
 }  // namespace
 
@@ -656,24 +660,8 @@ TEST_CASE("A list of UV scales makes a variant per scale: each recorded, each wi
 namespace {
 
 // The dataset with surroundings (room.yaml): a floor, a box room and a cyclorama.
-const fs::path& room_dataset() {
-  static const fs::path root = [] {
-    const fs::path folder = fs::temp_directory_path() / "matpredict_room_dataset";
-    fs::remove_all(folder);
-    REQUIRE(run(std::string("--config ") + MATPREDICT_ROOM_CONFIG + " --output " + folder.string() + " --threads 2") ==
-            0);
-    return folder;
-  }();
-  return root;
-}
-
-std::vector<fs::path> room_images() {
-  std::vector<fs::path> images;
-  for (const auto& entry : fs::recursive_directory_iterator(room_dataset()))
-    if (entry.path().parent_path().filename() == "images") images.push_back(entry.path());
-  std::sort(images.begin(), images.end());
-  return images;
-}
+fs::path room_dataset() { return made_dataset(MATPREDICT_ROOM_CONFIG, "matpredict_room_dataset"); }
+std::vector<fs::path> room_images() { return images_of(room_dataset()); }
 
 nlohmann::json json_of(const fs::path& file) { return nlohmann::json::parse(text_of(file)); }
 
