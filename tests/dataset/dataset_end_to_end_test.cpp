@@ -528,6 +528,25 @@ std::vector<fs::path> images_of(const fs::path& root) {
 fs::path lit_dataset() { return made_dataset(MATPREDICT_LIT_CONFIG, "matpredict_lit_dataset"); }
 std::vector<fs::path> lit_images() { return images_of(lit_dataset()); }
 
+// How many channel values of a dataset image render_object --dataset-frame gives otherwise,
+// rendered into `again`. The dataset's images are RGBA; render_object writes an opaque frame (a
+// visible environment) as RGB, whose alpha is 1.
+int differing_when_rendered_again(const fs::path& image, const fs::path& again) {
+  const std::string command = std::string(MATPREDICT_RENDER_OBJECT) + " --dataset-frame " + image.string() +
+                              " --threads 1 --output " + again.string() + " > /dev/null 2>&1";
+  REQUIRE(std::system(command.c_str()) == 0);
+  const matbase::FloatImage dataset = matdataset::decode(image);
+  const matbase::FloatImage rendered = matdataset::decode(again / "view_color.png");
+  REQUIRE(dataset.width == rendered.width);
+  REQUIRE(dataset.height == rendered.height);
+  int differing = 0;
+  for (int y = 0; y < dataset.height; ++y)
+    for (int x = 0; x < dataset.width; ++x)
+      for (int c = 0; c < 4; ++c)
+        differing += code(dataset, x, y, c) != (c < rendered.channels ? code(rendered, x, y, c) : 255);
+  return differing;
+}
+
 }  // namespace
 
 TEST_CASE("Every frame under varied light renders again from its records: render_object --dataset-frame gives "
@@ -537,23 +556,8 @@ TEST_CASE("Every frame under varied light renders again from its records: render
   REQUIRE(images.size() == 36);
   std::set<std::string> setups;
   for (size_t k = 0; k < images.size(); ++k) {
-    const fs::path again = fs::temp_directory_path() / "matpredict_lit_again" / std::to_string(k);
-    const std::string command = std::string(MATPREDICT_RENDER_OBJECT) + " --dataset-frame " + images[k].string() +
-                                " --threads 1 --output " + again.string() + " > /dev/null 2>&1";
-    REQUIRE(std::system(command.c_str()) == 0);
-    const matbase::FloatImage dataset = matdataset::decode(images[k]);
-    const matbase::FloatImage rendered = matdataset::decode(again / "view_color.png");
-    REQUIRE(dataset.width == rendered.width);
-    REQUIRE(dataset.height == rendered.height);
-    // The dataset's images are RGBA; render_object writes an opaque frame (a visible environment)
-    // as RGB, whose alpha is 1.
-    int differing = 0;
-    for (int y = 0; y < dataset.height; ++y)
-      for (int x = 0; x < dataset.width; ++x)
-        for (int c = 0; c < 4; ++c)
-          differing += code(dataset, x, y, c) != (c < rendered.channels ? code(rendered, x, y, c) : 255);
     INFO(images[k]);
-    CHECK(differing == 0);
+    CHECK(differing_when_rendered_again(images[k], fs::temp_directory_path() / "matpredict_lit_again" / std::to_string(k)) == 0);
   }
   // Each frame's transforms.json entry names its setup.
   for (const auto& entry : fs::recursive_directory_iterator(lit_dataset()))
@@ -723,19 +727,8 @@ TEST_CASE("Surroundings are drawn per variant and recorded: the room, its materi
   // render_object renders a frame again from its records, bit for bit.
   const std::vector<fs::path> images = room_images();
   for (const size_t k : {size_t{0}, size_t{9}, size_t{23}}) {
-    const fs::path again = fs::temp_directory_path() / "matpredict_room_again" / std::to_string(k);
-    const std::string command = std::string(MATPREDICT_RENDER_OBJECT) + " --dataset-frame " + images[k].string() +
-                                " --threads 1 --output " + again.string() + " > /dev/null 2>&1";
-    REQUIRE(std::system(command.c_str()) == 0);
-    const matbase::FloatImage dataset = matdataset::decode(images[k]);
-    const matbase::FloatImage rendered = matdataset::decode(again / "view_color.png");
-    REQUIRE(dataset.width == rendered.width);
-    int differing = 0;
-    for (int y = 0; y < dataset.height; ++y)
-      for (int x = 0; x < dataset.width; ++x)
-        for (int c = 0; c < 3; ++c) differing += code(dataset, x, y, c) != code(rendered, x, y, c);
     INFO(images[k]);
-    CHECK(differing == 0);
+    CHECK(differing_when_rendered_again(images[k], fs::temp_directory_path() / "matpredict_room_again" / std::to_string(k)) == 0);
   }
 }
 
