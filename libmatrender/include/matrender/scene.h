@@ -1,9 +1,10 @@
 #pragma once
 // A renderable scene: triangle meshes with one material per part, lamps and a background.
-// The BVH is built once by commit(); materials, which material each part uses, lamps and the
+// The BVH is built by commit(); materials, which material each part uses, lamps and the
 // background can all change afterwards without rebuilding it (one object, many material
-// variants, one BVH), and the same scene renders from any number of cameras. Nothing may change
-// while a render of the scene runs.
+// variants, one BVH), and the same scene renders from any number of cameras. Meshes can be moved,
+// hidden and shown after it, and the next commit() rebuilds the BVH. Nothing may change while a
+// render of the scene runs.
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -51,6 +52,17 @@ class Scene {
   void set_part_materials(uint32_t mesh, const std::vector<uint32_t>& part_materials);
   size_t mesh_count() const;
   const std::vector<uint32_t>& part_materials(uint32_t mesh) const;
+
+  // Places mesh `mesh` at `transform` applied to the mesh as it was added (its normals and
+  // tangents follow), however it was moved before, so a mesh's place never depends on the
+  // order of the moves. And shows or hides it from every ray (a hidden mesh neither occludes nor
+  // emits). For a tool that rearranges a scene between renders without building it again; the
+  // next commit() (render() calls it) rebuilds the BVH. Throws std::invalid_argument for an
+  // unknown mesh, a transform that is not finite or flattens the mesh, or a vertex it would put
+  // beyond kMaxSceneCoordinate.
+  void set_mesh_transform(uint32_t mesh, const glm::dmat4& transform);
+  void set_mesh_enabled(uint32_t mesh, bool enabled);
+  bool mesh_enabled(uint32_t mesh) const;
 
   // Throws std::invalid_argument, naming the light and the reason, for one single precision
   // cannot render as given (non-finite or negative values, a position beyond the scene limit, an

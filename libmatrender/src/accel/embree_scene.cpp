@@ -51,23 +51,50 @@ EmbreeScene::~EmbreeScene() {
   if (device_) rtcReleaseDevice(device_);
 }
 
-uint32_t EmbreeScene::add_triangle_mesh(const std::vector<glm::vec3>& positions,
-                                        const std::vector<glm::uvec3>& triangles) {
-  RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+namespace {
+
+// A committed Embree triangle geometry holding copies of the arrays.
+RTCGeometry triangle_geometry(RTCDevice device, const std::vector<glm::vec3>& positions,
+                              const std::vector<glm::uvec3>& triangles) {
+  RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
   // Embree reads vertices with 16-byte loads; its own buffers carry the padding it needs.
   auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
       geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), positions.size()));
   auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
       geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), triangles.size()));
-  throw_on_error(device_, "buffer allocation");
+  throw_on_error(device, "buffer allocation");
   std::memcpy(vertices, positions.data(), positions.size() * sizeof(glm::vec3));
   std::memcpy(indices, triangles.data(), triangles.size() * sizeof(glm::uvec3));
   rtcCommitGeometry(geometry);
+  return geometry;
+}
+
+}  // namespace
+
+uint32_t EmbreeScene::add_triangle_mesh(const std::vector<glm::vec3>& positions,
+                                        const std::vector<glm::uvec3>& triangles) {
+  RTCGeometry geometry = triangle_geometry(device_, positions, triangles);
   const uint32_t id = rtcAttachGeometry(scene_, geometry);
   rtcReleaseGeometry(geometry);
   throw_on_error(device_, "geometry creation");
   if (id != mesh_count_) throw std::logic_error("Embree: unexpected geometry id");
   return mesh_count_++;
+}
+
+void EmbreeScene::replace_triangle_mesh(uint32_t id, const std::vector<glm::vec3>& positions,
+                                        const std::vector<glm::uvec3>& triangles) {
+  rtcDetachGeometry(scene_, id);
+  RTCGeometry geometry = triangle_geometry(device_, positions, triangles);
+  rtcAttachGeometryByID(scene_, geometry, id);
+  rtcReleaseGeometry(geometry);
+  throw_on_error(device_, "geometry replacement");
+}
+
+void EmbreeScene::set_enabled(uint32_t id, bool enabled) {
+  RTCGeometry geometry = rtcGetGeometry(scene_, id);
+  if (enabled) rtcEnableGeometry(geometry);
+  else rtcDisableGeometry(geometry);
+  throw_on_error(device_, "geometry enabling");
 }
 
 void EmbreeScene::commit() {

@@ -39,6 +39,10 @@ class EmbreeScene {
   // Returns the mesh index (0, 1, ...). Arrays are copied into Embree's buffers.
   uint32_t add_triangle_mesh(const std::vector<glm::vec3>& positions,
                              const std::vector<glm::uvec3>& triangles);
+  // Mesh `id`'s geometry replaced (moved), and whether rays see it; commit() rebuilds the BVH.
+  void replace_triangle_mesh(uint32_t id, const std::vector<glm::vec3>& positions,
+                             const std::vector<glm::uvec3>& triangles);
+  void set_enabled(uint32_t id, bool enabled);
   void commit();
 
   RayHit intersect(const glm::vec3& origin, const glm::vec3& dir, float t_max) const;

@@ -23,7 +23,8 @@ std::vector<Light> of_type(const std::vector<Light>& prepared, LightType type) {
 LightSampler LightSampler::for_scene(const SceneData& scene, LightSelection selection) {
   std::vector<MeshEmitter> emitters;
   for (uint32_t mesh = 0; mesh < scene.meshes.size(); ++mesh)
-    if (std::optional<MeshEmitter> emitter = MeshEmitter::of_mesh(scene, mesh))
+    if (!scene.meshes[mesh].enabled) continue;
+    else if (std::optional<MeshEmitter> emitter = MeshEmitter::of_mesh(scene, mesh))
       emitters.push_back(std::move(*emitter));
   return LightSampler(scene.lamps, scene.world, selection, emitters);
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -40,13 +41,30 @@ void check_part_materials(const std::string& what, uint32_t parts, const std::ve
       throw std::invalid_argument(what + ": material id " + std::to_string(id) + " does not exist");
 }
 
+// A moved mesh's arrays: its geometry as added under its transform.
+void place_moved_mesh(MeshData& m) {
+  matgeom::TriangleMesh placed;
+  placed.positions = m.as_added->positions;
+  placed.normals = m.as_added->normals;
+  placed.tangents = m.as_added->tangents;
+  matgeom::transform_mesh(placed, m.as_added->transform);
+  m.positions = std::move(placed.positions);
+  m.normals = std::move(placed.normals);
+  m.tangents = std::move(placed.tangents);
+}
+
 // Normal maps need tangents; a mesh with UVs but none gets MikkTSpace ones the first time one of
 // its materials has a normal map. A flat mesh (no normals) first gets one vertex per corner with
-// its face normal, so that the frame is built on the normal it is shaded with.
+// its face normal, so that the frame is built on the normal it is shaded with. A moved mesh gets
+// them on its geometry as added, then is placed again.
 void add_tangents_if_needed(MeshData& m, const std::vector<Material>& materials) {
   bool needs_tangents = false;
   for (uint32_t id : m.part_materials) needs_tangents |= materials[id].normal_map != nullptr;
   if (!needs_tangents || !m.tangents.empty() || m.uvs.empty()) return;
+  if (m.as_added) {
+    std::swap(m.positions, m.as_added->positions);
+    std::swap(m.normals, m.as_added->normals);
+  }
   matgeom::TriangleMesh with_tangents;
   with_tangents.positions = m.positions;
   with_tangents.normals = m.normals;
@@ -59,6 +77,13 @@ void add_tangents_if_needed(MeshData& m, const std::vector<Material>& materials)
   m.uvs = std::move(with_tangents.uvs);
   m.triangles = std::move(with_tangents.triangles);
   m.tangents = std::move(with_tangents.tangents);
+  if (m.as_added) {
+    m.as_added->positions = m.positions;
+    m.as_added->normals = m.normals;
+    m.as_added->tangents = m.tangents;
+    place_moved_mesh(m);
+    m.changed = true;  // its vertices were split: the BVH's copy is replaced too
+  }
 }
 
 // Some triangle spans an area (in the float positions rays will meet).
@@ -117,6 +142,38 @@ void Scene::set_part_materials(uint32_t mesh, const std::vector<uint32_t>& part_
   add_tangents_if_needed(m, data_->materials);
 }
 
+void Scene::set_mesh_transform(uint32_t mesh, const glm::dmat4& transform) {
+  if (mesh >= data_->meshes.size())
+    throw std::invalid_argument("Scene::set_mesh_transform: mesh " + std::to_string(mesh) + " does not exist");
+  const std::string what = "mesh " + std::to_string(mesh);
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(transform[c][r])) throw std::invalid_argument(what + ": the transform is not finite");
+  if (!(std::abs(glm::determinant(glm::dmat3(transform))) > 0.0))
+    throw std::invalid_argument(what + ": the transform flattens the mesh (its determinant is 0)");
+  MeshData& m = data_->meshes[mesh];
+  if (!m.as_added) m.as_added = MeshData::AsAdded{m.positions, m.normals, m.tangents, glm::dmat4(1.0)};
+  for (size_t v = 0; v < m.as_added->positions.size(); ++v) {
+    const glm::dvec3 world(transform * glm::dvec4(glm::dvec3(m.as_added->positions[v]), 1.0));
+    if (!within_scene_limit(world)) check_scene_point(world, what + ": moved vertex " + std::to_string(v));
+  }
+  m.as_added->transform = transform;
+  place_moved_mesh(m);
+  m.changed = true;
+  data_->committed = false;
+}
+
+void Scene::set_mesh_enabled(uint32_t mesh, bool enabled) {
+  if (mesh >= data_->meshes.size())
+    throw std::invalid_argument("Scene::set_mesh_enabled: mesh " + std::to_string(mesh) + " does not exist");
+  MeshData& m = data_->meshes[mesh];
+  if (m.enabled == enabled) return;
+  m.enabled = enabled;
+  data_->committed = false;
+}
+
+bool Scene::mesh_enabled(uint32_t mesh) const { return data_->meshes.at(mesh).enabled; }
+
 size_t Scene::mesh_count() const { return data_->meshes.size(); }
 
 const std::vector<uint32_t>& Scene::part_materials(uint32_t mesh) const { return data_->meshes.at(mesh).part_materials; }
@@ -142,14 +199,25 @@ const Background& Scene::background() const { return data_->background; }
 void Scene::commit() {
   if (data_->committed) return;
   const auto start = std::chrono::steady_clock::now();
-  for (const MeshData& m : data_->meshes) data_->accel.add_triangle_mesh(m.positions, m.triangles);
+  for (uint32_t id = 0; id < data_->meshes.size(); ++id) {
+    MeshData& m = data_->meshes[id];
+    if (!data_->built) data_->accel.add_triangle_mesh(m.positions, m.triangles);
+    else if (m.changed) data_->accel.replace_triangle_mesh(id, m.positions, m.triangles);
+    data_->accel.set_enabled(id, m.enabled);
+    m.changed = false;
+  }
   data_->accel.commit();
+  data_->built = true;
   data_->build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  for (const MeshData& m : data_->meshes)
+  data_->vertex_lower = glm::vec3(std::numeric_limits<float>::infinity());
+  data_->vertex_upper = glm::vec3(-std::numeric_limits<float>::infinity());
+  for (const MeshData& m : data_->meshes) {
+    if (!m.enabled) continue;  // no ray meets it
     for (const glm::vec3& p : m.positions) {
       data_->vertex_lower = glm::min(data_->vertex_lower, p);
       data_->vertex_upper = glm::max(data_->vertex_upper, p);
     }
+  }
   data_->committed = true;
 }
 

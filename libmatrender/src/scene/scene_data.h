@@ -3,6 +3,7 @@
 // Embree BVH over the geometry.
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -24,6 +25,19 @@ struct MeshData {
   std::vector<uint32_t> triangle_parts;  // empty = part 0
   std::vector<uint32_t> part_materials;  // material id of each part
   float shadow_terminator_geometry_offset = 0.1f;  // MeshOptions
+  // Whether rays see the mesh (Scene::set_mesh_enabled): a hidden mesh neither occludes nor emits.
+  bool enabled = true;
+  // A mesh Scene::set_mesh_transform moved: its vertices, normals and tangents as added, and the
+  // transform the arrays above hold them under, so that where it is never depends on the moves
+  // before.
+  struct AsAdded {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;
+    std::vector<glm::vec4> tangents;
+    glm::dmat4 transform{1.0};
+  };
+  std::optional<AsAdded> as_added;
+  bool changed = false;  // moved or shown or hidden since the BVH was built
 };
 
 class SceneData {
@@ -35,6 +49,7 @@ class SceneData {
   WorldLight world = UniformBackground(glm::vec3(0.0f));  // prepared from background
   EmbreeScene accel;
   bool committed = false;
+  bool built = false;  // the BVH was built once: commit() then updates the meshes that changed
   double build_seconds = 0.0;
   size_t triangle_count = 0;
   // The box around every vertex of every mesh, set by commit (empty, lower above upper, without
