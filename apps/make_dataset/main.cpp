@@ -226,6 +226,15 @@ int make(const Options& options) {
   fmt::print("wrote {} ({}): per object and variant {}transforms.json, metadata.json; config/ holds the split files\n",
              config.output, matbase::byte_size_text(static_cast<double>(matdataset::folder_bytes(config.output))),
              folders);
+  if (summary.redrawn_frames > 0)
+    fmt::print("{} frames drew their distractors again because the first draw hid too much of the object\n",
+               summary.redrawn_frames);
+  if (!summary.hidden_frames.empty())
+    fmt::print(stderr,
+               "make_dataset: {} frames show less of the object than surroundings.distractors.visible_fraction after "
+               "every draw (each kept at its best draw; the first: {}); fewer or smaller distractors, or more tries, "
+               "would show more\n",
+               summary.hidden_frames.size(), summary.hidden_frames.front());
   // Written, as rendered, but a frame without the object trains to a loss of 0: not a success.
   if (!summary.empty_frames.empty())
     return report_error(fmt::format("{} frames show the object in no pixel (the first: {}); are the cameras too far "

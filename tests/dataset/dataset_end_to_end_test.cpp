@@ -675,8 +675,8 @@ TEST_CASE("With surroundings the label is the target's first hits alone, the reg
           "and --verify agrees",
           "[dataset]") {
   const std::vector<fs::path> images = room_images();
-  // Three objects, two variants each, 2 x 2 views.
-  REQUIRE(images.size() == 24);
+  // Four objects, two variants each, 2 x 2 views.
+  REQUIRE(images.size() == 32);
   const fs::path report = fs::temp_directory_path() / "matpredict_room_verify.txt";
   CHECK(verify(room_dataset(), report) == 0);
   INFO(text_of(report));
@@ -711,22 +711,22 @@ TEST_CASE("Surroundings are drawn per variant and recorded: the room, its materi
           "its records",
           "[dataset]") {
   std::set<std::string> floors;
-  for (const char* object : {"vase", "mug", "chair"})
+  for (const char* object : {"vase", "mug", "chair", "lamp"})
     for (const char* variant : {"var000", "var001"}) {
       const nlohmann::json metadata = json_of(room_dataset() / object / variant / "metadata.json");
       const nlohmann::json& surroundings = metadata["provenance"]["surroundings"];
       REQUIRE(surroundings.is_object());
-      CHECK(surroundings["kind"] == "floor");
+      CHECK(surroundings["kind"] == (std::string(object) == "lamp" ? "distractors" : "floor"));
       floors.insert(surroundings["materials"]["floor"]["name"].get<std::string>());
       const std::string walls = surroundings["room"]["walls"];
       CHECK(walls == (std::string(object) == "mug" ? "box" : std::string(object) == "chair" ? "cyclorama" : "none"));
       CHECK(surroundings["materials"].contains("walls") == (walls != "none"));
     }
-  // Library candidates without a seed get one drawn: the six variants do not all share a floor.
+  // Library candidates without a seed get one drawn: the eight variants do not all share a floor.
   CHECK(floors.size() >= 3);
   // render_object renders a frame again from its records, bit for bit.
   const std::vector<fs::path> images = room_images();
-  for (const size_t k : {size_t{0}, size_t{9}, size_t{23}}) {
+  for (const size_t k : {size_t{0}, size_t{9}, size_t{14}, size_t{31}}) {
     INFO(images[k]);
     CHECK(differing_when_rendered_again(images[k], fs::temp_directory_path() / "matpredict_room_again" / std::to_string(k)) == 0);
   }
@@ -780,4 +780,36 @@ TEST_CASE("Surroundings that cannot be made are refused before the first file, n
     CHECK(text.find(cases[k].second) != std::string::npos);
     CHECK_FALSE(fs::exists(dir / "out"));
   }
+}
+
+TEST_CASE("Distractors stand around the target, move from frame to frame, and hide no more of it than allowed",
+          "[dataset]") {
+  std::set<std::string> placements;
+  size_t distractor_pixels = 0;
+  for (const char* variant : {"var000", "var001"}) {
+    const fs::path folder = room_dataset() / "lamp" / variant;
+    const nlohmann::json metadata = json_of(folder / "metadata.json");
+    const nlohmann::json& slots = metadata["provenance"]["surroundings"]["distractors"]["slots"];
+    REQUIRE(slots.size() == 3);
+    for (const nlohmann::json& slot : slots) CHECK(slot["object"]["builtin"] != "lamp");
+    const nlohmann::json transforms = json_of(folder / "transforms.json");
+    for (const nlohmann::json& frame : transforms["frames"]) {
+      const nlohmann::json& drawn = frame["surroundings"];
+      const size_t count = drawn["distractors"].size();
+      CHECK(count >= 2);
+      CHECK(count <= 3);
+      placements.insert(drawn["distractors"].dump());
+      // Kept at the first draw that shows enough of the lamp, or named by make_dataset.
+      CHECK(drawn["visible_fraction"].get<double>() >= 0.7);
+      CHECK(drawn["enough_visible"] == true);
+      const std::string stem = frame["file_path"].get<std::string>().substr(7);
+      const matdataset::DecodedIds region = matdataset::decode_ids(folder / "region" / (stem + ".png"));
+      const matbase::FloatImage normals = matdataset::decode(folder / "normal_obj" / (stem + ".png"));
+      // Surroundings that do not face up: the distractors standing on the floor.
+      for (size_t p = 0; p < region.ids.size(); ++p)
+        distractor_pixels += region.ids[p] == 1 && 2.0f * normals.values[4 * p + 2] - 1.0f < 0.9f;
+    }
+  }
+  CHECK(placements.size() == 8);  // every frame draws its own
+  CHECK(distractor_pixels > 0);
 }

@@ -70,6 +70,7 @@ void write_transforms(const fs::path& variant_folder, const CameraIntrinsics& k,
     entry["envmap"] = environment ? lighting.at("background").at("environment") : ordered_json(nullptr);
     entry["transform_matrix"] = frame.camera_to_world;
     if (!lighting.is_null()) entry["lighting"] = lighting;
+    if (!frame.surroundings_json.empty()) entry["surroundings"] = ordered_json::parse(frame.surroundings_json);
     json["frames"].push_back(std::move(entry));
   }
   write_json(variant_folder / "transforms.json", json);

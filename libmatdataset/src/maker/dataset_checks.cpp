@@ -87,6 +87,27 @@ void check_object_in_view(const DatasetConfig& config, size_t o, const matgeom::
                                  config.source, radius, object_key(o), 2.0 * bounds.radius));
 }
 
+// Throws matbase::InputError when object `o`'s distractors, at their most, largest and closest,
+// could not stand apart on its floor (distractors_fit).
+void check_distractors_fit(const DatasetConfig& config, size_t o, const matgeom::TriangleMesh& mesh) {
+  const SurroundingsConfig& surroundings = config.objects[o].surroundings;
+  if (surroundings.kind != SurroundingsKind::Distractors) return;
+  const DistractorsConfig& distractors = surroundings.distractors;
+  const matgeom::Sphere bounds = matgeom::minimal_enclosing_sphere(mesh.positions);
+  const glm::dvec3 centre = matgeom::surface_centroid(mesh);
+  const double grid_radius = camera_grid_radius(config.camera, mesh, bounds, centre,
+                                                static_cast<double>(config.render.width) / config.render.height);
+  const double reach = 0.95 * surroundings.room_size() * grid_radius;
+  const double target_radius = footprint(mesh).radius;
+  if (!distractors_fit(distractors, target_radius, reach))
+    throw matbase::InputError(fmt::format(
+        "{}: {}.surroundings.distractors.count: {} distractors up to {} times {}'s footprint ({:.3g} m across), {} of "
+        "it apart, cannot stand apart within the {:.3g} m the floor reaches from it; ask for fewer or smaller ones, "
+        "or a larger surroundings.size",
+        config.source, object_key(o), distractors.count.high, distractors.scale.high, config.objects[o].name,
+        2.0 * target_radius, distractors.gap.low, reach));
+}
+
 std::vector<std::string> check_before_writing(const DatasetConfig& config) {
   std::vector<std::string> notes;
   if (const std::optional<std::string> problem = matbase::output_folder_problem(config.output))
@@ -124,6 +145,7 @@ std::vector<std::string> check_before_writing(const DatasetConfig& config) {
                                 ".uv_scale: the mesh has texture coordinates of its own, so the UV pass does not run "
                                 "(uv_pass: when_missing) and there is no texel density to scale; use uv_pass: always");
     check_object_in_view(config, o, asset.mesh);
+    check_distractors_fit(config, o, asset.mesh);
     const size_t part_count = std::max({static_cast<size_t>(asset.mesh.part_count()), asset.materials.size(), size_t{1}});
     parts_of_slots(config, o, asset.mesh.part_names, part_count);
     if (config.paper_texture_layout && object.slots.size() != 1)

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "matbase/pi.h"
+#include "matdataset/maker/drawn_number.h"
 #include "matdataset/maker/seed_stream.h"
 #include "matrender/sky.h"
 
@@ -23,23 +24,6 @@ SeedStream lighting_draws(const LightingConfig& lighting, uint64_t seed, const F
   h = splitmix64(h ^ frame.variant);
   if (lighting.assignment != LightingAssignment::PerVariant) h = splitmix64(h ^ frame.view);
   return SeedStream(h);
-}
-
-// Every quantity takes one number from the stream, fixed or not, so that the draws after it do
-// not shift when a range is narrowed to a value.
-double draw(const DrawnNumber& number, SeedStream& draws) {
-  const double u = draws.uniform();
-  if (number.low == number.high) return number.low;
-  if (number.logarithmic)
-    return std::exp(std::log(number.low) + u * (std::log(number.high) - std::log(number.low)));
-  return number.low + u * (number.high - number.low);
-}
-
-// A whole number in [low, high], each equally likely.
-int draw_count(const DrawnNumber& count, SeedStream& draws) {
-  const double u = draws.uniform();
-  const double span = count.high - count.low + 1.0;
-  return static_cast<int>(count.low + std::min(std::floor(u * span), span - 1.0));
 }
 
 LightingChoice choose(const LightingConfig& lighting, const FrameRef& frame, size_t grid_views, SeedStream& draws) {

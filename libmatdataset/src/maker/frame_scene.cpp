@@ -136,6 +136,27 @@ FrameScene dataset_frame_scene(const fs::path& frame) {
   for (const ordered_json& candidate : member(transforms, "frames", transforms_file))
     if (candidate.value("file_path", "") == "images/" + stem) entry = &candidate;
   if (!entry) throw matbase::InputError(transforms_file.string() + ": no frame \"" + stem + "\"");
+  // The frame's distractors, each its slot's object and material, at its recorded place.
+  if (const auto frame_surroundings = entry->find("surroundings"); frame_surroundings != entry->end()) {
+    const ordered_json& distractor_slots =
+        member(member(member(provenance, "surroundings", metadata_file), "distractors", metadata_file), "slots",
+               metadata_file);
+    for (const ordered_json& placed : member(*frame_surroundings, "distractors", transforms_file)) {
+      const ordered_json& slot_index = member(placed, "slot", transforms_file);
+      if (!slot_index.is_number_unsigned() || slot_index.get<size_t>() >= distractor_slots.size())
+        throw matbase::InputError(transforms_file.string() + ": frame \"" + stem + "\" places a distractor of no slot");
+      const ordered_json& slot = distractor_slots[slot_index.get<size_t>()];
+      const ordered_json& material = member(slot, "material", metadata_file);
+      const std::string name = member(material, "name", metadata_file);
+      scene["materials"][name] = member(material, "scene", metadata_file);
+      ordered_json distractor = member(slot, "object", metadata_file);
+      distractor["uv_pass"] = "when_missing";
+      distractor["transform"] = {{"matrix", member(placed, "transform", transforms_file)}};
+      distractor["material"] = name;
+      distractor["surroundings"] = true;
+      scene["objects"].push_back(distractor);
+    }
+  }
   const ordered_json& lighting = member(*entry, "lighting", transforms_file);
   scene["camera"] = {{"matrix", member(*entry, "transform_matrix", transforms_file)},
                      {"fov_deg", config.camera.vertical_fov_deg},

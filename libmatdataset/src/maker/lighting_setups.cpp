@@ -27,20 +27,11 @@ constexpr double kMaxWeight = 1e6;
 // The extensions of a folder's images that an environment list takes.
 const std::vector<std::string> kEnvironmentExtensions = {".exr", ".hdr"};
 
-// A value, or [min, max] with min <= max, each in [low, high] (low excluded when low_open).
-DrawnNumber read_drawn(const DocumentNode& node, double low, double high, bool logarithmic, bool low_open = false) {
-  if (!node.is_list()) return DrawnNumber::value(node.number_in(low, high, low_open), logarithmic);
-  const std::vector<DocumentNode> ends = node.items(2, "a number or a range [min, max]");
-  const double a = ends[0].number_in(low, high, low_open), b = ends[1].number_in(low, high, low_open);
-  if (a > b) node.fail(fmt::format("a range [min, max] with min <= max (got [{}, {}]; swap them)", a, b));
-  return {a, b, logarithmic};
-}
-
 DrawnColor read_color(const DocumentNode& node) {
   DrawnColor color;
   if (node.is_mapping()) {
     node.expect_keys({"blackbody"});
-    color.kelvin = read_drawn(node.required("blackbody"), matrender::kMinBlackbodyKelvin, matrender::kMaxBlackbodyKelvin,
+    color.kelvin = read_drawn_number(node.required("blackbody"), matrender::kMinBlackbodyKelvin, matrender::kMaxBlackbodyKelvin,
                               false);
     return color;
   }
@@ -100,8 +91,8 @@ EnvironmentSetup read_environment(const DocumentNode& node, const fs::path& base
   node.expect_keys({"images", "strength", "rotation_deg", "visible"});
   EnvironmentSetup environment;
   environment.images = read_environment_images(node.required("images"), base);
-  if (const auto n = node.find("strength")) environment.strength = read_drawn(*n, 0.0, kMaxPower, true, true);
-  if (const auto n = node.find("rotation_deg")) environment.rotation_deg = read_drawn(*n, -360.0, 720.0, false);
+  if (const auto n = node.find("strength")) environment.strength = read_drawn_number(*n, 0.0, kMaxPower, true, true);
+  if (const auto n = node.find("rotation_deg")) environment.rotation_deg = read_drawn_number(*n, -360.0, 720.0, false);
   if (const auto n = node.find("visible")) environment.visible = n->boolean();
   return environment;
 }
@@ -111,7 +102,7 @@ RigSetup read_rig(const DocumentNode& node) {
   RigSetup rig;
   const std::optional<DocumentNode> lux = node.find("illuminance_lux"), powers = node.find("powers");
   if (lux && powers) powers->fail("give the rig an illuminance_lux or the formula's powers (powers: paper), not both");
-  if (lux) rig.illuminance_lux = read_drawn(*lux, 0.0, kMaxPower, true, true);
+  if (lux) rig.illuminance_lux = read_drawn_number(*lux, 0.0, kMaxPower, true, true);
   if (powers) {
     powers->choice({"paper"});
     rig.illuminance_lux.reset();
@@ -150,22 +141,22 @@ LampGroup read_lamp_group(const DocumentNode& node) {
     }
     if (group.at.empty()) n->fail("an empty list: give at least one point");
   }
-  if (const auto n = node.find("count")) group.count = read_drawn(*n, 0.0, kMaxLampsPerGroup, false);
+  if (const auto n = node.find("count")) group.count = read_drawn_number(*n, 0.0, kMaxLampsPerGroup, false);
   if (group.count.low != std::floor(group.count.low) || group.count.high != std::floor(group.count.high))
     node.required("count").fail("a whole number or a range of whole numbers");
   if (const auto n = node.find("distance")) {
     if (sun) n->fail("a sun has no distance, only a direction (its elevation and azimuth)");
-    group.distance = read_drawn(*n, 1.0, kMaxDistance, false, true);
+    group.distance = read_drawn_number(*n, 1.0, kMaxDistance, false, true);
   }
-  if (const auto n = node.find("elevation_deg")) group.elevation_deg = read_drawn(*n, -90.0, 90.0, false);
-  if (const auto n = node.find("azimuth_deg")) group.azimuth_deg = read_drawn(*n, -360.0, 720.0, false);
-  if (const auto n = node.find("power_w")) group.power_w = read_drawn(*n, 0.0, kMaxPower, true, true);
-  if (const auto n = node.find("strength")) group.strength = read_drawn(*n, 0.0, kMaxPower, true, true);
+  if (const auto n = node.find("elevation_deg")) group.elevation_deg = read_drawn_number(*n, -90.0, 90.0, false);
+  if (const auto n = node.find("azimuth_deg")) group.azimuth_deg = read_drawn_number(*n, -360.0, 720.0, false);
+  if (const auto n = node.find("power_w")) group.power_w = read_drawn_number(*n, 0.0, kMaxPower, true, true);
+  if (const auto n = node.find("strength")) group.strength = read_drawn_number(*n, 0.0, kMaxPower, true, true);
   if (const auto n = node.find("angle_deg"))
-    group.angle_deg = read_drawn(*n, 0.0, glm::degrees(matrender::kMaxSunAngle), false);
-  if (const auto n = node.find("cone_deg")) group.cone_deg = read_drawn(*n, 0.0, 180.0, false, true);
-  if (const auto n = node.find("blend")) group.blend = read_drawn(*n, 0.0, 1.0, false);
-  if (const auto n = node.find("size")) group.size = read_drawn(*n, 0.0, kMaxDistance, false, true);
+    group.angle_deg = read_drawn_number(*n, 0.0, glm::degrees(matrender::kMaxSunAngle), false);
+  if (const auto n = node.find("cone_deg")) group.cone_deg = read_drawn_number(*n, 0.0, 180.0, false, true);
+  if (const auto n = node.find("blend")) group.blend = read_drawn_number(*n, 0.0, 1.0, false);
+  if (const auto n = node.find("size")) group.size = read_drawn_number(*n, 0.0, kMaxDistance, false, true);
   if (const auto n = node.find("color")) group.color = read_color(*n);
   return group;
 }
@@ -178,9 +169,9 @@ SkySetup read_sky(const DocumentNode& node) {
   SkySetup sky;
   for (const matrender::SkySetting& setting : matrender::sky_settings())
     if (const auto n = node.find(setting.key))
-      sky.settings[setting.key] = read_drawn(*n, setting.low, setting.high, false, setting.low_open);
+      sky.settings[setting.key] = read_drawn_number(*n, setting.low, setting.high, false, setting.low_open);
   if (const auto n = node.find("sun_disc")) sky.sun_disc = n->boolean();
-  if (const auto n = node.find("strength")) sky.strength = read_drawn(*n, 0.0, kMaxPower, true, true);
+  if (const auto n = node.find("strength")) sky.strength = read_drawn_number(*n, 0.0, kMaxPower, true, true);
   if (const auto n = node.find("visible")) sky.visible = n->boolean();
   return sky;
 }

@@ -41,7 +41,8 @@ matrender::ObjectDescription object_description(const DatasetConfig& config, siz
 // candidate material of its slots among the scene's materials; each frame places the camera
 // itself.
 matrender::SceneDescription object_scene(const DatasetConfig& config, size_t index, double uv_scale,
-                                         const std::optional<matgeom::RoomSpec>& room) {
+                                         const std::optional<matgeom::RoomSpec>& room,
+                                         const std::vector<DistractorSlot>& distractors) {
   const ObjectConfig& object = config.objects[index];
   matrender::SceneDescription scene = matrender::paper_object_scene(object_description(config, index, uv_scale));
   if (room) {
@@ -50,6 +51,15 @@ matrender::SceneDescription object_scene(const DatasetConfig& config, size_t ind
     surroundings.surroundings = true;
     surroundings.origin = matrender::Origin{config.source, "/objects/" + std::to_string(index) + "/surroundings"};
     scene.objects.push_back(std::move(surroundings));
+  }
+  // Each distractor where it was made; every frame moves it to its place (or hides it).
+  for (const DistractorSlot& distractor : distractors) {
+    matrender::ObjectDescription placed;
+    std::visit([&placed](const auto& source) { placed.source = source; }, distractor.object);
+    placed.uv_pass = matrender::UvPassMode::WhenMissing;
+    placed.surroundings = true;
+    placed.origin = matrender::Origin{config.source, "/objects/" + std::to_string(index) + "/surroundings/distractors"};
+    scene.objects.push_back(std::move(placed));
   }
   matrender::SceneOverrides overrides;
   overrides.placement = matrender::MatrixPlacement{};
@@ -150,18 +160,33 @@ ObjectRenderer::ObjectRenderer(const DatasetConfig& config, size_t object)
   grid_.n_theta = camera.n_theta;
   grid_views_ = static_cast<size_t>(camera.n_phi) * static_cast<size_t>(camera.n_theta);
   if (object_.surroundings.kind != SurroundingsKind::None) room_ = surroundings_room(object_.surroundings, surface, grid_);
-  built_ = matrender::build_scene(object_scene(config, object, object_.uv_scales.front(), room_));
+  if (object_.surroundings.kind == SurroundingsKind::Distractors) {
+    const auto* builtin = std::get_if<matrender::BuiltinObject>(&object_.source);
+    distractor_slots_ = draw_distractor_slots(object_.surroundings.distractors,
+                                              builtin ? std::optional<std::string>(builtin->name) : std::nullopt,
+                                              config.seed, object);
+    target_footprint_ = footprint(surface);
+    // Within the walls (the room is square about the grid's centre), or the floor's edge.
+    distractor_reach_ = 0.95 * room_->half_width -
+                        glm::length(target_footprint_.center - glm::dvec2(room_->floor_center));
+  }
+  built_ = matrender::build_scene(object_scene(config, object, object_.uv_scales.front(), room_, distractor_slots_));
+  size_distractors();
   const matgeom::TriangleMesh& mesh = built_.object_surfaces.front();
   const size_t part_count = built_.scene.part_materials(built_.object_meshes.front()).size();
   slot_parts_ = parts_of_slots(config, object, mesh.part_names, part_count);
 }
 
 void ObjectRenderer::select_variant(size_t index, const MaterialVariant& variant, const std::atomic<bool>* cancel) {
-  if (index != variant_index_ || variant != variant_) lighting_.clear();
+  if (index != variant_index_ || variant != variant_) {
+    lighting_.clear();
+    view_surroundings_.clear();
+  }
   // Another UV scale is another UV pass: the object is built again (its geometry, and so the
   // camera grid, stay as they are), lit again view by view.
   if (const double scale = object_.uv_scale_of(variant); scale != built_.object_uv_scales.front()) {
-    built_ = matrender::build_scene(object_scene(config_, object_index_, scale, room_), cancel);
+    built_ = matrender::build_scene(object_scene(config_, object_index_, scale, room_, distractor_slots_), cancel);
+    size_distractors();
     lit_view_ = SIZE_MAX;
   }
   variant_index_ = index;
@@ -211,6 +236,91 @@ void ObjectRenderer::put_surroundings_in_materials() {
     if (room_->ceiling) materials.part_materials[matgeom::kRoomCeilingPart] = surroundings_.walls->name;
   }
   matrender::assign_object_materials(built_, 1, materials);
+  distractor_materials_ = draw_distractor_materials(object_.surroundings.distractors, distractor_slots_.size(),
+                                                    config_.seed, object_index_, variant_index_);
+  for (size_t k = 0; k < distractor_materials_.size(); ++k) {
+    matrender::ObjectDescription distractor;
+    distractor.origin = matrender::Origin{config_.source, materials.origin.pointer.value() + "/distractors/materials"};
+    distractor.material = describe(distractor_materials_[k], "distractors/materials");
+    matrender::assign_object_materials(built_, kFirstDistractor + k, distractor);
+  }
+}
+
+size_t ObjectRenderer::target_pixels(size_t view) {
+  // A quarter-size pass at most, one sample a pixel, no bounce: only which object each pixel sees.
+  matrender::Camera camera = view_camera(view);
+  const int width = std::min(camera.width, kVisibilityWidth);
+  camera.height = std::max(1, static_cast<int>(std::lround(static_cast<double>(camera.height) * width / camera.width)));
+  camera.width = width;
+  matrender::RenderSettings settings;
+  settings.samples_per_pixel = 1;
+  settings.max_bounces = 0;
+  settings.aovs = matrender::AovObjectId;
+  matrender::FrameBuffers frame;
+  matrender::render(built_.scene, camera, settings, frame);
+  const auto target = static_cast<int32_t>(built_.object_meshes.front());
+  return static_cast<size_t>(std::count(frame.object_id.begin(), frame.object_id.end(), target));
+}
+
+void ObjectRenderer::size_distractors() {
+  distractor_sizings_.clear();
+  distractor_radii_.clear();
+  for (size_t k = 0; k < distractor_slots_.size(); ++k) {
+    matgeom::TriangleMesh& surface = built_.object_surfaces[kFirstDistractor + k];
+    const double scale = distractor_slots_[k].scale;
+    distractor_sizings_.push_back(distractor_sizing(footprint(surface), scale, target_footprint_.radius));
+    distractor_radii_.push_back(scale * target_footprint_.radius);
+    // Materials repeat their maps for the surface at its size (its place does not change that).
+    matgeom::transform_mesh(surface, distractor_sizings_.back());
+  }
+}
+
+void ObjectRenderer::place_distractors_in_scene(const std::vector<DistractorPlacement>& placements) {
+  for (size_t k = 0; k < distractor_slots_.size(); ++k) built_.scene.set_mesh_enabled(built_.object_meshes[kFirstDistractor + k], false);
+  for (const DistractorPlacement& placement : placements) {
+    const uint32_t mesh = built_.object_meshes[kFirstDistractor + placement.slot];
+    built_.scene.set_mesh_transform(mesh, placement.transform);
+    built_.scene.set_mesh_enabled(mesh, true);
+  }
+}
+
+const ObjectRenderer::ViewSurroundings& ObjectRenderer::view_surroundings(size_t view) {
+  if (const auto found = view_surroundings_.find(view); found != view_surroundings_.end()) return found->second;
+  const DistractorsConfig& config = object_.surroundings.distractors;
+  ViewSurroundings best;
+  best.visible_fraction = -1.0;
+  if (distractor_slots_.empty()) return view_surroundings_.emplace(view, best).first->second;
+  place_distractors_in_scene({});
+  const size_t alone = target_pixels(view);
+  SeedStream draws = distractor_draws(config_.seed, object_index_, variant_index_, view);
+  for (int attempt = 1; attempt <= config.tries; ++attempt) {
+    const std::optional<std::vector<DistractorPlacement>> placements =
+        place_distractors(config, target_footprint_, distractor_sizings_, distractor_radii_, room_->floor_center.z,
+                          distractor_reach_, draws);
+    if (!placements) continue;
+    place_distractors_in_scene(*placements);
+    const double visible = alone > 0 ? static_cast<double>(target_pixels(view)) / static_cast<double>(alone) : 1.0;
+    if (visible > best.visible_fraction) best = {*placements, attempt, visible, visible >= config.visible_fraction};
+    if (best.satisfied) break;
+  }
+  if (best.visible_fraction < 0.0) best = {{}, config.tries, 1.0, false};  // no draw placed them all: none stand there
+  best.tries = std::max(best.tries, 1);
+  return view_surroundings_.emplace(view, best).first->second;
+}
+
+std::string ObjectRenderer::view_surroundings_json(size_t view) {
+  if (distractor_slots_.empty()) return "";
+  const ViewSurroundings& drawn = view_surroundings(view);
+  ordered_json placements = ordered_json::array();
+  for (const DistractorPlacement& placement : drawn.placements)
+    placements.push_back({{"slot", placement.slot},
+                          {"material", distractor_materials_[placement.slot].name},
+                          {"transform", matrix_json(placement.transform)}});
+  return ordered_json{{"distractors", placements},
+                      {"draws", drawn.tries},
+                      {"visible_fraction", drawn.visible_fraction},
+                      {"enough_visible", drawn.satisfied}}
+      .dump();
 }
 
 matgeom::ObjectAsset ObjectRenderer::variant_asset() const {
@@ -276,6 +386,7 @@ FramePose ObjectRenderer::view_pose(size_t view, const std::string& stem) {
   for (int r = 0; r < 4; ++r)
     for (int c = 0; c < 4; ++c) pose.camera_to_world[static_cast<size_t>(r)][static_cast<size_t>(c)] = m[c][r];
   pose.lighting_json = view_lighting_json(view);
+  pose.surroundings_json = view_surroundings_json(view);
   return pose;
 }
 
@@ -290,6 +401,7 @@ bool ObjectRenderer::render(size_t view, uint32_t seed, int threads, const std::
                             FrameMaps& maps, matrender::RenderStats* stats) {
   light_view(view);
   const ViewLighting& lighting = view_lighting(view);
+  if (!distractor_slots_.empty()) place_distractors_in_scene(view_surroundings(view).placements);
   matrender::RenderSettings settings = config_.render.settings;
   settings.seed = seed;
   settings.threads = threads;
@@ -464,6 +576,26 @@ std::string ObjectRenderer::provenance_json(const DatasetPlan& plan, size_t vari
                             {"room", ordered_json::parse(room_scene_json(*room_))},
                             {"materials", materials},
                             {"drawn", "per variant, from the configuration's seed and the object's and variant's indices"}};
+    if (!distractor_slots_.empty()) {
+      const DistractorsConfig& distractors = object_.surroundings.distractors;
+      ordered_json distractor_slots = ordered_json::array();
+      for (size_t k = 0; k < distractor_slots_.size(); ++k) {
+        ordered_json object_json;
+        if (const auto* builtin = std::get_if<matrender::BuiltinObject>(&distractor_slots_[k].object))
+          object_json = {{"builtin", builtin->name}, {"seed", builtin->seed}};
+        else
+          object_json = {{"mesh", std::get<matrender::MeshFile>(distractor_slots_[k].object).path}};
+        distractor_slots.push_back({{"object", object_json},
+                         {"scale", distractor_slots_[k].scale},
+                         {"material", material(distractor_materials_[k])}});
+      }
+      json["surroundings"]["distractors"] = {
+          {"slots", distractor_slots},
+          {"visible_fraction", distractors.visible_fraction},
+          {"tries", distractors.tries},
+          {"each_frame", "transforms.json: frames[].surroundings: each distractor's slot and transform (from its mesh "
+                         "as made to its place, rows), the draws taken and the target's visible fraction"}};
+    }
   }
   json["configuration"] = config_.canonical_yaml;
   return json.dump();

@@ -6,7 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "matbase/file/input_file.h"
 #include "matbase/pi.h"
+#include "matgeom/builtin/builtin_objects.h"
 #include "matdataset/maker/seed_stream.h"
 #include "matgeom/uv/uv_pass.h"
 
@@ -34,6 +36,8 @@ std::vector<MaterialCandidate> read_candidates(const DocumentNode& list, const f
   return candidates;
 }
 
+}  // namespace
+
 MaterialCandidate drawn_candidate(const std::vector<MaterialCandidate>& candidates, SeedStream& stream) {
   const MaterialCandidate& chosen = candidates[stream.next() % candidates.size()];
   const auto* spec = std::get_if<matmaterial::LibraryMaterialSpec>(&chosen.source);
@@ -46,15 +50,51 @@ MaterialCandidate drawn_candidate(const std::vector<MaterialCandidate>& candidat
   return candidate;
 }
 
+namespace {
+
+DistractorsConfig read_distractors(const DocumentNode& node, const fs::path& base) {
+  DistractorsConfig config;
+  node.expect_keys({"count", "objects", "materials", "scale", "gap", "visible_fraction", "tries"});
+  if (const std::optional<DocumentNode> n = node.find("count")) config.count = read_drawn_number(*n, 1.0, 64.0, false);
+  if (config.count.low != std::floor(config.count.low) || config.count.high != std::floor(config.count.high))
+    node.required("count").fail("expected whole numbers");
+  if (const std::optional<DocumentNode> objects = node.find("objects")) {
+    const std::vector<std::string> builtins = matgeom::builtin_object_names();
+    for (const DocumentNode& item : objects->items("a list of built-in objects or {mesh: FILE}")) {
+      if (item.is_text()) {
+        config.objects.push_back(matrender::BuiltinObject{builtins[item.choice(builtins)], 0});
+        continue;
+      }
+      item.expect_keys({"mesh"});
+      const DocumentNode mesh = item.required("mesh");
+      const fs::path path = fs::path(mesh.text()).is_absolute() ? fs::path(mesh.text()) : base / mesh.text();
+      try {
+        matbase::require_input_file(path.string());
+      } catch (const std::exception& e) {
+        mesh.fail(e.what());
+      }
+      config.objects.push_back(matrender::MeshFile{path.lexically_normal().string(), {}});
+    }
+    if (config.objects.empty()) objects->fail("an empty list: give at least one object, or leave `objects` out");
+  }
+  if (!node.has("materials")) node.fail("distractors need `materials`: the materials drawn for them");
+  config.materials = read_candidates(node.required("materials"), base);
+  if (const std::optional<DocumentNode> n = node.find("scale")) config.scale = read_drawn_number(*n, 0.01, 100.0, false);
+  if (const std::optional<DocumentNode> n = node.find("gap")) config.gap = read_drawn_number(*n, 0.0, 100.0, false);
+  if (const std::optional<DocumentNode> n = node.find("visible_fraction")) config.visible_fraction = n->unit_interval();
+  if (const std::optional<DocumentNode> n = node.find("tries")) config.tries = n->integer_in(1, 1000);
+  return config;
+}
+
 }  // namespace
 
 SurroundingsConfig read_surroundings(const DocumentNode& node, const fs::path& base) {
   SurroundingsConfig config;
   if (node.is_word("none")) return config;
-  if (!node.is_mapping()) node.fail_expected("`none` or a mapping with `kind: floor`");
-  node.expect_keys({"kind", "floor_materials", "walls", "wall_materials", "ceiling", "size"});
-  constexpr std::array kKinds = {SurroundingsKind::None, SurroundingsKind::Floor};
-  config.kind = kKinds[node.required("kind").choice({"none", "floor"})];
+  if (!node.is_mapping()) node.fail_expected("`none` or a mapping with `kind: floor` or `kind: distractors`");
+  node.expect_keys({"kind", "floor_materials", "walls", "wall_materials", "ceiling", "size", "distractors"});
+  constexpr std::array kKinds = {SurroundingsKind::None, SurroundingsKind::Floor, SurroundingsKind::Distractors};
+  config.kind = kKinds[node.required("kind").choice({"none", "floor", "distractors"})];
   if (config.kind == SurroundingsKind::None) {
     if (node.members().size() > 1) node.fail("`kind: none` takes no other keys");
     return config;
@@ -79,6 +119,13 @@ SurroundingsConfig read_surroundings(const DocumentNode& node, const fs::path& b
   }
   if (const std::optional<DocumentNode> size = node.find("size"))
     config.size = size->number_in(kMinRoomSize, kMaxRoomSize);
+  const std::optional<DocumentNode> distractors = node.find("distractors");
+  if (config.kind == SurroundingsKind::Distractors) {
+    if (!distractors) node.fail("`kind: distractors` needs `distractors`: at least their `materials`");
+    config.distractors = read_distractors(*distractors, base);
+  } else if (distractors) {
+    distractors->fail("distractors stand around the target only with `kind: distractors`");
+  }
   return config;
 }
 
@@ -124,7 +171,14 @@ std::string room_scene_json(const matgeom::RoomSpec& room) {
   return json.dump();
 }
 
-const char* surroundings_kind_name(SurroundingsKind kind) { return kind == SurroundingsKind::Floor ? "floor" : "none"; }
+const char* surroundings_kind_name(SurroundingsKind kind) {
+  switch (kind) {
+    case SurroundingsKind::Floor: return "floor";
+    case SurroundingsKind::Distractors: return "distractors";
+    case SurroundingsKind::None:
+    default: return "none";
+  }
+}
 
 const char* walls_name(matgeom::RoomWalls walls) {
   switch (walls) {

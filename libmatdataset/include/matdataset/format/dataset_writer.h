@@ -102,6 +102,9 @@ struct FramePose {
   // The frame's lighting as a JSON object (make_dataset's frame_lighting.h), recorded under
   // "lighting"; empty: none recorded.
   std::string lighting_json;
+  // What stands around the object in the frame (make_dataset's distractors), as a JSON object,
+  // recorded under "surroundings"; empty: none recorded.
+  std::string surroundings_json;
 };
 
 // transforms.json: the repository's keys (camera_angle_x, and per frame transform_matrix,

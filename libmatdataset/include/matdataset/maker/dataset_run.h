@@ -33,6 +33,10 @@ struct RunSummary {
   bool cancelled = false;
   std::vector<SplitFile> splits;  // written to config/
   std::vector<std::string> empty_frames;    // rendered this run with the object in no pixel: "vase/var000/003"
+  // Rendered this run with distractors: those whose first draw hid too much of the target and was
+  // drawn again, and those no draw showed enough of (each kept at its best draw), named.
+  size_t redrawn_frames = 0;
+  std::vector<std::string> hidden_frames;
 };
 
 // Throws matbase::InputError when an object, a material or the folder's earlier contents do not fit the

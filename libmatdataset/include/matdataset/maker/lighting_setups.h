@@ -13,20 +13,9 @@
 #include <glm/glm.hpp>
 
 #include "matbase/document/document_node.h"
+#include "matdataset/maker/drawn_number.h"
 
 namespace matdataset {
-
-// A quantity drawn for each frame: one value (low == high), or uniform on [low, high], or uniform
-// in its logarithm there (powers, strengths, illuminances: each factor of ten gets an equal share).
-struct DrawnNumber {
-  double low = 0.0;
-  double high = 0.0;
-  bool logarithmic = false;
-  static DrawnNumber value(double v, bool logarithmic = false) { return {v, v, logarithmic}; }
-  bool operator==(const DrawnNumber& other) const {
-    return low == other.low && high == other.high && logarithmic == other.logarithmic;
-  }
-};
 
 // A lamp's colour: an RGB, or the colour of Blender's Blackbody node at a temperature drawn from
 // a range in kelvin.

@@ -10,6 +10,7 @@
 #include "matdataset/format/dataset_writer.h"
 #include "matdataset/maker/dataset_config.h"
 #include "matdataset/maker/dataset_plan.h"
+#include "matdataset/maker/distractors.h"
 #include "matdataset/maker/frame_lighting.h"
 #include "matgeom/bounding_sphere.h"
 #include "matgeom/object_asset.h"
@@ -44,6 +45,17 @@ class ObjectRenderer {
 
   // Whether the object stands in surroundings (its frames then have region maps).
   bool has_surroundings() const { return room_.has_value(); }
+
+  // A view's distractors in the selected variant: the draw kept (the first whose target shows at
+  // least the configured visible fraction, else the one that showed it most), the draws it took
+  // and the fraction. Drawn the first time it is asked for.
+  struct ViewSurroundings {
+    std::vector<DistractorPlacement> placements;
+    int tries = 1;
+    double visible_fraction = 1.0;
+    bool satisfied = true;
+  };
+  const ViewSurroundings& view_surroundings(size_t view);
 
   // The selected variant as an asset a glTF writer takes (for another renderer to get the same
   // object): the object's surface in world space, each part in its slot's material with the maps
@@ -110,6 +122,23 @@ class ObjectRenderer {
   std::optional<matgeom::RoomSpec> room_;
   DrawnSurroundings surroundings_;
   void put_surroundings_in_materials();
+  // The distractors (the scene's objects from kFirstDistractor on): each slot's object, its
+  // footprint as built, the selected variant's materials, and each view's draw.
+  static constexpr size_t kFirstDistractor = 2;
+  static constexpr int kVisibilityWidth = 128;
+  std::vector<DistractorSlot> distractor_slots_;
+  std::vector<glm::dmat4> distractor_sizings_;  // each slot's mesh as built to its size (distractor_sizing)
+  std::vector<double> distractor_radii_;         // its footprint's radius then
+  Footprint target_footprint_;
+  double distractor_reach_ = 0.0;
+  std::vector<MaterialCandidate> distractor_materials_;
+  std::map<size_t, ViewSurroundings> view_surroundings_;
+  // The target's pixels in a small object-id pass of the view with the distractors as they are.
+  size_t target_pixels(size_t view);
+  // Each slot's sizing, from its surface as built (which is left at that size for its materials).
+  void size_distractors();
+  void place_distractors_in_scene(const std::vector<DistractorPlacement>& placements);
+  std::string view_surroundings_json(size_t view);
 };
 
 }  // namespace matdataset

@@ -7,18 +7,37 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <variant>
 #include <string>
 #include <vector>
 
 #include "matbase/document/document_node.h"
+#include "matdataset/maker/drawn_number.h"
 #include "matdataset/maker/material_candidate.h"
+#include "matdataset/maker/seed_stream.h"
 #include "matgeom/camera_grid.h"
 #include "matgeom/mesh.h"
 #include "matgeom/room.h"
 
 namespace matdataset {
 
-enum class SurroundingsKind { None, Floor };
+enum class SurroundingsKind { None, Floor, Distractors };
+
+// Other objects on the floor around the target (`kind: distractors`): a number of them per frame,
+// each one of the configuration's objects in a material drawn per variant, at a drawn size, gap
+// and turn, their footprints apart from the target's and each other's.
+struct DistractorsConfig {
+  DrawnNumber count{2.0, 4.0};  // per frame, whole numbers
+  // Built-ins or mesh files; none listed: every built-in object but the target's own.
+  std::vector<std::variant<matrender::MeshFile, matrender::BuiltinObject>> objects;
+  std::vector<MaterialCandidate> materials;  // drawn per variant for each distractor
+  DrawnNumber scale{0.4, 1.0};  // a distractor's footprint radius over the target's
+  DrawnNumber gap{0.1, 1.5};    // between its footprint and the target's, in the target's footprint radii
+  // A frame's draw is kept when the target shows at least this fraction of the pixels it shows
+  // without distractors; otherwise it is drawn again, up to `tries` draws in all.
+  double visible_fraction = 0.5;
+  int tries = 8;
+};
 
 struct SurroundingsConfig {
   SurroundingsKind kind = SurroundingsKind::None;
@@ -29,13 +48,15 @@ struct SurroundingsConfig {
   // The floor's half width (the walls' distance from the grid's centre) in camera grid radii;
   // none: 50 for a floor alone (its edge a hair under the horizon), 1.5 for a room.
   std::optional<double> size;
+  DistractorsConfig distractors;  // kind: distractors
   double room_size() const { return size ? *size : walls == matgeom::RoomWalls::None ? 50.0 : 1.5; }
 };
 
 // The configuration's `surroundings` (top-level or an object's): `none`, or a mapping with `kind`,
-// `floor_materials`, `walls`, `wall_materials`, `ceiling` and `size`. Fails at the key at fault:
-// a floor without materials, walls without theirs, a ceiling on anything but a box, a room too
-// small to hold the cameras.
+// `floor_materials`, `walls`, `wall_materials`, `ceiling`, `size` and, for distractors,
+// `distractors`. Fails at the key at fault: a floor without materials, walls without theirs, a
+// ceiling on anything but a box, a room too small to hold the cameras, a distractor that is no
+// built-in or mesh file.
 SurroundingsConfig read_surroundings(const matbase::DocumentNode& node, const std::filesystem::path& base);
 
 // A variant's draw: the floor's and the walls' materials. A library candidate spelled without
@@ -44,6 +65,10 @@ struct DrawnSurroundings {
   std::optional<MaterialCandidate> floor;
   std::optional<MaterialCandidate> walls;
 };
+// One of `candidates`, drawn from `draws` (two numbers); a library material without its ":seed"
+// gets a seed drawn.
+MaterialCandidate drawn_candidate(const std::vector<MaterialCandidate>& candidates, SeedStream& draws);
+
 // Drawn from the configuration's seed and the variant's indices alone, so a shard or a resumed
 // run draws the same.
 DrawnSurroundings draw_surroundings(const SurroundingsConfig& config, uint64_t seed, size_t object, size_t variant);
@@ -59,7 +84,7 @@ matgeom::RoomSpec surroundings_room(const SurroundingsConfig& config, const matg
 // The room as a scene file's "room" object spells it (docs/scene_format.md), as JSON text.
 std::string room_scene_json(const matgeom::RoomSpec& room);
 
-// "none", "floor".
+// "none", "floor", "distractors".
 const char* surroundings_kind_name(SurroundingsKind kind);
 // "none", "box", "cyclorama".
 const char* walls_name(matgeom::RoomWalls walls);
