@@ -99,13 +99,13 @@ void check_distractors_fit(const DatasetConfig& config, size_t o, const matgeom:
                                                 static_cast<double>(config.render.width) / config.render.height);
   const double reach = 0.95 * surroundings.room_size() * grid_radius;
   const double target_radius = footprint(mesh).radius;
-  if (!distractors_fit(distractors, target_radius, reach))
+  if (!distractors_fit(distractors, target_radius, bounds.radius, reach))
     throw matbase::InputError(fmt::format(
-        "{}: {}.surroundings.distractors.count: {} distractors up to {} times {}'s footprint ({:.3g} m across), {} of "
-        "it apart, cannot stand apart within the {:.3g} m the floor reaches from it; ask for fewer or smaller ones, "
+        "{}: {}.surroundings.distractors.count: {} distractors up to {} times {}'s size ({:.3g} m across), {} of "
+        "its footprint apart, cannot stand apart within the {:.3g} m the floor reaches from it; ask for fewer or smaller ones, "
         "or a larger surroundings.size",
         config.source, object_key(o), distractors.count.high, distractors.scale.high, config.objects[o].name,
-        2.0 * target_radius, distractors.gap.low, reach));
+        2.0 * bounds.radius, distractors.gap.low, reach));
 }
 
 std::vector<std::string> check_before_writing(const DatasetConfig& config) {

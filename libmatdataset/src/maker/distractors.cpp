@@ -63,8 +63,7 @@ std::vector<DistractorSlot> draw_distractor_slots(const DistractorsConfig& confi
   return slots;
 }
 
-glm::dmat4 distractor_sizing(const Footprint& own, double scale, double target_radius) {
-  const double factor = own.radius > 0.0 ? scale * target_radius / own.radius : 1.0;
+glm::dmat4 distractor_sizing(const Footprint& own, double factor) {
   return glm::scale(glm::dmat4(1.0), glm::dvec3(factor)) * glm::translate(glm::dmat4(1.0), -glm::dvec3(own.center, own.lowest));
 }
 
@@ -119,8 +118,8 @@ std::optional<std::vector<DistractorPlacement>> place_distractors(const Distract
   return placed;
 }
 
-bool distractors_fit(const DistractorsConfig& config, double target_radius, double reach) {
-  const double radius = config.scale.high * target_radius, half_gap = 0.5 * config.gap.low * target_radius;
+bool distractors_fit(const DistractorsConfig& config, double target_radius, double target_size, double reach) {
+  const double radius = config.scale.high * target_size, half_gap = 0.5 * config.gap.low * target_radius;
   const double inner = target_radius + 2.0 * half_gap;
   if (inner + 2.0 * radius > reach) return false;
   const double discs = config.count.high * matbase::kPi * (radius + half_gap) * (radius + half_gap);

@@ -166,6 +166,7 @@ ObjectRenderer::ObjectRenderer(const DatasetConfig& config, size_t object)
                                               builtin ? std::optional<std::string>(builtin->name) : std::nullopt,
                                               config.seed, object);
     target_footprint_ = footprint(surface);
+    target_size_ = matgeom::minimal_enclosing_sphere(surface.positions).radius;
     // Within the walls (the room is square about the grid's centre), or the floor's edge.
     distractor_reach_ = 0.95 * room_->half_width -
                         glm::length(target_footprint_.center - glm::dvec2(room_->floor_center));
@@ -268,8 +269,11 @@ void ObjectRenderer::size_distractors() {
   for (size_t k = 0; k < distractor_slots_.size(); ++k) {
     matgeom::TriangleMesh& surface = built_.object_surfaces[kFirstDistractor + k];
     const double scale = distractor_slots_[k].scale;
-    distractor_sizings_.push_back(distractor_sizing(footprint(surface), scale, target_footprint_.radius));
-    distractor_radii_.push_back(scale * target_footprint_.radius);
+    const Footprint own = footprint(surface);
+    const double size = matgeom::minimal_enclosing_sphere(surface.positions).radius;
+    const double factor = size > 0.0 ? scale * target_size_ / size : 1.0;
+    distractor_sizings_.push_back(distractor_sizing(own, factor));
+    distractor_radii_.push_back(own.radius * factor);
     // Materials repeat their maps for the surface at its size (its place does not change that).
     matgeom::transform_mesh(surface, distractor_sizings_.back());
   }

@@ -48,8 +48,10 @@ TEST_CASE("Every drawn place keeps the distractors' footprints apart from the ta
   for (size_t k = 0; k < names.size(); ++k) {
     meshes.push_back(builtin(names[k], static_cast<uint32_t>(k)));
     const double scale = 0.5 + 0.25 * static_cast<double>(k);
-    sizings.push_back(distractor_sizing(footprint(meshes.back()), scale, target_print.radius));
-    radii.push_back(scale * target_print.radius);
+    const Footprint own = footprint(meshes.back());
+    const double factor = scale * target_print.radius / own.radius;
+    sizings.push_back(distractor_sizing(own, factor));
+    radii.push_back(own.radius * factor);
   }
   const double reach = 8.0 * target_print.radius, floor = -0.3;
   size_t placed_frames = 0, distractors = 0;

@@ -30,7 +30,7 @@ Footprint footprint(const matgeom::TriangleMesh& mesh);
 // An object's distractor slots (as many as the most a frame has), drawn once per object from the
 // configuration's seed: each one of the configured objects, or of the built-ins but
 // `target_builtin` (the target's own, when it is one), a built-in with a drawn shape seed, and
-// its size: its footprint's radius over the target's (`scale`). Frames move and turn them.
+// its size: its bounding sphere's radius over the target's (`scale`). Frames move and turn them.
 using DistractorObject = std::variant<matrender::MeshFile, matrender::BuiltinObject>;
 struct DistractorSlot {
   DistractorObject object;
@@ -40,9 +40,9 @@ std::vector<DistractorSlot> draw_distractor_slots(const DistractorsConfig& confi
                                                   const std::optional<std::string>& target_builtin, uint64_t seed,
                                                   size_t object);
 
-// The slot's mesh (of footprint `own`) at its size for a target of footprint radius
-// `target_radius`: its footprint centred on the origin, its lowest point at z = 0.
-glm::dmat4 distractor_sizing(const Footprint& own, double scale, double target_radius);
+// The slot's mesh (of footprint `own`) scaled by `factor` about its footprint's centre, which goes
+// to the origin, and its lowest point, which goes to z = 0.
+glm::dmat4 distractor_sizing(const Footprint& own, double factor);
 
 // The material of each slot in variant `variant`, drawn as the floor's is.
 std::vector<MaterialCandidate> draw_distractor_materials(const DistractorsConfig& config, size_t slots, uint64_t seed,
@@ -71,11 +71,12 @@ std::optional<std::vector<DistractorPlacement>> place_distractors(const Distract
 // The frame's draw stream: the configuration's seed and the frame's indices.
 SeedStream distractor_draws(uint64_t seed, size_t object, size_t variant, size_t view);
 
-// Whether `count` distractors at the largest scale and smallest gap can stand apart around the
-// target within `reach` (footprints of the target's radius `target_radius`): their discs, each
+// Whether the most distractors, at the largest scale and smallest gap, can stand apart around a
+// target of footprint radius `target_radius` and bounding sphere radius `target_size` within
+// `reach`: their footprints (at most their spheres' radius, `scale` times the target's size), each
 // with half the smallest gap about it, may cover at most 70 % of the ring around the target (a
 // random packing's limit is lower still). False: the configuration asks for more than the floor
 // holds apart.
-bool distractors_fit(const DistractorsConfig& config, double target_radius, double reach);
+bool distractors_fit(const DistractorsConfig& config, double target_radius, double target_size, double reach);
 
 }  // namespace matdataset

@@ -130,6 +130,7 @@ class ObjectRenderer {
   std::vector<glm::dmat4> distractor_sizings_;  // each slot's mesh as built to its size (distractor_sizing)
   std::vector<double> distractor_radii_;         // its footprint's radius then
   Footprint target_footprint_;
+  double target_size_ = 0.0;  // the target's bounding sphere radius, which distractors' scales are of
   double distractor_reach_ = 0.0;
   std::vector<MaterialCandidate> distractor_materials_;
   std::map<size_t, ViewSurroundings> view_surroundings_;

@@ -31,7 +31,7 @@ struct DistractorsConfig {
   // Built-ins or mesh files; none listed: every built-in object but the target's own.
   std::vector<std::variant<matrender::MeshFile, matrender::BuiltinObject>> objects;
   std::vector<MaterialCandidate> materials;  // drawn per variant for each distractor
-  DrawnNumber scale{0.4, 1.0};  // a distractor's footprint radius over the target's
+  DrawnNumber scale{0.4, 1.0};  // a distractor's bounding sphere radius over the target's
   DrawnNumber gap{0.1, 1.5};    // between its footprint and the target's, in the target's footprint radii
   // A frame's draw is kept when the target shows at least this fraction of the pixels it shows
   // without distractors; otherwise it is drawn again, up to `tries` draws in all.
