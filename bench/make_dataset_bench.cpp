@@ -27,6 +27,8 @@
 //                                    lighting in turn (references included), and a last table
 //                                    gives each one's render seconds to the error the first
 //                                    one's frames have as configured, and their ratio to it
+//   --surroundings NAME=YAML ...     the same for `surroundings` values (none, a floor, a room,
+//                                    distractors): what surroundings cost at equal error
 //   --threads N
 //
 // Image error is the RMSE over the image (every pixel and channel, linear radiance) against the
@@ -499,7 +501,7 @@ void print_frames_at(const std::vector<SeriesCurves>& series, const ErrorLevel& 
   }
 }
 
-// What the command line asks for, the same for every lighting measured.
+// What the command line asks for, the same for every setting compared.
 struct Request {
   std::string config_file;
   std::vector<std::string> objects, mode_texts;
@@ -511,9 +513,9 @@ struct Request {
   std::string images;
 };
 
-// One lighting's curves, ours only, and the error its frames reach as configured (per frame):
-// what the lighting comparison reads.
-struct LightingCurves {
+// One compared setting's curves (a lighting's, a surroundings'), ours only, and the error its
+// frames reach as configured (per frame): what the comparison reads.
+struct SettingCurves {
   std::string name;
   std::vector<SeriesCurves> series;
   std::optional<ErrorLevel> as_configured;
@@ -521,7 +523,7 @@ struct LightingCurves {
 
 // Measures every mode on the request's frames under the configuration with `sets`, references
 // included, and prints the tables; `name` heads them.
-LightingCurves measure_lighting(const Request& request, const std::vector<matdataset::Override>& sets,
+SettingCurves measure_setting(const Request& request, const std::vector<matdataset::Override>& sets,
                                 const std::string& name) {
   const std::string& config_file = request.config_file;
   const std::vector<Series>& series = request.series;
@@ -631,7 +633,7 @@ LightingCurves measure_lighting(const Request& request, const std::vector<matdat
     };
     const size_t configured =
         static_cast<size_t>(std::find_if(configs.begin(), configs.end(), as_configured) - configs.begin());
-    LightingCurves result{name, curves, std::nullopt};
+    SettingCurves result{name, curves, std::nullopt};
     if (configured < modes.size()) {
       result.as_configured = ErrorLevel{fmt::format("as {}, mean {:.2f} %", modes[configured].name,
                                                     100.0 * average(figures[configured].image_errors)),
@@ -650,20 +652,20 @@ LightingCurves measure_lighting(const Request& request, const std::vector<matdat
     return result;
 }
 
-// Under each lighting, the render seconds a frame each series needs to reach the error the first
-// lighting's frames have as configured (the rig's at 128 samples for paper.yaml), and their ratio
-// to the first lighting's: what a lighting costs at equal error.
-void print_lighting_costs(const std::vector<LightingCurves>& lightings) {
-  const LightingCurves& first = lightings.front();
+// Under each compared setting (`what`: "lighting", "surroundings"), the render seconds a frame each
+// series needs to reach the error the first setting's frames have as configured (the rig's at 128
+// samples for paper.yaml), and their ratio to the first one's: what a setting costs at equal error.
+void print_setting_costs(const std::vector<SettingCurves>& lightings, const std::string& what) {
+  const SettingCurves& first = lightings.front();
   if (!first.as_configured) return;
   const ErrorLevel& level = *first.as_configured;
-  fmt::print("\nRender seconds a frame under each lighting to the image error {} reaches {} (mean over the "
-             "frames, each at its own error under {}), and over {}'s:\n\n| lighting |",
-             first.name, level.label, first.name, first.name);
+  fmt::print("\nRender seconds a frame under each {} to the image error {} reaches {} (mean over the "
+             "frames, each at its own error under {}), and over {}'s:\n\n| {} |",
+             what, first.name, level.label, first.name, first.name, what);
   std::string rule = "|---|";
   for (const SeriesCurves& s : first.series) fmt::print(" {0} | {0} / {1} |", s.name, first.name), rule += "---:|---:|";
   fmt::print("\n{}\n", rule);
-  for (const LightingCurves& lighting : lightings) {
+  for (const SettingCurves& lighting : lightings) {
     fmt::print("| {} |", lighting.name);
     for (size_t k = 0; k < first.series.size(); ++k) {
       const std::optional<Reach> base = mean_reach(first.series[k], level);
@@ -690,7 +692,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> mode_texts = {
       "fixed:render.samples=32|64|128", "adaptive:render.noise_threshold=0.05|0.02|0.01|0.005,render.samples=512",
       "adaptive+denoise:render.noise_threshold=0.05|0.02|0.01|0.005,render.samples=512,render.denoise=true"};
-  std::vector<std::string> set_texts, lighting_texts;
+  std::vector<std::string> set_texts, lighting_texts, surroundings_texts;
   int views = 1, reference_frames = 4, reference_factor = 8, threads = 0;
   double target_percent = 1.6;
   CyclesOptions cycles;
@@ -720,6 +722,10 @@ int main(int argc, char** argv) {
                  "NAME=YAML: a `lights` value (docs/make_dataset.md, \"Lighting\"); every mode is measured under each "
                  "in turn, references included, and a last table gives each lighting's render seconds to the error "
                  "the first one's frames have as configured, over the first one's");
+  app.add_option("--surroundings", surroundings_texts,
+                 "NAME=YAML: a `surroundings` value (docs/make_dataset.md, \"Surroundings\"), compared as --lighting "
+                 "compares lightings: what a floor, a room or distractors cost at equal error")
+      ->excludes(app.get_option("--lighting"));
   app.add_flag("--cycles", cycles.enabled, "also render the referenced frames with Blender 3.4 Cycles");
   app.add_option("--blender", cycles.blender, "Blender 3.4 executable")->capture_default_str();
   app.add_option("--cycles-thresholds", cycles.thresholds, "Cycles' noise thresholds, a render each, the loosest first")
@@ -740,19 +746,24 @@ int main(int argc, char** argv) {
     for (const Series& s : series) modes.insert(modes.end(), s.points.begin(), s.points.end());
     Request request{config_file, objects, mode_texts, series, modes, views, reference_frames, reference_factor,
                     threads, target_percent, cycles, images};
-    if (lighting_texts.empty()) {
-      measure_lighting(request, sets, "the configuration's lighting");
+    // Each setting compared in turn under one configuration key.
+    const bool lights = !lighting_texts.empty();
+    const std::vector<std::string>& compared = lights ? lighting_texts : surroundings_texts;
+    if (compared.empty()) {
+      measure_setting(request, sets, "the configuration's lighting");
       return 0;
     }
-    std::vector<LightingCurves> lightings;
-    for (const std::string& text : lighting_texts) {
-      const matdataset::Override lighting = parse_override(text, "--lighting");
-      std::vector<matdataset::Override> lit = sets;
-      lit.push_back({"lights", lighting.value, "--lighting " + lighting.key});
-      fmt::print("\n## Lighting {}: {}\n\n", lighting.key, lighting.value);
-      lightings.push_back(measure_lighting(request, lit, lighting.key));
+    const std::string option = lights ? "--lighting" : "--surroundings", key = lights ? "lights" : "surroundings",
+                      what = lights ? "lighting" : "surroundings";
+    std::vector<SettingCurves> curves;
+    for (const std::string& text : compared) {
+      const matdataset::Override setting = parse_override(text, option);
+      std::vector<matdataset::Override> with = sets;
+      with.push_back({key, setting.value, option + " " + setting.key});
+      fmt::print("\n## {} {}: {}\n\n", lights ? "Lighting" : "Surroundings", setting.key, setting.value);
+      curves.push_back(measure_setting(request, with, setting.key));
     }
-    print_lighting_costs(lightings);
+    print_setting_costs(curves, what);
     return 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "make_dataset_bench: %s\n", e.what());
