@@ -222,7 +222,11 @@ int make(const Options& options) {
                                                             : " (too few groups to fill every split)")
                    : "");
   std::string folders;
-  for (const matdataset::DatasetMapInfo& map : matdataset::dataset_maps()) folders += std::string(map.folder) + "/, ";
+  bool surroundings = false;
+  for (const matdataset::ObjectConfig& object : config.objects)
+    surroundings |= object.surroundings.kind != matdataset::SurroundingsKind::None;
+  for (const matdataset::DatasetMapInfo& map : matdataset::dataset_maps())
+    if (matdataset::frame_has_map(map, surroundings)) folders += std::string(map.folder) + "/, ";
   fmt::print("wrote {} ({}): per object and variant {}transforms.json, metadata.json; config/ holds the split files\n",
              config.output, matbase::byte_size_text(static_cast<double>(matdataset::folder_bytes(config.output))),
              folders);
