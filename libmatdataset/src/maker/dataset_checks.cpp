@@ -15,6 +15,7 @@
 #include "matbase/pi.h"
 #include "matdataset/format/dataset_folders.h"
 #include "matdataset/format/dataset_writer.h"
+#include "matdataset/maker/distractors.h"
 #include "matdataset/maker/object_renderer.h"
 #include "matgeom/bounding_sphere.h"
 #include "matgeom/builtin/builtin_objects.h"
@@ -93,6 +94,13 @@ void check_distractors_fit(const DatasetConfig& config, size_t o, const matgeom:
   const SurroundingsConfig& surroundings = config.objects[o].surroundings;
   if (surroundings.kind != SurroundingsKind::Distractors) return;
   const DistractorsConfig& distractors = surroundings.distractors;
+  // Their mesh files are read when the object's scene is built, after earlier objects' files.
+  for (const DistractorObject& object : distractors.objects)
+    if (const auto* file = std::get_if<matrender::MeshFile>(&object)) try {
+        matgeom::read_object(file->path, file->read_options);
+      } catch (const std::exception& e) {
+        throw matbase::InputError(config.source + ": " + object_key(o) + ".surroundings.distractors.objects: " + e.what());
+      }
   const matgeom::Sphere bounds = matgeom::minimal_enclosing_sphere(mesh.positions);
   const glm::dvec3 centre = matgeom::surface_centroid(mesh);
   const double grid_radius = camera_grid_radius(config.camera, mesh, bounds, centre,

@@ -4,6 +4,8 @@
 // configuration asking for more than the floor holds apart, or spelling them wrong, is refused.
 #include <catch2/catch.hpp>
 
+#include <filesystem>
+#include <fstream>
 #include <set>
 #include <string>
 #include <vector>
@@ -123,6 +125,13 @@ TEST_CASE("Distractors the floor cannot hold apart, or spelled wrong, are refuse
   CHECK(refusal("{kind: distractors, floor_materials: [wood], size: 1.2, distractors: {count: 40, scale: 2, "
                 "materials: [plastic]}}")
             .find("objects.0.surroundings.distractors.count") != std::string::npos);
+  // A distractor's mesh file that cannot be read is refused before the first file, not when its
+  // object's turn comes.
+  const std::filesystem::path broken = std::filesystem::temp_directory_path() / "matpredict_broken_distractor.ply";
+  std::ofstream(broken) << "ply\nformat ascii 1.0\nelement vertex 3\nend_header\n0 0\n";
+  CHECK(refusal("{kind: distractors, floor_materials: [wood], distractors: {objects: [{mesh: " + broken.string() +
+                "}], materials: [plastic]}}")
+            .find("objects.0.surroundings.distractors.objects: ") != std::string::npos);
   const auto parse_refusal = [](const std::string& surroundings) {
     try {
       config_of(surroundings);
