@@ -224,7 +224,7 @@ int make(const Options& options) {
   std::string folders;
   bool surroundings = false;
   for (const matdataset::ObjectConfig& object : config.objects)
-    surroundings |= object.surroundings.kind != matdataset::SurroundingsKind::None;
+    surroundings |= object.surroundings.present();
   for (const matdataset::DatasetMapInfo& map : matdataset::dataset_maps())
     if (matdataset::frame_has_map(map, surroundings)) folders += std::string(map.folder) + "/, ";
   fmt::print("wrote {} ({}): per object and variant {}transforms.json, metadata.json; config/ holds the split files\n",

@@ -365,7 +365,7 @@ DatasetConfig read_config(const DocumentNode& root, const fs::path& base) {
   // stays at or above the grid centre's horizon when there is a floor.
   if (config.camera.phi_max_deg > 90.0)
     for (size_t o = 0; o < config.objects.size(); ++o)
-      if (config.objects[o].surroundings.kind != SurroundingsKind::None)
+      if (config.objects[o].surroundings.present())
         (root.has("camera") ? root.required("camera") : root)
             .fail(fmt::format("camera.phi_deg reaches {} degrees, below the horizon, and object {} stands on a floor: "
                               "keep the grid's polar angles within [0, 90] with surroundings",

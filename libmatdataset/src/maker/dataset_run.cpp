@@ -114,7 +114,7 @@ RunSummary run_dataset(const DatasetConfig& config, const DatasetPlan& plan, con
     const fs::path screenshot = texture_target_screenshot_path(
         texture_target_root(config), config.objects[frame.object].name, material, stem);
     if (frame_is_complete(folder, stem, config.render.width, config.render.height,
-                          config.objects[frame.object].surroundings.kind != SurroundingsKind::None) &&
+                          config.objects[frame.object].surroundings.present()) &&
         (!config.paper_texture_layout || texture_target_screenshot_is_complete(screenshot))) {
       ++summary.skipped;
       if (!shows_object(decode(folder / "label" / (stem + ".png")).values))

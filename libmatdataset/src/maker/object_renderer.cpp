@@ -149,8 +149,9 @@ ObjectRenderer::ObjectRenderer(const DatasetConfig& config, size_t object)
   const matgeom::TriangleMesh surface =
       matrender::placed_object_surface(object_description(config, object, object_.uv_scales.front()));
   const CameraConfig& camera = config.camera;
+  const matgeom::Sphere bounds = matgeom::minimal_enclosing_sphere(surface.positions);
   grid_.center = matgeom::surface_centroid(surface);
-  grid_.radius = camera_grid_radius(camera, surface, matgeom::minimal_enclosing_sphere(surface.positions), grid_.center,
+  grid_.radius = camera_grid_radius(camera, surface, bounds, grid_.center,
                                     static_cast<double>(config.render.width) / config.render.height);
   grid_.phi_min = camera.phi_min_deg * kDegree;
   grid_.phi_max = camera.phi_max_deg * kDegree;
@@ -159,16 +160,16 @@ ObjectRenderer::ObjectRenderer(const DatasetConfig& config, size_t object)
   grid_.n_phi = camera.n_phi;
   grid_.n_theta = camera.n_theta;
   grid_views_ = static_cast<size_t>(camera.n_phi) * static_cast<size_t>(camera.n_theta);
-  if (object_.surroundings.kind != SurroundingsKind::None) room_ = surroundings_room(object_.surroundings, surface, grid_);
+  if (object_.surroundings.present()) room_ = surroundings_room(object_.surroundings, surface, grid_);
   if (object_.surroundings.kind == SurroundingsKind::Distractors) {
     const auto* builtin = std::get_if<matrender::BuiltinObject>(&object_.source);
     distractor_slots_ = draw_distractor_slots(object_.surroundings.distractors,
                                               builtin ? std::optional<std::string>(builtin->name) : std::nullopt,
                                               config.seed, object);
     target_footprint_ = footprint(surface);
-    target_size_ = matgeom::minimal_enclosing_sphere(surface.positions).radius;
+    target_size_ = bounds.radius;
     // Within the walls (the room is square about the grid's centre), or the floor's edge.
-    distractor_reach_ = 0.95 * room_->half_width -
+    distractor_reach_ = kDistractorReachOfRoom * room_->half_width -
                         glm::length(target_footprint_.center - glm::dvec2(room_->floor_center));
   }
   built_ = matrender::build_scene(object_scene(config, object, object_.uv_scales.front(), room_, distractor_slots_));
@@ -294,8 +295,13 @@ const ObjectRenderer::ViewSurroundings& ObjectRenderer::view_surroundings(size_t
   ViewSurroundings best;
   best.visible_fraction = -1.0;
   if (distractor_slots_.empty()) return view_surroundings_.emplace(view, best).first->second;
-  place_distractors_in_scene({});
-  const size_t alone = target_pixels(view);
+  // The target's pixels without distractors depend on the view alone, not on the variant.
+  auto [unoccluded, first] = target_pixels_alone_.try_emplace(view, 0);
+  if (first) {
+    place_distractors_in_scene({});
+    unoccluded->second = target_pixels(view);
+  }
+  const size_t alone = unoccluded->second;
   SeedStream draws = distractor_draws(config_.seed, object_index_, variant_index_, view);
   for (int attempt = 1; attempt <= config.tries; ++attempt) {
     const std::optional<std::vector<DistractorPlacement>> placements =
@@ -308,7 +314,6 @@ const ObjectRenderer::ViewSurroundings& ObjectRenderer::view_surroundings(size_t
     if (best.satisfied) break;
   }
   if (best.visible_fraction < 0.0) best = {{}, config.tries, 1.0, false};  // no draw placed them all: none stand there
-  best.tries = std::max(best.tries, 1);
   return view_surroundings_.emplace(view, best).first->second;
 }
 

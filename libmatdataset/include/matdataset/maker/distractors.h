@@ -68,6 +68,10 @@ std::optional<std::vector<DistractorPlacement>> place_distractors(const Distract
                                                                   double floor_height, double reach,
                                                                   SeedStream& draws);
 
+// How far from the target's centre distractors may stand, as a share of the room's half width
+// (the walls', or the floor's edge).
+constexpr double kDistractorReachOfRoom = 0.95;
+
 // The frame's draw stream: the configuration's seed and the frame's indices.
 SeedStream distractor_draws(uint64_t seed, size_t object, size_t variant, size_t view);
 

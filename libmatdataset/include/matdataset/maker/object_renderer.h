@@ -133,7 +133,8 @@ class ObjectRenderer {
   double target_size_ = 0.0;  // the target's bounding sphere radius, which distractors' scales are of
   double distractor_reach_ = 0.0;
   std::vector<MaterialCandidate> distractor_materials_;
-  std::map<size_t, ViewSurroundings> view_surroundings_;
+  std::map<size_t, ViewSurroundings> view_surroundings_;  // the selected variant's
+  std::map<size_t, size_t> target_pixels_alone_;           // by view, whatever the variant
   // The target's pixels in a small object-id pass of the view with the distractors as they are.
   size_t target_pixels(size_t view);
   // Each slot's sizing, from its surface as built (which is left at that size for its materials).

@@ -49,6 +49,7 @@ struct SurroundingsConfig {
   // none: 50 for a floor alone (its edge a hair under the horizon), 1.5 for a room.
   std::optional<double> size;
   DistractorsConfig distractors;  // kind: distractors
+  bool present() const { return kind != SurroundingsKind::None; }
   double room_size() const { return size ? *size : walls == matgeom::RoomWalls::None ? 50.0 : 1.5; }
 };
 
