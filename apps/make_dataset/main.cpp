@@ -235,9 +235,9 @@ int make(const Options& options) {
                summary.redrawn_frames);
   if (!summary.hidden_frames.empty())
     fmt::print(stderr,
-               "make_dataset: {} frames show less of the object than surroundings.distractors.visible_fraction after "
-               "every draw (each kept at its best draw; the first: {}); fewer or smaller distractors, or more tries, "
-               "would show more\n",
+               "make_dataset: {} frames show less of the object than their surroundings' visible_fraction (the "
+               "first: {}); distractors are kept at their best draw, and fewer or smaller ones, or more tries, would "
+               "show more; in a scan, other camera angles (camera.phi_deg, camera.radius) would\n",
                summary.hidden_frames.size(), summary.hidden_frames.front());
   // Written, as rendered, but a frame without the object trains to a loss of 0: not a success.
   if (!summary.empty_frames.empty())

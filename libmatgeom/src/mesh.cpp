@@ -44,6 +44,7 @@ void validate_mesh(const TriangleMesh& mesh, const std::string& what) {
   check_optional_array(mesh.normals.size(), vertices, "normals", "vertices", what);
   check_optional_array(mesh.uvs.size(), vertices, "uvs", "vertices", what);
   check_optional_array(mesh.tangents.size(), vertices, "tangents", "vertices", what);
+  check_optional_array(mesh.colors.size(), vertices, "colours", "vertices", what);
   check_optional_array(mesh.triangle_parts.size(), mesh.triangle_count(), "part ids", "triangles",
                        what);
 
@@ -51,6 +52,13 @@ void validate_mesh(const TriangleMesh& mesh, const std::string& what) {
     if (is_finite(mesh.positions[v])) continue;
     std::ostringstream problem;
     problem << "vertex " << v << " has a non-finite position";
+    throw_invalid_mesh(what, problem.str());
+  }
+  for (size_t v = 0; v < mesh.colors.size(); ++v) {
+    const glm::vec3& c = mesh.colors[v];
+    if (is_finite(c) && c.x >= 0.0f && c.y >= 0.0f && c.z >= 0.0f) continue;
+    std::ostringstream problem;
+    problem << "vertex " << v << " has a colour that is negative or not finite";
     throw_invalid_mesh(what, problem.str());
   }
 

@@ -19,6 +19,7 @@ void copy_vertex(const TriangleMesh& source, uint32_t v, TriangleMesh& part) {
   if (!source.normals.empty()) part.normals.push_back(source.normals[v]);
   if (!source.uvs.empty()) part.uvs.push_back(source.uvs[v]);
   if (!source.tangents.empty()) part.tangents.push_back(source.tangents[v]);
+  if (!source.colors.empty()) part.colors.push_back(source.colors[v]);
 }
 
 // Appends a part's attribute array; `present` says whether the merged mesh has the attribute.
@@ -89,6 +90,7 @@ TriangleMesh merge_parts(const std::vector<MeshPart>& parts) {
     append_attribute(merged.normals, part.normals, part.vertex_count(), !first.normals.empty(), "normals");
     append_attribute(merged.uvs, part.uvs, part.vertex_count(), !first.uvs.empty(), "uvs");
     append_attribute(merged.tangents, part.tangents, part.vertex_count(), !first.tangents.empty(), "tangents");
+    append_attribute(merged.colors, part.colors, part.vertex_count(), !first.colors.empty(), "colours");
     for (const glm::uvec3& triangle : part.triangles) {
       merged.triangles.push_back(triangle + glm::uvec3(offset));
       merged.triangle_parts.push_back(static_cast<uint32_t>(k));

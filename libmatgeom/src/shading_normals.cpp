@@ -213,6 +213,7 @@ uint32_t copy_vertex(TriangleMesh& mesh, uint32_t v) {
   mesh.normals.push_back(mesh.normals[v]);
   if (!mesh.uvs.empty()) mesh.uvs.push_back(mesh.uvs[v]);
   if (!mesh.tangents.empty()) mesh.tangents.push_back(mesh.tangents[v]);
+  if (!mesh.colors.empty()) mesh.colors.push_back(mesh.colors[v]);
   return index;
 }
 
@@ -292,6 +293,7 @@ TriangleMesh flat_shaded(const TriangleMesh& mesh) {
       flat.positions.push_back(mesh.positions[v]);
       flat.normals.emplace_back(frames[t].normal);
       if (!mesh.uvs.empty()) flat.uvs.push_back(mesh.uvs[v]);
+      if (!mesh.colors.empty()) flat.colors.push_back(mesh.colors[v]);
     }
     flat.triangles.emplace_back(first, first + 1, first + 2);
   }

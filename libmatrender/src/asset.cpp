@@ -52,6 +52,7 @@ Material material_with_textures(const matmaterial::MaterialInputs& desc, AssetTe
   m.normal_map = textures.texture(desc.normal_image, ColorSpace::NonColor, desc.wrap, desc.name);
   m.normal_strength = static_cast<float>(desc.normal_strength);
   m.normal_map_uv_transform = matmaterial::uv_affine(desc.normal_transform);
+  m.vertex_colors = desc.vertex_colors;
   return m;
 }
 

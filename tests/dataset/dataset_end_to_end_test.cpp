@@ -22,6 +22,8 @@
 #include "matdataset/format/dataset_index.h"
 #include "matdataset/format/decoded_image.h"
 #include "matdataset/format/sample_reader.h"
+#include "matgeom/builtin/example_scan.h"
+#include "support/replica_ply.h"
 
 namespace fs = std::filesystem;
 
@@ -812,4 +814,102 @@ TEST_CASE("Distractors stand around the target, move from frame to frame, and hi
   }
   CHECK(placements.size() == 8);  // every frame draws its own
   CHECK(distractor_pixels > 0);
+}
+
+namespace {
+
+// The scan configuration (scan.yaml) copied beside the example scan it names, written as Replica
+// lays out a scan; the dataset it makes.
+fs::path scan_config() {
+  const fs::path folder = fs::temp_directory_path() / "matpredict_scan_config";
+  if (!fs::exists(folder / "scan" / "mesh_semantic.ply")) {
+    fs::create_directories(folder / "scan");
+    write_replica_ply(matgeom::example_scan(), (folder / "scan" / "mesh_semantic.ply").string());
+  }
+  fs::copy_file(MATPREDICT_SCAN_CONFIG, folder / "scan.yaml", fs::copy_options::overwrite_existing);
+  return folder / "scan.yaml";
+}
+fs::path scan_dataset() { return made_dataset(scan_config().string(), "matpredict_scan_dataset"); }
+
+}  // namespace
+
+TEST_CASE("Back in its scan, the target is labelled by its first hits alone, the rest of the scan shows in its own "
+          "colours, and every frame renders again",
+          "[dataset]") {
+  const std::vector<fs::path> images = images_of(scan_dataset());
+  REQUIRE(images.size() == 16);  // two objects, two variants, 2 x 2 views
+  const fs::path report = fs::temp_directory_path() / "matpredict_scan_verify.txt";
+  CHECK(verify(scan_dataset(), report) == 0);
+  double lowest_table_fraction = 1.0;
+  for (const fs::path& image : images) {
+    const fs::path variant = image.parent_path().parent_path();
+    const std::string object = variant.parent_path().filename().string(), stem = image.stem().string();
+    INFO(image);
+    const matdataset::DecodedIds label = matdataset::decode_ids(variant / "label" / (stem + ".png"));
+    const matdataset::DecodedIds region = matdataset::decode_ids(variant / "region" / (stem + ".png"));
+    const matbase::FloatImage albedo = matdataset::decode(variant / "albedo" / (stem + ".png"));
+    size_t target = 0, scan = 0, mismatched = 0;
+    double red = 0.0, blue = 0.0;
+    for (size_t p = 0; p < label.ids.size(); ++p) {
+      target += region.ids[p] == 2;
+      mismatched += (label.ids[p] > 0) != (region.ids[p] == 2);
+      if (region.ids[p] != 1) continue;
+      ++scan;
+      red += albedo.values[4 * p];
+      blue += albedo.values[4 * p + 2];
+    }
+    CHECK(mismatched == 0);
+    CHECK(target > 20);
+    CHECK(scan > 20);
+    // Around the vase: the table and the floor in the scan's browns, not Blender's grey.
+    if (object == "vase_in_scan") CHECK(red > 1.1 * blue);
+    const nlohmann::json transforms = json_of(variant / "transforms.json");
+    for (const nlohmann::json& frame : transforms["frames"]) {
+      const double fraction = frame["surroundings"]["visible_fraction"];
+      CHECK(fraction >= 0.0);
+      CHECK(fraction <= 1.0);
+      if (object == "table_in_scan") lowest_table_fraction = std::min(lowest_table_fraction, fraction);
+    }
+    const nlohmann::json metadata = json_of(variant / "metadata.json");
+    const nlohmann::json& surroundings = metadata["provenance"]["surroundings"];
+    CHECK(surroundings["kind"] == "scan");
+    CHECK(surroundings["scan"]["target"] ==
+          nlohmann::json::array({object == "vase_in_scan" ? matgeom::kExampleScanVase : matgeom::kExampleScanTable}));
+  }
+  // The vase on the table hides part of it.
+  CHECK(lowest_table_fraction < 0.99);
+  for (const size_t k : {size_t{0}, size_t{5}, size_t{10}, size_t{15}}) {
+    INFO(images[k]);
+    CHECK(differing_when_rendered_again(images[k], fs::temp_directory_path() / "matpredict_scan_again" / std::to_string(k)) == 0);
+  }
+}
+
+TEST_CASE("A scan that cannot hold its target is refused before the first file, naming the key", "[dataset]") {
+  const fs::path dir = fs::temp_directory_path() / "matpredict_scan_refusals";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  fs::copy_file(scan_config().parent_path() / "scan" / "mesh_semantic.ply", dir / "scan.ply");
+  const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+      {"{mesh: scan.ply, surroundings: {kind: scan, target: [object_99]}}",
+       {"objects.0.surroundings.target", "object_99", "\"object_1\", \"object_2\""}},
+      {"{mesh: scan.ply, surroundings: {kind: scan, target: [object_1, object_2, object_3, object_4, object_5, "
+       "object_6, object_7]}}",
+       {"objects.0.surroundings.target", "no room is left"}},
+      {"{builtin: vase, surroundings: {kind: scan, target: [object_5]}}", {"surroundings", "give the scan"}},
+      {"{mesh: scan.ply, surroundings: {kind: scan}}", {"surroundings", "needs `target`"}},
+      {"{mesh: scan.ply, surroundings: {kind: scan, target: []}}", {"surroundings.target", "empty list"}},
+      {"{mesh: scan.ply, surroundings: {kind: scan, target: [object_5], floor_materials: [wood]}}",
+       {"floor_materials"}},
+  };
+  for (size_t k = 0; k < cases.size(); ++k) {
+    const fs::path config = dir / ("case" + std::to_string(k) + ".yaml");
+    std::ofstream(config) << "objects: [" << cases[k].first << "]\nmaterials: {all: [wood]}\n";
+    const fs::path errors = dir / ("case" + std::to_string(k) + ".txt");
+    INFO(cases[k].first);
+    CHECK(run("--config " + config.string() + " --output " + (dir / "out").string(), errors) == 2);
+    const std::string text = text_of(errors);
+    INFO(text);
+    for (const std::string& expected : cases[k].second) CHECK(text.find(expected) != std::string::npos);
+    CHECK_FALSE(fs::exists(dir / "out"));
+  }
 }

@@ -1,5 +1,7 @@
 #include "matgeom/mesh_parts.h"
 
+#include "matgeom/object_asset.h"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -24,6 +26,7 @@ TriangleMesh interleaved_grid() {
       mesh.normals.emplace_back(0.0f, 0.0f, 1.0f + x);
       mesh.uvs.emplace_back(x / nx, y / ny);
       mesh.tangents.emplace_back(1.0f, 0.0f, y, (i + j) % 2 ? 1.0f : -1.0f);
+      mesh.colors.emplace_back(0.1f * x, 0.2f * y, 0.5f);
     }
   const auto index = [&](int i, int j) { return static_cast<uint32_t>(j * (nx + 1) + i); };
   for (int j = 0; j < ny; ++j)
@@ -69,6 +72,7 @@ TEST_CASE("Parts are compact meshes carrying the source attributes", "[geom]") {
         CHECK(part.mesh.normals[v] == mesh.normals[sv]);
         CHECK(part.mesh.uvs[v] == mesh.uvs[sv]);
         CHECK(part.mesh.tangents[v] == mesh.tangents[sv]);
+        CHECK(part.mesh.colors[v] == mesh.colors[sv]);
       }
     }
     CHECK(std::find(used.begin(), used.end(), false) == used.end());
@@ -94,6 +98,7 @@ TEST_CASE("Merging the parts gives the input back", "[geom]") {
         CHECK(merged.normals[a] == mesh.normals[b]);
         CHECK(merged.uvs[a] == mesh.uvs[b]);
         CHECK(merged.tangents[a] == mesh.tangents[b]);
+        CHECK(merged.colors[a] == mesh.colors[b]);
       }
       ++n;
     }
@@ -127,4 +132,29 @@ TEST_CASE("Splitting handles sparse ids, no ids and empty meshes", "[geom]") {
   std::vector<MeshPart> mixed = split_parts(interleaved_grid());
   mixed[1].mesh.uvs.clear();
   CHECK_THROWS_AS(merge_parts(mixed), std::invalid_argument);
+}
+
+TEST_CASE("An asset's kept parts are those parts alone, with their names and materials", "[geom]") {
+  ObjectAsset asset;
+  asset.mesh = interleaved_grid();
+  for (const std::string& name : asset.mesh.part_names) asset.materials.emplace_back("material of " + name);
+  asset.notes = {"a note"};
+  const ObjectAsset kept = kept_parts(asset, {true, false, true});
+  validate_mesh(kept.mesh, "kept");
+  CHECK(kept.mesh.part_names == std::vector<std::string>{"frame", "back rest"});
+  REQUIRE(kept.materials.size() == 2);
+  CHECK(kept.materials[0].name == "material of frame");
+  CHECK(kept.materials[1].name == "material of back rest");
+  CHECK(kept.notes == asset.notes);
+  // Each kept triangle is a source triangle of its part, its corners' attributes carried over.
+  size_t expected = 0;
+  for (const uint32_t part : asset.mesh.triangle_parts) expected += part != 1;
+  CHECK(kept.mesh.triangle_count() == expected);
+  const std::vector<MeshPart> source = split_parts(asset.mesh);
+  CHECK(split_parts(kept.mesh)[1].mesh.positions == source[2].mesh.positions);
+  CHECK(split_parts(kept.mesh)[1].mesh.colors == source[2].mesh.colors);
+  // Fewer flags than parts drop the parts beyond them; keeping nothing is refused.
+  CHECK(kept_parts(asset, {false, true}).mesh.part_names == std::vector<std::string>{"seat"});
+  CHECK_THROWS_AS(kept_parts(asset, {false, false, false}), std::invalid_argument);
+  CHECK_THROWS_AS(kept_parts(asset, {}), std::invalid_argument);
 }

@@ -1,5 +1,6 @@
 #include "matgeom/io/ply/ply_io.h"
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -228,6 +229,12 @@ std::string ascii_ply(int vertices, int faces, const std::string& body) {
 
 const std::string kTriangleBody = "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
 
+// IEC 61966-2-1's sRGB decoding of an 8-bit value, written out here.
+float srgb_byte_to_linear(int byte) {
+  const double c = byte / 255.0;
+  return static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+}
+
 }  // namespace
 
 TEST_CASE("PLY round trip keeps positions, normals, uvs, triangles and parts", "[geom]") {
@@ -310,6 +317,11 @@ TEST_CASE("PLY ASCII: fan triangulation, skipped properties and elements, object
   // Ids in increasing order: -1 is part 0, 7 is part 1.
   CHECK(mesh.part_names == std::vector<std::string>{"object_-1", "object_7"});
   CHECK(mesh.triangle_parts == std::vector<uint32_t>{1, 1, 0});
+  // Colours are sRGB bytes, kept linear.
+  REQUIRE(mesh.colors.size() == 5);
+  CHECK(mesh.colors[0] == glm::vec3(1, 0, 0));
+  CHECK(mesh.colors[2] == glm::vec3(0, 0, 1));
+  for (int c = 0; c < 3; ++c) CHECK(mesh.colors[3][c] == Approx(srgb_byte_to_linear(10 * (c + 1))).epsilon(1e-6));
 }
 
 TEST_CASE("PLY binary big- and little-endian: every type, double positions, u v", "[geom]") {
@@ -349,6 +361,45 @@ TEST_CASE("PLY like Replica's semantic mesh: quads, colours, parts by object_id"
   // Ids sort as numbers: 3 before 12.
   CHECK(mesh.part_names == std::vector<std::string>{"object_3", "object_12"});
   CHECK(mesh.triangle_parts == std::vector<uint32_t>{1, 1, 0, 0, 1, 1});
+  REQUIRE(mesh.colors.size() == 8);
+  for (int v = 0; v < 8; ++v)
+    for (int c = 0; c < 3; ++c) CHECK(mesh.colors[v][c] == Approx(srgb_byte_to_linear(static_cast<uint8_t>(40 * v + c))).epsilon(1e-6));
+
+  SECTION("written and read again, the colours are the same bytes") {
+    matgeom::write_ply(mesh, dir.file("again.ply"));
+    CHECK(matgeom::read_ply(dir.file("again.ply")).colors == mesh.colors);
+  }
+}
+
+TEST_CASE("PLY colours in floats, in ushorts, and as diffuse_red green blue", "[geom]") {
+  TempDir dir;
+  const std::string path = dir.file("colours.ply");
+  const std::string faces = "3 0 1 2\n";
+  SECTION("floats are sRGB in 0..1, clamped") {
+    write_bytes(path, "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                      "property float red\nproperty float green\nproperty float blue\nelement face 1\n"
+                      "property list uchar int vertex_indices\nend_header\n"
+                      "0 0 0 0.5 1.5 -1\n1 0 0 0 0 0\n0 1 0 1 1 1\n" + faces);
+    const matgeom::TriangleMesh mesh = matgeom::read_ply(path);
+    REQUIRE(mesh.colors.size() == 3);
+    CHECK(mesh.colors[0].x == Approx(std::pow((0.5 + 0.055) / 1.055, 2.4)).epsilon(1e-6));
+    CHECK(mesh.colors[0].y == 1.0f);
+    CHECK(mesh.colors[0].z == 0.0f);
+  }
+  SECTION("ushorts over 65535, with the diffuse_ prefix") {
+    write_bytes(path, "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                      "property ushort diffuse_red\nproperty ushort diffuse_green\nproperty ushort diffuse_blue\n"
+                      "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                      "0 0 0 65535 0 0\n1 0 0 0 65535 0\n0 1 0 0 0 65535\n" + faces);
+    const matgeom::TriangleMesh mesh = matgeom::read_ply(path);
+    CHECK(mesh.colors == std::vector<glm::vec3>{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}});
+  }
+  SECTION("a file with only red and green has no colours") {
+    write_bytes(path, "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                      "property uchar red\nproperty uchar green\nelement face 1\n"
+                      "property list uchar int vertex_indices\nend_header\n0 0 0 1 2\n1 0 0 1 2\n0 1 0 1 2\n" + faces);
+    CHECK(matgeom::read_ply(path).colors.empty());
+  }
 }
 
 TEST_CASE("PLY reader errors name the file and the problem", "[geom]") {

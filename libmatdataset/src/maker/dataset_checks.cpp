@@ -129,6 +129,36 @@ void check_distractors_fit(const DatasetConfig& config, size_t o, const matgeom:
         2.0 * bounds.radius, distractors.gap.low, reach));
 }
 
+// Object `o`'s target parts of its scan alone, or matbase::InputError when the scan has no part of
+// a target's name or nothing but the target (no room to put it back in).
+matgeom::ObjectAsset scan_target(const DatasetConfig& config, size_t o, const matgeom::ObjectAsset& scan) {
+  const std::vector<std::string>& target = config.objects[o].surroundings.scan.target;
+  const std::vector<std::string>& names = scan.mesh.part_names;
+  const std::string key = config.source + ": " + object_key(o) + ".surroundings.target: ";
+  std::vector<bool> keep(scan.mesh.part_count(), false);
+  for (const std::string& part : target) {
+    const auto found = std::find(names.begin(), names.end(), part);
+    if (found == names.end())
+      throw matbase::InputError(fmt::format("{}the scan {} has no part \"{}\" (its parts: {})", key,
+                                            std::get<matrender::MeshFile>(config.objects[o].source).path, part,
+                                            quoted(names)));
+    keep[static_cast<size_t>(found - names.begin())] = true;
+  }
+  std::vector<bool> rest(keep.size());
+  std::transform(keep.begin(), keep.end(), rest.begin(), [](bool kept) { return !kept; });
+  try {
+    matgeom::kept_parts(scan, rest);
+  } catch (const std::invalid_argument&) {
+    throw matbase::InputError(key + "every part of the scan with a triangle is the target, so no room is left to put "
+                              "it back in; name fewer parts, or use surroundings `floor`");
+  }
+  try {
+    return matgeom::kept_parts(scan, keep);
+  } catch (const std::invalid_argument&) {
+    throw matbase::InputError(key + "the target's parts have no triangle");
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> check_before_writing(const DatasetConfig& config) {
@@ -155,6 +185,7 @@ std::vector<std::string> check_before_writing(const DatasetConfig& config) {
     } catch (const std::exception& e) {
       throw matbase::InputError(config.source + ": " + object_key(o) + ": " + e.what());
     }
+    if (object.surroundings.kind == SurroundingsKind::Scan) asset = scan_target(config, o, asset);
     if (mesh_file)
       for (const std::string& note : asset.notes) matgeom::add_note(notes, mesh_file->path + ": " + note);
     // Every candidate is a textured material, and without UVs a texture shows one texel.

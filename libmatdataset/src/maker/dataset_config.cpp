@@ -199,6 +199,10 @@ ObjectConfig read_object(const DocumentNode& v, const std::optional<DocumentNode
   const std::optional<DocumentNode> builtin = v.find("builtin"), mesh = v.find("mesh");
   if (builtin.has_value() == mesh.has_value())
     v.fail("give exactly one of `builtin` (a built-in object's name) and `mesh` (a file)");
+  if (builtin && object.surroundings.kind == SurroundingsKind::Scan)
+    (v.has("surroundings") ? v.required("surroundings") : *builtin)
+        .fail("`kind: scan` puts the object back in the scan it came from: give the scan as the object's `mesh`, "
+              "a built-in object has no scan");
   if (builtin) {
     if (const std::optional<DocumentNode> angle = v.find("auto_smooth_deg"))
       angle->fail("only a mesh file's faces can be smoothed (a built-in object has its own normals)");
@@ -220,6 +224,8 @@ ObjectConfig read_object(const DocumentNode& v, const std::optional<DocumentNode
     mesh_file.path = path.lexically_normal().string();
     if (const std::optional<DocumentNode> angle = v.find("auto_smooth_deg"))
       mesh_file.read_options.auto_smooth_deg = matrender::read_auto_smooth_deg(*angle);
+    // A scan's object is its target parts; the others are its surroundings (object_renderer.h).
+    mesh_file.only_parts = object.surroundings.scan.target;
     object.source = mesh_file;
     object.name = path.stem().string();
   }
@@ -365,7 +371,7 @@ DatasetConfig read_config(const DocumentNode& root, const fs::path& base) {
   // stays at or above the grid centre's horizon when there is a floor.
   if (config.camera.phi_max_deg > 90.0)
     for (size_t o = 0; o < config.objects.size(); ++o)
-      if (config.objects[o].surroundings.present())
+      if (config.objects[o].surroundings.made_room())
         (root.has("camera") ? root.required("camera") : root)
             .fail(fmt::format("camera.phi_deg reaches {} degrees, below the horizon, and object {} stands on a floor: "
                               "keep the grid's polar angles within [0, 90] with surroundings",
@@ -432,7 +438,9 @@ DatasetConfig load_config(const std::string& file, const std::vector<Override>& 
   } catch (const YAML::Exception& e) {
     throw yaml_error(file, e);
   }
-  return read_root(root, file, fs::absolute(file).parent_path(), overrides);
+  DatasetConfig config = read_root(root, file, fs::absolute(file).parent_path(), overrides);
+  config.folder = fs::absolute(file).lexically_normal().parent_path().string();
+  return config;
 }
 
 DatasetConfig parse_config(const std::string& yaml, const std::string& source, const fs::path& base,

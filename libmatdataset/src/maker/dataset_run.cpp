@@ -132,13 +132,17 @@ RunSummary run_dataset(const DatasetConfig& config, const DatasetPlan& plan, con
       }
       write_frame_maps(folder, stem, maps);
       if (!shows_object(maps.label)) summary.empty_frames.push_back(frame_id(config, folder, frame, stem));
-      if (config.objects[frame.object].surroundings.kind == SurroundingsKind::Distractors) {
+      const SurroundingsKind kind = config.objects[frame.object].surroundings.kind;
+      if (kind == SurroundingsKind::Distractors || kind == SurroundingsKind::Scan) {
         const ObjectRenderer::ViewSurroundings& drawn = renderer->view_surroundings(frame.view);
         if (drawn.tries > 1) ++summary.redrawn_frames;
         if (!drawn.satisfied)
-          summary.hidden_frames.push_back(fmt::format("{} ({:.0f} % visible after {} draws)",
-                                                      frame_id(config, folder, frame, stem),
-                                                      100.0 * drawn.visible_fraction, drawn.tries));
+          summary.hidden_frames.push_back(
+              kind == SurroundingsKind::Scan
+                  ? fmt::format("{} ({:.0f} % visible through the scan)", frame_id(config, folder, frame, stem),
+                                100.0 * drawn.visible_fraction)
+                  : fmt::format("{} ({:.0f} % visible after {} draws)", frame_id(config, folder, frame, stem),
+                                100.0 * drawn.visible_fraction, drawn.tries));
       }
       if (config.paper_texture_layout)
         write_texture_target_screenshot(texture_target_root(config), config.objects[frame.object].name,

@@ -64,9 +64,15 @@ FrameScene dataset_frame_scene(const fs::path& frame) {
   const ordered_json metadata = read_json(metadata_file);
   const ordered_json& provenance = member(metadata, "provenance", metadata_file);
   const fs::path root = variant.parent_path().parent_path();
+  // Its relative paths are relative to the folder it was read from, which is recorded where that
+  // is not the dataset's parent folder.
+  const auto recorded_folder = provenance.find("configuration_folder");
+  if (recorded_folder != provenance.end() && !recorded_folder->is_string())
+    throw matbase::InputError(metadata_file.string() + ": provenance.configuration_folder is not text");
+  const fs::path folder = recorded_folder != provenance.end() ? fs::path(recorded_folder->get<std::string>())
+                                                              : fs::absolute(root).parent_path();
   const DatasetConfig config = parse_config(member(provenance, "configuration", metadata_file).get<std::string>(),
-                                            metadata_file.string() + ": configuration",
-                                            fs::absolute(root).parent_path(), {});
+                                            metadata_file.string() + ": configuration", folder, {});
 
   const std::string object_name = member(member(provenance, "object", metadata_file), "name", metadata_file);
   const ObjectConfig* object = nullptr;
@@ -82,6 +88,7 @@ FrameScene dataset_frame_scene(const fs::path& frame) {
     const auto& mesh = std::get<matrender::MeshFile>(object->source);
     object_json = {{"mesh", mesh.path}};
     if (mesh.read_options.auto_smooth_deg) object_json["auto_smooth_deg"] = *mesh.read_options.auto_smooth_deg;
+    if (!mesh.only_parts.empty()) object_json["only_parts"] = mesh.only_parts;
   }
   const char* uv_pass[] = {"never", "when_missing", "always"};
   object_json["uv_pass"] = uv_pass[static_cast<int>(object->uv_pass)];
@@ -118,7 +125,14 @@ FrameScene dataset_frame_scene(const fs::path& frame) {
   if (!part_materials.empty()) object_json["materials"] = part_materials;
   scene["objects"] = ordered_json::array({object_json});
   // The room the variant drew, as recorded, in its recorded materials.
-  if (const auto surroundings = provenance.find("surroundings"); surroundings != provenance.end()) {
+  const auto surroundings = provenance.find("surroundings");
+  if (surroundings != provenance.end() && object->surroundings.kind == SurroundingsKind::Scan) {
+    // The rest of the scan, in its own materials.
+    const auto& mesh = std::get<matrender::MeshFile>(object->source);
+    ordered_json scan_json = {{"mesh", mesh.path}, {"except_parts", object->surroundings.scan.target}, {"surroundings", true}};
+    if (mesh.read_options.auto_smooth_deg) scan_json["auto_smooth_deg"] = *mesh.read_options.auto_smooth_deg;
+    scene["objects"].push_back(scan_json);
+  } else if (surroundings != provenance.end()) {
     ordered_json room_json = {{"room", member(*surroundings, "room", metadata_file)}, {"surroundings", true}};
     ordered_json room_materials = ordered_json::object();
     for (const auto& [part, material] : member(*surroundings, "materials", metadata_file).items()) {
@@ -137,7 +151,9 @@ FrameScene dataset_frame_scene(const fs::path& frame) {
     if (candidate.value("file_path", "") == "images/" + stem) entry = &candidate;
   if (!entry) throw matbase::InputError(transforms_file.string() + ": no frame \"" + stem + "\"");
   // The frame's distractors, each its slot's object and material, at its recorded place.
-  if (const auto frame_surroundings = entry->find("surroundings"); frame_surroundings != entry->end()) {
+  // (A scan's frames record only how much of the target shows.)
+  const auto frame_surroundings = entry->find("surroundings");
+  if (frame_surroundings != entry->end() && object->surroundings.kind == SurroundingsKind::Distractors) {
     const ordered_json& distractor_slots =
         member(member(member(provenance, "surroundings", metadata_file), "distractors", metadata_file), "slots",
                metadata_file);
@@ -172,7 +188,7 @@ FrameScene dataset_frame_scene(const fs::path& frame) {
   ordered_json render = render_block(settings);
   render["exposure"] = member(lighting, "exposure_stops", transforms_file);
   scene["render"] = render;
-  return {scene.dump(2), fs::absolute(root).parent_path().string()};
+  return {scene.dump(2), folder.string()};
 }
 
 }  // namespace matdataset

@@ -36,8 +36,22 @@ matrender::ObjectDescription object_description(const DatasetConfig& config, siz
   return description;
 }
 
+// The scan's parts around the object of a `kind: scan` object, in their own materials.
+matrender::ObjectDescription scan_surroundings(const DatasetConfig& config, size_t index) {
+  const ObjectConfig& object = config.objects[index];
+  matrender::MeshFile rest = std::get<matrender::MeshFile>(object.source);
+  rest.except_parts = object.surroundings.scan.target;
+  rest.only_parts.clear();
+  matrender::ObjectDescription surroundings;
+  surroundings.source = rest;
+  surroundings.surroundings = true;
+  surroundings.origin = matrender::Origin{config.source, "/objects/" + std::to_string(index) + "/surroundings"};
+  return surroundings;
+}
+
 // The paper's scene of the object (its rig at the configured illuminance) at UV scale
-// `uv_scale`, in `room` when it has one (the scene's second object, surroundings), with every
+// `uv_scale`, in `room` when it has one, or back in its scan (the scene's second object,
+// surroundings), with every
 // candidate material of its slots among the scene's materials; each frame places the camera
 // itself.
 matrender::SceneDescription object_scene(const DatasetConfig& config, size_t index, double uv_scale,
@@ -52,6 +66,7 @@ matrender::SceneDescription object_scene(const DatasetConfig& config, size_t ind
     surroundings.origin = matrender::Origin{config.source, "/objects/" + std::to_string(index) + "/surroundings"};
     scene.objects.push_back(std::move(surroundings));
   }
+  if (object.surroundings.kind == SurroundingsKind::Scan) scene.objects.push_back(scan_surroundings(config, index));
   // Each distractor where it was made; every frame moves it to its place (or hides it).
   for (const DistractorSlot& distractor : distractors) {
     matrender::ObjectDescription placed;
@@ -160,7 +175,7 @@ ObjectRenderer::ObjectRenderer(const DatasetConfig& config, size_t object)
   grid_.n_phi = camera.n_phi;
   grid_.n_theta = camera.n_theta;
   grid_views_ = static_cast<size_t>(camera.n_phi) * static_cast<size_t>(camera.n_theta);
-  if (object_.surroundings.present()) room_ = surroundings_room(object_.surroundings, surface, grid_);
+  if (object_.surroundings.made_room()) room_ = surroundings_room(object_.surroundings, surface, grid_);
   if (object_.surroundings.kind == SurroundingsKind::Distractors) {
     const auto* builtin = std::get_if<matrender::BuiltinObject>(&object_.source);
     distractor_slots_ = draw_distractor_slots(object_.surroundings.distractors,
@@ -293,6 +308,7 @@ const ObjectRenderer::ViewSurroundings& ObjectRenderer::view_surroundings(size_t
   if (const auto found = view_surroundings_.find(view); found != view_surroundings_.end()) return found->second;
   const DistractorsConfig& config = object_.surroundings.distractors;
   ViewSurroundings best;
+  if (object_.surroundings.kind == SurroundingsKind::Scan) return view_surroundings_.emplace(view, scan_view(view)).first->second;
   best.visible_fraction = -1.0;
   if (distractor_slots_.empty()) return view_surroundings_.emplace(view, best).first->second;
   // The target's pixels without distractors depend on the view alone, not on the variant.
@@ -317,7 +333,27 @@ const ObjectRenderer::ViewSurroundings& ObjectRenderer::view_surroundings(size_t
   return view_surroundings_.emplace(view, best).first->second;
 }
 
+ObjectRenderer::ViewSurroundings ObjectRenderer::scan_view(size_t view) {
+  // The target's pixels without the scan's other parts depend on the view alone.
+  const uint32_t room = built_.object_meshes[1];
+  auto [unoccluded, first] = target_pixels_alone_.try_emplace(view, 0);
+  if (first) {
+    built_.scene.set_mesh_enabled(room, false);
+    unoccluded->second = target_pixels(view);
+    built_.scene.set_mesh_enabled(room, true);
+  }
+  ViewSurroundings seen;
+  const size_t alone = unoccluded->second;
+  seen.visible_fraction = alone > 0 ? static_cast<double>(target_pixels(view)) / static_cast<double>(alone) : 1.0;
+  seen.satisfied = seen.visible_fraction >= object_.surroundings.scan.visible_fraction;
+  return seen;
+}
+
 std::string ObjectRenderer::view_surroundings_json(size_t view) {
+  if (object_.surroundings.kind == SurroundingsKind::Scan) {
+    const ViewSurroundings& seen = view_surroundings(view);
+    return ordered_json{{"visible_fraction", seen.visible_fraction}, {"enough_visible", seen.satisfied}}.dump();
+  }
   if (distractor_slots_.empty()) return "";
   const ViewSurroundings& drawn = view_surroundings(view);
   ordered_json placements = ordered_json::array();
@@ -416,7 +452,7 @@ bool ObjectRenderer::render(size_t view, uint32_t seed, int threads, const std::
   settings.threads = threads;
   settings.transparent_background = !lighting.drawn.background_visible;
   using P = matrender::MaterialParameter;
-  settings.aovs = dataset_aovs() | (room_ ? matrender::AovObjectId : 0u);
+  settings.aovs = dataset_aovs() | (has_surroundings() ? matrender::AovObjectId : 0u);
   settings.cancel = cancel;
   matrender::FrameBuffers frame;
   const matrender::RenderStats result = matrender::render(built_.scene, view_camera(view), settings, frame);
@@ -434,7 +470,7 @@ bool ObjectRenderer::render(size_t view, uint32_t seed, int threads, const std::
   maps.normal_tangent = std::move(frame.normal_tangent);
   maps.depth = std::move(frame.depth);
   maps.label = std::move(frame.label);
-  if (room_) {
+  if (has_surroundings()) {
     // The label is the target's alone; the region says what each pixel's labelled sample is on.
     const int32_t target = static_cast<int32_t>(built_.object_meshes.front());
     maps.region.resize(frame.object_id.size());
@@ -605,8 +641,23 @@ std::string ObjectRenderer::provenance_json(const DatasetPlan& plan, size_t vari
           {"each_frame", "transforms.json: frames[].surroundings: each distractor's slot and transform (from its mesh "
                          "as made to its place, rows), the draws taken and the target's visible fraction"}};
     }
+  } else if (object_.surroundings.kind == SurroundingsKind::Scan) {
+    const ScanConfig& scan = object_.surroundings.scan;
+    json["surroundings"] = {
+        {"kind", surroundings_kind_name(SurroundingsKind::Scan)},
+        {"scan", {{"mesh", std::filesystem::path(std::get<matrender::MeshFile>(object_.source).path).filename().string()},
+                  {"target", scan.target}}},
+        {"materials", "the scan's own: its vertex colours, or the materials of its file"},
+        {"visible_fraction", scan.visible_fraction},
+        {"each_frame", "transforms.json: frames[].surroundings: the fraction of the target's pixels (of those it shows "
+                       "without the rest of the scan) the rest of the scan leaves visible"}};
   }
   json["configuration"] = config_.canonical_yaml;
+  // Where its relative paths lead, when that is not beside the dataset (where a reader looks
+  // first): recorded only then, so that a dataset copied with its configuration resumes unchanged.
+  const std::filesystem::path beside = std::filesystem::absolute(config_.output).lexically_normal().parent_path();
+  if (!config_.folder.empty() && beside != std::filesystem::path(config_.folder))
+    json["configuration_folder"] = config_.folder;
   return json.dump();
 }
 

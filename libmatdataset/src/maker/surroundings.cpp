@@ -91,14 +91,25 @@ DistractorsConfig read_distractors(const DocumentNode& node, const fs::path& bas
 SurroundingsConfig read_surroundings(const DocumentNode& node, const fs::path& base) {
   SurroundingsConfig config;
   if (node.is_word("none")) return config;
-  if (!node.is_mapping()) node.fail_expected("`none` or a mapping with `kind: floor` or `kind: distractors`");
-  node.expect_keys({"kind", "floor_materials", "walls", "wall_materials", "ceiling", "size", "distractors"});
-  constexpr std::array kKinds = {SurroundingsKind::None, SurroundingsKind::Floor, SurroundingsKind::Distractors};
-  config.kind = kKinds[node.required("kind").choice({"none", "floor", "distractors"})];
+  if (!node.is_mapping()) node.fail_expected("`none` or a mapping with `kind: floor`, `distractors` or `scan`");
+  constexpr std::array kKinds = {SurroundingsKind::None, SurroundingsKind::Floor, SurroundingsKind::Distractors,
+                                 SurroundingsKind::Scan};
+  config.kind = kKinds[node.required("kind").choice({"none", "floor", "distractors", "scan"})];
   if (config.kind == SurroundingsKind::None) {
     if (node.members().size() > 1) node.fail("`kind: none` takes no other keys");
     return config;
   }
+  if (config.kind == SurroundingsKind::Scan) {
+    node.expect_keys({"kind", "target", "visible_fraction"});
+    if (!node.has("target")) node.fail("`kind: scan` needs `target`: the scan's parts that are the object");
+    const DocumentNode target = node.required("target");
+    for (const DocumentNode& part : target.items("a list of the scan's part names"))
+      config.scan.target.push_back(part.text());
+    if (config.scan.target.empty()) target.fail("an empty list: name at least one of the scan's parts");
+    if (const std::optional<DocumentNode> n = node.find("visible_fraction")) config.scan.visible_fraction = n->unit_interval();
+    return config;
+  }
+  node.expect_keys({"kind", "floor_materials", "walls", "wall_materials", "ceiling", "size", "distractors"});
   if (!node.has("floor_materials")) node.fail("a floor needs `floor_materials`: the materials drawn for it");
   config.floor_materials = read_candidates(node.required("floor_materials"), base);
   if (const std::optional<DocumentNode> walls = node.find("walls")) {
@@ -131,7 +142,7 @@ SurroundingsConfig read_surroundings(const DocumentNode& node, const fs::path& b
 
 DrawnSurroundings draw_surroundings(const SurroundingsConfig& config, uint64_t seed, size_t object, size_t variant) {
   DrawnSurroundings drawn;
-  if (config.kind == SurroundingsKind::None) return drawn;
+  if (config.kind == SurroundingsKind::None || config.kind == SurroundingsKind::Scan) return drawn;
   uint64_t h = splitmix64(seed ^ kSurroundingsSalt);
   for (const size_t index : {object, variant}) h = splitmix64(h ^ static_cast<uint64_t>(index));
   SeedStream stream(h);
@@ -175,6 +186,7 @@ const char* surroundings_kind_name(SurroundingsKind kind) {
   switch (kind) {
     case SurroundingsKind::Floor: return "floor";
     case SurroundingsKind::Distractors: return "distractors";
+    case SurroundingsKind::Scan: return "scan";
     case SurroundingsKind::None:
     default: return "none";
   }

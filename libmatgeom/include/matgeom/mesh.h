@@ -15,6 +15,10 @@ struct TriangleMesh {
   std::vector<glm::vec3> normals;     // smooth shading normals; empty = flat (geometric) shading
   std::vector<glm::vec2> uvs;         // empty = no texture coordinates
   std::vector<glm::vec4> tangents;    // xyz tangent along +u, w = bitangent sign (MikkTSpace)
+  // Linear RGB per vertex (a scan's colours; Blender's colour attribute, decoded from sRGB), each
+  // channel finite and >= 0; empty = none. A material reads them only where it says so
+  // (MaterialInputs::vertex_colors).
+  std::vector<glm::vec3> colors;
   std::vector<glm::uvec3> triangles;  // vertex indices, counter-clockwise seen from outside
   std::vector<uint32_t> triangle_parts;  // part id per triangle; empty = every triangle in part 0
   std::vector<std::string> part_names;   // name of part k at index k (material slot name)

@@ -23,6 +23,11 @@ struct ObjectAsset {
   std::vector<std::string> notes;
 };
 
+// The parts k of the asset with keep[k] (parts beyond keep's size are dropped), alone: their
+// triangles and the vertices they use, renumbered in order with their names and materials; the
+// images and notes stay. Throws std::invalid_argument when no kept part has a triangle.
+ObjectAsset kept_parts(const ObjectAsset& asset, const std::vector<bool>& keep);
+
 // Adds `note` to `notes` unless it is there already: each note is said once.
 inline void add_note(std::vector<std::string>& notes, std::string note) {
   if (std::find(notes.begin(), notes.end(), note) == notes.end()) notes.push_back(std::move(note));

@@ -38,9 +38,18 @@ ObjectAsset read_object(const std::string& path, const ObjectReadOptions& option
   ply_options.auto_smooth_deg = options.auto_smooth_deg;
   ObjectAsset asset;
   asset.mesh = read_ply(path, ply_options);
-  for (uint32_t part = 0; part < asset.mesh.part_count(); ++part)
-    asset.materials.push_back(
-        matmaterial::MaterialInputs(part < asset.mesh.part_names.size() ? asset.mesh.part_names[part] : "default"));
+  for (uint32_t part = 0; part < asset.mesh.part_count(); ++part) {
+    matmaterial::MaterialInputs material(part < asset.mesh.part_names.size() ? asset.mesh.part_names[part] : "default");
+    // A scan's colours are its surface: the base colour is theirs.
+    if (!asset.mesh.colors.empty()) {
+      material.set(matmaterial::MaterialParameter::BaseColor, 1.0);
+      material.vertex_colors = true;
+    }
+    asset.materials.push_back(std::move(material));
+  }
+  if (!asset.mesh.colors.empty())
+    add_note(asset.notes, "the vertex colours are the base colour of every part (Blender's PLY importer keeps them "
+                          "as a colour attribute that no material reads)");
   return asset;
 }
 

@@ -292,6 +292,7 @@ UvPassResult uv_pass(const TriangleMesh& mesh, const UvPassOptions& options) {
   out.normals.clear();
   out.uvs.clear();
   out.tangents.clear();
+  out.colors.clear();
   for (size_t p = 0; p < parts.size(); ++p) {
     if (parts[p].empty()) continue;
     // The part as a compact surface: its area sets the density, its charts come from it.
@@ -323,6 +324,7 @@ UvPassResult uv_pass(const TriangleMesh& mesh, const UvPassOptions& options) {
         const uint32_t source = chart.source_vertices[v];
         out.positions.push_back(mesh.positions[source]);
         if (!mesh.normals.empty()) out.normals.push_back(mesh.normals[source]);
+        if (!mesh.colors.empty()) out.colors.push_back(mesh.colors[source]);
         out.uvs.push_back(glm::vec2(origin + (chart.uvs[chart.welded_of_source[v]] - chart.lower)));
       }
       for (size_t k = 0; k < chart.triangles.size(); ++k)

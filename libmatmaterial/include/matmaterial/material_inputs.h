@@ -40,6 +40,9 @@ struct MaterialInputs {
   TextureTransform normal_transform;
   TextureWrap wrap = TextureWrap::Repeat;
   int label_id = 0;  // material family id written to the label AOV
+  // The base colour times the mesh's vertex colours (TriangleMesh::colors) where it has them:
+  // Blender's Color Attribute node multiplied in, as its glTF importer wires COLOR_0.
+  bool vertex_colors = false;
 
   MaterialInput& operator[](MaterialParameter p) { return inputs[static_cast<size_t>(p)]; }
   const MaterialInput& operator[](MaterialParameter p) const { return inputs[static_cast<size_t>(p)]; }

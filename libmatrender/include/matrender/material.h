@@ -46,6 +46,9 @@ struct Material {
   TexturePtr normal_map;  // tangent space, OpenGL convention (+Y = +v), Non-Color
   float normal_strength = 1.0f;
   matmaterial::UvAffine normal_map_uv_transform;
+  // The base colour times the hit mesh's interpolated vertex colours where it has them
+  // (matmaterial::MaterialInputs::vertex_colors).
+  bool vertex_colors = false;
 
   ParameterValue& operator[](MaterialParameter p) { return parameters[static_cast<size_t>(p)]; }
   const ParameterValue& operator[](MaterialParameter p) const { return parameters[static_cast<size_t>(p)]; }

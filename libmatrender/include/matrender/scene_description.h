@@ -82,6 +82,10 @@ struct MaterialDescription {
 struct MeshFile {
   std::string path;  // .glb, .gltf, .ply or .obj
   matgeom::ObjectReadOptions read_options;  // the scene file's "auto_smooth_deg"
+  // The file's parts (by name) that make the object: only `only_parts`, or every part but
+  // `except_parts` (a scan's object and the room around it, from one file); neither: every part.
+  std::vector<std::string> only_parts;
+  std::vector<std::string> except_parts;
 };
 struct BuiltinObject {
   std::string name;

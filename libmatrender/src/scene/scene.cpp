@@ -123,6 +123,7 @@ uint32_t Scene::add_mesh(const matgeom::TriangleMesh& mesh, const std::vector<ui
   m.normals = mesh.normals;
   m.uvs = mesh.uvs;
   m.tangents = mesh.tangents;
+  m.colors = mesh.colors;
   m.triangles = mesh.triangles;
   m.triangle_parts = mesh.triangle_parts;
   m.part_materials = part_materials;

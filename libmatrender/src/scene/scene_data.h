@@ -21,6 +21,7 @@ struct MeshData {
   std::vector<glm::vec3> normals;   // empty = flat shading
   std::vector<glm::vec2> uvs;       // empty = no UVs (texture lookups at (0, 0))
   std::vector<glm::vec4> tangents;  // empty = no normal mapping possible
+  std::vector<glm::vec3> colors;    // linear RGB per vertex; empty = none (Material::vertex_colors)
   std::vector<glm::uvec3> triangles;
   std::vector<uint32_t> triangle_parts;  // empty = part 0
   std::vector<uint32_t> part_materials;  // material id of each part

@@ -124,11 +124,15 @@ SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm:
         cone_width > 0.0f && !mesh.uvs.empty() ? uv_footprint(mesh, tri, sp.geometric_normal, wo, cone_width) : 0.0f;
     look_up_textures(material, sp.uv, footprint, sp.inputs);
   }
+  if (material.vertex_colors && !mesh.colors.empty()) {
+    const glm::vec3 color = b0 * mesh.colors[tri.x] + b1 * mesh.colors[tri.y] + b2 * mesh.colors[tri.z];
+    sp.inputs.set(MaterialParameter::BaseColor, sp.inputs.color(MaterialParameter::BaseColor) * color);
+  }
   return sp;
 }
 
 std::optional<PrincipledInputs> constant_inputs(const Material& material) {
-  if (material.textured()) return std::nullopt;
+  if (material.textured() || material.vertex_colors) return std::nullopt;
   return PrincipledInputs(material);
 }
 

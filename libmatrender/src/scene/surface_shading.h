@@ -48,7 +48,8 @@ struct SurfacePoint {
 // cone at the hit (world units), for mip-mapped texture lookups; 0 looks textures up bilinearly.
 SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm::vec3& wo, float cone_width = 0.0f);
 
-// The inputs shade_surface gives every point of `material` when none of them is textured.
+// The inputs shade_surface gives every point of `material` when none of them varies over the
+// surface (no texture, no vertex colours).
 std::optional<PrincipledInputs> constant_inputs(const Material& material);
 
 }  // namespace matrender

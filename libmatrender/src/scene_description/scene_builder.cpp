@@ -21,10 +21,16 @@
 namespace matrender {
 namespace {
 
+std::string quoted_part_names(const matgeom::TriangleMesh& mesh) {
+  std::string names;
+  for (const std::string& name : mesh.part_names) names += (names.empty() ? "\"" : ", \"") + name + "\"";
+  return names.empty() ? "its parts have no names" : "its parts: " + names;
+}
+
 matgeom::ObjectAsset read_source(const ObjectDescription& object) {
   if (const auto* file = std::get_if<MeshFile>(&object.source)) {
     try {
-      return matgeom::read_object(file->path, file->read_options);
+      return read_mesh_file(*file);
     } catch (const std::exception& e) {
       throw object.origin.error("/mesh", e.what());
     }
@@ -83,12 +89,6 @@ matgeom::TriangleMesh merged_surface(const std::vector<matgeom::ObjectAsset>& as
 
 size_t part_count(const matgeom::ObjectAsset& asset) {
   return std::max({static_cast<size_t>(asset.mesh.part_count()), asset.materials.size(), size_t{1}});
-}
-
-std::string quoted_part_names(const matgeom::TriangleMesh& mesh) {
-  std::string names;
-  for (const std::string& name : mesh.part_names) names += (names.empty() ? "\"" : ", \"") + name + "\"";
-  return names.empty() ? "its parts have no names" : "its parts: " + names;
 }
 
 // The scene material of each of the `parts` parts of `mesh` the description assigns one to;
@@ -218,6 +218,28 @@ void add_world(const BackgroundDescription& description, BuiltScene& built, Envi
 }
 
 }  // namespace
+
+matgeom::ObjectAsset read_mesh_file(const MeshFile& file) {
+  matgeom::ObjectAsset asset = matgeom::read_object(file.path, file.read_options);
+  const bool only = !file.only_parts.empty();
+  const std::vector<std::string>& named = only ? file.only_parts : file.except_parts;
+  if (named.empty()) return asset;
+  std::vector<bool> keep(asset.mesh.part_count(), !only);
+  for (const std::string& name : named) {
+    const auto found = std::find(asset.mesh.part_names.begin(), asset.mesh.part_names.end(), name);
+    if (found == asset.mesh.part_names.end())
+      throw std::runtime_error(fmt::format("{}: {} \"{}\", but the file has no part of that name ({})", file.path,
+                                           only ? "only_parts names" : "except_parts names", name,
+                                           quoted_part_names(asset.mesh)));
+    keep[static_cast<size_t>(found - asset.mesh.part_names.begin())] = only;
+  }
+  try {
+    return matgeom::kept_parts(asset, keep);
+  } catch (const std::invalid_argument&) {
+    throw std::runtime_error(fmt::format("{}: {} leaves no part with a triangle ({})", file.path,
+                                         only ? "only_parts" : "except_parts", quoted_part_names(asset.mesh)));
+  }
+}
 
 void set_scene_lighting(BuiltScene& built, const LightsDescription& lights, const BackgroundDescription& background,
                         EnvironmentImages* images) {

@@ -467,14 +467,23 @@ decltype(ObjectDescription::source) read_mesh_source(const DocumentNode& node, c
     if (given.empty()) mesh.fail("an object given in memory, but none was given: in a scene file, \"mesh\" is a file's path");
     if (auto angle = node.find("auto_smooth_deg"))
       angle->fail("only a mesh file's faces can be smoothed (an object given in memory has its own normals)");
+    for (const char* key : {"only_parts", "except_parts"})
+      if (auto parts = node.find(key)) parts->fail("only a mesh file's parts can be chosen");
     return given[static_cast<size_t>(mesh.required("given").whole_number(0, static_cast<int64_t>(given.size()) - 1))];
   }
   const std::string path = read_existing_file(mesh, folder);
   const std::vector<std::string>& extensions = matgeom::object_file_extensions();
   if (std::find(extensions.begin(), extensions.end(), matbase::lowercase_extension(path)) == extensions.end())
     mesh.fail("expected a .glb, .gltf, .ply or .obj file");
-  MeshFile file{path, {}};
+  MeshFile file{path, {}, {}, {}};
   if (auto angle = node.find("auto_smooth_deg")) file.read_options.auto_smooth_deg = read_auto_smooth_deg(*angle);
+  if (node.has("only_parts") && node.has("except_parts")) node.fail("give either \"only_parts\" or \"except_parts\", not both");
+  for (auto [key, names] : {std::pair{"only_parts", &file.only_parts}, std::pair{"except_parts", &file.except_parts}}) {
+    const std::optional<DocumentNode> parts = node.find(key);
+    if (!parts) continue;
+    for (const DocumentNode& part : parts->items("a list of part names")) names->push_back(part.text());
+    if (names->empty()) parts->fail("expected a list of one or more part names");
+  }
   return file;
 }
 
@@ -505,8 +514,8 @@ ObjectDescription read_object(const DocumentNode& node, const fs::path& folder,
   ObjectDescription object;
   object.origin = origin_of(node);
   if (node.has("mesh")) {
-    node.expect_keys({"mesh", "auto_smooth_deg", "uv_pass", "uv_scale", "transform", "material", "materials",
-                      "shadow_terminator_geometry_offset", "surroundings"});
+    node.expect_keys({"mesh", "auto_smooth_deg", "only_parts", "except_parts", "uv_pass", "uv_scale", "transform",
+                      "material", "materials", "shadow_terminator_geometry_offset", "surroundings"});
     object.source = read_mesh_source(node, folder, given);
   } else if (node.has("room")) {
     node.expect_keys({"room", "material", "materials", "surroundings"});

@@ -82,6 +82,9 @@ struct RenderConfig {
 
 struct DatasetConfig {
   std::string source;  // the file it came from, or "the embedded default"
+  // The absolute folder of the file it came from, which its relative paths (meshes, material
+  // folders) are relative to; empty for the embedded default and text given in memory.
+  std::string folder;
   std::string output = "dataset_out";
   uint64_t seed = 0;  // of every frame's samples (each frame's own seed follows from it)
   VariantCombination combination = VariantCombination::Cartesian;

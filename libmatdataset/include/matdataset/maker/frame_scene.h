@@ -16,8 +16,8 @@ struct FrameScene {
 
 // `frame`: a variant folder and a frame's stem ("dataset/vase/var000/003"), or any of the frame's
 // files ("dataset/vase/var000/images/003.png"). The recorded configuration's relative paths (mesh
-// files, material folders) resolve against the dataset's parent folder, where make_dataset's
-// configuration usually sits. Throws matbase::InputError naming the file and what is missing.
+// files, material folders) resolve against the folder it was read from: the one its provenance
+// records, or else the dataset's parent folder, where make_dataset's configuration usually sits. Throws matbase::InputError naming the file and what is missing.
 FrameScene dataset_frame_scene(const std::filesystem::path& frame);
 
 }  // namespace matdataset

@@ -44,11 +44,12 @@ class ObjectRenderer {
   const std::vector<SlotMaterial>& slot_materials() const { return slot_materials_; }
 
   // Whether the object stands in surroundings (its frames then have region maps).
-  bool has_surroundings() const { return room_.has_value(); }
+  bool has_surroundings() const { return object_.surroundings.present(); }
 
   // A view's distractors in the selected variant: the draw kept (the first whose target shows at
   // least the configured visible fraction, else the one that showed it most), the draws it took
-  // and the fraction. Drawn the first time it is asked for.
+  // and the fraction. Drawn the first time it is asked for. In a scan, the fraction of the target
+  // the scan's other parts leave visible, in one draw.
   struct ViewSurroundings {
     std::vector<DistractorPlacement> placements;
     int tries = 1;
@@ -117,8 +118,8 @@ class ObjectRenderer {
   size_t lit_view_ = SIZE_MAX;
   std::vector<SlotMaterial> slot_materials_;
   std::vector<std::vector<uint32_t>> slot_parts_;  // the parts of each slot
-  // The room the object stands in (the scene's object 1), and the selected variant's draw of its
-  // materials.
+  // The room made to measure the object stands in (the scene's object 1; a scan's other parts are
+  // object 1 instead), and the selected variant's draw of its materials.
   std::optional<matgeom::RoomSpec> room_;
   DrawnSurroundings surroundings_;
   void put_surroundings_in_materials();
@@ -135,8 +136,10 @@ class ObjectRenderer {
   std::vector<MaterialCandidate> distractor_materials_;
   std::map<size_t, ViewSurroundings> view_surroundings_;  // the selected variant's
   std::map<size_t, size_t> target_pixels_alone_;           // by view, whatever the variant
-  // The target's pixels in a small object-id pass of the view with the distractors as they are.
+  // The target's pixels in a small object-id pass of the view with the surroundings as they are.
   size_t target_pixels(size_t view);
+  // A view of the target in its scan: the fraction of its pixels the scan's other parts leave.
+  ViewSurroundings scan_view(size_t view);
   // Each slot's sizing, from its surface as built (which is left at that size for its materials).
   void size_distractors();
   void place_distractors_in_scene(const std::vector<DistractorPlacement>& placements);

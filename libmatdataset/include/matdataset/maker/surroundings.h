@@ -1,8 +1,10 @@
 #pragma once
 // What stands around an object in make_dataset's frames (docs/make_dataset.md, "Surroundings"):
-// nothing (the object alone in empty space), or a floor it rests on, optionally with walls (a box
-// room or a cyclorama's backdrop) and a ceiling, each surface in a material drawn per variant. The
-// room is sized by the object's camera grid so that every camera is inside it.
+// nothing (the object alone in empty space), a floor it rests on, optionally with walls (a box
+// room or a cyclorama's backdrop) and a ceiling, each surface in a material drawn per variant
+// (the room is sized by the object's camera grid so that every camera is inside it), other
+// objects on that floor, or the scan the object came from, the scan's other parts in their own
+// colours and materials.
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -21,7 +23,7 @@
 
 namespace matdataset {
 
-enum class SurroundingsKind { None, Floor, Distractors };
+enum class SurroundingsKind { None, Floor, Distractors, Scan };
 
 // Other objects on the floor around the target (`kind: distractors`): a number of them per frame,
 // each one of the configuration's objects in a material drawn per variant, at a drawn size, gap
@@ -39,6 +41,15 @@ struct DistractorsConfig {
   int tries = 8;
 };
 
+// The object back in the scan it came from (`kind: scan`): the object's mesh file is the scan,
+// some of its parts the target, every other part the room, in the scan's own colours or materials.
+struct ScanConfig {
+  std::vector<std::string> target;  // part names; Replica's object 7 is "object_7"
+  // A view where the room hides more of the target than this leaves (of the pixels the target
+  // shows without it) is named as hidden: a scan has nothing to draw again.
+  double visible_fraction = 0.5;
+};
+
 struct SurroundingsConfig {
   SurroundingsKind kind = SurroundingsKind::None;
   std::vector<MaterialCandidate> floor_materials;
@@ -49,15 +60,19 @@ struct SurroundingsConfig {
   // none: 50 for a floor alone (its edge a hair under the horizon), 1.5 for a room.
   std::optional<double> size;
   DistractorsConfig distractors;  // kind: distractors
+  ScanConfig scan;                // kind: scan
   bool present() const { return kind != SurroundingsKind::None; }
+  // A room made to measure stands around the object (a floor, walls, a ceiling): every kind but a scan.
+  bool made_room() const { return kind == SurroundingsKind::Floor || kind == SurroundingsKind::Distractors; }
   double room_size() const { return size ? *size : walls == matgeom::RoomWalls::None ? 50.0 : 1.5; }
 };
 
 // The configuration's `surroundings` (top-level or an object's): `none`, or a mapping with `kind`,
 // `floor_materials`, `walls`, `wall_materials`, `ceiling`, `size` and, for distractors,
-// `distractors`. Fails at the key at fault: a floor without materials, walls without theirs, a
-// ceiling on anything but a box, a room too small to hold the cameras, a distractor that is no
-// built-in or mesh file.
+// `distractors`; or `kind: scan` with `target` and `visible_fraction`. Fails at the key at fault: a floor without
+// materials, walls without theirs, a ceiling on anything but a box, a room too small to hold the
+// cameras, a distractor that is no built-in or mesh file, a scan without a target.
+// Whether the scan has the target's parts is checked where it is read (dataset_checks.h).
 SurroundingsConfig read_surroundings(const matbase::DocumentNode& node, const std::filesystem::path& base);
 
 // A variant's draw: the floor's and the walls' materials. A library candidate spelled without
@@ -85,7 +100,7 @@ matgeom::RoomSpec surroundings_room(const SurroundingsConfig& config, const matg
 // The room as a scene file's "room" object spells it (docs/scene_format.md), as JSON text.
 std::string room_scene_json(const matgeom::RoomSpec& room);
 
-// "none", "floor", "distractors".
+// "none", "floor", "distractors", "scan".
 const char* surroundings_kind_name(SurroundingsKind kind);
 // "none", "box", "cyclorama".
 const char* walls_name(matgeom::RoomWalls walls);

@@ -21,7 +21,8 @@ struct ObjectReadOptions {
 };
 
 // Reads the file with the reader of its format. PLY has no materials: each part gets
-// MaterialInputs(part name), Blender's defaults. Throws std::runtime_error starting with the path.
+// MaterialInputs(part name), Blender's defaults, or, where the file has vertex colours, a base
+// colour of 1 times them (MaterialInputs::vertex_colors), with a note. Throws std::runtime_error starting with the path.
 ObjectAsset read_object(const std::string& path, const ObjectReadOptions& options = {});
 
 // Writes the asset in the format of the extension (PLY keeps the mesh and part names only).

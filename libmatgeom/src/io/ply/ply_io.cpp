@@ -22,6 +22,7 @@
 #include "matbase/file/atomic_file.h"
 #include "matbase/file/file_error.h"
 #include "matbase/file/input_file.h"
+#include "matbase/image/srgb.h"
 #include "matbase/text_encoding.h"
 #include "matgeom/shading_normals.h"
 
@@ -520,6 +521,9 @@ struct VertexLayout {
   std::array<size_t, 3> position{};
   std::optional<std::array<size_t, 3>> normal;
   std::optional<std::array<size_t, 2>> uv;
+  std::optional<std::array<size_t, 3>> color;
+  // What a colour value is divided by to make it 0..1: the integer type's largest value, or 1.
+  std::array<double, 3> color_scale{1.0, 1.0, 1.0};
 };
 
 VertexLayout make_vertex_layout(const std::string& path, const PlyElement& vertex) {
@@ -550,6 +554,20 @@ VertexLayout make_vertex_layout(const std::string& path, const PlyElement& verte
       layout.uv = std::array<size_t, 2>{*u, *v};
       break;
     }
+  }
+
+  // Colours as scanners write them: "red green blue" (Replica, MeshLab), or "diffuse_" before each.
+  for (const char* prefix : {"", "diffuse_"}) {
+    std::array<std::optional<size_t>, 3> channels;
+    const std::array<const char*, 3> names = {"red", "green", "blue"};
+    for (size_t c = 0; c < 3; ++c) channels[c] = find_scalar(path, vertex, std::string(prefix) + names[c]);
+    if (!channels[0] || !channels[1] || !channels[2]) continue;
+    layout.color = std::array<size_t, 3>{*channels[0], *channels[1], *channels[2]};
+    for (size_t c = 0; c < 3; ++c) {
+      const PlyType type = vertex.properties[*channels[c]].value_type;
+      layout.color_scale[c] = is_integer(type) ? static_cast<double>(traits(type).highest) : 1.0;
+    }
+    break;
   }
   return layout;
 }
@@ -607,6 +625,7 @@ void read_vertices(BodyReader& body, const PlyElement& element, const VertexLayo
   mesh.positions.reserve(static_cast<size_t>(element.count));
   if (layout.normal) mesh.normals.reserve(static_cast<size_t>(element.count));
   if (layout.uv) mesh.uvs.reserve(static_cast<size_t>(element.count));
+  if (layout.color) mesh.colors.reserve(static_cast<size_t>(element.count));
   ElementItem item(element);
   for (uint64_t v = 0; v < element.count; ++v) {
     read_item(body, element, v, item);
@@ -625,6 +644,17 @@ void read_vertices(BodyReader& body, const PlyElement& element, const VertexLayo
     if (layout.uv) {
       mesh.uvs.emplace_back(vertex_float(path, item.values[(*layout.uv)[0]], v, "uv"),
                             vertex_float(path, item.values[(*layout.uv)[1]], v, "uv"));
+    }
+    if (layout.color) {
+      // sRGB-encoded 0..1 (an integer over its type's largest value), as Blender's importer reads
+      // them into a byte colour attribute; kept linear.
+      glm::vec3 color;
+      for (size_t c = 0; c < 3; ++c) {
+        const double encoded = item.values[(*layout.color)[c]] / layout.color_scale[c];
+        if (!std::isfinite(encoded)) matbase::fail(path, matbase::concat("non-finite vertex ", v, " (colour)"));
+        color[static_cast<int>(c)] = matbase::srgb_to_linear(static_cast<float>(std::clamp(encoded, 0.0, 1.0)));
+      }
+      mesh.colors.push_back(color);
     }
   }
 }
@@ -731,6 +761,7 @@ std::string ply_header(const TriangleMesh& mesh, const std::vector<std::string>&
          << "property float x\nproperty float y\nproperty float z\n";
   if (!mesh.normals.empty()) header << "property float nx\nproperty float ny\nproperty float nz\n";
   if (!mesh.uvs.empty()) header << "property float s\nproperty float t\n";
+  if (!mesh.colors.empty()) header << "property uchar red\nproperty uchar green\nproperty uchar blue\n";
   header << "element face " << mesh.triangle_count() << "\n"
          << "property list uchar uint vertex_indices\nproperty uint part_id\nend_header\n";
   return header.str();
@@ -769,6 +800,11 @@ class LittleEndianWriter {
   std::string buffer_;
 };
 
+// A linear colour channel as the byte a colour attribute stores: sRGB-encoded, rounded, clamped.
+uint8_t srgb_byte(float linear) {
+  return static_cast<uint8_t>(std::lround(255.0f * matbase::linear_to_srgb(std::clamp(linear, 0.0f, 1.0f))));
+}
+
 void write_ply_file(const TriangleMesh& mesh, const std::vector<std::string>& part_names,
                     const std::string& file_path, const std::string& path) {
   std::ofstream out(file_path, std::ios::binary | std::ios::trunc);
@@ -779,6 +815,8 @@ void write_ply_file(const TriangleMesh& mesh, const std::vector<std::string>& pa
     writer.put_floats(mesh.positions[v]);
     if (!mesh.normals.empty()) writer.put_floats(mesh.normals[v]);
     if (!mesh.uvs.empty()) writer.put_floats(mesh.uvs[v]);
+    if (!mesh.colors.empty())
+      for (int c = 0; c < 3; ++c) writer.put_u8(srgb_byte(mesh.colors[v][c]));
     writer.end_record();
   }
   for (size_t t = 0; t < mesh.triangle_count(); ++t) {

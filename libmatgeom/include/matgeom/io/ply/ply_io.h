@@ -18,7 +18,9 @@ struct PlyReadOptions {
   std::optional<double> auto_smooth_deg;
 };
 
-// Reads element "vertex" (x y z; nx ny nz and s t / u v / texture_u texture_v when present; faces
+// Reads element "vertex" (x y z; nx ny nz, s t / u v / texture_u texture_v, and red green blue /
+// diffuse_red diffuse_green diffuse_blue when present: colours are sRGB, an integer over its
+// type's largest value (uchar / 255), kept linear in TriangleMesh::colors; faces
 // without normals are flat, see PlyReadOptions) and
 // element "face" (list "vertex_indices" or "vertex_index"; polygons are fan-triangulated).
 // Parts: with write_ply's "comment part <k> <name>" lines, id k is part k of that table;
@@ -29,7 +31,8 @@ struct PlyReadOptions {
 // index out of range, non-finite vertex, no faces, unsupported property type...).
 TriangleMesh read_ply(const std::string& path, const PlyReadOptions& options = {});
 
-// Binary little-endian PLY with positions, normals and UVs (s, t) when present, and the part of
+// Binary little-endian PLY with positions, normals, UVs (s, t) and colours (uchar red green blue,
+// sRGB) when present, and the part of
 // each face as "part_id" with the part names in comments. Written to a temporary file and
 // renamed, so a failed write leaves nothing behind.
 void write_ply(const TriangleMesh& mesh, const std::string& path);
