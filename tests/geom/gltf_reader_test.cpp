@@ -993,3 +993,16 @@ TEST_CASE("glTF clearcoatNormalTexture is said not to be applied", "[geom]") {
   REQUIRE(asset.notes.size() == 1);
   CHECK(asset.notes[0] == "material 0 KHR_materials_clearcoat clearcoatNormalTexture is not applied (the coat keeps the surface's normal)");
 }
+
+TEST_CASE("glTF vertex colours (COLOR_0) are said not to be applied", "[geom]") {
+  TempDir dir;
+  GltfWriter writer(dir, "coloured", Container::Glb);
+  add_uv_triangle_of_material_0(writer);
+  writer.doc()["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = writer.add_vec3({1, 0, 0, 0, 1, 0, 0, 0, 1});
+  writer.doc()["materials"] = json::array({json::object()});
+  const matgeom::ObjectAsset asset = matgeom::read_gltf(writer.write());
+  CHECK(asset.mesh.colors.empty());
+  CHECK(!asset.materials.at(0).vertex_colors);
+  REQUIRE(asset.notes.size() == 1);
+  CHECK(asset.notes[0] == "the vertex colours (COLOR_0) are not applied: the materials' base colours stand alone");
+}

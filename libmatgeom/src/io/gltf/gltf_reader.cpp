@@ -533,6 +533,9 @@ PrimitivePiece read_primitive(const GltfFile& file, const tinygltf::Primitive& p
     }
   }
 
+  if (find_attribute(primitive, "COLOR_0") >= 0)
+    add_note(notes, "the vertex colours (COLOR_0) are not applied: the materials' base colours stand alone");
+
   const std::string uv_semantic = "TEXCOORD_" + std::to_string(uv_set == kNoUvSet ? 0 : uv_set);
   const int uv_accessor = find_attribute(primitive, uv_semantic.c_str());
   if (uv_accessor < 0 && uv_set != kNoUvSet)
