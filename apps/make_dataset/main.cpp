@@ -190,6 +190,11 @@ int make(const Options& options) {
              config.objects.size(), variants, plan.views, matbase::with_thousands(static_cast<int64_t>(plan.frames.size())),
              config.render.width, config.render.height, config.render.settings.samples_per_pixel,
              shard->count > 1 ? fmt::format(" (shard {}/{})", shard->index, shard->count) : "", config.output);
+  for (size_t o = 0; o < config.objects.size(); ++o)
+    if (const size_t under = plan.grid_views_under_floor[o].size(); under > 0)
+      fmt::print("make_dataset: {}: {} of the grid's {} cameras are under its floor and left out ({} frames fewer)\n",
+                 config.objects[o].name, under, plan.grid_views,
+                 (plan.views - plan.object_views[o].size()) * plan.variants[o].size());
   std::fflush(stdout);
 
   matdataset::RunOptions run;

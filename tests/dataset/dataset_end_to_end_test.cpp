@@ -913,3 +913,40 @@ TEST_CASE("A scan that cannot hold its target is refused before the first file, 
     CHECK_FALSE(fs::exists(dir / "out"));
   }
 }
+
+TEST_CASE("A grid reaching below an object's floor renders only the cameras above it, in shards as whole, and says so",
+          "[dataset]") {
+  const fs::path dir = fs::temp_directory_path() / "matpredict_under_floor";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "config.yaml")
+      << "seed: 2\nobjects:\n  - {builtin: vase, surroundings: {kind: floor, floor_materials: [wood]}}\n"
+         "materials: {all: [plastic:1]}\ncamera: {grid: [4, 2], phi_deg: [0, 180], radius: {rule: fixed, metres: 1}}\n"
+         "render: {resolution: 24, samples: 4, material_resolution: 16}\n";
+  const fs::path said = dir / "said.txt";
+  const std::string command = std::string(MATPREDICT_MAKE_DATASET) + " --config " + (dir / "config.yaml").string() +
+                              " --output " + (dir / "whole").string() + " > " + said.string() + " 2>&1";
+  REQUIRE(std::system(command.c_str()) == 0);
+  CHECK_THAT(text_of(said), Catch::Contains("vase: 4 of the grid's 8 cameras are under its floor and left out (4 frames fewer)"));
+  const fs::path variant = dir / "whole" / "vase" / "var000";
+  std::vector<std::string> stems;
+  for (const fs::path& image : images_of(dir / "whole")) stems.push_back(image.stem().string());
+  CHECK(stems == std::vector<std::string>{"000", "001", "002", "003"});
+  const nlohmann::json transforms = json_of(variant / "transforms.json");
+  REQUIRE(transforms["frames"].size() == 4);
+  for (const nlohmann::json& frame : transforms["frames"]) {
+    // Every camera kept is above the floor at the vase's lowest point, z = 0.
+    CHECK(frame["transform_matrix"][2][3].get<double>() > 0.0);
+  }
+  const nlohmann::json metadata = json_of(variant / "metadata.json");
+  CHECK(metadata["provenance"]["camera"]["under_floor"]["grid_views"] == nlohmann::json::array({"004", "005", "006", "007"}));
+  CHECK(metadata["provenance"]["render"]["frame_seeds"].size() == 4);
+  CHECK(verify(dir / "whole", dir / "report.txt") == 0);
+  // Two shards write the same files.
+  for (const char* shard : {"0/2", "1/2"})
+    REQUIRE(run("--config " + (dir / "config.yaml").string() + " --output " + (dir / "sharded").string() + " --shard " + shard) == 0);
+  const std::vector<fs::path> whole = images_of(dir / "whole"), sharded = images_of(dir / "sharded");
+  REQUIRE(whole.size() == sharded.size());
+  for (size_t k = 0; k < whole.size(); ++k) CHECK(text_of(whole[k]) == text_of(sharded[k]));
+  CHECK(text_of(variant / "metadata.json") == text_of(dir / "sharded" / "vase" / "var000" / "metadata.json"));
+}

@@ -71,30 +71,14 @@ std::vector<std::vector<uint32_t>> parts_of_slots(const DatasetConfig& config, s
 
 namespace {
 
-// How the renderer frames an object of surface `mesh` (object_renderer.h): its bounding sphere,
-// the grid's centre and the cameras' distance from it.
-struct Framing {
-  matgeom::Sphere bounds;
-  glm::dvec3 centre{0.0};
-  double radius = 0.0;
-};
-Framing framing(const DatasetConfig& config, const matgeom::TriangleMesh& mesh) {
-  Framing f;
-  f.bounds = matgeom::minimal_enclosing_sphere(mesh.positions);
-  f.centre = matgeom::surface_centroid(mesh);
-  f.radius = camera_grid_radius(config.camera, mesh, f.bounds, f.centre,
-                                static_cast<double>(config.render.width) / config.render.height);
-  return f;
-}
-
 // Throws matbase::InputError when the cameras would see object `o` (framed as `f`) smaller than a
 // pixel in every frame, as a fixed radius of 5 km does: frames without the object train to a loss
 // of 0. The radius rule and the sphere's angular size are the renderer's (object_renderer.h).
-void check_object_in_view(const DatasetConfig& config, size_t o, const Framing& f) {
+void check_object_in_view(const DatasetConfig& config, size_t o, const ObjectFraming& f) {
   const matgeom::Sphere& bounds = f.bounds;
   const int height = config.render.height;
-  const double radius = f.radius;
-  const double farthest = radius + glm::length(bounds.center - f.centre);
+  const double radius = f.grid.radius;
+  const double farthest = radius + glm::length(bounds.center - f.grid.center);
   const double half_fov = 0.5 * config.camera.vertical_fov_deg * matbase::kPi / 180.0;
   // The sphere's projected radius in pixels at the frame's centre, seen from its farthest camera.
   const double pixels = bounds.radius / farthest / std::tan(half_fov) * 0.5 * height;
@@ -106,7 +90,7 @@ void check_object_in_view(const DatasetConfig& config, size_t o, const Framing& 
 
 // Throws matbase::InputError when object `o`'s distractors, at their most, largest and closest,
 // could not stand apart on its floor (distractors_fit).
-void check_distractors_fit(const DatasetConfig& config, size_t o, const matgeom::TriangleMesh& mesh, const Framing& f) {
+void check_distractors_fit(const DatasetConfig& config, size_t o, const matgeom::TriangleMesh& mesh, const ObjectFraming& f) {
   const SurroundingsConfig& surroundings = config.objects[o].surroundings;
   if (surroundings.kind != SurroundingsKind::Distractors) return;
   const DistractorsConfig& distractors = surroundings.distractors;
@@ -118,7 +102,7 @@ void check_distractors_fit(const DatasetConfig& config, size_t o, const matgeom:
         throw matbase::InputError(config.source + ": " + object_key(o) + ".surroundings.distractors.objects: " + e.what());
       }
   const matgeom::Sphere& bounds = f.bounds;
-  const double reach = kDistractorReachOfRoom * surroundings.room_size() * f.radius;
+  const double reach = kDistractorReachOfRoom * surroundings.room_size() * f.grid.radius;
   const double target_radius = footprint(mesh).radius;
   if (!distractors_fit(distractors, target_radius, bounds.radius, reach))
     throw matbase::InputError(fmt::format(
@@ -198,9 +182,9 @@ std::vector<std::string> check_before_writing(const DatasetConfig& config) {
       throw matbase::InputError(config.source + ": " + object_key(o) +
                                 ".uv_scale: the mesh has texture coordinates of its own, so the UV pass does not run "
                                 "(uv_pass: when_missing) and there is no texel density to scale; use uv_pass: always");
-    const Framing object_framing = framing(config, asset.mesh);
-    check_object_in_view(config, o, object_framing);
-    check_distractors_fit(config, o, asset.mesh, object_framing);
+    const ObjectFraming framing = object_framing(config, asset.mesh);
+    check_object_in_view(config, o, framing);
+    check_distractors_fit(config, o, asset.mesh, framing);
     const size_t part_count = std::max({static_cast<size_t>(asset.mesh.part_count()), asset.materials.size(), size_t{1}});
     parts_of_slots(config, o, asset.mesh.part_names, part_count);
     if (config.paper_texture_layout && object.slots.size() != 1)

@@ -367,15 +367,6 @@ DatasetConfig read_config(const DocumentNode& root, const fs::path& base) {
     config.objects.push_back(read_object(object, materials, surroundings, base, names));
   if (config.objects.empty()) objects.fail("the list is empty");
   if (const std::optional<DocumentNode> camera = root.find("camera")) read_camera(*camera, config.camera);
-  // Cameras under the floor would see its underside: until the plan leaves them out, the grid
-  // stays at or above the grid centre's horizon when there is a floor.
-  if (config.camera.phi_max_deg > 90.0)
-    for (size_t o = 0; o < config.objects.size(); ++o)
-      if (config.objects[o].surroundings.made_room())
-        (root.has("camera") ? root.required("camera") : root)
-            .fail(fmt::format("camera.phi_deg reaches {} degrees, below the horizon, and object {} stands on a floor: "
-                              "keep the grid's polar angles within [0, 90] with surroundings",
-                              config.camera.phi_max_deg, config.objects[o].name));
   if (const std::optional<DocumentNode> render = root.find("render")) read_render(*render, config.render);
   if (const std::optional<DocumentNode> lights = root.find("lights")) config.lighting = read_lighting(*lights, base);
   if (const std::optional<DocumentNode> splits = root.find("splits")) read_splits(*splits, config);

@@ -11,6 +11,7 @@
 #include "matdataset/format/dataset_splits.h"
 #include "matdataset/format/dataset_writer.h"
 #include "matdataset/maker/frame_lighting.h"
+#include "matdataset/maker/object_framing.h"
 #include "matdataset/maker/seed_stream.h"
 
 namespace matdataset {
@@ -46,6 +47,13 @@ DatasetPlan plan_dataset(const DatasetConfig& config) {
   DatasetPlan plan;
   plan.grid_views = static_cast<size_t>(config.camera.n_phi) * static_cast<size_t>(config.camera.n_theta);
   plan.views = plan.grid_views * config.lighting.rounds();
+  for (size_t o = 0; o < config.objects.size(); ++o) {
+    plan.grid_views_under_floor.push_back(grid_views_under_floor(config, o));
+    const std::vector<size_t>& under = plan.grid_views_under_floor.back();
+    std::vector<size_t>& views = plan.object_views.emplace_back();
+    for (size_t view = 0; view < plan.views; ++view)
+      if (!std::binary_search(under.begin(), under.end(), view % plan.grid_views)) views.push_back(view);
+  }
   // Counted before anything is listed: an uncapped product of many slots would not fit in memory.
   long double frames = 0;
   for (size_t o = 0; o < config.objects.size(); ++o) {
@@ -57,7 +65,7 @@ DatasetPlan plan_dataset(const DatasetConfig& config) {
     }
     if (config.max_variants) variants = std::min(variants, *config.max_variants);
     frames += static_cast<long double>(variants) * static_cast<long double>(config.objects[o].uv_scales.size()) *
-              static_cast<long double>(plan.views);
+              static_cast<long double>(plan.object_views[o].size());
   }
   if (frames > static_cast<long double>(kMaxFrames))
     throw matbase::InputError(fmt::format("{}: the plan has {:.4g} frames, more than the {} one dataset may have; cap the "
@@ -82,7 +90,7 @@ DatasetPlan plan_dataset(const DatasetConfig& config) {
       plan.variants.back() = std::move(scaled);
     }
     for (size_t v = 0; v < plan.variants.back().size(); ++v)
-      for (size_t view = 0; view < plan.views; ++view) plan.frames.push_back({o, v, view});
+      for (const size_t view : plan.object_views[o]) plan.frames.push_back({o, v, view});
   }
   return plan;
 }

@@ -54,8 +54,7 @@ void write_variant_records(const DatasetConfig& config, const DatasetPlan& plan,
                      "render into another --output, or delete the folder to render it again");
   matbase::write_file_atomically(metadata_file, text);
   std::vector<FramePose> poses;
-  for (size_t view = 0; view < plan.views; ++view)
-    poses.push_back(renderer.view_pose(view, view_stem(plan, view)));
+  for (const size_t view : plan.object_views[object]) poses.push_back(renderer.view_pose(view, view_stem(plan, view)));
   write_transforms(folder, renderer.intrinsics(), poses, renderer.has_surroundings());
   write_segmentation_map_json(folder);
 }

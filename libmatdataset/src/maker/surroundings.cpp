@@ -151,10 +151,15 @@ DrawnSurroundings draw_surroundings(const SurroundingsConfig& config, uint64_t s
   return drawn;
 }
 
-matgeom::RoomSpec surroundings_room(const SurroundingsConfig& config, const matgeom::TriangleMesh& object,
-                                    const matgeom::CameraGridSpec& grid) {
+double floor_height(const matgeom::TriangleMesh& object, const matgeom::CameraGridSpec& grid) {
   double lowest = grid.center.z;
   for (const glm::vec3& p : object.positions) lowest = std::min(lowest, static_cast<double>(p.z));
+  return lowest;
+}
+
+matgeom::RoomSpec surroundings_room(const SurroundingsConfig& config, const matgeom::TriangleMesh& object,
+                                    const matgeom::CameraGridSpec& grid) {
+  const double lowest = floor_height(object, grid);
   matgeom::RoomSpec room;
   room.floor_center = glm::dvec3(grid.center.x, grid.center.y, lowest);
   room.half_width = config.room_size() * grid.radius;

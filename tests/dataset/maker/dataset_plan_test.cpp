@@ -152,3 +152,32 @@ TEST_CASE("A frame's seed is SplitMix64 folded over the seed and the frame's ind
   }
   CHECK(seeds.size() == plan.frames.size());
 }
+
+TEST_CASE("Cameras under an object's floor are left out of its views, in every lighting round, and counted", "[dataset]") {
+  // A vase on a floor and one alone, seen from 1 m on a 4 x 2 grid reaching straight down: the
+  // rings at 112.5 and 157.5 degrees from +Z stand at z = c + cos(phi) below the floor at the
+  // vase's lowest point (c, the vase's centroid height, is under 0.38 m).
+  const std::string yaml =
+      "objects:\n"
+      "  - {name: on_floor, builtin: vase, surroundings: {kind: floor, floor_materials: [wood]}}\n"
+      "  - {name: in_space, builtin: vase}\n"
+      "materials: {all: [wood/raw:1, wood/raw:2]}\n"
+      "camera: {grid: [4, 2], phi_deg: [0, 180], radius: {rule: fixed, metres: 1}}\n"
+      "lights: {assign: every_setup, setups: [{rig: {}}, {environment: {images: [interior]}}]}\n";
+  const matdataset::DatasetConfig config = matdataset::parse_config(yaml, "test.yaml", std::filesystem::current_path(), {});
+  const DatasetPlan plan = matdataset::plan_dataset(config);
+  CHECK(plan.grid_views == 8);
+  CHECK(plan.views == 16);  // two rounds of lighting
+  CHECK(plan.grid_views_under_floor[0] == std::vector<size_t>{4, 5, 6, 7});
+  CHECK(plan.grid_views_under_floor[1].empty());
+  CHECK(plan.object_views[0] == std::vector<size_t>{0, 1, 2, 3, 8, 9, 10, 11});
+  CHECK(plan.object_views[1].size() == 16);
+  REQUIRE(plan.frames.size() == 2 * 8 + 2 * 16);
+  for (const FrameRef& frame : plan.frames)
+    if (frame.object == 0) CHECK(frame.view % 8 < 4);
+  // Above the horizon nothing is left out, and nothing is read to find that out.
+  const DatasetPlan above = matdataset::plan_dataset(matdataset::parse_config(
+      yaml, "test.yaml", std::filesystem::current_path(), {{"camera.phi_deg", "[0, 90]", "--set"}}));
+  CHECK(above.grid_views_under_floor[0].empty());
+  CHECK(above.frames.size() == 2 * 16 + 2 * 16);
+}

@@ -1,8 +1,8 @@
 #pragma once
-// What a configuration asks to render, before anything is loaded: each object's material
-// variants, every frame (object, variant, view) in one fixed order, the shard each frame belongs
-// to, each frame's seed and sample id, and the split files, which all follow from the
-// configuration alone, so every shard of a run writes the same ones.
+// What a configuration asks to render: each object's material variants and views, every frame
+// (object, variant, view) in one fixed order, the shard each frame belongs to, each frame's seed
+// and sample id, and the split files, which all follow from the configuration (and, for an object
+// on a floor seen from below the horizon, its mesh), so every shard of a run writes the same ones.
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -38,10 +38,16 @@ struct DatasetPlan {
   std::vector<std::vector<MaterialVariant>> variants;
   size_t grid_views = 0;  // n_phi x n_theta
   size_t views = 0;       // the grid's views times the lighting's rounds
+  // Per object, the views it renders, ascending: all of them but those whose camera is under the
+  // floor it stands on (grid_views_under_floor), in every lighting round.
+  std::vector<std::vector<size_t>> object_views;
+  // Per object, the grid views left out so.
+  std::vector<std::vector<size_t>> grid_views_under_floor;
   std::vector<FrameRef> frames;  // object by object, variant by variant, view by view
 };
 
-// Throws matbase::InputError when an object's variants cannot be formed (a cartesian product too large).
+// Throws matbase::InputError when an object's variants cannot be formed (a cartesian product too
+// large) or an object on a floor seen from below cannot be read.
 DatasetPlan plan_dataset(const DatasetConfig& config);
 
 // The folder of a variant and a frame's stem.

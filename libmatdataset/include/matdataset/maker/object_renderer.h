@@ -12,6 +12,7 @@
 #include "matdataset/maker/dataset_plan.h"
 #include "matdataset/maker/distractors.h"
 #include "matdataset/maker/frame_lighting.h"
+#include "matdataset/maker/object_framing.h"
 #include "matgeom/bounding_sphere.h"
 #include "matgeom/object_asset.h"
 #include "matrender/render.h"
@@ -23,11 +24,6 @@ namespace matdataset {
 // The AOVs a dataset frame needs: coverage, normals, depth, label, ambient occlusion, the
 // sample count, base colour, roughness and metallic.
 uint32_t dataset_aovs();
-
-// How far the cameras are from the grid's centre `centre` by the configuration's radius rule, for
-// an object with `mesh` and bounding sphere `bounds` seen in a frame of width / height `aspect`.
-double camera_grid_radius(const CameraConfig& camera, const matgeom::TriangleMesh& mesh, const matgeom::Sphere& bounds,
-                          const glm::dvec3& centre, double aspect);
 
 class ObjectRenderer {
  public:

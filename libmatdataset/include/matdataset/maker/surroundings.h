@@ -89,6 +89,10 @@ MaterialCandidate drawn_candidate(const std::vector<MaterialCandidate>& candidat
 // run draws the same.
 DrawnSurroundings draw_surroundings(const SurroundingsConfig& config, uint64_t seed, size_t object, size_t variant);
 
+// The height of the floor under an object of surface `object` (world space) framed by `grid`: its
+// lowest point, or the grid's centre if that is lower.
+double floor_height(const matgeom::TriangleMesh& object, const matgeom::CameraGridSpec& grid);
+
 // The room around an object of surface `object` (world space) seen by the camera grid `grid`:
 // the floor at the object's lowest point under the grid's centre, the walls and the ceiling
 // room_size() grid radii from it, the cyclorama's backdrop facing the grid's middle azimuth, UVs
