@@ -5,10 +5,12 @@
         [--segmenters grabcut] [--prompts box,none] [--size 256] [--spp 16] [--output isolation_bench.json]
 
 Every built-in object in a material of every library class is rendered from one view of a grid
-around it (a cell drawn from the seed), twice: on the black background under the paper's light
-rig, and cluttered, standing on a textured floor of another class under an environment map of
-coloured blotches and a sun, so that the background is no flat colour. The object's pixels are
-the label AOV's pixels of its class. The prompt is their bounding box grown by 5 % on each side
+around it (a cell drawn from the seed), three times: on the black background under the paper's
+light rig; cluttered, standing on a textured floor of another class under an environment map of
+coloured blotches and a sun, so that the background is no flat colour; and in a room, on a floor
+in a box room of drawn materials with two or three other built-in objects standing around it in
+materials of other classes (which may hide part of it), under the paper's rig. The object's pixels
+are those whose nearest hit is on it (the object_id AOV). The prompt is their bounding box grown by 5 % on each side
 (matpredict.isolate's `box`), as a user draws a box around an object, or none (the most central
 object: the frame is centred on it, as a photograph of one object is). Each segmenter's mask is
 scored by its intersection over union with the truth, and timed (the isolate call alone, on
@@ -37,6 +39,8 @@ import matpredict
 
 # The floor's class, unless the object has it: then the second.
 FLOOR_CLASSES = ("concrete", "wood")
+# What stands behind the object: nothing, a floor under blotches and a sun, a room with distractors.
+BACKGROUNDS = ("black", "cluttered", "room")
 
 
 def write_environment(path, seed):
@@ -81,6 +85,36 @@ def object_scene(name, material_class, seed, camera, size, spp, cluttered, envir
     scene["objects"].append({"mesh": floor_mesh(20.0), "material": "floor"})
     scene["background"] = {"environment": environment, "strength": 1.0, "rotation_z_deg": (37 * seed) % 360}
     scene["lights"] = [{"type": "sun", "position": [2, -1, 2], "look_at": [0, 0, 0], "strength": 3, "angle_deg": 5}]
+    return scene
+
+
+def room_scene(scene, material_class, seed, center, radius, sizes):
+    """`scene` moved into a box room: a floor and walls of two other classes six radii out, and two
+    or three other built-in objects on the floor around the object, scaled to 0.4 to 0.9 of its
+    bounding radius, their bounding spheres apart from its and from each other's, lit by the rig."""
+    rng = random.Random(seed)
+    others = [c for c in matpredict.material_classes() if c != material_class]
+    floor, walls = rng.sample(others, 2)
+    scene["materials"]["floor"] = {"class": floor, "seed": seed + 1, "resolution": 512}
+    scene["materials"]["walls"] = {"class": walls, "seed": seed + 2, "resolution": 512}
+    scene["objects"].append({"room": {"floor_center": [center[0], center[1], 0.0], "half_width": 6 * radius,
+                                      "height": 6 * radius, "walls": "box", "metres_per_uv": radius},
+                             "materials": {"floor": "floor", "walls": "walls"}})
+    count = rng.choice((2, 3))
+    first = rng.uniform(0, 360)
+    for k, name in enumerate(rng.sample([n for n in sizes if n != scene["objects"][0]["builtin"]], count)):
+        size = rng.uniform(0.4, 0.9) * radius
+        # Bearings 360 / count apart (at least 120 degrees), at a distance that keeps the spheres
+        # a fifth of a radius apart from the object's.
+        bearing = math.radians(first + 360 * k / count + rng.uniform(-15, 15))
+        distance = radius + size + rng.uniform(0.2, 1.2) * radius
+        scale = size / sizes[name]
+        scene["materials"][f"distractor{k}"] = {"class": rng.choice(others), "seed": seed + 3 + k, "resolution": 512}
+        scene["objects"].append({"builtin": name, "material": f"distractor{k}", "surroundings": True,
+                                 "transform": {"translate": [center[0] + distance * math.cos(bearing),
+                                                             center[1] + distance * math.sin(bearing), 0.0],
+                                               "rotate_deg": [0, 0, rng.uniform(0, 360)], "scale": scale}})
+    scene["lights"] = {"rig": {}}
     return scene
 
 
@@ -181,6 +215,10 @@ def main():
     methods = [(segmenter, prompt) for segmenter in segmenters for prompt in prompts]
     model = matpredict.load_model(args.checkpoint) if args.checkpoint else None
     rng = random.Random(args.seed)
+    # Each built-in object's bounding radius, which the room's distractors are scaled by.
+    sizes = {name: matpredict.load_scene(object_scene(name, "wood", 0, {"position": [1, 1, 1], "look_at": [0, 0, 0]},
+                                                      8, 1, False, None)).bounds[1]
+             for name in matpredict.builtin_objects()}
     records = []
     skipped = 0
     with tempfile.TemporaryDirectory() as folder:
@@ -196,12 +234,14 @@ def main():
                 cell = [rng.randrange(5, 12), rng.randrange(0, 16)]
                 camera = {"grid": {"cell": cell, "n_phi": 16, "n_theta": 16, "radius": 3.4 * radius,
                                    "theta_range_deg": [0, 360], "center": [cx, cy, cz]}}
-                for cluttered in (False, True):
-                    described = object_scene(name, material_class, 1 + k, camera, args.size, args.spp, cluttered,
-                                             environment)
+                for background in BACKGROUNDS:
+                    described = object_scene(name, material_class, 1 + k, camera, args.size, args.spp,
+                                             background == "cluttered", environment)
+                    if background == "room":
+                        described = room_scene(described, material_class, 1 + k, (cx, cy, cz), radius, sizes)
                     scene = matpredict.load_scene(described)
-                    frame = matpredict.render(scene, aovs=["label", "base_color"])
-                    truth = frame["label"][:, :, 0] == classes[material_class]
+                    frame = matpredict.render(scene, aovs=["base_color", "object_id"])
+                    truth = frame["object_id"][:, :, 0] == 0
                     edges = np.concatenate([truth[0], truth[-1], truth[:, 0], truth[:, -1]])
                     if truth.sum() < 16 or edges.any():
                         skipped += 1  # not wholly in view: no box lies around it
@@ -232,7 +272,7 @@ def main():
                         except matpredict.InputError as refused:  # counted as no overlap
                             seconds = time.perf_counter() - start
                             iou, refusal = 0.0, str(refused)
-                        records.append({"object": name, "class": material_class, "cluttered": cluttered,
+                        records.append({"object": name, "class": material_class, "background": background,
                                         "segmenter": segmenter, "prompt": prompt, "cell": cell, "box": list(box), "iou": iou,
                                         "refusal": refusal, "seconds": seconds, "object_pixels": int(truth.sum()),
                                         "base_color_rmse": error, "base_color_rmse_true_mask": true_error})
@@ -240,17 +280,17 @@ def main():
     with open(args.output, "w") as f:
         json.dump({"size": args.size, "spp": args.spp, "seed": args.seed, "skipped": skipped, "frames": records}, f, indent=1)
 
-    def label(segmenter, prompt, cluttered):
-        return f"{segmenter}, {'box' if prompt == 'box' else 'no prompt'}, {'cluttered' if cluttered else 'black'}"
+    def label(segmenter, prompt, background):
+        return f"{segmenter}, {'box' if prompt == 'box' else 'no prompt'}, {background}"
 
-    def chosen_records(segmenter, prompt, cluttered):
-        return [r for r in records if (r["segmenter"], r["prompt"], r["cluttered"]) == (segmenter, prompt, cluttered)]
+    def chosen_records(segmenter, prompt, background):
+        return [r for r in records if (r["segmenter"], r["prompt"], r["background"]) == (segmenter, prompt, background)]
 
     print(f"\nIoU with the true mask, {args.size} x {args.size} frames ({skipped} frames skipped: the object not "
           "wholly in view); box: the label's box grown by 5 %:\n")
     print("| segmenter, prompt, background | frames | mean | 10th percentile | median | worst | ms per image |")
     print("|---|---|---|---|---|---|---|")
-    groups = [(segmenter, prompt, cluttered) for segmenter, prompt in methods for cluttered in (False, True)]
+    groups = [(segmenter, prompt, background) for segmenter, prompt in methods for background in BACKGROUNDS]
     for group in groups:
         found = chosen_records(*group)
         if found:
@@ -267,14 +307,17 @@ def main():
                 print(f"| {label(*group)} | {len(scored)} | "
                       f"{statistics.mean(r['base_color_rmse_true_mask'] for r in scored):.4f} | "
                       f"{statistics.mean(r['base_color_rmse'] for r in scored):.4f} |")
-    print("\nMean IoU per material class (cluttered):\n")
+    print("\nMean IoU per material class (cluttered | room):\n")
     print("| class | " + " | ".join(f"{segmenter}, {prompt}" for segmenter, prompt in methods) + " |")
     print("|---|" + "---|" * len(methods))
     for material_class in chosen:
         cells = []
         for segmenter, prompt in methods:
-            ious = [r["iou"] for r in chosen_records(segmenter, prompt, True) if r["class"] == material_class]
-            cells.append(f"{statistics.mean(ious):.3f}" if ious else "-")
+            means = []
+            for background in ("cluttered", "room"):
+                ious = [r["iou"] for r in chosen_records(segmenter, prompt, background) if r["class"] == material_class]
+                means.append(f"{statistics.mean(ious):.3f}" if ious else "-")
+            cells.append(" / ".join(means))
         print(f"| {material_class} | " + " | ".join(cells) + " |")
     print(f"\nwrote {args.output}")
 

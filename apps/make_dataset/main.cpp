@@ -250,6 +250,13 @@ int make(const Options& options) {
                                     "(camera.radius) or the resolution too low?",
                                     summary.empty_frames.size(), summary.empty_frames.front()),
                         kRuntimeFailure);
+  // A black frame teaches nothing about the material either.
+  if (!summary.unlit_frames.empty())
+    return report_error(fmt::format("{} frames are black: none of their light reaches the object through its surroundings "
+                                    "(the first: {}); a closed room or scan lets no environment or sky in, and lamps "
+                                    "outside its walls light only the walls: light it from inside (a ceiling lamp, the rig)",
+                                    summary.unlit_frames.size(), summary.unlit_frames.front()),
+                        kRuntimeFailure);
   return 0;
 }
 

@@ -60,6 +60,10 @@ py::dict make_dataset(const py::dict& configuration, const py::object& output, i
   if (!summary.empty_frames.empty())
     throw std::runtime_error(std::to_string(summary.empty_frames.size()) + " frames show the object in no pixel (the first: " +
                              summary.empty_frames.front() + "); are the cameras too far (camera.radius) or the resolution too low?");
+  if (!summary.unlit_frames.empty())
+    throw std::runtime_error(std::to_string(summary.unlit_frames.size()) +
+                             " frames are black: none of their light reaches the object through its surroundings (the "
+                             "first: " + summary.unlit_frames.front() + "); light it from inside (a ceiling lamp, the rig)");
   py::dict splits;
   for (const matdataset::SplitFile& split : summary.splits) {
     py::dict counts;

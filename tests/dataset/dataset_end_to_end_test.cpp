@@ -950,3 +950,41 @@ TEST_CASE("A grid reaching below an object's floor renders only the cameras abov
   for (size_t k = 0; k < whole.size(); ++k) CHECK(text_of(whole[k]) == text_of(sharded[k]));
   CHECK(text_of(variant / "metadata.json") == text_of(dir / "sharded" / "vase" / "var000" / "metadata.json"));
 }
+
+TEST_CASE("In a closed room a lamp outside the walls leaves frames black and make_dataset says so; a ceiling lamp "
+          "lights the object, metered in the room",
+          "[dataset]") {
+  const fs::path dir = fs::temp_directory_path() / "matpredict_ceiling";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string head =
+      "seed: 4\nobjects:\n  - {builtin: vase, surroundings: {kind: floor, floor_materials: [wood], walls: box, "
+      "wall_materials: [plaster], ceiling: true}}\nmaterials: {all: [ceramic:1]}\ncamera: {grid: [1, 2]}\n"
+      "render: {resolution: 32, samples: 16, material_resolution: 16}\n";
+  std::ofstream(dir / "outside.yaml") << head << "lights: {setups: [{lamps: [{type: point, at: [[0, 0, 100]]}]}]}\n";
+  std::ofstream(dir / "ceiling.yaml") << head << "lights: {setups: [{ceiling: room}]}\n";
+  CHECK(run("--config " + (dir / "outside.yaml").string() + " --output " + (dir / "outside").string(), dir / "outside.txt") == 1);
+  CHECK_THAT(text_of(dir / "outside.txt"), Catch::Contains("2 frames are black") && Catch::Contains("vase/var000/000"));
+
+  REQUIRE(run("--config " + (dir / "ceiling.yaml").string() + " --output " + (dir / "lit").string(), dir / "lit.txt") == 0);
+  for (const fs::path& image : images_of(dir / "lit")) {
+    INFO(image);
+    const fs::path variant = image.parent_path().parent_path();
+    const matbase::FloatImage colour = matdataset::decode(image);
+    const matdataset::DecodedIds label = matdataset::decode_ids(variant / "label" / (image.stem().string() + ".png"));
+    double sum = 0.0;
+    size_t count = 0;
+    for (size_t p = 0; p < label.ids.size(); ++p)
+      if (label.ids[p] > 0) {
+        sum += colour.values[4 * p] + colour.values[4 * p + 1] + colour.values[4 * p + 2];
+        count += 3;
+      }
+    REQUIRE(count > 0);
+    // Exposed by the card: the vase neither black nor white (sRGB 0.15 to 0.85 on average).
+    CHECK(sum / count > 0.15);
+    CHECK(sum / count < 0.85);
+    const nlohmann::json transforms = json_of(variant / "transforms.json");
+    CHECK(transforms["frames"][0]["lighting"]["setup"] == "ceiling");
+    CHECK(transforms["frames"][0]["lighting"]["lights"][0]["type"] == "area");
+  }
+}

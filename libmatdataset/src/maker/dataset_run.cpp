@@ -131,6 +131,7 @@ RunSummary run_dataset(const DatasetConfig& config, const DatasetPlan& plan, con
       }
       write_frame_maps(folder, stem, maps);
       if (!shows_object(maps.label)) summary.empty_frames.push_back(frame_id(config, folder, frame, stem));
+      if (renderer->view_lighting(frame.view).unlit) summary.unlit_frames.push_back(frame_id(config, folder, frame, stem));
       const SurroundingsKind kind = config.objects[frame.object].surroundings.kind;
       if (kind == SurroundingsKind::Distractors || kind == SurroundingsKind::Scan) {
         const ObjectRenderer::ViewSurroundings& drawn = renderer->view_surroundings(frame.view);

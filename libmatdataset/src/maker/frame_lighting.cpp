@@ -6,6 +6,8 @@
 #include "matbase/pi.h"
 #include "matdataset/maker/drawn_number.h"
 #include "matdataset/maker/seed_stream.h"
+#include "matrender/light_meter.h"
+#include "matrender/scene_file.h"
 #include "matrender/sky.h"
 
 namespace matdataset {
@@ -106,6 +108,35 @@ void add_group(const LampGroup& group, const matgeom::Sphere& bounds, SeedStream
   }
 }
 
+// The ceiling lamp (lighting_setups.h, CeilingSetup): where it hangs, how large it is and its
+// colour drawn, then its power set for the drawn illuminance at the centre.
+ordered_json ceiling_lamp(const CeilingSetup& ceiling, const matgeom::Sphere& bounds, std::optional<double> ceiling_z,
+                          SeedStream& draws) {
+  const double lux = draw(ceiling.illuminance_lux, draws), height = draw(ceiling.height, draws);
+  const double offset = draw(ceiling.offset, draws), bearing = draw(DrawnNumber{0.0, 360.0, false}, draws) * kDegree;
+  const double size = draw(ceiling.size, draws) * bounds.radius;
+  const glm::dvec3 centre = bounds.center;
+  glm::dvec3 position = centre + bounds.radius * glm::dvec3(offset * std::cos(bearing), offset * std::sin(bearing), height);
+  // Just under the ceiling (a hundredth of the drop to the centre), and never below the centre.
+  if (ceiling_z && position.z > *ceiling_z - 0.01 * (*ceiling_z - centre.z))
+    position.z = std::max(*ceiling_z - 0.01 * (*ceiling_z - centre.z), centre.z + 0.01 * bounds.radius);
+  ordered_json lamp = {{"type", "area"},
+                       {"position", vec3_json(position)},
+                       {"look_at", vec3_json(position - glm::dvec3(0.0, 0.0, 1.0))},
+                       {"up", vec3_json({0.0, 1.0, 0.0})},
+                       {"size", size},
+                       {"power", 1.0},
+                       {"color", color_json(ceiling.color, draws)}};
+  // The lux a watt gives, read as a scene file reads the lamp (its colour's luminance included).
+  const matrender::SceneLighting unit =
+      matrender::read_lighting_text(ordered_json{{"lights", {lamp}}}.dump(), "the ceiling lamp", ".");
+  const double per_watt =
+      matrender::lamp_card_illuminance_lux(std::get<std::vector<matrender::Lamp>>(unit.lights).front(), centre,
+                                           glm::dvec3(0.0, 0.0, 1.0));
+  lamp["power"] = per_watt > 0.0 ? lux / per_watt : 0.0;
+  return lamp;
+}
+
 }  // namespace
 
 LightingChoice choose_lighting(const LightingConfig& lighting, uint64_t seed, const FrameRef& frame,
@@ -122,7 +153,7 @@ std::string lighting_key(const LightingConfig& lighting, const LightingChoice& c
 }
 
 FrameLighting draw_frame_lighting(const LightingConfig& lighting, uint64_t seed, const FrameRef& frame,
-                                  size_t grid_views, const matgeom::Sphere& bounds) {
+                                  size_t grid_views, const matgeom::Sphere& bounds, std::optional<double> ceiling_z) {
   SeedStream draws = lighting_draws(lighting, seed, frame);
   const LightingChoice choice = choose(lighting, frame, grid_views, draws);
   const LightingSetup& setup = lighting.setups[choice.setup];
@@ -154,6 +185,7 @@ FrameLighting draw_frame_lighting(const LightingConfig& lighting, uint64_t seed,
     result.background = {{"sky", settings}, {"strength", draw(sky.strength, draws)}};
     result.background_visible = sky.visible;
   }
+  if (setup.ceiling) result.lights.push_back(ceiling_lamp(*setup.ceiling, bounds, ceiling_z, draws));
   for (const LampGroup& group : setup.lamps) add_group(group, bounds, draws, result.lights);
   return result;
 }

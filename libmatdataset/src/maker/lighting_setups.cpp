@@ -176,8 +176,20 @@ SkySetup read_sky(const DocumentNode& node) {
   return sky;
 }
 
+CeilingSetup read_ceiling(const DocumentNode& node) {
+  CeilingSetup ceiling;
+  if (node.is_word("room")) return ceiling;
+  node.expect_keys({"illuminance_lux", "height", "offset", "size", "color"});
+  if (const auto n = node.find("illuminance_lux")) ceiling.illuminance_lux = read_drawn_number(*n, 0.0, kMaxPower, true, true);
+  if (const auto n = node.find("height")) ceiling.height = read_drawn_number(*n, 1.0, kMaxDistance, false, true);
+  if (const auto n = node.find("offset")) ceiling.offset = read_drawn_number(*n, 0.0, kMaxDistance, false);
+  if (const auto n = node.find("size")) ceiling.size = read_drawn_number(*n, 0.0, kMaxDistance, false, true);
+  if (const auto n = node.find("color")) ceiling.color = read_color(*n);
+  return ceiling;
+}
+
 LightingSetup read_setup(const DocumentNode& node, const fs::path& base) {
-  node.expect_keys({"name", "weight", "rig", "environment", "sky", "lamps"});
+  node.expect_keys({"name", "weight", "rig", "environment", "sky", "ceiling", "lamps"});
   LightingSetup setup;
   if (const auto n = node.find("rig")) setup.rig = n->is_word("paper") ? RigSetup{} : read_rig(*n);
   if (const auto n = node.find("environment")) setup.environment = read_environment(*n, base);
@@ -185,18 +197,21 @@ LightingSetup read_setup(const DocumentNode& node, const fs::path& base) {
     if (setup.environment) n->fail("a setup has one world: an environment or a sky, not both");
     setup.sky = read_sky(*n);
   }
+  if (const auto n = node.find("ceiling")) setup.ceiling = read_ceiling(*n);
   if (const auto n = node.find("lamps"))
     for (const DocumentNode& group : n->items("a list of lamp groups")) setup.lamps.push_back(read_lamp_group(group));
   // A scene file's lights are the rig or a list of lamps (docs/scene_format.md), as a frame records them.
-  if (setup.rig && !setup.lamps.empty())
-    node.required("lamps").fail(
-        "the rig lights alone (or with an environment or a sky): put these lamps in a setup of their own");
-  if (!setup.rig && !setup.environment && !setup.sky && setup.lamps.empty())
-    node.fail("a setup with no light: give it a rig, an environment, a sky or lamps");
+  for (const char* lamps : {"ceiling", "lamps"})
+    if (setup.rig && node.has(lamps))
+      node.required(lamps).fail(
+          "the rig lights alone (or with an environment or a sky): put these lamps in a setup of their own");
+  if (!setup.rig && !setup.environment && !setup.sky && !setup.ceiling && setup.lamps.empty())
+    node.fail("a setup with no light: give it a rig, an environment, a sky, a ceiling lamp or lamps");
   std::vector<std::string> parts;
   if (setup.rig) parts.push_back("rig");
   if (setup.environment) parts.push_back("environment");
   if (setup.sky) parts.push_back("sky");
+  if (setup.ceiling) parts.push_back("ceiling");
   for (const LampGroup& group : setup.lamps)
     if (std::find(parts.begin(), parts.end(), lamp_kind_name(group.kind)) == parts.end())
       parts.push_back(lamp_kind_name(group.kind));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <map>
 
 #include <fmt/format.h>
@@ -40,8 +41,8 @@ matrender::ObjectDescription scan_surroundings(const DatasetConfig& config, size
 
 // The paper's scene of the object (its rig at the configured illuminance) at UV scale
 // `uv_scale`, in `room` when it has one, or back in its scan (the scene's second object,
-// surroundings), with every
-// candidate material of its slots among the scene's materials; each frame places the camera
+// surroundings), with its distractors and, with any surroundings, the meter's card last, and with
+// every candidate material of its slots among the scene's materials; each frame places the camera
 // itself.
 matrender::SceneDescription object_scene(const DatasetConfig& config, size_t index, double uv_scale,
                                          const std::optional<matgeom::RoomSpec>& room,
@@ -65,6 +66,7 @@ matrender::SceneDescription object_scene(const DatasetConfig& config, size_t ind
     placed.origin = matrender::Origin{config.source, "/objects/" + std::to_string(index) + "/surroundings/distractors"};
     scene.objects.push_back(std::move(placed));
   }
+  if (object.surroundings.present()) scene.objects.push_back(meter_card_object());
   matrender::SceneOverrides overrides;
   overrides.placement = matrender::MatrixPlacement{};
   overrides.width = config.render.width;
@@ -77,6 +79,7 @@ matrender::SceneDescription object_scene(const DatasetConfig& config, size_t ind
       overrides.materials.emplace(candidate.name,
                                   candidate_scene_material(candidate, config.render.material_resolution, origin));
     }
+  if (object.surroundings.present()) overrides.materials.emplace(kMeterCardMaterial, meter_card_material());
   matrender::apply_scene_overrides(overrides, scene);
   return scene;
 }
@@ -142,7 +145,7 @@ ObjectRenderer::ObjectRenderer(const DatasetConfig& config, size_t object)
                         glm::length(target_footprint_.center - glm::dvec2(room_->floor_center));
   }
   built_ = matrender::build_scene(object_scene(config, object, object_.uv_scales.front(), room_, distractor_slots_));
-  size_distractors();
+  settle_built_scene();
   const matgeom::TriangleMesh& mesh = built_.object_surfaces.front();
   const size_t part_count = built_.scene.part_materials(built_.object_meshes.front()).size();
   slot_parts_ = parts_of_slots(config, object, mesh.part_names, part_count);
@@ -157,7 +160,7 @@ void ObjectRenderer::select_variant(size_t index, const MaterialVariant& variant
   // camera grid, stay as they are), lit again view by view.
   if (const double scale = object_.uv_scale_of(variant); scale != built_.object_uv_scales.front()) {
     built_ = matrender::build_scene(object_scene(config_, object_index_, scale, room_, distractor_slots_), cancel);
-    size_distractors();
+    settle_built_scene();
     lit_view_ = SIZE_MAX;
   }
   variant_index_ = index;
@@ -231,6 +234,19 @@ size_t ObjectRenderer::target_pixels(size_t view) {
   matrender::render(built_.scene, camera, settings, frame);
   const auto target = static_cast<int32_t>(built_.object_meshes.front());
   return static_cast<size_t>(std::count(frame.object_id.begin(), frame.object_id.end(), target));
+}
+
+void ObjectRenderer::settle_built_scene() {
+  size_distractors();
+  if (has_surroundings()) built_.scene.set_mesh_enabled(built_.object_meshes.back(), false);  // the meter's card
+}
+
+double ObjectRenderer::measured_card_lux() {
+  // The card where the object is: the object and the distractors out of the way, the room in place.
+  std::vector<uint32_t> hidden = {built_.object_meshes.front()};
+  for (size_t k = 0; k < distractor_slots_.size(); ++k) hidden.push_back(built_.object_meshes[kFirstDistractor + k]);
+  const double floor_z = room_ ? room_->floor_center.z : -std::numeric_limits<double>::infinity();
+  return meter_card_lux(built_.scene, built_.object_meshes.back(), hidden, grid_, floor_z, config_.render.settings);
 }
 
 void ObjectRenderer::size_distractors() {
@@ -356,16 +372,21 @@ void ObjectRenderer::light_view(size_t view) {
 const ObjectRenderer::ViewLighting& ObjectRenderer::view_lighting(size_t view) {
   if (const auto found = lighting_.find(view); found != lighting_.end()) return found->second;
   ViewLighting lighting;
+  const std::optional<double> ceiling_z =
+      room_ && room_->ceiling ? std::optional<double>(room_->floor_center.z + room_->height) : std::nullopt;
   lighting.drawn = draw_frame_lighting(config_.lighting, config_.seed, {object_index_, variant_index_, view}, grid_views_,
-                                       built_.bounds);
+                                       built_.bounds, ceiling_z);
   const std::string where = fmt::format("{}: the lighting of {} view {}", config_.source, object_.name, view);
   lighting.scene = matrender::read_lighting_text(scene_lighting_json(lighting.drawn).dump(), where, ".");
   matrender::set_scene_lighting(built_, lighting.scene.lights, lighting.scene.background, &environment_images_);
   lit_view_ = view;
+  // With surroundings the card is measured in the scene, where the room may keep the light out.
+  const std::optional<double> measured_lux = has_surroundings() ? std::optional<double>(measured_card_lux()) : std::nullopt;
+  lighting.unlit = measured_lux && !(*measured_lux > 0.0);
   lighting.exposure_stops =
-      config_.render.exposure_stops
-          ? *config_.render.exposure_stops
-          : matrender::grey_card_exposure(built_.scene.lamps(), built_.scene.background(), grid_);
+      config_.render.exposure_stops ? *config_.render.exposure_stops
+      : measured_lux                ? matrender::grey_card_stops(*measured_lux)
+                                    : matrender::grey_card_exposure(built_.scene.lamps(), built_.scene.background(), grid_);
   return lighting_.emplace(view, std::move(lighting)).first->second;
 }
 

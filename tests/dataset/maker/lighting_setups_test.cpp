@@ -260,3 +260,62 @@ TEST_CASE("Lighting keys are refused where they are read, naming the key and the
   const DatasetConfig twins = read("lights: {setups: [{lamps: [{type: sun}]}, {lamps: [{type: sun}]}]}\n");
   CHECK(twins.lighting.setups[1].name == "sun_2");
 }
+
+namespace {
+
+// The illuminance under the centre of a square Lambertian emitter of radiance L and side a, at a
+// height h below it, on a card facing it: four a/2 x a/2 corners of the rectangle formula
+// E = (L / 2) [X / sqrt(1 + X^2) atan(Y / sqrt(1 + X^2)) + Y / sqrt(1 + Y^2) atan(X / sqrt(1 + Y^2))],
+// X = Y = a / (2 h) (Modest, Radiative Heat Transfer, the parallel-rectangle configuration).
+double under_square_lux(double radiance_lux, double side, double height) {
+  const double x = side / (2.0 * height), s = std::sqrt(1.0 + x * x);
+  return 4.0 * 0.5 * radiance_lux * 2.0 * (x / s) * std::atan(x / s);
+}
+
+}  // namespace
+
+TEST_CASE("A ceiling lamp faces straight down from above the object, at the drawn illuminance, under a room's ceiling",
+          "[dataset]") {
+  const DatasetConfig config = read(R"(lights:
+  setups:
+    - {ceiling: {illuminance_lux: 500, height: [3, 5], offset: 0, size: 1.5, color: [1, 1, 1]}}
+)");
+  REQUIRE(config.lighting.setups.size() == 1);
+  CHECK(config.lighting.setups[0].name == "ceiling");
+  std::set<double> powers;
+  for (size_t view = 0; view < 8; ++view) {
+    const FrameLighting lit = draw(config, 0, 0, view);
+    REQUIRE(lit.lights.size() == 1);
+    const ordered_json& lamp = lit.lights[0];
+    CHECK(lamp["type"] == "area");
+    const glm::dvec3 at(lamp["position"][0], lamp["position"][1], lamp["position"][2]);
+    const glm::dvec3 look(lamp["look_at"][0], lamp["look_at"][1], lamp["look_at"][2]);
+    CHECK(glm::length(look - (at - glm::dvec3(0, 0, 1))) < 1e-12);
+    CHECK(at.x == Approx(kBounds.center.x));
+    CHECK(at.y == Approx(kBounds.center.y));
+    const double height = (at.z - kBounds.center.z) / kBounds.radius;
+    CHECK(height >= 3.0);
+    CHECK(height <= 5.0);
+    // Power for the drawn illuminance: a white Cycles area lamp's radiance is P / (4 A) watts
+    // (docs/conventions.md), 683 lm/W.
+    const double side = lamp["size"].get<double>(), power = lamp["power"].get<double>();
+    CHECK(side == Approx(1.5 * kBounds.radius));
+    const double radiance_lux = 683.0 * power / (4.0 * side * side);
+    const double lux = under_square_lux(radiance_lux, side, at.z - kBounds.center.z);
+    CHECK(lux == Approx(500.0).epsilon(1e-3));
+    powers.insert(power);
+  }
+  CHECK(powers.size() == 8);  // the height is drawn per view, and the power follows it
+
+  // Under a ceiling 2 r above the centre it hangs just below it.
+  const double ceiling = kBounds.center.z + 2.0 * kBounds.radius;
+  const FrameLighting low = matdataset::draw_frame_lighting(config.lighting, config.seed, {0, 0, 1}, 8, kBounds, ceiling);
+  const double z = low.lights[0]["position"][2];
+  CHECK(z < ceiling);
+  CHECK(z > ceiling - 0.05 * kBounds.radius);
+
+  CHECK(read("lights: {setups: [{ceiling: room}]}\n").lighting.setups[0].ceiling.has_value());
+  CHECK_THAT(refusal("lights: {setups: [{rig: paper, ceiling: room}]}\n"), Catch::Contains("ceiling"));
+  CHECK_THAT(refusal("lights: {setups: [{ceiling: {height: 0.5}}]}\n"), Catch::Contains("height"));
+  CHECK_THAT(refusal("lights: {setups: [{ceiling: {hue: 3}}]}\n"), Catch::Contains("hue"));
+}

@@ -37,6 +37,8 @@ struct RunSummary {
   // drawn again, and those no draw showed enough of (each kept at its best draw), named.
   size_t redrawn_frames = 0;
   std::vector<std::string> hidden_frames;
+  // Rendered this run in surroundings that let none of the frame's light reach the object.
+  std::vector<std::string> unlit_frames;
 };
 
 // Throws matbase::InputError when an object, a material or the folder's earlier contents do not fit the

@@ -38,9 +38,11 @@ struct FrameLighting {
   bool background_visible = false;
 };
 
-// The frame's lighting in full around the object's bounding sphere `bounds`.
+// The frame's lighting in full around the object's bounding sphere `bounds`, in a room whose
+// ceiling (when it has one) is at height `ceiling_z`.
 FrameLighting draw_frame_lighting(const LightingConfig& lighting, uint64_t seed, const FrameRef& frame,
-                                  size_t grid_views, const matgeom::Sphere& bounds);
+                                  size_t grid_views, const matgeom::Sphere& bounds,
+                                  std::optional<double> ceiling_z = std::nullopt);
 
 // The scene file's {"lights": ..., "background": ...} of a frame's lighting.
 nlohmann::ordered_json scene_lighting_json(const FrameLighting& lighting);

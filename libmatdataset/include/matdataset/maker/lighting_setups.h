@@ -1,6 +1,7 @@
 #pragma once
 // make_dataset's lighting (docs/make_dataset.md, "Lighting"): a list of setups, each the paper's
-// rig, an environment map, a daylight sky, groups of lamps (suns, spots, points, areas) or a mix, with every
+// rig, an environment map, a daylight sky, a ceiling lamp, groups of lamps (suns, spots, points,
+// areas) or a mix, with every
 // quantity a value or a range drawn for each frame, and the rule by which frames get them. What a
 // frame is drawn is frame_lighting.h's.
 #include <cstdint>
@@ -71,6 +72,18 @@ struct LampGroup {
   DrawnColor color{glm::dvec3(0.8), {}};                   // the paper's neutral grey-white
 };
 
+// A room's ceiling lamp: a square area lamp above the object facing straight down, sideways of
+// its centre c by a drawn distance and bearing, at a drawn height (in the bounding radius r), its
+// power set for a drawn illuminance on a card at c facing up, in the colours of indoor white
+// light. Under a room's ceiling it hangs just below it where the drawn height would put it above.
+struct CeilingSetup {
+  DrawnNumber illuminance_lux = {300.0, 1000.0, true};
+  DrawnNumber height = {3.0, 5.0, false};  // above c, in r
+  DrawnNumber offset = {0.0, 1.0, false};  // sideways of c, in r
+  DrawnNumber size = DrawnNumber::value(1.5);  // the square's side, in r
+  DrawnColor color{std::nullopt, {2700.0, 5000.0, false}};
+};
+
 struct LightingSetup {
   std::string name;     // unique; by default its parts, "environment+sun"
   double weight = 1.0;  // the share of frames drawn under it
@@ -78,6 +91,7 @@ struct LightingSetup {
   std::optional<EnvironmentSetup> environment;
   std::optional<SkySetup> sky;  // a world of its own: never with an environment
   std::vector<LampGroup> lamps;
+  std::optional<CeilingSetup> ceiling;
 };
 
 // How frames get their lighting: each view its own draw, each variant one draw for all its
@@ -85,7 +99,8 @@ struct LightingSetup {
 enum class LightingAssignment { PerView, PerVariant, EverySetup };
 
 struct LightingConfig {
-  std::vector<LightingSetup> setups = {LightingSetup{"rig", 1.0, RigSetup{}, std::nullopt, std::nullopt, {}}};
+  std::vector<LightingSetup> setups = {
+      LightingSetup{"rig", 1.0, RigSetup{}, std::nullopt, std::nullopt, {}, std::nullopt}};
   LightingAssignment assignment = LightingAssignment::PerView;
   // The frames each grid view is rendered in: the setups' count under EverySetup, else 1.
   size_t rounds() const { return assignment == LightingAssignment::EverySetup ? setups.size() : 1; }

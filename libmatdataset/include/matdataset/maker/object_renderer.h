@@ -13,6 +13,7 @@
 #include "matdataset/maker/distractors.h"
 #include "matdataset/maker/frame_lighting.h"
 #include "matdataset/maker/object_framing.h"
+#include "matdataset/maker/scene_meter.h"
 #include "matgeom/bounding_sphere.h"
 #include "matgeom/object_asset.h"
 #include "matrender/render.h"
@@ -69,6 +70,9 @@ class ObjectRenderer {
     FrameLighting drawn;
     matrender::SceneLighting scene;
     double exposure_stops = 0.0;
+    // With surroundings: the card measured in the scene received no light (a closed room under a
+    // sky, lamps outside the walls), so the frame is black.
+    bool unlit = false;
   };
   const ViewLighting& view_lighting(size_t view);
   // What transforms.json records of a view's lighting: the setup's name, the scene file's
@@ -136,6 +140,10 @@ class ObjectRenderer {
   size_t target_pixels(size_t view);
   // A view of the target in its scan: the fraction of its pixels the scan's other parts leave.
   ViewSurroundings scan_view(size_t view);
+  // What every build of the scene is followed by: the distractors sized, the meter's card hidden.
+  void settle_built_scene();
+  // The illuminance of the card measured in the scene (scene_meter.h) under the lighting there now.
+  double measured_card_lux();
   // Each slot's sizing, from its surface as built (which is left at that size for its materials).
   void size_distractors();
   void place_distractors_in_scene(const std::vector<DistractorPlacement>& placements);
