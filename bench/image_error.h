@@ -1,6 +1,7 @@
 #pragma once
 // How far a rendered image is from a reference, for the benchmarks' error-versus-time figures.
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace bench {
@@ -23,6 +24,33 @@ inline double covered_rmse(const std::vector<float>& image, const std::vector<fl
     ++n;
   }
   return n ? std::sqrt(sum / static_cast<double>(n)) : 0.0;
+}
+
+// The RMSE over the pixels `mask` marks (mask[p] > 0), every channel of them, and their mean in
+// `reference`: an image error on the object's pixels alone.
+inline double masked_rmse(const std::vector<float>& image, const std::vector<float>& reference,
+                          const std::vector<int32_t>& mask, int channels) {
+  double sum = 0.0;
+  size_t n = 0;
+  for (size_t p = 0; p < mask.size(); ++p) {
+    if (mask[p] <= 0) continue;
+    for (int c = 0; c < channels; ++c) {
+      const size_t i = p * static_cast<size_t>(channels) + static_cast<size_t>(c);
+      sum += (double(image[i]) - reference[i]) * (double(image[i]) - reference[i]);
+      ++n;
+    }
+  }
+  return n ? std::sqrt(sum / static_cast<double>(n)) : 0.0;
+}
+inline double masked_mean(const std::vector<float>& reference, const std::vector<int32_t>& mask, int channels) {
+  double sum = 0.0;
+  size_t n = 0;
+  for (size_t p = 0; p < mask.size(); ++p) {
+    if (mask[p] <= 0) continue;
+    for (int c = 0; c < channels; ++c) sum += reference[p * static_cast<size_t>(channels) + static_cast<size_t>(c)];
+    n += static_cast<size_t>(channels);
+  }
+  return n ? sum / static_cast<double>(n) : 0.0;
 }
 
 inline double mean(const std::vector<float>& image) {

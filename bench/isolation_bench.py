@@ -7,10 +7,11 @@
 Every built-in object in a material of every library class is rendered from one view of a grid
 around it (a cell drawn from the seed), three times: on the black background under the paper's
 light rig; cluttered, standing on a textured floor of another class under an environment map of
-coloured blotches and a sun, so that the background is no flat colour; and in a room, on a floor
-in a box room of drawn materials with two or three other built-in objects standing around it in
-materials of other classes (which may hide part of it), under the paper's rig. The object's pixels
-are those whose nearest hit is on it (the object_id AOV). The prompt is their bounding box grown by 5 % on each side
+coloured blotches and a sun, so that the background is no flat colour; and in a room, on the floor
+of a box room (floors of wood, stone, concrete, marble or ceramic, walls of plaster, concrete,
+paper or wood) with two or three other built-in objects standing around it in materials of other
+classes (which may hide part of it), under the paper's rig. The object's pixels are those whose
+nearest hit is on it (the object_id AOV). The prompt is their bounding box grown by 5 % on each side
 (matpredict.isolate's `box`), as a user draws a box around an object, or none (the most central
 object: the frame is centred on it, as a photograph of one object is). Each segmenter's mask is
 scored by its intersection over union with the truth, and timed (the isolate call alone, on
@@ -41,6 +42,10 @@ import matpredict
 FLOOR_CLASSES = ("concrete", "wood")
 # What stands behind the object: nothing, a floor under blotches and a sun, a room with distractors.
 BACKGROUNDS = ("black", "cluttered", "room")
+# A room's floor and walls are drawn from what rooms are made of (configs/paper_in_room.yaml's),
+# leaving out the object's own class.
+ROOM_FLOOR_CLASSES = ("wood", "stone", "concrete", "marble", "ceramic")
+ROOM_WALL_CLASSES = ("plaster", "concrete", "paper", "wood")
 
 
 def write_environment(path, seed):
@@ -89,12 +94,14 @@ def object_scene(name, material_class, seed, camera, size, spp, cluttered, envir
 
 
 def room_scene(scene, material_class, seed, center, radius, sizes):
-    """`scene` moved into a box room: a floor and walls of two other classes six radii out, and two
-    or three other built-in objects on the floor around the object, scaled to 0.4 to 0.9 of its
-    bounding radius, their bounding spheres apart from its and from each other's, lit by the rig."""
+    """`scene` moved into a box room: a floor and walls six radii out, in room classes other than
+    the object's, and two or three other built-in objects on the floor around the object in any
+    other class, scaled to 0.4 to 0.9 of its bounding radius, their bounding spheres apart from its
+    and from each other's, lit by the rig."""
     rng = random.Random(seed)
     others = [c for c in matpredict.material_classes() if c != material_class]
-    floor, walls = rng.sample(others, 2)
+    floor = rng.choice([c for c in ROOM_FLOOR_CLASSES if c != material_class])
+    walls = rng.choice([c for c in ROOM_WALL_CLASSES if c not in (material_class, floor)])
     scene["materials"]["floor"] = {"class": floor, "seed": seed + 1, "resolution": 512}
     scene["materials"]["walls"] = {"class": walls, "seed": seed + 2, "resolution": 512}
     scene["objects"].append({"room": {"floor_center": [center[0], center[1], 0.0], "half_width": 6 * radius,
@@ -272,7 +279,10 @@ def main():
                         except matpredict.InputError as refused:  # counted as no overlap
                             seconds = time.perf_counter() - start
                             iou, refusal = 0.0, str(refused)
+                        room = ([described["materials"][part]["class"] for part in ("floor", "walls")]
+                                if background == "room" else None)
                         records.append({"object": name, "class": material_class, "background": background,
+                                        "room": room,
                                         "segmenter": segmenter, "prompt": prompt, "cell": cell, "box": list(box), "iou": iou,
                                         "refusal": refusal, "seconds": seconds, "object_pixels": int(truth.sum()),
                                         "base_color_rmse": error, "base_color_rmse_true_mask": true_error})

@@ -28,7 +28,8 @@
 //                                    gives each one's render seconds to the error the first
 //                                    one's frames have as configured, and their ratio to it
 //   --surroundings NAME=YAML ...     the same for `surroundings` values (none, a floor, a room,
-//                                    distractors): what surroundings cost at equal error
+//                                    distractors): what surroundings cost at equal error, the
+//                                    image error then taken on the object's pixels alone
 //   --threads N
 //
 // Image error is the RMSE over the image (every pixel and channel, linear radiance) against the
@@ -235,6 +236,9 @@ struct Run {
   int workers, reference_factor, reference_samples;
   fs::path scratch;    // frames are written here, as make_dataset writes them
   std::string images;  // the references go here as PNGs; empty: nowhere
+  // The image error on the object's pixels (the reference's label) alone, as surroundings are
+  // compared: their floor's and walls' noise is not the object's.
+  bool object_pixels = false;
 };
 
 // A view of an object, its seed, and its reference when it has one.
@@ -277,11 +281,14 @@ void measure_mode(const Run& run, matdataset::ObjectRenderer& renderer, const st
       const double own = std::sqrt(1.0 + 1.0 / run.reference_factor);
       f.referenced_seconds.push_back(seconds);
       f.image_errors.push_back(
-          image_error(maps.color, truth->color, object_mean(truth->color, truth->coverage), run.reference_factor));
+          run.object_pixels
+              ? bench::masked_rmse(maps.color, truth->color, truth->label, 3) /
+                    std::sqrt(1.0 + 1.0 / run.reference_factor) / bench::masked_mean(truth->color, truth->label, 3)
+              : image_error(maps.color, truth->color, object_mean(truth->color, truth->coverage), run.reference_factor));
       f.ao_errors.push_back(
           bench::covered_rmse(maps.ambient_occlusion, truth->ambient_occlusion, maps.coverage, truth->coverage) / own);
-      error = fmt::format("; image RMSE {:.2f} % of the object's mean, AO RMSE {:.4f}", 100.0 * f.image_errors.back(),
-                          f.ao_errors.back());
+      error = fmt::format("; image RMSE {:.2f} % of the object's mean{}, AO RMSE {:.4f}", 100.0 * f.image_errors.back(),
+                          run.object_pixels ? " on its pixels" : "", f.ao_errors.back());
     }
     fmt::print("{} view {} {}: {:.2f} s, {:.0f} samples a pixel, {:.1f} rays a sample, AO error estimated {:.4f}{}\n",
                frame.object, frame.view, mode, seconds,
@@ -511,6 +518,7 @@ struct Request {
   double target_percent = 1.6;
   CyclesOptions cycles;
   std::string images;
+  bool object_pixels = false;  // Run::object_pixels
 };
 
 // One compared setting's curves (a lighting's, a surroundings'), ours only, and the error its
@@ -569,7 +577,7 @@ SettingCurves measure_setting(const Request& request, const std::vector<matdatas
     fs::remove_all(scratch);
     if (!images.empty()) fs::create_directories(images);
 
-    const Run run{plan, workers, reference_factor, reference_samples, scratch, images};
+    const Run run{plan, workers, reference_factor, reference_samples, scratch, images, request.object_pixels};
     std::vector<ModeFigures> figures(modes.size()), cycles_figures(cycles.thresholds.size());
     double setup_seconds = 0.0;
     int referenced = 0;
@@ -724,7 +732,8 @@ int main(int argc, char** argv) {
                  "the first one's frames have as configured, over the first one's");
   app.add_option("--surroundings", surroundings_texts,
                  "NAME=YAML: a `surroundings` value (docs/make_dataset.md, \"Surroundings\"), compared as --lighting "
-                 "compares lightings: what a floor, a room or distractors cost at equal error")
+                 "compares lightings: what a floor, a room or distractors cost at equal error, the image error "
+                 "taken on the object's pixels (its reference's label) alone")
       ->excludes(app.get_option("--lighting"));
   app.add_flag("--cycles", cycles.enabled, "also render the referenced frames with Blender 3.4 Cycles");
   app.add_option("--blender", cycles.blender, "Blender 3.4 executable")->capture_default_str();
@@ -745,7 +754,7 @@ int main(int argc, char** argv) {
     std::vector<Mode> modes;
     for (const Series& s : series) modes.insert(modes.end(), s.points.begin(), s.points.end());
     Request request{config_file, objects, mode_texts, series, modes, views, reference_frames, reference_factor,
-                    threads, target_percent, cycles, images};
+                    threads, target_percent, cycles, images, !surroundings_texts.empty()};
     // Each setting compared in turn under one configuration key.
     const bool lights = !lighting_texts.empty();
     const std::vector<std::string>& compared = lights ? lighting_texts : surroundings_texts;

@@ -40,7 +40,7 @@ struct Column {
   const char* folder;
   const char* extension;
 };
-constexpr std::array<Column, 11> kColumns = {{{"image", "images", ".png"},
+constexpr std::array<Column, 12> kColumns = {{{"image", "images", ".png"},
                                              {"albedo", "albedo", ".png"},
                                              {"roughness", "ORM", ".png"},
                                              {"metallic", "ORM", ".png"},
@@ -49,6 +49,7 @@ constexpr std::array<Column, 11> kColumns = {{{"image", "images", ".png"},
                                              {"normal (map)", "normal_mat", ".png"},
                                              {"depth", "depth", ".exr"},
                                              {"label", "label", ".png"},
+                                             {"region", "region", ".png"},
                                              {"samples", "sample_count", ".png"},
                                              {"lighting", "", ""}}};
 // The last column is drawn from transforms.json's record of the frame's lighting, not a map.
@@ -90,17 +91,22 @@ std::optional<Map> read_map(const fs::path& file, int width, int height, std::ve
 Rgb broken_tile(int x, int y) { return ((x + y) / 4) % 2 ? Rgb{0.85f, 0.1f, 0.1f} : Rgb{0.05f, 0.05f, 0.05f}; }
 
 // A frame of width x height drawn as the columns show it, RGB per column. A map that cannot be
-// read is drawn as a broken tile and named in `damaged`; the object's pixels are the label's,
-// else the depth map's coverage. The sample counts are drawn as a heat map of the fraction of
+// read is drawn as a broken tile and named in `damaged`. The data maps are drawn where a surface
+// is (the depth map's coverage: the object's, and its surroundings' where it has any), the label
+// where the object is (the label's pixels); depth is normalised over the object's pixels. The
+// region map, where a variant has one, shows the target in orange and its surroundings in blue.
+// The sample counts are drawn as a heat map of the fraction of
 // max_samples (the render's; 0: unknown, the frame's most) each pixel took, over the background
 // too; a dataset without them (the repository's) leaves that column grey.
 std::vector<std::vector<Rgb>> draw_frame(const fs::path& variant, const std::string& stem, int w, int h,
                                          int max_samples, std::vector<std::string>& damaged) {
   std::map<std::string, std::optional<Map>> maps;
   const bool sample_counts = fs::is_directory(variant / "sample_count");
+  const bool regions = fs::is_directory(variant / "region");
   for (const Column& column : kColumns)
     if (*column.folder && !maps.count(column.folder) &&
-        (sample_counts || std::string(column.folder) != "sample_count"))
+        (sample_counts || std::string(column.folder) != "sample_count") &&
+        (regions || std::string(column.folder) != "region"))
       maps[column.folder] = read_map(variant / column.folder / (stem + column.extension), w, h, damaged);
   const std::optional<Map>& label = maps.at("label");
   const std::optional<Map>& depth = maps.at("depth");
@@ -108,6 +114,7 @@ std::vector<std::vector<Rgb>> draw_frame(const fs::path& variant, const std::str
     if (label) return label->at(x, y, 0) > 0.0f;
     return depth && depth->at(x, y, 3) > 0.0f;
   };
+  const auto is_surface = [&](int x, int y) { return depth ? depth->at(x, y, 3) > 0.0f : is_object(x, y); };
   float most_samples = static_cast<float>(max_samples);
   const std::optional<Map>* counts = sample_counts ? &maps.at("sample_count") : nullptr;
   if (counts && counts->has_value() && max_samples <= 0)
@@ -124,7 +131,7 @@ std::vector<std::vector<Rgb>> draw_frame(const fs::path& variant, const std::str
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const size_t p = static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x);
-      const bool object = is_object(x, y);
+      const bool object = is_object(x, y), surface = is_surface(x, y);
       const auto over = [&](const std::optional<Map>& m) {  // straight-alpha colour over the background
         if (!m) return broken_tile(x, y);
         const float a = m->at(x, y, 3);
@@ -134,11 +141,11 @@ std::vector<std::vector<Rgb>> draw_frame(const fs::path& variant, const std::str
       const auto grey = [&](const std::optional<Map>& m, int channel) {
         if (!m) return broken_tile(x, y);
         const float v = m->at(x, y, channel);
-        return object ? Rgb{v, v, v} : background;
+        return surface ? Rgb{v, v, v} : background;
       };
       const auto rgb = [&](const std::optional<Map>& m) {
         if (!m) return broken_tile(x, y);
-        return object ? Rgb{m->at(x, y, 0), m->at(x, y, 1), m->at(x, y, 2)} : background;
+        return surface ? Rgb{m->at(x, y, 0), m->at(x, y, 1), m->at(x, y, 2)} : background;
       };
       const std::optional<Map>& orm = maps.at("ORM");
       columns[0][p] = over(maps.at("images"));
@@ -151,18 +158,24 @@ std::vector<std::vector<Rgb>> draw_frame(const fs::path& variant, const std::str
       if (!depth) columns[7][p] = broken_tile(x, y);
       else {
         const float d = depth->at(x, y, 0);
-        const float shade = far > near ? 0.15f + 0.85f * (far - d) / (far - near) : 1.0f;
-        columns[7][p] = object ? Rgb{shade, shade, shade} : background;
+        const float shade = far > near ? std::clamp(0.15f + 0.85f * (far - d) / (far - near), 0.05f, 1.0f) : 1.0f;
+        columns[7][p] = surface ? Rgb{shade, shade, shade} : background;
       }
       if (!label) columns[8][p] = broken_tile(x, y);
       else {
         const std::array<uint8_t, 3> colour = matmaterial::label_colour(static_cast<int>(std::lround(label->at(x, y, 0) * 255.0f)));
         columns[8][p] = object ? Rgb{colour[0] / 255.0f, colour[1] / 255.0f, colour[2] / 255.0f} : background;
       }
-      if (!counts) columns[9][p] = background;
-      else if (!counts->has_value()) columns[9][p] = broken_tile(x, y);
+      if (!regions) columns[9][p] = background;
+      else if (!maps.at("region")) columns[9][p] = broken_tile(x, y);
+      else {
+        const long region = std::lround(maps.at("region")->at(x, y, 0) * 255.0f);
+        columns[9][p] = region == 2 ? Rgb{0.95f, 0.55f, 0.15f} : region == 1 ? Rgb{0.25f, 0.45f, 0.8f} : background;
+      }
+      if (!counts) columns[10][p] = background;
+      else if (!counts->has_value()) columns[10][p] = broken_tile(x, y);
       else
-        columns[9][p] = heat((*counts)->at(x, y, 0) * static_cast<float>(kMaxSampleCount) /
+        columns[10][p] = heat((*counts)->at(x, y, 0) * static_cast<float>(kMaxSampleCount) /
                              std::max(1.0f, most_samples));
     }
   return columns;

@@ -4,6 +4,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "matbase/image/srgb.h"
 #include "matbase/pi.h"
 #include "matgeom/object_asset.h"
 #include "matrender/camera.h"
@@ -21,8 +22,6 @@ constexpr int kPixels = 4;
 constexpr int kSamples = 64;
 // The card's half-side in grid radii: small beside anything in the room.
 constexpr double kHalfSide = 0.01;
-// Rec. 709 luminance weights, as the lamps' luminance is taken (matrender/light_meter.h).
-constexpr glm::dvec3 kLuminance{0.2126, 0.7152, 0.0722};
 
 }  // namespace
 
@@ -92,7 +91,7 @@ double meter_card_lux(matrender::Scene& scene, uint32_t card, const std::vector<
     matrender::render(scene, view, meter, frame);
     double luminance = 0.0;
     for (size_t p = 0; p + 2 < frame.color.size(); p += 3)
-      luminance += glm::dot(kLuminance, glm::dvec3(frame.color[p], frame.color[p + 1], frame.color[p + 2]));
+      luminance += matbase::rec709_luminance(glm::dvec3(frame.color[p], frame.color[p + 1], frame.color[p + 2]));
     luminance /= kPixels * kPixels;
     // A white Lambertian card of illuminance E shows luminance E / (683 pi) (Blender's units).
     total_lux += 683.0 * matbase::kPi * luminance;
