@@ -16,13 +16,17 @@
 #include <vector>
 
 #include <OpenImageIO/imageio.h>
+#include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
 #include "matbase/pi.h"
 #include "matdataset/format/dataset_index.h"
 #include "matdataset/format/decoded_image.h"
 #include "matdataset/format/sample_reader.h"
+#include "matgeom/builtin/builtin_objects.h"
 #include "matgeom/builtin/example_scan.h"
+#include "matgeom/io/mesh_io.h"
+#include "matgeom/mesh_parts.h"
 #include "support/replica_ply.h"
 
 namespace fs = std::filesystem;
@@ -986,5 +990,63 @@ TEST_CASE("In a closed room a lamp outside the walls leaves frames black and mak
     const nlohmann::json transforms = json_of(variant / "transforms.json");
     CHECK(transforms["frames"][0]["lighting"]["setup"] == "ceiling");
     CHECK(transforms["frames"][0]["lighting"]["lights"][0]["type"] == "area");
+  }
+}
+
+namespace {
+
+// One asset of several: their parts side by side, each in its own material with its images.
+matgeom::ObjectAsset scene_of(const std::vector<matgeom::ObjectAsset>& assets) {
+  matgeom::ObjectAsset scene;
+  std::vector<matgeom::MeshPart> parts;
+  for (const matgeom::ObjectAsset& asset : assets) {
+    const int offset = static_cast<int>(scene.images.size());
+    scene.images.insert(scene.images.end(), asset.images.begin(), asset.images.end());
+    for (matmaterial::MaterialInputs material : asset.materials) {
+      for (matmaterial::MaterialInput& input : material.inputs)
+        if (input.image >= 0) input.image += offset;
+      if (material.normal_image >= 0) material.normal_image += offset;
+      scene.materials.push_back(material);
+    }
+    for (matgeom::MeshPart& part : matgeom::split_parts(asset.mesh)) parts.push_back(std::move(part));
+  }
+  scene.mesh = matgeom::merge_parts(parts);
+  return scene;
+}
+
+}  // namespace
+
+TEST_CASE("A glTF scene is a scan too: its target parts get the variant's materials, the rest keeps its own textures",
+          "[dataset]") {
+  const fs::path dir = fs::temp_directory_path() / "matpredict_gltf_scan";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  // The built-in vase standing on the built-in table, each in its built-in textured materials.
+  const matgeom::ObjectAsset table = matgeom::make_builtin_object("table");
+  matgeom::ObjectAsset vase = matgeom::make_builtin_object("vase");
+  matgeom::transform_mesh(vase.mesh, glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.0, matgeom::mesh_bounds(table.mesh).upper.z)));
+  matgeom::write_object(scene_of({table, vase}), (dir / "scene.glb").string());
+  std::ofstream(dir / "config.yaml")
+      << "objects:\n  - {name: vase_on_table, mesh: scene.glb, surroundings: {kind: scan, target: [body, glaze_band]}}\n"
+         "materials: {all: [plastic:1]}\ncamera: {grid: [1, 2], phi_deg: [40, 70]}\n"
+         "render: {resolution: 32, samples: 8, material_resolution: 16}\n";
+  REQUIRE(run("--config " + (dir / "config.yaml").string() + " --output " + (dir / "out").string(), dir / "errors.txt") == 0);
+  CHECK(verify(dir / "out", dir / "report.txt") == 0);
+  const std::vector<fs::path> images = images_of(dir / "out");
+  REQUIRE(images.size() == 2);
+  for (const fs::path& image : images) {
+    INFO(image);
+    const fs::path variant = image.parent_path().parent_path();
+    const matdataset::DecodedIds region = matdataset::decode_ids(variant / "region" / (image.stem().string() + ".png"));
+    const matbase::FloatImage albedo = matdataset::decode(variant / "albedo" / (image.stem().string() + ".png"));
+    size_t target = 0;
+    std::set<int> table_albedo;  // the table's own textures vary; one drawn constant would not
+    for (size_t p = 0; p < region.ids.size(); ++p) {
+      target += region.ids[p] == 2;
+      if (region.ids[p] == 1) table_albedo.insert(static_cast<int>(std::lround(255.0f * albedo.values[4 * p])));
+    }
+    CHECK(target > 20);
+    CHECK(table_albedo.size() > 5);
+    CHECK(differing_when_rendered_again(image, dir / ("again_" + image.stem().string())) == 0);
   }
 }
