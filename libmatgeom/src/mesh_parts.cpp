@@ -76,6 +76,20 @@ std::vector<MeshPart> split_parts(const TriangleMesh& mesh) {
   return parts;
 }
 
+NamedParts named_parts(const TriangleMesh& mesh, const std::vector<std::string>& names) {
+  NamedParts parts;
+  parts.named.assign(mesh.part_count(), false);
+  for (const std::string& name : names) {
+    const auto found = std::find(mesh.part_names.begin(), mesh.part_names.end(), name);
+    if (found == mesh.part_names.end()) {
+      if (!parts.missing) parts.missing = name;
+      continue;
+    }
+    parts.named[static_cast<size_t>(found - mesh.part_names.begin())] = true;
+  }
+  return parts;
+}
+
 TriangleMesh merge_parts(const std::vector<MeshPart>& parts) {
   TriangleMesh merged;
   if (parts.empty()) return merged;

@@ -158,3 +158,13 @@ TEST_CASE("An asset's kept parts are those parts alone, with their names and mat
   CHECK_THROWS_AS(kept_parts(asset, {false, false, false}), std::invalid_argument);
   CHECK_THROWS_AS(kept_parts(asset, {}), std::invalid_argument);
 }
+
+TEST_CASE("Parts are found by name, and the first name missing is said", "[geom]") {
+  const TriangleMesh mesh = interleaved_grid();
+  const NamedParts found = named_parts(mesh, {"back rest", "frame"});
+  CHECK(found.named == std::vector<bool>{true, false, true});
+  CHECK_FALSE(found.missing);
+  const NamedParts missing = named_parts(mesh, {"seat", "armrest", "legs"});
+  CHECK(missing.named == std::vector<bool>{false, true, false});
+  CHECK(missing.missing == std::optional<std::string>("armrest"));
+}

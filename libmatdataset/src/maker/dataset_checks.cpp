@@ -20,6 +20,7 @@
 #include "matgeom/bounding_sphere.h"
 #include "matgeom/builtin/builtin_objects.h"
 #include "matgeom/io/mesh_io.h"
+#include "matgeom/mesh_parts.h"
 #include "matmaterial/folder/material_folder.h"
 #include "matmaterial/material_classes.h"
 
@@ -116,20 +117,14 @@ void check_distractors_fit(const DatasetConfig& config, size_t o, const matgeom:
 // Object `o`'s target parts of its scan alone, or matbase::InputError when the scan has no part of
 // a target's name or nothing but the target (no room to put it back in).
 matgeom::ObjectAsset scan_target(const DatasetConfig& config, size_t o, const matgeom::ObjectAsset& scan) {
-  const std::vector<std::string>& target = config.objects[o].surroundings.scan.target;
-  const std::vector<std::string>& names = scan.mesh.part_names;
   const std::string key = config.source + ": " + object_key(o) + ".surroundings.target: ";
-  std::vector<bool> keep(scan.mesh.part_count(), false);
-  for (const std::string& part : target) {
-    const auto found = std::find(names.begin(), names.end(), part);
-    if (found == names.end())
-      throw matbase::InputError(fmt::format("{}the scan {} has no part \"{}\" (its parts: {})", key,
-                                            std::get<matrender::MeshFile>(config.objects[o].source).path, part,
-                                            quoted(names)));
-    keep[static_cast<size_t>(found - names.begin())] = true;
-  }
-  std::vector<bool> rest(keep.size());
-  std::transform(keep.begin(), keep.end(), rest.begin(), [](bool kept) { return !kept; });
+  const matgeom::NamedParts target = matgeom::named_parts(scan.mesh, config.objects[o].surroundings.scan.target);
+  if (target.missing)
+    throw matbase::InputError(fmt::format("{}the scan {} has no part \"{}\" (its parts: {})", key,
+                                          std::get<matrender::MeshFile>(config.objects[o].source).path,
+                                          *target.missing, quoted(scan.mesh.part_names)));
+  std::vector<bool> rest = target.named;
+  rest.flip();
   try {
     matgeom::kept_parts(scan, rest);
   } catch (const std::invalid_argument&) {
@@ -137,7 +132,7 @@ matgeom::ObjectAsset scan_target(const DatasetConfig& config, size_t o, const ma
                               "it back in; name fewer parts, or use surroundings `floor`");
   }
   try {
-    return matgeom::kept_parts(scan, keep);
+    return matgeom::kept_parts(scan, target.named);
   } catch (const std::invalid_argument&) {
     throw matbase::InputError(key + "the target's parts have no triangle");
   }

@@ -154,6 +154,7 @@ ObjectRenderer::ObjectRenderer(const DatasetConfig& config, size_t object)
 void ObjectRenderer::select_variant(size_t index, const MaterialVariant& variant, const std::atomic<bool>* cancel) {
   if (index != variant_index_ || variant != variant_) {
     lighting_.clear();
+    card_lux_.clear();
     view_surroundings_.clear();
   }
   // Another UV scale is another UV pass: the object is built again (its geometry, and so the
@@ -241,12 +242,15 @@ void ObjectRenderer::settle_built_scene() {
   if (has_surroundings()) built_.scene.set_mesh_enabled(built_.object_meshes.back(), false);  // the meter's card
 }
 
-double ObjectRenderer::measured_card_lux() {
+double ObjectRenderer::measured_card_lux(const std::string& lighting) {
+  if (const auto found = card_lux_.find(lighting); found != card_lux_.end()) return found->second;
   // The card where the object is: the object and the distractors out of the way, the room in place.
   std::vector<uint32_t> hidden = {built_.object_meshes.front()};
   for (size_t k = 0; k < distractor_slots_.size(); ++k) hidden.push_back(built_.object_meshes[kFirstDistractor + k]);
   const double floor_z = room_ ? room_->floor_center.z : -std::numeric_limits<double>::infinity();
-  return meter_card_lux(built_.scene, built_.object_meshes.back(), hidden, grid_, floor_z, config_.render.settings);
+  const double lux =
+      meter_card_lux(built_.scene, built_.object_meshes.back(), hidden, grid_, floor_z, config_.render.settings);
+  return card_lux_.emplace(lighting, lux).first->second;
 }
 
 void ObjectRenderer::size_distractors() {
@@ -277,8 +281,8 @@ void ObjectRenderer::place_distractors_in_scene(const std::vector<DistractorPlac
 const ObjectRenderer::ViewSurroundings& ObjectRenderer::view_surroundings(size_t view) {
   if (const auto found = view_surroundings_.find(view); found != view_surroundings_.end()) return found->second;
   const DistractorsConfig& config = object_.surroundings.distractors;
-  ViewSurroundings best;
   if (object_.surroundings.kind == SurroundingsKind::Scan) return view_surroundings_.emplace(view, scan_view(view)).first->second;
+  ViewSurroundings best;
   best.visible_fraction = -1.0;
   if (distractor_slots_.empty()) return view_surroundings_.emplace(view, best).first->second;
   // The target's pixels without distractors depend on the view alone, not on the variant.
@@ -377,11 +381,13 @@ const ObjectRenderer::ViewLighting& ObjectRenderer::view_lighting(size_t view) {
   lighting.drawn = draw_frame_lighting(config_.lighting, config_.seed, {object_index_, variant_index_, view}, grid_views_,
                                        built_.bounds, ceiling_z);
   const std::string where = fmt::format("{}: the lighting of {} view {}", config_.source, object_.name, view);
-  lighting.scene = matrender::read_lighting_text(scene_lighting_json(lighting.drawn).dump(), where, ".");
+  const std::string lighting_text = scene_lighting_json(lighting.drawn).dump();
+  lighting.scene = matrender::read_lighting_text(lighting_text, where, ".");
   matrender::set_scene_lighting(built_, lighting.scene.lights, lighting.scene.background, &environment_images_);
   lit_view_ = view;
   // With surroundings the card is measured in the scene, where the room may keep the light out.
-  const std::optional<double> measured_lux = has_surroundings() ? std::optional<double>(measured_card_lux()) : std::nullopt;
+  const std::optional<double> measured_lux =
+      has_surroundings() ? std::optional<double>(measured_card_lux(lighting_text)) : std::nullopt;
   lighting.unlit = measured_lux && !(*measured_lux > 0.0);
   lighting.exposure_stops =
       config_.render.exposure_stops ? *config_.render.exposure_stops

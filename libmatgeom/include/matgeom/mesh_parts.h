@@ -2,6 +2,7 @@
 // Splitting a mesh into its parts (per-face instance ids of a scan, or material slots) as
 // compact meshes of their own, and merging parts back into one mesh.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,14 @@ struct MeshPart {
 // keep their source order and vertices are numbered in order of first use, so the result
 // depends only on the input. Every attribute array the source has is carried over.
 std::vector<MeshPart> split_parts(const TriangleMesh& mesh);
+
+// Which parts of `mesh` `names` names, by part name: a flag per part id, and the first name the
+// mesh has no part of (none when every name is found).
+struct NamedParts {
+  std::vector<bool> named;
+  std::optional<std::string> missing;
+};
+NamedParts named_parts(const TriangleMesh& mesh, const std::vector<std::string>& names);
 
 // Concatenates the parts' meshes: part k of the result is parts[k] (named parts[k].name), its
 // vertices and triangles follow those of parts[0..k-1]. Attribute arrays must be present in all

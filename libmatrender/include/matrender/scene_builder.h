@@ -39,11 +39,6 @@ struct BuiltScene {
 // (when given) is set while materials load (SceneMaterials::cancel_on).
 BuiltScene build_scene(const SceneDescription& description, const std::atomic<bool>* cancel = nullptr);
 
-// The object a mesh file describes: the file read, its parts chosen (MeshFile::only_parts,
-// except_parts). Throws std::runtime_error starting with the path: an unreadable file, a part
-// name the file does not have (listing its parts), a choice that leaves no triangle.
-matgeom::ObjectAsset read_mesh_file(const MeshFile& file);
-
 // Object `object`'s surface in world space as build_scene places it, without the UV pass: what
 // sizes the things put around it before its scene is built. Throws matbase::InputError as
 // build_scene does for an object that cannot be read.

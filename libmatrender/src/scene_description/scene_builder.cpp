@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <exception>
+#include <map>
+#include <optional>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -11,6 +14,7 @@
 #include "matgeom/camera_grid.h"
 #include "matgeom/io/mesh_io.h"
 #include "matgeom/mesh.h"
+#include "matgeom/mesh_parts.h"
 #include "matgeom/uv/uv_pass.h"
 #include "matrender/asset.h"
 #include "matrender/paper_setup.h"
@@ -27,10 +31,46 @@ std::string quoted_part_names(const matgeom::TriangleMesh& mesh) {
   return names.empty() ? "its parts have no names" : "its parts: " + names;
 }
 
-matgeom::ObjectAsset read_source(const ObjectDescription& object) {
+// The parts of `whole`, the asset of `file`, that the object is made of (MeshFile::only_parts,
+// except_parts). Throws std::runtime_error starting with the path for a part name the file does
+// not have (listing its parts) or a choice that leaves no triangle.
+matgeom::ObjectAsset chosen_parts(const matgeom::ObjectAsset& whole, const MeshFile& file) {
+  const bool only = !file.only_parts.empty();
+  const std::vector<std::string>& names = only ? file.only_parts : file.except_parts;
+  if (names.empty()) return whole;
+  matgeom::NamedParts parts = matgeom::named_parts(whole.mesh, names);
+  if (parts.missing)
+    throw std::runtime_error(fmt::format("{}: {} \"{}\", but the file has no part of that name ({})", file.path,
+                                         only ? "only_parts names" : "except_parts names", *parts.missing,
+                                         quoted_part_names(whole.mesh)));
+  if (!only) parts.named.flip();
+  try {
+    return matgeom::kept_parts(whole, parts.named);
+  } catch (const std::invalid_argument&) {
+    throw std::runtime_error(fmt::format("{}: {} leaves no part with a triangle ({})", file.path,
+                                         only ? "only_parts" : "except_parts", quoted_part_names(whole.mesh)));
+  }
+}
+
+// Mesh files read once per build, whatever the number of objects made from one (a scan's object
+// and the room around it are two).
+class MeshFileReads {
+ public:
+  const matgeom::ObjectAsset& whole(const MeshFile& file) {
+    const auto key = std::make_pair(file.path, file.read_options.auto_smooth_deg);
+    auto found = read_.find(key);
+    if (found == read_.end()) found = read_.emplace(key, matgeom::read_object(file.path, file.read_options)).first;
+    return found->second;
+  }
+
+ private:
+  std::map<std::pair<std::string, std::optional<double>>, matgeom::ObjectAsset> read_;
+};
+
+matgeom::ObjectAsset read_source(const ObjectDescription& object, MeshFileReads& reads) {
   if (const auto* file = std::get_if<MeshFile>(&object.source)) {
     try {
-      return read_mesh_file(*file);
+      return chosen_parts(reads.whole(*file), *file);
     } catch (const std::exception& e) {
       throw object.origin.error("/mesh", e.what());
     }
@@ -52,8 +92,8 @@ matgeom::ObjectAsset read_source(const ObjectDescription& object) {
 }
 
 // Any failure to read a user's mesh is a problem with that input, whatever the library throws.
-matgeom::ObjectAsset load_object(const ObjectDescription& object) {
-  matgeom::ObjectAsset asset = read_source(object);
+matgeom::ObjectAsset load_object(const ObjectDescription& object, MeshFileReads& reads) {
+  matgeom::ObjectAsset asset = read_source(object, reads);
   const bool needs_uvs = object.uv_pass == UvPassMode::Always ||
                          (object.uv_pass == UvPassMode::WhenMissing && asset.mesh.uvs.empty());
   if (object.uv_scale != 1.0 && !needs_uvs)
@@ -219,28 +259,6 @@ void add_world(const BackgroundDescription& description, BuiltScene& built, Envi
 
 }  // namespace
 
-matgeom::ObjectAsset read_mesh_file(const MeshFile& file) {
-  matgeom::ObjectAsset asset = matgeom::read_object(file.path, file.read_options);
-  const bool only = !file.only_parts.empty();
-  const std::vector<std::string>& named = only ? file.only_parts : file.except_parts;
-  if (named.empty()) return asset;
-  std::vector<bool> keep(asset.mesh.part_count(), !only);
-  for (const std::string& name : named) {
-    const auto found = std::find(asset.mesh.part_names.begin(), asset.mesh.part_names.end(), name);
-    if (found == asset.mesh.part_names.end())
-      throw std::runtime_error(fmt::format("{}: {} \"{}\", but the file has no part of that name ({})", file.path,
-                                           only ? "only_parts names" : "except_parts names", name,
-                                           quoted_part_names(asset.mesh)));
-    keep[static_cast<size_t>(found - asset.mesh.part_names.begin())] = only;
-  }
-  try {
-    return matgeom::kept_parts(asset, keep);
-  } catch (const std::invalid_argument&) {
-    throw std::runtime_error(fmt::format("{}: {} leaves no part with a triangle ({})", file.path,
-                                         only ? "only_parts" : "except_parts", quoted_part_names(asset.mesh)));
-  }
-}
-
 void set_scene_lighting(BuiltScene& built, const LightsDescription& lights, const BackgroundDescription& background,
                         EnvironmentImages* images) {
   built.scene.clear_lamps();
@@ -251,8 +269,9 @@ void set_scene_lighting(BuiltScene& built, const LightsDescription& lights, cons
 
 BuiltScene build_scene(const SceneDescription& description, const std::atomic<bool>* cancel) {
   std::vector<matgeom::ObjectAsset> assets;
+  MeshFileReads reads;
   for (const ObjectDescription& object : description.objects) {
-    assets.push_back(load_object(object));
+    assets.push_back(load_object(object, reads));
     place_object(object, assets.back().mesh);
   }
   const matgeom::TriangleMesh surface = merged_surface(assets, description.objects);
@@ -282,7 +301,8 @@ BuiltScene build_scene(const SceneDescription& description, const std::atomic<bo
 }
 
 matgeom::TriangleMesh placed_object_surface(const ObjectDescription& object) {
-  matgeom::TriangleMesh mesh = read_source(object).mesh;
+  MeshFileReads reads;
+  matgeom::TriangleMesh mesh = read_source(object, reads).mesh;
   place_object(object, mesh);
   return mesh;
 }

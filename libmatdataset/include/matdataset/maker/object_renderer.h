@@ -142,8 +142,11 @@ class ObjectRenderer {
   ViewSurroundings scan_view(size_t view);
   // What every build of the scene is followed by: the distractors sized, the meter's card hidden.
   void settle_built_scene();
-  // The illuminance of the card measured in the scene (scene_meter.h) under the lighting there now.
-  double measured_card_lux();
+  // The illuminance of the card measured in the scene (scene_meter.h) under the lighting there now,
+  // whose scene-file text is `lighting`: measured once per lighting of the selected variant (a
+  // fixed rig lights every view alike; the room's materials change with the variant).
+  double measured_card_lux(const std::string& lighting);
+  std::map<std::string, double> card_lux_;
   // Each slot's sizing, from its surface as built (which is left at that size for its materials).
   void size_distractors();
   void place_distractors_in_scene(const std::vector<DistractorPlacement>& placements);
