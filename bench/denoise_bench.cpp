@@ -47,7 +47,7 @@ int main(int argc, char** argv) {
       settings.seed = 1;
       std::string row = fmt::format("| {} | {} | {} ", object, material, spp);
       for (const bool denoised : {false, true}) {
-        settings.denoise = denoised;
+        settings.denoise = denoised ? matrender::Denoising::Filter : matrender::Denoising::Off;
         matrender::FrameBuffers frame;
         const matrender::RenderStats stats = matrender::render(built.scene, camera, settings, frame);
         row += fmt::format("| {:.2f} % | {:.3f} ", 100.0 * bench::rmse(frame.color, reference.color) / brightness, stats.seconds);

@@ -699,7 +699,7 @@ int main(int argc, char** argv) {
   // The adaptive series may take up to 4x the configuration's 128 samples, as Cycles does (CyclesOptions).
   std::vector<std::string> mode_texts = {
       "fixed:render.samples=32|64|128", "adaptive:render.noise_threshold=0.05|0.02|0.01|0.005,render.samples=512",
-      "adaptive+denoise:render.noise_threshold=0.05|0.02|0.01|0.005,render.samples=512,render.denoise=true"};
+      "adaptive+denoise:render.noise_threshold=0.05|0.02|0.01|0.005,render.samples=512,render.denoise=filter"};
   std::vector<std::string> set_texts, lighting_texts, surroundings_texts;
   int views = 1, reference_frames = 4, reference_factor = 8, threads = 0;
   double target_percent = 1.6;

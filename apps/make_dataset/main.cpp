@@ -116,7 +116,8 @@ void add_options(CLI::App& app, Options& options) {
         });
   named("--spp", "render.samples", "samples per pixel (with --noise-threshold: the most a pixel takes)", scalar);
   named("--noise-threshold", "render.noise_threshold", "adaptive sampling as Cycles' Noise Threshold (0: off)", scalar);
-  named("--denoise", "render.denoise", "true: filter each image (docs/conventions.md, \"Denoising\")", scalar);
+  named("--denoise", "render.denoise", "false, filter or learned: denoise each image (docs/conventions.md, \"Denoising\")",
+        scalar);
   named("--exposure", "render.exposure", "stops applied to the images, or auto (the grey-card rule)", scalar);
   named("--ao-error", "render.ambient_occlusion.error", "the standard error ORM's R may have at most", scalar);
   named("--material-resolution", "render.material_resolution", "texels per side of library materials", scalar);

@@ -15,6 +15,7 @@
 #include "matgeom/builtin/builtin_objects.h"
 #include "matgeom/shading_normals.h"
 #include "matrender/builtin_environments.h"
+#include "matrender/denoiser.h"
 #include "matrender/camera.h"
 #include "matrender/image_io.h"
 #include "matrender/paper_setup.h"
@@ -525,6 +526,8 @@ void apply_render_options(const Options& o, SceneDescription& scene) {
     };
     throw InputError(matrender::conflict_refusal(*conflict, spelled(conflict->first), spelled(conflict->second)));
   }
+  if (const std::optional<std::string> problem = matrender::denoising_problem(s.denoise))
+    throw InputError("denoise: " + *problem);
   if (o.exposure) scene.exposure_stops = *o.exposure;
   s.threads = app_support::announced_worker_threads("render_object", "--threads", o.threads);
   // A dataset's frame takes the dataset's AOVs unless told otherwise.

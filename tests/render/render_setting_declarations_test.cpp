@@ -142,16 +142,25 @@ TEST_CASE("switches and choices are read by their declaration") {
   CHECK(*matrender::assign_text(settings, selection, "even") == R"(expected one of "importance", "uniform", got even)");
   CHECK(matrender::read_scene_text(scene_with("light_selection", "\"uniform\""), "s.json", ".").settings.light_selection ==
         matrender::LightSelection::Uniform);
+  // denoise's "false" is JSON's false too; true (which meant the filter before there were two
+  // denoisers) is refused with the choices.
+  CHECK(matrender::read_scene_text(scene_with("denoise", "false"), "s.json", ".").settings.denoise ==
+        matrender::Denoising::Off);
+  CHECK(matrender::read_scene_text(scene_with("denoise", "\"filter\""), "s.json", ".").settings.denoise ==
+        matrender::Denoising::Filter);
+  CHECK(scene_refusal(scene_with("denoise", "true")) ==
+        R"(s.json: /render/denoise: expected one of "false", "filter", "learned", got true)");
 }
 
 TEST_CASE("settings that exclude each other are refused by the scene file and by render()") {
   const std::string json = fmt::format(
       R"({{"camera": {{"position": [1, -1, 0.5], "look_at": [0, 0, 0.15]}}, "lights": {{"rig": {{}}}},
-           "objects": [{{"builtin": "vase"}}], "render": {{"denoise": true, "cycles_parity": true}}}})");
+           "objects": [{{"builtin": "vase"}}], "render": {{"denoise": "filter", "cycles_parity": true}}}})");
   const std::string reason = "denoise and cycles_parity exclude each other: Blender 3.4 in Debian has no denoiser";
   CHECK(scene_refusal(json) == "s.json: /render: " + reason);
   matrender::RenderSettings settings;
-  settings.denoise = settings.cycles_parity = true;
+  settings.denoise = matrender::Denoising::Filter;
+  settings.cycles_parity = true;
   CHECK(render_refusal(settings) == "render: " + reason);
   settings.cycles_parity = false;
   CHECK(render_refusal(settings).empty());

@@ -17,7 +17,7 @@
 #include "integrator/render_statistics.h"
 #include "integrator/tile_schedule.h"
 #include "lights/light_sampler.h"
-#include "matrender/denoise.h"
+#include "matrender/atrous_filter.h"
 #include "matrender/render.h"
 #include "matrender/scene.h"
 #include "scene/scene_data.h"
@@ -235,12 +235,12 @@ TEST_CASE("The denoiser runs as a post-filter on the finished frame", "[render]"
   FloorPixels floor;
   RenderSettings settings;
   settings.samples_per_pixel = 8;
-  settings.aovs = default_aovs() | kDenoiseGuideAovs;
+  settings.aovs = default_aovs() | kAtrousFilterGuideAovs;
   FrameBuffers raw, filtered;
   render(floor.scene, floor.camera, settings, raw);
-  settings.denoise = true;
+  settings.denoise = Denoising::Filter;
   render(floor.scene, floor.camera, settings, filtered);
-  denoise(raw);
+  atrous_filter(raw);
   CHECK(std::memcmp(raw.color.data(), filtered.color.data(), raw.color.size() * sizeof(float)) == 0);
   CHECK(raw.depth == filtered.depth);
 }

@@ -174,7 +174,9 @@ bool DocumentNode::boolean() const {
 }
 
 size_t DocumentNode::choice(const std::vector<std::string>& choices) const {
-  const auto it = is_text() ? std::find(choices.begin(), choices.end(), value_.scalar) : choices.end();
+  // A boolean matches the choice spelled as it is (denoise: false).
+  const bool spelled = is_text() || value_.kind == Kind::Boolean;
+  const auto it = spelled ? std::find(choices.begin(), choices.end(), value_.scalar) : choices.end();
   if (it == choices.end()) fail_expected("one of " + quoted_list(choices));
   return static_cast<size_t>(it - choices.begin());
 }

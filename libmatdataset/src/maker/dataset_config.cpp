@@ -19,6 +19,7 @@
 #include "matdataset/format/dataset_writer.h"
 #include "matgeom/builtin/builtin_objects.h"
 #include "matrender/scene_file.h"
+#include "matrender/denoiser.h"
 
 namespace matdataset {
 namespace {
@@ -315,6 +316,8 @@ void read_render(const DocumentNode& v, RenderConfig& render) {
     }
   }
   read_dataset_render_keys(v, render.settings);
+  if (const std::optional<std::string> problem = matrender::denoising_problem(render.settings.denoise))
+    v.required("denoise").fail(*problem);
   if (const std::optional<DocumentNode> exposure = v.find("exposure")) {
     if (exposure->is_word("auto"))
       render.exposure_stops = std::nullopt;

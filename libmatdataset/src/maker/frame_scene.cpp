@@ -7,6 +7,7 @@
 #include "matbase/file/input_file.h"
 #include "matbase/input_error.h"
 #include "matdataset/maker/dataset_config.h"
+#include "matdataset/maker/render_keys.h"
 #include "matrender/render_setting_declarations.h"
 
 namespace matdataset {
@@ -33,18 +34,8 @@ const ordered_json& member(const ordered_json& json, const std::string& key, con
 // Every scene setting of `settings` as the scene file's render block spells it.
 ordered_json render_block(const matrender::RenderSettings& settings) {
   ordered_json render = ordered_json::object();
-  for (const matrender::RenderSettingDeclaration& setting : matrender::render_setting_declarations()) {
-    if (setting.scope != matrender::SettingScope::Scene) continue;
-    std::visit(
-        [&](auto field) {
-          using Value = std::decay_t<decltype(settings.*field)>;
-          if constexpr (std::is_same_v<Value, matrender::LightSelection>)
-            render[std::string(setting.name)] = std::string(setting.choices[static_cast<size_t>(settings.*field)]);
-          else
-            render[std::string(setting.name)] = settings.*field;
-        },
-        setting.field);
-  }
+  for (const matrender::RenderSettingDeclaration& setting : matrender::render_setting_declarations())
+    if (setting.scope == matrender::SettingScope::Scene) render[std::string(setting.name)] = render_setting_json(settings, setting);
   return render;
 }
 

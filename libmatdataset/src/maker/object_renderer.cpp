@@ -11,6 +11,7 @@
 
 #include "matbase/pi.h"
 #include "matdataset/maker/dataset_checks.h"
+#include "matdataset/maker/render_keys.h"
 #include "matgeom/bounding_sphere.h"
 #include "matgeom/uv/uv_scale.h"
 #include "matmaterial/folder/material_folder.h"
@@ -105,6 +106,7 @@ matmaterial::MaterialInputs with_images_appended(matmaterial::FolderMaterial mat
 }
 
 ordered_json vector_json(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
+
 
 ordered_json matrix_json(const glm::dmat4& m) {
   ordered_json rows = ordered_json::array();
@@ -578,7 +580,7 @@ std::string ObjectRenderer::provenance_json(const DatasetPlan& plan, size_t vari
                     {"noise_threshold", rs.noise_threshold},
                     {"min_samples", rs.min_samples},
                     {"fewest_samples", fewest_samples()},
-                    {"denoise", rs.denoise},
+                    {"denoise", render_setting_json(rs, matrender::render_setting("denoise"))},
                     {"max_bounces", rs.max_bounces},
                     {"max_diffuse_bounces", rs.max_diffuse_bounces},
                     {"max_glossy_bounces", rs.max_glossy_bounces},

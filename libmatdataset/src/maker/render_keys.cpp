@@ -45,6 +45,18 @@ const std::vector<DatasetRenderKey>& dataset_render_keys() {
   return keys;
 }
 
+nlohmann::ordered_json render_setting_json(const matrender::RenderSettings& settings,
+                                           const matrender::RenderSettingDeclaration& setting) {
+  const std::string text = matrender::value_text(settings, setting);
+  switch (setting.form) {
+    case matrender::SettingForm::Switch: return text == "true";
+    case matrender::SettingForm::Choice: return text == "false" ? nlohmann::ordered_json(false) : nlohmann::ordered_json(text);
+    case matrender::SettingForm::WholeNumber:
+    case matrender::SettingForm::Number: break;
+  }
+  return std::visit([&settings](auto field) { return nlohmann::ordered_json(settings.*field); }, setting.field);
+}
+
 matrender::RenderSettingDeclaration dataset_declaration(const DatasetRenderKey& key) {
   matrender::RenderSettingDeclaration setting = matrender::render_setting(key.setting);
   if (key.most) setting.most = std::min(setting.most, *key.most);

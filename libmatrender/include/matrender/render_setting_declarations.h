@@ -39,7 +39,7 @@ enum class SettingScope { Scene, Run };
 
 struct RenderSettingDeclaration {
   using Field = std::variant<int RenderSettings::*, uint32_t RenderSettings::*, double RenderSettings::*,
-                             bool RenderSettings::*, LightSelection RenderSettings::*>;
+                             bool RenderSettings::*, LightSelection RenderSettings::*, Denoising RenderSettings::*>;
 
   std::string_view name;  // the scene file's key; options spell it with hyphens (--max-bounces)
   SettingForm form;
@@ -84,7 +84,7 @@ void assign_choice(RenderSettings& settings, const RenderSettingDeclaration& set
 std::optional<std::string> assign_text(RenderSettings& settings, const RenderSettingDeclaration& setting,
                                        const std::string& text);
 
-// Two switches that cannot both be on, and why.
+// Two settings that cannot both be on (a switch true, a choice other than its first), and why.
 struct SettingConflict {
   std::string_view first;
   std::string_view second;

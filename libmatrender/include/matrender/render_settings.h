@@ -15,6 +15,10 @@ namespace matrender {
 // does. Only the noise differs.
 enum class LightSelection { Importance, Uniform };
 
+// What denoises the finished colour (matrender/denoiser.h): nothing, the a-trous filter
+// (matrender/atrous_filter.h), or the learned denoiser the program provides.
+enum class Denoising { Off, Filter, Learned };
+
 struct RenderSettings {
   int samples_per_pixel = 64;
   double filter_width = 1.5;  // pixels, Blender's Film > Pixel Filter > Width
@@ -31,8 +35,8 @@ struct RenderSettings {
   bool transparent_background = false;
   bool cycles_parity = false;
   LightSelection light_selection = LightSelection::Importance;
-  // The denoiser (matrender/denoise.h) fills its guide AOVs (kDenoiseGuideAovs) too.
-  bool denoise = false;
+  // A denoiser fills the guide AOVs it reads too (Denoiser::guide_aovs).
+  Denoising denoise = Denoising::Off;
   bool mipmaps = true;
   uint32_t aovs = default_aovs();
   // Ambient occlusion (AovAmbientOcclusion): with an error > 0 each pixel traces as many rays as

@@ -20,7 +20,7 @@
 #include "lights/light_sampler.h"
 #include "matbase/memory_limit.h"
 #include "matbase/pi.h"
-#include "matrender/denoise.h"
+#include "matrender/denoiser.h"
 #include "matrender/scene_limits.h"
 #include "scene/scene_data.h"
 #include "texture/texel_cache.h"
@@ -29,13 +29,22 @@
 namespace matrender {
 namespace {
 
-// The AOVs a render fills: those asked for, and the denoiser's guides when it runs.
-uint32_t rendered_aovs(const RenderSettings& settings) {
-  return settings.aovs | (settings.denoise ? kDenoiseGuideAovs : 0u);
+// The AOVs a render fills: those asked for, and the denoiser's guides when one runs.
+uint32_t rendered_aovs(const RenderSettings& settings, const Denoiser* denoiser) {
+  return settings.aovs | (denoiser ? denoiser->guide_aovs() : 0u);
 }
 
-// Everything a render is given, checked before any work: the camera, the settings (their
-// declarations), and the memory the frame needs.
+// The denoiser the settings name, refused as render's own when the program has none.
+std::shared_ptr<const Denoiser> render_denoiser(const RenderSettings& settings) {
+  try {
+    return denoiser_for(settings.denoise);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("render: ") + e.what());
+  }
+}
+
+// Everything a render is given, checked before any work: the camera and the settings (their
+// declarations).
 void check_render(const Camera& camera, const RenderSettings& settings) {
   if (camera.width < 1 || camera.height < 1)
     throw std::invalid_argument("render: image size must be at least 1 x 1, got " +
@@ -47,9 +56,13 @@ void check_render(const Camera& camera, const RenderSettings& settings) {
     throw std::invalid_argument("render: vertical field of view must be in (0, pi) radians");
   if (const std::optional<std::string> problem = render_settings_problem(settings))
     throw std::invalid_argument("render: " + *problem);
+}
+
+// The memory the frame needs, with the AOVs the denoiser reads.
+void check_frame_memory(const Camera& camera, const RenderSettings& settings, const Denoiser* denoiser) {
   const double pixels = static_cast<double>(camera.width) * static_cast<double>(camera.height);
   const bool adaptive = settings.noise_threshold > 0.0;
-  matbase::require_memory(FrameBuffers::bytes_for(camera.width, camera.height, rendered_aovs(settings)) +
+  matbase::require_memory(FrameBuffers::bytes_for(camera.width, camera.height, rendered_aovs(settings, denoiser)) +
                               (adaptive ? pixels * (sizeof(PixelSums) + 1) : 0.0),
                           std::string(adaptive ? "the colour and AOV buffers and adaptive sampling's sums" : "the colour and AOV buffers") +
                               " of a " + std::to_string(camera.width) + " x " + std::to_string(camera.height) + " image",
@@ -57,11 +70,8 @@ void check_render(const Camera& camera, const RenderSettings& settings) {
 }
 
 // The filters run on the finished frame: the denoiser when asked for.
-void apply_post_filters(const RenderSettings& settings, FrameBuffers& frame) {
-  if (!settings.denoise) return;
-  DenoiseSettings denoising;
-  denoising.threads = settings.threads;
-  denoise(frame, denoising);
+void apply_post_filters(const RenderSettings& settings, const Denoiser* denoiser, FrameBuffers& frame) {
+  if (denoiser) denoiser->denoise(frame, settings.threads);
 }
 
 // Runs visit_pixel(x, y, index, counts, progress) over every pixel of the image, a tile per task,
@@ -95,6 +105,8 @@ int fewest_samples_per_pixel(const RenderSettings& settings) {
 
 RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& settings, FrameBuffers& frame) {
   check_render(camera, settings);
+  const std::shared_ptr<const Denoiser> denoiser = render_denoiser(settings);
+  check_frame_memory(camera, settings, denoiser.get());
   const auto start = std::chrono::steady_clock::now();
   scene.commit();
   const SceneData& data = scene.data();
@@ -105,7 +117,7 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
   const CameraRays rays(camera);
   const PathTracer tracer(data, lights, PathSettings(settings, rays.pixel_spread_angle()));
   const glm::mat3 world_to_camera = glm::transpose(glm::mat3(rays.right(), rays.up(), rays.back()));
-  Film film(frame, camera.width, camera.height, rendered_aovs(settings), settings.transparent_background,
+  Film film(frame, camera.width, camera.height, rendered_aovs(settings, denoiser.get()), settings.transparent_background,
             world_to_camera);
   const std::optional<AdaptiveSampling> adaptive =
       AdaptiveSampling::from_settings(settings.noise_threshold, settings.min_samples);
@@ -169,7 +181,7 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
                      film.resolve(i, sums[i], counts.occlusion);
                    });
   }
-  if (!control.was_cancelled()) apply_post_filters(settings, frame);
+  if (!control.was_cancelled()) apply_post_filters(settings, denoiser.get(), frame);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return render_statistics(tile_counts, seconds, control.was_cancelled());
 }

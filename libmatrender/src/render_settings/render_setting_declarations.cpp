@@ -57,9 +57,12 @@ std::vector<RenderSettingDeclaration> declare_settings() {
       whole_number("min_samples", &S::min_samples, 0, kMaxSamplesPerPixel,
                    "with a noise threshold: samples before a pixel is first checked; 0 = Cycles' automatic "
                    "max(4, ceil(16 / threshold^0.3))"),
-      on_off("denoise", &S::denoise,
-             "filter the colour after rendering, guided by the base colour, normal, depth, label and the colour's "
-             "variance (docs/conventions.md, \"Denoising\")"),
+      {"denoise", SettingForm::Choice, SettingScope::Scene, &S::denoise, 0.0, 0.0, false, {},
+       {"false", "filter", "learned"},
+       "denoise the colour after rendering: `false`, not at all; `filter`, the a-trous filter guided by the base "
+       "colour, normal, depth, label and the colour's variance; `learned`, the network trained on our own renders, "
+       "guided by the base colour and normal, in programs built with libmatlearn (docs/conventions.md, "
+       "\"Denoising\")"},
       seed("seed", &S::seed, "sampler seed. The image depends only on the seed, not on the thread count"),
       whole_number("max_bounces", &S::max_bounces, 0, kMaxBounceLimit, "bounces of every kind together"),
       whole_number("max_diffuse_bounces", &S::max_diffuse_bounces, 0, kMaxBounceLimit, "diffuse bounces"),
@@ -189,7 +192,7 @@ void assign_switch(RenderSettings& settings, const RenderSettingDeclaration& set
 }
 
 void assign_choice(RenderSettings& settings, const RenderSettingDeclaration& setting, size_t index) {
-  settings.*std::get<LightSelection S::*>(setting.field) = static_cast<LightSelection>(index);
+  assign_number(settings, setting, static_cast<double>(index));
 }
 
 std::optional<std::string> assign_text(RenderSettings& settings, const RenderSettingDeclaration& setting,
@@ -231,9 +234,7 @@ const std::vector<SettingConflict>& setting_conflicts() {
 }
 
 std::optional<SettingConflict> settings_conflict(const RenderSettings& settings) {
-  auto on = [&settings](std::string_view name) {
-    return settings.*std::get<bool S::*>(render_setting(name).field);
-  };
+  auto on = [&settings](std::string_view name) { return number_value(settings, render_setting(name)) != 0.0; };
   for (const SettingConflict& conflict : setting_conflicts())
     if (on(conflict.first) && on(conflict.second)) return conflict;
   return std::nullopt;
@@ -254,8 +255,10 @@ std::optional<std::string> render_settings_problem(const RenderSettings& setting
 }
 
 std::string render_setting_table_row(const RenderSettingDeclaration& setting) {
-  const std::string shown_default =
-      setting.form == SettingForm::Choice ? "\"" + default_text(setting) + "\"" : default_text(setting);
+  // A choice is a JSON string, but for the choices spelled as JSON's booleans (denoise's false).
+  const std::string text = default_text(setting);
+  const bool bare = setting.form != SettingForm::Choice || text == "false" || text == "true";
+  const std::string shown_default = bare ? text : "\"" + text + "\"";
   std::string exclusions;
   for (const SettingConflict& conflict : setting_conflicts()) {
     if (conflict.first == setting.name) exclusions += fmt::format("; not with `{}`", conflict.second);

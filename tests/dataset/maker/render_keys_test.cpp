@@ -52,6 +52,21 @@ TEST_CASE("Every render key reads its declared setting, in range, and refuses ou
             fmt::format("--set (render.{}): expected true or false, got 2", key.key));
       continue;
     }
+    if (setting.form == SettingForm::Choice) {
+      // Each choice by its name (a choice named "false" as YAML's false too); anything else refused.
+      for (const std::string_view choice : setting.choices) {
+        const auto config = with_key(key, std::string(choice));
+        if (choice == "learned") {  // this program has no learned denoiser
+          CHECK(std::get<std::string>(config).find("\"learned\" needs the learned denoiser") != std::string::npos);
+          continue;
+        }
+        REQUIRE(std::holds_alternative<matdataset::DatasetConfig>(config));
+        CHECK(matrender::value_text(std::get<matdataset::DatasetConfig>(config).render.settings, setting) == choice);
+      }
+      CHECK(std::get<std::string>(with_key(key, "2")) ==
+            fmt::format("--set (render.{}): expected {}, got 2", key.key, matrender::expectation(setting)));
+      continue;
+    }
     REQUIRE((setting.form == SettingForm::WholeNumber || setting.form == SettingForm::Number));
     const std::string most = fmt::format("{}", setting.most);
     const auto config = with_key(key, most);

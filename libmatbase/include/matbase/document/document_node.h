@@ -86,7 +86,7 @@ class DocumentNode {
   // Scalars.
   std::string text() const;
   bool boolean() const;
-  size_t choice(const std::vector<std::string>& choices) const;  // the index of the text among them
+  size_t choice(const std::vector<std::string>& choices) const;  // the index of the text (or a boolean spelled as a choice) among them
   double number() const;                                          // any finite number
   // A number in [low, high], or (low, high] when low_open; an infinite bound is no bound.
   double number_in(double low, double high, bool low_open = false) const;

@@ -9,6 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "matbase/document/document_node.h"
 #include "matrender/render_setting_declarations.h"
 
@@ -37,6 +39,11 @@ matrender::RenderSettings dataset_render_defaults();
 // who adds dataset_render_top_keys() to the others it allows.
 void read_dataset_render_keys(const matbase::DocumentNode& render, matrender::RenderSettings& settings);
 std::vector<std::string> dataset_render_top_keys();
+
+// A setting's value as a scene file's render block and metadata.json spell it: a number, true or
+// false, or a choice's name (JSON's false for a choice named "false", denoise's).
+nlohmann::ordered_json render_setting_json(const matrender::RenderSettings& settings,
+                                           const matrender::RenderSettingDeclaration& setting);
 
 // The key's row of docs/make_dataset.md's table: | `render.KEY` | default | value |.
 std::string dataset_render_key_row(const DatasetRenderKey& key);

@@ -9,11 +9,12 @@
 // result on any thread count. Never part of Cycles parity (Blender 3.4 in Debian has no denoiser).
 #include <cstdint>
 
+#include "matrender/denoiser.h"
 #include "matrender/frame.h"
 
 namespace matrender {
 
-struct DenoiseSettings {
+struct AtrousFilterSettings {
   int iterations = 5;            // filter passes, the k-th with taps 2^k pixels apart (SVGF: 5)
   float sigma_luminance = 4.0f;  // SVGF's sigma_l: how many standard errors apart two pixels may be
   float sigma_normal = 128.0f;   // SVGF's sigma_n: the exponent on the normals' cosine
@@ -21,12 +22,20 @@ struct DenoiseSettings {
   int threads = 0;               // 0 = all hardware threads; the result does not depend on it
 };
 
-// The AOVs denoise() reads.
-constexpr uint32_t kDenoiseGuideAovs = AovAlpha | AovColorVariance | AovNormalWorld | AovDepth | AovLabel |
-                                       parameter_aov(MaterialParameter::BaseColor);
+// The AOVs atrous_filter() reads.
+constexpr uint32_t kAtrousFilterGuideAovs = AovAlpha | AovColorVariance | AovNormalWorld | AovDepth | AovLabel |
+                                            parameter_aov(MaterialParameter::BaseColor);
 
 // Filters frame.color in place. Throws std::invalid_argument when a guide AOV is missing or the
 // settings are out of range.
-void denoise(FrameBuffers& frame, const DenoiseSettings& settings = {});
+void atrous_filter(FrameBuffers& frame, const AtrousFilterSettings& settings = {});
+
+// The filter as render() runs it for Denoising::Filter: with the default settings and the
+// render's threads.
+class AtrousFilter final : public Denoiser {
+ public:
+  uint32_t guide_aovs() const override { return kAtrousFilterGuideAovs; }
+  void denoise(FrameBuffers& frame, int threads) const override;
+};
 
 }  // namespace matrender

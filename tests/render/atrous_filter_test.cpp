@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "matrender/camera.h"
-#include "matrender/denoise.h"
+#include "matrender/atrous_filter.h"
 #include "matrender/render.h"
 #include "matrender/scene.h"
 #include "test_scenes.h"
@@ -27,7 +27,7 @@ constexpr int kSide = 48;
 template <class Truth, class Albedo, class Label>
 FrameBuffers noisy_frame(Truth truth, Albedo albedo, Label label, float noise, uint32_t seed) {
   FrameBuffers frame;
-  frame.resize(kSide, kSide, kDenoiseGuideAovs);
+  frame.resize(kSide, kSide, kAtrousFilterGuideAovs);
   frame.transparent_background = true;
   std::mt19937 random(seed);
   std::normal_distribution<float> gaussian(0.0f, noise);
@@ -71,7 +71,7 @@ TEST_CASE("The denoiser never mixes two materials across their boundary", "[rend
   auto label = [](int x, int) { return x < kSide / 2 ? 3 : 5; };
   FrameBuffers frame = noisy_frame(truth, albedo, label, 0.1f, 1);
   const double before = rms_error(frame, truth);
-  denoise(frame);
+  atrous_filter(frame);
   for (int y = 0; y < kSide; ++y)
     for (int x = 0; x < kSide; ++x) {
       const size_t p = static_cast<size_t>(y * kSide + x);
@@ -93,7 +93,7 @@ TEST_CASE("A checker finer than a pixel keeps its mean, and the texture above it
   auto label = [](int, int) { return 7; };
   FrameBuffers frame = noisy_frame(truth, albedo, label, 0.08f, 2);
   const double before = rms_error(frame, truth);
-  denoise(frame);
+  atrous_filter(frame);
   const double after = rms_error(frame, truth);
   CAPTURE(before, after);
   CHECK(after < 0.35 * before);
@@ -105,7 +105,7 @@ TEST_CASE("A nearly black object stays finite, non-negative and less noisy", "[r
   auto label = [](int, int) { return 2; };
   FrameBuffers frame = noisy_frame(truth, albedo, label, 0.0005f, 3);
   const double before = rms_error(frame, truth);
-  denoise(frame);
+  atrous_filter(frame);
   for (const float v : frame.color) REQUIRE((std::isfinite(v) && v >= 0.0f));
   const double after = rms_error(frame, truth);
   CAPTURE(before, after);
@@ -117,7 +117,7 @@ TEST_CASE("The denoiser makes no NaN, Inf or negative value from any frame, and 
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   for (int trial = 0; trial < 20; ++trial) {
     FrameBuffers frame;
-    frame.resize(17, 11, kDenoiseGuideAovs);
+    frame.resize(17, 11, kAtrousFilterGuideAovs);
     frame.transparent_background = trial % 2 == 0;
     const size_t n = frame.alpha.size();
     for (size_t p = 0; p < n; ++p) {
@@ -137,7 +137,7 @@ TEST_CASE("The denoiser makes no NaN, Inf or negative value from any frame, and 
     frame.color[7] = INFINITY;
     frame.color_variance[5] = std::nanf("");
     const FrameBuffers before = frame;
-    denoise(frame);
+    atrous_filter(frame);
     CHECK(std::isnan(frame.color[0]));
     CHECK(frame.color[4] == -1.0f);
     CHECK(std::isinf(frame.color[7]));
@@ -156,29 +156,29 @@ TEST_CASE("The denoiser gives the same image on one and two threads", "[render]"
   auto albedo = [](int x, int) { return glm::vec3(x % 3 ? 0.5f : 0.3f); };
   auto label = [](int x, int y) { return (x + y) % 17 == 0 ? 2 : 1; };
   FrameBuffers one = noisy_frame(truth, albedo, label, 0.05f, 5), two = one;
-  DenoiseSettings settings;
+  AtrousFilterSettings settings;
   settings.threads = 1;
-  denoise(one, settings);
+  atrous_filter(one, settings);
   settings.threads = 2;
-  denoise(two, settings);
+  atrous_filter(two, settings);
   CHECK(std::memcmp(one.color.data(), two.color.data(), one.color.size() * sizeof(float)) == 0);
 }
 
 TEST_CASE("The denoiser refuses frames without its guides and settings out of range", "[render]") {
   FrameBuffers frame;
   frame.resize(4, 4, AovAlpha | AovDepth);
-  CHECK_THROWS_WITH(denoise(frame), Catch::Contains("denoise: the frame has no colour variance"));
-  frame.resize(4, 4, kDenoiseGuideAovs);
-  DenoiseSettings settings;
+  CHECK_THROWS_WITH(atrous_filter(frame), Catch::Contains("atrous_filter: the frame has no colour variance"));
+  frame.resize(4, 4, kAtrousFilterGuideAovs);
+  AtrousFilterSettings settings;
   settings.iterations = 13;
-  CHECK_THROWS_WITH(denoise(frame, settings), Catch::Contains("iterations"));
+  CHECK_THROWS_WITH(atrous_filter(frame, settings), Catch::Contains("iterations"));
   settings.iterations = 5;
   settings.sigma_luminance = std::nanf("");
-  CHECK_THROWS_WITH(denoise(frame, settings), Catch::Contains("sigma"));
+  CHECK_THROWS_WITH(atrous_filter(frame, settings), Catch::Contains("sigma"));
   Scene scene;
   scene.add_mesh(test_scenes::horizontal_square(1.0), {scene.add_material(test_scenes::lambert(0.5f))});
   RenderSettings render_settings;
-  render_settings.denoise = true;
+  render_settings.denoise = Denoising::Filter;
   render_settings.cycles_parity = true;
   CHECK_THROWS_WITH(render(scene, Camera::look_at({0, 0, 1}, {0, 0, 0}, {0, 1, 0}, 0.5, 8, 8), render_settings, frame),
                     "render: denoise and cycles_parity exclude each other: Blender 3.4 in Debian has no denoiser");
@@ -211,7 +211,7 @@ Comparison render_ball(const Material& ball, int spp, bool denoised) {
   render(scene, camera, settings, result.reference);
   settings.samples_per_pixel = spp;
   settings.seed = 1;
-  settings.denoise = denoised;
+  settings.denoise = denoised ? Denoising::Filter : Denoising::Off;
   render(scene, camera, settings, result.frame);
   double sum = 0.0;
   for (size_t k = 0; k < result.frame.color.size(); ++k) {
