@@ -228,11 +228,12 @@ int make(const Options& options) {
                                                             : " (too few groups to fill every split)")
                    : "");
   std::string folders;
-  bool surroundings = false;
-  for (const matdataset::ObjectConfig& object : config.objects)
-    surroundings |= object.surroundings.present();
-  for (const matdataset::DatasetMapInfo& map : matdataset::dataset_maps())
-    if (matdataset::frame_has_map(map, surroundings)) folders += std::string(map.folder) + "/, ";
+  for (const matdataset::DatasetMapInfo& map : matdataset::dataset_maps()) {
+    bool written = false;
+    for (size_t object = 0; object < config.objects.size(); ++object)
+      written |= matdataset::frame_has_map(map, matdataset::frame_contents(config, object));
+    if (written) folders += std::string(map.folder) + "/, ";
+  }
   fmt::print("wrote {} ({}): per object and variant {}transforms.json, metadata.json; config/ holds the split files\n",
              config.output, matbase::byte_size_text(static_cast<double>(matdataset::folder_bytes(config.output))),
              folders);

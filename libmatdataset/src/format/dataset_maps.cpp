@@ -17,25 +17,29 @@ namespace fs = std::filesystem;
 
 // The encodings, one line each, are the docs' table (docs/dataset_format.md, "Per frame").
 constexpr std::array<DatasetMapInfo, kDatasetMapCount> kMaps = {{
-    {DatasetMap::Albedo, "albedo", ".png", 4, "file_path_albedo", true, false,
+    {DatasetMap::Albedo, "albedo", ".png", 4, "file_path_albedo", true, MapPresence::Always,
      "base colour, sRGB-encoded 8-bit, straight alpha = coverage"},
-    {DatasetMap::Orm, "ORM", ".png", 4, "file_path_orm", true, false,
+    {DatasetMap::Orm, "ORM", ".png", 4, "file_path_orm", true, MapPresence::Always,
      "R ambient occlusion, G roughness, B metallic, linear 8-bit; A = 255 where a surface is"},
-    {DatasetMap::Depth, "depth", ".exr", 4, "file_path_depth", true, false,
+    {DatasetMap::Depth, "depth", ".exr", 4, "file_path_depth", true, MapPresence::Always,
      "R = G = B = depth along the camera axis in metres (32-bit float, never scaled by coverage); A = coverage"},
-    {DatasetMap::NormalMaterial, "normal_mat", ".png", 4, "file_path_normal_mat", true, false,
+    {DatasetMap::NormalMaterial, "normal_mat", ".png", 4, "file_path_normal_mat", true, MapPresence::Always,
      "the normal map's tangent-space normal, 0.5 n + 0.5, 8-bit; A = 255 where a surface is"},
-    {DatasetMap::NormalObject, "normal_obj", ".png", 4, "file_path_normal", true, false,
+    {DatasetMap::NormalObject, "normal_obj", ".png", 4, "file_path_normal", true, MapPresence::Always,
      "world-space shading normal, 0.5 n + 0.5, 8-bit; A = 255 where a surface is"},
-    {DatasetMap::Label, "label", ".png", 1, "file_path_label", true, false,
+    {DatasetMap::Label, "label", ".png", 1, "file_path_label", true, MapPresence::Always,
      "material class id (8-bit grey) of one sample per pixel, nonzero exactly where that sample is on the target "
      "object: the object mask (for an object alone, exactly where coverage > 0)"},
-    {DatasetMap::SampleCount, "sample_count", ".png", 1, "file_path_sample_count", false, false,
+    {DatasetMap::SampleCount, "sample_count", ".png", 1, "file_path_sample_count", false, MapPresence::Always,
      "camera samples the pixel took (16-bit grey, every pixel): the render's samples, or fewer where adaptive sampling stopped it"},
-    {DatasetMap::Region, "region", ".png", 1, "file_path_region", false, true,
+    {DatasetMap::Region, "region", ".png", 1, "file_path_region", false, MapPresence::WithSurroundings,
      "frames with surroundings only: what the label's sample is on, 0 background, 1 surroundings, 2 the target "
      "(8-bit grey); 2 exactly where the label is nonzero"},
-    {DatasetMap::Images, "images", ".png", 4, "file_path", true, false,
+    {DatasetMap::HdrImages, "images_hdr", ".exr", 4, "file_path_hdr", false, MapPresence::WithHdrImages,
+     "datasets made with render.hdr_images only: the render in 32-bit floats, scene-linear Rec.709 RGB before "
+     "the exposure images/ applies, premultiplied by A = coverage (1 over a "
+     "background camera rays see)"},
+    {DatasetMap::Images, "images", ".png", 4, "file_path", true, MapPresence::Always,
      "the render, sRGB-encoded 8-bit, straight alpha = coverage"},
 }};
 
@@ -133,9 +137,9 @@ void write_frame_maps(const fs::path& variant_folder, const std::string& stem, c
     if (count < 1 || count > kMaxSampleCount)
       throw std::invalid_argument("frame maps: sample count " + std::to_string(count) +
                                   " does not fit the 16-bit sample count map (1 to 65535)");
-  const bool surroundings = !maps.region.empty();
+  const FrameContents contents = maps.contents();
   for (const DatasetMapInfo& info : kMaps)
-    if (frame_has_map(info, surroundings)) fs::create_directories(variant_folder / info.folder);
+    if (frame_has_map(info, contents)) fs::create_directories(variant_folder / info.folder);
   matbase::AtomicFileSet set(map_file(variant_folder, kMaps.back(), stem));
   auto path = [&](DatasetMap map) { return map_file(variant_folder, kMaps[static_cast<size_t>(map)], stem).string(); };
 
@@ -170,22 +174,30 @@ void write_frame_maps(const fs::path& variant_folder, const std::string& stem, c
   const std::vector<float> sample_count(maps.sample_count.begin(), maps.sample_count.end());
   matbase::write_data_png(path(DatasetMap::SampleCount), w, h, 1, sample_count.data(), 1.0, 0.0, true, &set);
 
-  if (surroundings) {
+  if (contents.surroundings) {
     const std::vector<float> region(maps.region.begin(), maps.region.end());
     matbase::write_data_png(path(DatasetMap::Region), w, h, 1, region.data(), 1.0, 0.0, false, &set);
   }
 
   // Over a background camera rays see, every pixel is opaque (alpha 1, not the coverage).
   const std::vector<float> opaque = maps.opaque_background ? std::vector<float>(n, 1.0f) : std::vector<float>();
+  if (contents.hdr_images) {
+    std::vector<float> rgba(4 * n);
+    for (size_t p = 0; p < n; ++p) {
+      for (size_t c = 0; c < 3; ++c) rgba[4 * p + c] = maps.color[3 * p + c];
+      rgba[4 * p + 3] = maps.opaque_background ? 1.0f : maps.coverage[p];
+    }
+    matbase::write_exr(path(DatasetMap::HdrImages), w, h, {"R", "G", "B", "A"}, rgba.data(), &set);
+  }
   matbase::write_display_png(path(DatasetMap::Images), w, h, maps.color.data(),
                              maps.opaque_background ? opaque.data() : maps.coverage.data(), maps.exposure_stops, &set);
   set.commit();
 }
 
 bool frame_is_complete(const fs::path& variant_folder, const std::string& stem, int width, int height,
-                       bool surroundings) {
+                       const FrameContents& contents) {
   for (const DatasetMapInfo& info : kMaps) {
-    if (!frame_has_map(info, surroundings)) continue;
+    if (!frame_has_map(info, contents)) continue;
     const fs::path file = map_file(variant_folder, info, stem);
     std::error_code error;
     if (!fs::is_regular_file(file, error)) return false;

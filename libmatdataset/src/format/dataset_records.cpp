@@ -38,7 +38,7 @@ CameraIntrinsics pinhole_intrinsics(int width, int height, double vertical_fov) 
 }
 
 void write_transforms(const fs::path& variant_folder, const CameraIntrinsics& k, const std::vector<FramePose>& frames,
-                      bool surroundings) {
+                      const FrameContents& contents) {
   ordered_json json;
   json["camera_angle_x"] = 2.0 * std::atan(0.5 * k.width / k.fl_x);
   json["camera_angle_y"] = 2.0 * std::atan(0.5 * k.height / k.fl_y);
@@ -58,9 +58,9 @@ void write_transforms(const fs::path& variant_folder, const CameraIntrinsics& k,
       const DatasetMapInfo& info = dataset_maps()[static_cast<size_t>(map)];
       entry[info.transforms_key] = std::string(info.folder) + "/" + frame.stem;  // no extension, as the repository
     }
-    if (surroundings) {
-      const DatasetMapInfo& region = dataset_maps()[static_cast<size_t>(DatasetMap::Region)];
-      entry[region.transforms_key] = std::string(region.folder) + "/" + frame.stem;
+    for (const DatasetMap map : {DatasetMap::Region, DatasetMap::HdrImages}) {
+      const DatasetMapInfo& info = dataset_maps()[static_cast<size_t>(map)];
+      if (frame_has_map(info, contents)) entry[info.transforms_key] = std::string(info.folder) + "/" + frame.stem;
     }
     entry["rotation"] = kPlaceholderRotation;
     const ordered_json lighting = frame.lighting_json.empty() ? ordered_json() : ordered_json::parse(frame.lighting_json);
@@ -93,7 +93,7 @@ std::string variant_metadata_text(const VariantMetadata& metadata) {
                  {"label_id", slot->label_id}};
   ordered_json structure = ordered_json::array();
   for (const DatasetMapInfo& info : dataset_maps())
-    if (frame_has_map(info, metadata.surroundings)) structure.push_back(info.folder);
+    if (frame_has_map(info, metadata.contents)) structure.push_back(info.folder);
   const ordered_json provenance = ordered_json::parse(metadata.provenance_json, nullptr, false);
   if (!provenance.is_object()) throw std::invalid_argument("variant metadata: the provenance is not a JSON object");
 

@@ -285,7 +285,7 @@ void verify_frame(const fs::path& folder, const std::string& stem, const Variant
     // Our own maps are checked where the variant has their folder: the repository's datasets
     // have none of them.
     if (!info.repository && !fs::is_directory(folder / info.folder) &&
-        !(info.surroundings_only && expected.surroundings))
+        !(info.presence == MapPresence::WithSurroundings && expected.surroundings))
       continue;
     const fs::path file = folder / info.folder / (stem + info.extension);
     if (!fs::is_regular_file(file)) {

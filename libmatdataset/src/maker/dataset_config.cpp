@@ -302,7 +302,7 @@ void read_camera(const DocumentNode& v, CameraConfig& camera) {
 void read_render(const DocumentNode& v, RenderConfig& render) {
   std::vector<std::string> keys{"resolution"};
   for (const std::string& key : dataset_render_top_keys()) keys.push_back(key);
-  keys.insert(keys.end(), {"exposure", "material_resolution"});
+  keys.insert(keys.end(), {"exposure", "material_resolution", "hdr_images"});
   std::vector<const char*> allowed;
   for (const std::string& key : keys) allowed.push_back(key.c_str());
   v.expect_keys(allowed);
@@ -328,6 +328,7 @@ void read_render(const DocumentNode& v, RenderConfig& render) {
   }
   if (const std::optional<DocumentNode> n = v.find("material_resolution"))
     render.material_resolution = n->integer_in(matmaterial::kMinLibraryResolution, matmaterial::kMaxLibraryResolution);
+  if (const std::optional<DocumentNode> n = v.find("hdr_images")) render.hdr_images = n->boolean();
 }
 
 void read_splits(const DocumentNode& v, DatasetConfig& config) {
@@ -418,6 +419,10 @@ matbase::InputError yaml_error(const std::string& source, const YAML::Exception&
 }
 
 }  // namespace
+
+FrameContents frame_contents(const DatasetConfig& config, size_t object) {
+  return {config.objects.at(object).surroundings.present(), config.render.hdr_images};
+}
 
 DatasetConfig load_config(const std::string& file, const std::vector<Override>& overrides) {
   if (file.empty()) return parse_config(embedded_default_yaml(), "the embedded default", fs::current_path(), overrides);

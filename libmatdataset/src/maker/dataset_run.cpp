@@ -38,7 +38,7 @@ void write_variant_records(const DatasetConfig& config, const DatasetPlan& plan,
   metadata.height = config.render.height;
   metadata.samples = config.render.settings.samples_per_pixel;
   metadata.provenance_json = renderer.provenance_json(plan, variant);
-  metadata.surroundings = renderer.has_surroundings();
+  metadata.contents = frame_contents(config, object);
   for (const char* record : {"metadata.json", "transforms.json", "material_segmentation_map.json"})
     matbase::remove_stale_temporaries(folder / record, false);
   const fs::path metadata_file = folder / "metadata.json";
@@ -55,7 +55,7 @@ void write_variant_records(const DatasetConfig& config, const DatasetPlan& plan,
   matbase::write_file_atomically(metadata_file, text);
   std::vector<FramePose> poses;
   for (const size_t view : plan.object_views[object]) poses.push_back(renderer.view_pose(view, view_stem(plan, view)));
-  write_transforms(folder, renderer.intrinsics(), poses, renderer.has_surroundings());
+  write_transforms(folder, renderer.intrinsics(), poses, frame_contents(config, object));
   write_segmentation_map_json(folder);
 }
 
@@ -112,8 +112,7 @@ RunSummary run_dataset(const DatasetConfig& config, const DatasetPlan& plan, con
         variant_material_names(config.objects[frame.object], plan.variants[frame.object][frame.variant]).front();
     const fs::path screenshot = texture_target_screenshot_path(
         texture_target_root(config), config.objects[frame.object].name, material, stem);
-    if (frame_is_complete(folder, stem, config.render.width, config.render.height,
-                          config.objects[frame.object].surroundings.present()) &&
+    if (frame_is_complete(folder, stem, config.render.width, config.render.height, frame_contents(config, frame.object)) &&
         (!config.paper_texture_layout || texture_target_screenshot_is_complete(screenshot))) {
       ++summary.skipped;
       if (!shows_object(decode(folder / "label" / (stem + ".png")).values))

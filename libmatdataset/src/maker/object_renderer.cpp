@@ -469,6 +469,7 @@ bool ObjectRenderer::render(size_t view, uint32_t seed, int threads, const std::
   maps.sample_count = std::move(frame.sample_count);
   maps.exposure_stops = lighting.exposure_stops;
   maps.opaque_background = lighting.drawn.background_visible;
+  maps.hdr_image = config_.render.hdr_images;
   return true;
 }
 

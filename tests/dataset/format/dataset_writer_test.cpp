@@ -162,18 +162,18 @@ TEST_CASE("A frame's eight maps hold the documented encodings", "[learn]") {
 TEST_CASE("A frame is complete only when every map decodes whole at its size", "[learn]") {
   const fs::path variant = fresh_dir("matpredict_writer_complete") / "o" / "var000";
   matdataset::write_frame_maps(variant, "000", test_frame());
-  CHECK(matdataset::frame_is_complete(variant, "000", kWidth, kHeight, false));
-  CHECK_FALSE(matdataset::frame_is_complete(variant, "000", kWidth + 1, kHeight, false));
-  CHECK_FALSE(matdataset::frame_is_complete(variant, "001", kWidth, kHeight, false));
+  CHECK(matdataset::frame_is_complete(variant, "000", kWidth, kHeight, {}));
+  CHECK_FALSE(matdataset::frame_is_complete(variant, "000", kWidth + 1, kHeight, {}));
+  CHECK_FALSE(matdataset::frame_is_complete(variant, "001", kWidth, kHeight, {}));
   // A file cut short since it was written.
   const fs::path orm = variant / "ORM" / "000.png";
   const auto size = fs::file_size(orm);
   fs::resize_file(orm, size / 2);
-  CHECK_FALSE(matdataset::frame_is_complete(variant, "000", kWidth, kHeight, false));
+  CHECK_FALSE(matdataset::frame_is_complete(variant, "000", kWidth, kHeight, {}));
   matdataset::write_frame_maps(variant, "000", test_frame());
-  CHECK(matdataset::frame_is_complete(variant, "000", kWidth, kHeight, false));
+  CHECK(matdataset::frame_is_complete(variant, "000", kWidth, kHeight, {}));
   fs::remove(variant / "depth" / "000.exr");
-  CHECK_FALSE(matdataset::frame_is_complete(variant, "000", kWidth, kHeight, false));
+  CHECK_FALSE(matdataset::frame_is_complete(variant, "000", kWidth, kHeight, {}));
   // No temporary is left beside the maps.
   for (const auto& entry : fs::recursive_directory_iterator(variant))
     CHECK(entry.path().filename().string().rfind(".", 0) != 0);
@@ -194,6 +194,34 @@ TEST_CASE("Frame maps of the wrong size, with a label beyond 8 bits or a sample 
                       Catch::Contains("sample count " + std::to_string(count) + " does not fit"));
   }
   CHECK_FALSE(fs::exists(variant / "images" / "000.png"));
+}
+
+TEST_CASE("With render.hdr_images a frame has its image in floats too, the colour as rendered", "[learn]") {
+  const fs::path variant = fresh_dir("matpredict_writer_hdr") / "o" / "var000";
+  matdataset::FrameMaps maps = test_frame();
+  maps.hdr_image = true;
+  maps.exposure_stops = 1.5;  // the display image's, not the HDR image's
+  maps.color[0] = 37.25f;     // beyond what a display image holds
+  matdataset::write_frame_maps(variant, "000", maps);
+  int w = 0, h = 0, channels = 0;
+  const std::vector<float> hdr = stored_values(variant / "images_hdr" / "000.exr", w, h, channels);
+  REQUIRE(channels == 4);
+  REQUIRE(w * h == static_cast<int>(maps.coverage.size()));
+  for (size_t p = 0; p < maps.coverage.size(); ++p) {
+    for (size_t c = 0; c < 3; ++c) CHECK(hdr[4 * p + c] == maps.color[3 * p + c]);
+    CHECK(hdr[4 * p + 3] == maps.coverage[p]);
+  }
+  CHECK(matdataset::frame_is_complete(variant, "000", kWidth, kHeight, {false, true}));
+  fs::remove(variant / "images_hdr" / "000.exr");
+  CHECK_FALSE(matdataset::frame_is_complete(variant, "000", kWidth, kHeight, {false, true}));
+  CHECK(matdataset::frame_is_complete(variant, "000", kWidth, kHeight, {}));
+  // transforms.json lists it where the frames have it.
+  matdataset::FramePose pose;
+  pose.stem = "000";
+  matdataset::write_transforms(variant, matdataset::pinhole_intrinsics(kWidth, kHeight, 0.7), {pose}, {false, true});
+  const nlohmann::json json = nlohmann::json::parse(std::ifstream(variant / "transforms.json"));
+  CHECK(json["frames"][0]["file_path_hdr"] == "images_hdr/000");
+  CHECK_FALSE(json["frames"][0].contains("file_path_region"));
 }
 
 TEST_CASE("transforms.json has the repository's keys, full intrinsics and a pose per frame", "[learn]") {

@@ -13,11 +13,22 @@
 
 namespace matdataset {
 
-// The maps of a frame (the repository's seven, the sample count and, in frames with surroundings,
-// the region), in the order a frame's files are staged: images/ last, because readers look for it
-// first, so a frame whose image exists has every other map too.
-enum class DatasetMap { Albedo, Orm, Depth, NormalMaterial, NormalObject, Label, SampleCount, Region, Images };
-constexpr size_t kDatasetMapCount = 9;
+// The maps of a frame (the repository's seven, the sample count, in frames with surroundings the
+// region, and where asked for the image in floats), in the order a frame's files are staged:
+// images/ last, because readers look for it first, so a frame whose image exists has every other
+// map too.
+enum class DatasetMap { Albedo, Orm, Depth, NormalMaterial, NormalObject, Label, SampleCount, Region, HdrImages, Images };
+constexpr size_t kDatasetMapCount = 10;
+
+// Which frames have a map: every frame, frames with surroundings, or those of a dataset made with
+// render.hdr_images.
+enum class MapPresence { Always, WithSurroundings, WithHdrImages };
+
+// What a variant's frames hold beyond the maps every frame has.
+struct FrameContents {
+  bool surroundings = false;  // the region map
+  bool hdr_images = false;    // the image in linear floats too
+};
 
 // The region map's values: what the hit nearest the pixel centre is on.
 enum class FrameRegion : int32_t { Background = 0, Surroundings = 1, Target = 2 };
@@ -32,12 +43,19 @@ struct DatasetMapInfo {
   int channels;                // as written
   const char* transforms_key;  // the frame's key for the file in transforms.json
   bool repository;             // the MatPredict repository writes it too (not: ours only)
-  bool surroundings_only;      // written only in frames with surroundings (an object alone has none)
+  MapPresence presence;
   const char* content;         // one line for the docs
 };
 const std::array<DatasetMapInfo, kDatasetMapCount>& dataset_maps();
-// Whether a frame with (or without) surroundings has the map.
-inline bool frame_has_map(const DatasetMapInfo& info, bool surroundings) { return surroundings || !info.surroundings_only; }
+// Whether a frame of `contents` has the map.
+inline bool frame_has_map(const DatasetMapInfo& info, const FrameContents& contents) {
+  switch (info.presence) {
+    case MapPresence::Always: return true;
+    case MapPresence::WithSurroundings: return contents.surroundings;
+    case MapPresence::WithHdrImages: return contents.hdr_images;
+  }
+  return true;
+}
 // The table as the markdown of docs/dataset_format.md (a test holds the docs to it).
 std::string dataset_maps_markdown();
 
@@ -69,9 +87,13 @@ struct FrameMaps {
   double exposure_stops = 0.0;           // applied to the image before encoding
   // The image's background is the world camera rays see: its alpha is 1, not the coverage.
   bool opaque_background = false;
+  // Write the image in linear floats too (images_hdr/).
+  bool hdr_image = false;
+
+  FrameContents contents() const { return {!region.empty(), hdr_image}; }
 };
 
-// Writes the frame's files (eight, nine with a region) into `variant_folder`'s map folders (made if missing), each
+// Writes the frame's files (eight, nine with a region or the HDR image, ten with both) into `variant_folder`'s map folders (made if missing), each
 // under a temporary name renamed when all are written, images/ last (matbase::AtomicFileSet):
 // after a crash a frame is there whole or not at all. Throws std::invalid_argument for arrays
 // of the wrong size, a label beyond 255, a region that is no FrameRegion or that disagrees with the label (a
@@ -81,9 +103,9 @@ void write_frame_maps(const std::filesystem::path& variant_folder, const std::st
 // Whether every map of the frame is there and decodes whole at width x height with its channel
 // count: what a resumed run checks before skipping a frame, so a file damaged or cut short
 // since is rendered again.
-// `surroundings`: the frame has a region map too.
+// `contents`: the maps the frame has beyond every frame's.
 bool frame_is_complete(const std::filesystem::path& variant_folder, const std::string& stem, int width, int height,
-                       bool surroundings);
+                       const FrameContents& contents);
 
 // A pinhole camera's intrinsics in pixels (OpenCV's convention: fl_x = fx, cx = principal point
 // from the left edge of the image, pixel centres at half-integers).
@@ -111,9 +133,10 @@ struct FramePose {
 // file_path, file_path_albedo, file_path_normal, file_path_orm, file_path_depth, rotation,
 // envmap) plus what it lacks: camera_angle_y, fl_x, fl_y, cx, cy, w, h, and the paths of the
 // label and normal_mat maps.
-// With `surroundings`, the frames' region maps are listed too (file_path_region).
+// The frames' region and HDR images are listed where `contents` has them (file_path_region,
+// file_path_hdr).
 void write_transforms(const std::filesystem::path& variant_folder, const CameraIntrinsics& intrinsics,
-                      const std::vector<FramePose>& frames, bool surroundings = false);
+                      const std::vector<FramePose>& frames, const FrameContents& contents = {});
 
 // The material of one slot of a variant.
 struct SlotMaterial {
@@ -129,7 +152,7 @@ struct VariantMetadata {
   // the materials and their seeds, the camera grid, the lights, the render settings, the
   // software's version), as the tool that rendered describes it: stored under "provenance".
   std::string provenance_json;
-  bool surroundings = false;  // the frames have region maps (output_structure lists them)
+  FrameContents contents;  // the maps the frames have beyond every frame's (output_structure lists them)
 };
 
 // metadata.json: the repository's variant_map, used_materials and render_summary, plus

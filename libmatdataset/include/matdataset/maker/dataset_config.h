@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "matdataset/format/dataset_splits.h"
+#include "matdataset/format/dataset_writer.h"
 #include "matdataset/maker/lighting_setups.h"
 #include "matdataset/maker/material_candidate.h"
 #include "matdataset/maker/material_variants.h"
@@ -78,6 +79,7 @@ struct RenderConfig {
   // frame's own lighting.
   std::optional<double> exposure_stops;
   int material_resolution = 1024;  // texels per side of the library's maps
+  bool hdr_images = false;  // write each image in linear floats too (images_hdr/)
 };
 
 struct DatasetConfig {
@@ -112,6 +114,9 @@ struct Override {
   // each is then read as its key needs, as an unquoted YAML scalar is, and not only as text.
   bool untyped_scalars = false;
 };
+
+// The maps object `object`'s frames have beyond every frame's.
+FrameContents frame_contents(const DatasetConfig& config, size_t object);
 
 // The embedded default: six built-in objects in three library materials, 2 x 4 views at 128 px.
 const std::string& embedded_default_yaml();
