@@ -587,7 +587,7 @@ SettingCurves measure_setting(const Request& request, const std::vector<matdatas
       std::vector<Frame> frames;
       for (const size_t view : spread_views(views, plan.views))
         frames.push_back(
-            {config.objects[object].name, view, matdataset::frame_seed(config.seed, {object, variant, view}), {}});
+            {config.objects[object].name, view, matdataset::frame_seed(config.seed, {object, variant, view}, config.render.settings.seed), {}});
       // The references first, then one renderer at a time: each holds its own scene and materials.
       std::unique_ptr<matdataset::ObjectRenderer> reference_renderer;
       for (size_t k = 0; k < frames.size() && referenced < reference_frames; ++k, ++referenced) {

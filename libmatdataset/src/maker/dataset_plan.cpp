@@ -102,9 +102,10 @@ fs::path variant_folder(const DatasetConfig& config, const DatasetPlan& plan, si
 
 std::string view_stem(const DatasetPlan& plan, size_t view) { return frame_stem(view, plan.views); }
 
-uint32_t frame_seed(uint64_t seed, const FrameRef& frame) {
+uint32_t frame_seed(uint64_t seed, const FrameRef& frame, uint32_t sample_seed) {
   uint64_t h = splitmix64(seed);
   for (const size_t index : {frame.object, frame.variant, frame.view}) h = splitmix64(h ^ static_cast<uint64_t>(index));
+  if (sample_seed != 0) h = splitmix64(h ^ sample_seed);
   return static_cast<uint32_t>(h >> 32);
 }
 

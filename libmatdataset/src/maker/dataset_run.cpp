@@ -124,7 +124,7 @@ RunSummary run_dataset(const DatasetConfig& config, const DatasetPlan& plan, con
         matbase::remove_stale_temporaries(folder / info.folder / (stem + info.extension), true);
       const Clock::time_point frame_start = Clock::now();
       FrameMaps maps;
-      if (!renderer->render(frame.view, frame_seed(config.seed, frame), options.threads, options.cancel, maps)) {
+      if (!renderer->render(frame.view, frame_seed(config.seed, frame, config.render.settings.seed), options.threads, options.cancel, maps)) {
         summary.cancelled = true;
         break;
       }

@@ -575,7 +575,7 @@ std::string ObjectRenderer::provenance_json(const DatasetPlan& plan, size_t vari
   const matrender::RenderSettings& rs = r.settings;
   ordered_json seeds = ordered_json::object();
   for (const size_t view : plan.object_views[object])
-    seeds[view_stem(plan, view)] = frame_seed(config_.seed, {object, variant, view});
+    seeds[view_stem(plan, view)] = frame_seed(config_.seed, {object, variant, view}, config_.render.settings.seed);
   json["render"] = {{"renderer", "matpredict libmatrender (Principled BSDF path tracer, Cycles 3.4 conventions)"},
                     {"samples", rs.samples_per_pixel},
                     {"noise_threshold", rs.noise_threshold},

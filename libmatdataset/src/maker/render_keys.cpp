@@ -33,6 +33,9 @@ const std::vector<DatasetRenderKey>& dataset_render_keys() {
       {"samples", "spp", kMaxSampleCount, false, "the sample count map holds 16 bits"},
       {"noise_threshold", "noise_threshold", std::nullopt, false, ""},
       {"min_samples", "min_samples", std::nullopt, false, ""},
+      {"seed", "seed", std::nullopt, false,
+       "0: each frame's seed follows from the top-level seed alone; another value is mixed into every frame's seed, "
+       "giving the same frames (objects, materials, lighting, every draw) independent noise"},
       {"denoise", "denoise", std::nullopt, false, "the data maps are never filtered"},
       {"bounces.max", "max_bounces", std::nullopt, false, ""},
       {"bounces.diffuse", "max_diffuse_bounces", std::nullopt, false, ""},

@@ -143,6 +143,9 @@ TEST_CASE("A frame's seed is SplitMix64 folded over the seed and the frame's ind
   CHECK(matdataset::frame_seed(0, FrameRef{0, 0, 0}) == 556823690u);
   CHECK(matdataset::frame_seed(42, FrameRef{1, 2, 3}) == 1069113463u);
   CHECK(matdataset::frame_seed(UINT64_MAX, FrameRef{5, 2, 7}) == 2387958400u);
+  // render.seed folds in last, h = m(h ^ sample_seed), and 0 leaves the seed as it was.
+  CHECK(matdataset::frame_seed(42, FrameRef{1, 2, 3}, 7) == 761160942u);
+  CHECK(matdataset::frame_seed(42, FrameRef{1, 2, 3}, 0) == 1069113463u);
   // Every frame of the default plan gets its own seed, and a new base seed changes them all.
   const DatasetPlan plan = matdataset::plan_dataset(matdataset::load_config("", {}));
   std::set<uint32_t> seeds;

@@ -55,9 +55,11 @@ std::filesystem::path variant_folder(const DatasetConfig& config, const DatasetP
                                      size_t variant);
 std::string view_stem(const DatasetPlan& plan, size_t view);
 
-// The seed of a frame's samples: a hash of the configuration's seed and the frame's indices, so
-// a frame renders the same in any shard, run or resumed run.
-uint32_t frame_seed(uint64_t seed, const FrameRef& frame);
+// The seed of a frame's samples: a hash of the configuration's seed and the frame's indices (and
+// of render.seed, `sample_seed`, where it is not 0), so a frame renders the same in any shard, run
+// or resumed run, and another render.seed renders the same frames (objects, materials, lighting,
+// every draw) with independent noise.
+uint32_t frame_seed(uint64_t seed, const FrameRef& frame, uint32_t sample_seed = 0);
 
 // The names of the candidate materials of a variant, slot by slot.
 std::vector<std::string> variant_material_names(const ObjectConfig& object, const MaterialVariant& variant);
