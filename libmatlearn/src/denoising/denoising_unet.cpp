@@ -47,7 +47,7 @@ torch::Tensor DenoisingUNetImpl::forward(const torch::Tensor& input) {
               "the denoising U-Net takes N x 9 x H x W with H and W multiples of 16, got ", input.sizes());
   // A 3x3 convolution and its ReLU.
   const auto layer = [](const torch::nn::Conv2d& conv, const torch::Tensor& x) { return torch::relu(convolve(conv, x)); };
-  torch::Tensor x = layer(enc_conv0_, input.contiguous());
+  torch::Tensor x = layer(enc_conv0_, input.contiguous(input.suggest_memory_format()));
   const torch::Tensor half = pool(layer(enc_conv1_, x));
   const torch::Tensor quarter = pool(layer(enc_conv2_, half));
   const torch::Tensor eighth = pool(layer(enc_conv3_, quarter));

