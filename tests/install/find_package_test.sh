@@ -14,6 +14,10 @@ cmake -S "$source_dir/consumer" -B "$work/build" -DCMAKE_PREFIX_PATH="$work/pref
 cmake --build "$work/build" > "$work/build.log"
 # The Python package, when built, imports from the prefix with Debian's python3 and no library
 # path: the extension and the libraries find each other through their RUNPATHs.
+# The installed apps run with no library path: their RUNPATH finds the libraries.
+for app in render_object make_dataset train_regressor train_denoiser evaluate; do
+  "$work/prefix/bin/$app" --help > /dev/null
+done
 for package in "$work"/prefix/lib/python3*/dist-packages; do
   [ -d "$package/matpredict" ] || continue
   PYTHONPATH="$package" /usr/bin/python3 -c \
