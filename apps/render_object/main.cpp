@@ -61,10 +61,13 @@ void report_rig(const BuiltScene& built) {
 void report_summary(const matrender::RenderStats& stats, const BuiltScene& built, const matrender::RenderSettings& settings) {
   const double seconds = std::max(stats.seconds, 1e-9);
   const double pixels = static_cast<double>(built.camera.width) * static_cast<double>(built.camera.height);
+  const double mean_samples = static_cast<double>(stats.camera_samples) / pixels;
   const std::string adaptive =
-      settings.noise_threshold > 0.0
-          ? fmt::format(" (adaptive: {:.1f} a pixel on average)", static_cast<double>(stats.camera_samples) / pixels)
-          : "";
+      settings.target_error > 0.0
+          ? fmt::format(" (to a target error of {:.3g} %: {:.3g} % predicted, {:.1f} samples a pixel on average)",
+                        100.0 * settings.target_error, 100.0 * stats.predicted_error, mean_samples)
+      : settings.noise_threshold > 0.0 ? fmt::format(" (adaptive: {:.1f} a pixel on average)", mean_samples)
+                                       : "";
   fmt::print("rendered {}x{} at {} spp{} in {:.2f} s: {:.1f} M samples/s, {:.1f} M rays/s, {} discarded samples, "
              "BVH {:.0f} ms\n",
              built.camera.width, built.camera.height, settings.samples_per_pixel, adaptive, stats.seconds,

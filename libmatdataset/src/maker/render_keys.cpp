@@ -33,6 +33,8 @@ const std::vector<DatasetRenderKey>& dataset_render_keys() {
       {"samples", "spp", kMaxSampleCount, false, "the sample count map holds 16 bits"},
       {"noise_threshold", "noise_threshold", std::nullopt, false, ""},
       {"min_samples", "min_samples", std::nullopt, false, ""},
+      {"target_error", "target_error", std::nullopt, false,
+       "over a frame's covered pixels: the object and whatever surroundings stand around it"},
       {"seed", "seed", std::nullopt, false,
        "0: each frame's seed follows from the top-level seed alone; another value is mixed into every frame's seed, "
        "giving the same frames (objects, materials, lighting, every draw) independent noise"},

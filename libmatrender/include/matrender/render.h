@@ -21,6 +21,9 @@ struct RenderStats {
   double occlusion_rms_standard_error = 0.0;
   double occlusion_max_standard_error = 0.0;
   bool cancelled = false;
+  // With a target error: the frame's relative RMSE over the covered pixels as predicted when
+  // sampling stopped (docs/conventions.md, "Rendering to an error").
+  double predicted_error = 0.0;
 };
 
 // The fewest camera samples a pixel of a complete render takes under these settings:

@@ -24,7 +24,10 @@ struct RenderSettings {
   double filter_width = 1.5;  // pixels, Blender's Film > Pixel Filter > Width
   // Adaptive sampling as Cycles 3.4 (docs/conventions.md): 0 = off.
   double noise_threshold = 0.0;
-  int min_samples = 0;  // 0 = Cycles' automatic rule
+  int min_samples = 0;  // 0 = Cycles' automatic rule (16 with a target error)
+  // Rendering to an error (docs/conventions.md, "Rendering to an error"): the relative RMSE over
+  // the covered pixels the frame may have, samples_per_pixel the most a pixel takes; 0 = off.
+  double target_error = 0.0;
   uint32_t seed = 0;
   int threads = 0;  // 0 = all hardware threads; the image does not depend on this
   int max_bounces = 12;

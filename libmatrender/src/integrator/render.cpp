@@ -8,6 +8,7 @@
 
 #include "film/adaptive_sampling.h"
 #include "film/camera_rays.h"
+#include "film/error_target.h"
 #include "film/film.h"
 #include "film/pixel_filter.h"
 #include "film/reachable_pixels.h"
@@ -61,7 +62,7 @@ void check_render(const Camera& camera, const RenderSettings& settings) {
 // The memory the frame needs, with the AOVs the denoiser reads.
 void check_frame_memory(const Camera& camera, const RenderSettings& settings, const Denoiser* denoiser) {
   const double pixels = static_cast<double>(camera.width) * static_cast<double>(camera.height);
-  const bool adaptive = settings.noise_threshold > 0.0;
+  const bool adaptive = settings.noise_threshold > 0.0 || settings.target_error > 0.0;
   matbase::require_memory(FrameBuffers::bytes_for(camera.width, camera.height, rendered_aovs(settings, denoiser)) +
                               (adaptive ? pixels * (sizeof(PixelSums) + 1) : 0.0),
                           std::string(adaptive ? "the colour and AOV buffers and adaptive sampling's sums" : "the colour and AOV buffers") +
@@ -94,9 +95,55 @@ void for_each_pixel(TileSchedule& schedule, RenderControl& control, int width, s
                });
 }
 
+// With a target error, the most samples a pixel takes and those every pixel takes before the
+// error is first checked: powers of two (film/error_target.h), at least 2.
+uint32_t error_target_cap(const RenderSettings& settings) {
+  return std::max<uint32_t>(2, power_of_two_at_most(static_cast<uint32_t>(settings.samples_per_pixel)));
+}
+uint32_t error_target_first_round(const RenderSettings& settings) {
+  constexpr uint32_t kDefaultFirstRound = 16;
+  const uint32_t asked = settings.min_samples > 0 ? static_cast<uint32_t>(settings.min_samples) : kDefaultFirstRound;
+  return std::min(std::max<uint32_t>(2, power_of_two_at_most(asked)), error_target_cap(settings));
+}
+
+// Samples every pixel to the target error in rounds (film/error_target.h); returns the frame's
+// predicted error when sampling stopped. Pixels no surface covers stop after the first round;
+// the samples pixels did not take are passed for the progress.
+double sample_to_target_error(const RenderSettings& settings, TileSchedule& schedule, RenderControl& control,
+                              const PixelEvaluator& evaluator, Film& film, int width, int height,
+                              std::vector<SampleCounts>& tile_counts) {
+  const size_t pixel_count = static_cast<size_t>(width) * static_cast<size_t>(height);
+  const uint32_t cap = error_target_cap(settings);
+  std::vector<PixelSums> sums(pixel_count);
+  std::vector<uint32_t> counts(pixel_count, error_target_first_round(settings));
+  // A pixel doubling from n to 2n keeps the sum of its first n, its first half.
+  const auto take_to = [&](int x, int y, size_t i, uint32_t end, SampleCounts& tile, RenderControl::Batch& progress) {
+    evaluator.take_samples(x, y, sums[i].samples, end, sums[i], tile, progress);
+  };
+  for_each_pixel(schedule, control, width, tile_counts,
+                 [&](int x, int y, size_t i, SampleCounts& tile, RenderControl::Batch& progress) {
+                   take_to(x, y, i, counts[i] / 2, tile, progress);
+                   sums[i].first_half = sums[i].color;
+                   take_to(x, y, i, counts[i], tile, progress);
+                 });
+  while (!control.was_cancelled() && plan_error_target_round(sums, width, height, settings.target_error, cap, counts))
+    for_each_pixel(schedule, control, width, tile_counts,
+                   [&](int x, int y, size_t i, SampleCounts& tile, RenderControl::Batch& progress) {
+                     if (counts[i] == sums[i].samples) return;
+                     sums[i].first_half = sums[i].color;
+                     take_to(x, y, i, counts[i], tile, progress);
+                   });
+  for_each_pixel(schedule, control, width, tile_counts, [&](int, int, size_t i, SampleCounts& tile, RenderControl::Batch& progress) {
+    control.pass(progress, static_cast<uint64_t>(settings.samples_per_pixel) - std::min<uint64_t>(sums[i].samples, settings.samples_per_pixel));
+    film.resolve(i, sums[i], tile.occlusion);
+  });
+  return predict_frame_error(sums).relative_rmse;
+}
+
 }  // namespace
 
 int fewest_samples_per_pixel(const RenderSettings& settings) {
+  if (settings.target_error > 0.0) return static_cast<int>(error_target_first_round(settings));
   const std::optional<AdaptiveSampling> adaptive =
       AdaptiveSampling::from_settings(settings.noise_threshold, settings.min_samples);
   if (!adaptive) return settings.samples_per_pixel;
@@ -147,7 +194,11 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
 
   TileSchedule schedule(camera.width, camera.height, settings.threads);
   std::vector<SampleCounts> tile_counts(schedule.tiles().size());
-  if (!adaptive) {
+  double predicted_error = 0.0;
+  if (settings.target_error > 0.0) {
+    predicted_error =
+        sample_to_target_error(settings, schedule, control, evaluator, film, camera.width, camera.height, tile_counts);
+  } else if (!adaptive) {
     for_each_pixel(schedule, control, camera.width, tile_counts,
                    [&](int x, int y, size_t i, SampleCounts& counts, RenderControl::Batch& progress) {
                      PixelSums sums;
@@ -183,7 +234,9 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
   }
   if (!control.was_cancelled()) apply_post_filters(settings, denoiser.get(), frame);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return render_statistics(tile_counts, seconds, control.was_cancelled());
+  RenderStats stats = render_statistics(tile_counts, seconds, control.was_cancelled());
+  stats.predicted_error = predicted_error;
+  return stats;
 }
 
 }  // namespace matrender

@@ -56,7 +56,14 @@ std::vector<RenderSettingDeclaration> declare_settings() {
              "docs/conventions.md, \"Adaptive sampling\", gives the rule"),
       whole_number("min_samples", &S::min_samples, 0, kMaxSamplesPerPixel,
                    "with a noise threshold: samples before a pixel is first checked; 0 = Cycles' automatic "
-                   "max(4, ceil(16 / threshold^0.3))"),
+                   "max(4, ceil(16 / threshold^0.3)). With a target error: the samples every pixel takes first; "
+                   "0 = 16"),
+      number("target_error", &S::target_error, 0.0, 1.0, false, {},
+             "render to an error, not to a sample count: the relative RMSE over the pixels a surface covers "
+             "(the RMSE of their colour over its mean) the frame may have; each pixel's error is estimated from its two "
+             "half estimates and its neighbours', and pixels sample in rounds until the frame's predicted error is "
+             "at or below it, `spp` the most a pixel takes; 0 = off. docs/conventions.md, \"Rendering to an error\", "
+             "gives the rule"),
       {"denoise", SettingForm::Choice, SettingScope::Scene, &S::denoise, 0.0, 0.0, false, {},
        {"false", "filter", "learned"},
        "denoise the colour after rendering: `false`, not at all; `filter`, the a-trous filter guided by the base "
@@ -229,6 +236,8 @@ std::optional<std::string> assign_text(RenderSettings& settings, const RenderSet
 const std::vector<SettingConflict>& setting_conflicts() {
   static const std::vector<SettingConflict> conflicts = {
       {"denoise", "cycles_parity", "Blender 3.4 in Debian has no denoiser"},
+      {"target_error", "noise_threshold", "both decide where sampling stops; give one"},
+      {"target_error", "cycles_parity", "Cycles 3.4 has no such rule; its noise threshold is `noise_threshold`"},
   };
   return conflicts;
 }
