@@ -16,47 +16,35 @@
 #include "common/thread_count.h"
 #include "matbase/input_error.h"
 #include "matdataset/format/dataset_error.h"
-#include "matdataset/maker/dataset_config.h"
-#include "matdataset/maker/dataset_plan.h"
-#include "matdataset/maker/dataset_run.h"
+#include "matdataset/maker/example_pairs.h"
 #include "matlearn/denoising/denoiser_training.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-// With no arguments: pairs of a small dataset rendered here (two objects in two materials, two
-// views, 64 px, 4 samples against 256), and a short run on them.
+// With no arguments: small example pairs rendered here (matdataset/maker/example_pairs.h: 64 px,
+// 4 samples against 256), and a short run on them.
 void use_example(matlearn::DenoiserTrainingSettings& settings) {
   const fs::path root = "train_denoiser_out";
   fmt::print("no pairs given: rendering example pairs (2 built-in objects x 2 materials x 2 views, 64 px, 4 against "
              "256 samples) into {}\n",
              root.string());
   std::fflush(stdout);
-  const std::string yaml = R"(materials:
-  all: [wood/raw:1, metal/polished:2]
-objects:
-  - {builtin: vase}
-  - {builtin: chair}
-camera: {grid: [1, 2], phi_deg: [60, 60]}
-render: {resolution: 64, hdr_images: true, material_resolution: 64}
-)";
-  for (const auto& [name, samples, seed] : {std::tuple{"reference", 256, 1}, std::tuple{"spp_4", 4, 104}}) {
-    const matdataset::DatasetConfig config = matdataset::parse_config(
-        yaml, "train_denoiser's example pairs", fs::current_path(),
-        {{"output", "\"" + (root / name).string() + "\"", "train_denoiser"},
-         {"render.samples", std::to_string(samples), "train_denoiser"},
-         {"render.seed", std::to_string(seed), "train_denoiser"}});
-    app_support::ProgressBar bar(name);
-    matdataset::RunOptions run;
-    run.progress = [&bar](size_t done, size_t total, size_t) {
-      bar.update(static_cast<double>(done) / static_cast<double>(total));
-    };
-    matdataset::run_dataset(config, matdataset::plan_dataset(config), run);
-    bar.finish();
-  }
-  settings.reference = root / "reference";
-  settings.noisy = {root / "spp_4"};
+  std::unique_ptr<app_support::ProgressBar> bar;
+  std::string current;
+  const matdataset::ExamplePairs pairs =
+      matdataset::render_example_pairs(root, 64, 256, 4, [&](const char* dataset, size_t done, size_t total) {
+        if (current != dataset) {
+          if (bar) bar->finish();
+          bar = std::make_unique<app_support::ProgressBar>(dataset);
+          current = dataset;
+        }
+        bar->update(static_cast<double>(done) / static_cast<double>(total));
+      });
+  if (bar) bar->finish();
+  settings.reference = pairs.reference;
+  settings.noisy = {pairs.noisy};
   settings.weights = root / "denoiser.pt";
   settings.steps = 20;
   settings.batch = 4;

@@ -10,9 +10,7 @@
 
 #include "matbase/image/srgb.h"
 #include "matdataset/format/decoded_image.h"
-#include "matdataset/maker/dataset_config.h"
-#include "matdataset/maker/dataset_plan.h"
-#include "matdataset/maker/dataset_run.h"
+#include "matdataset/maker/example_pairs.h"
 #include "matlearn/denoising/denoiser_pairs.h"
 #include "matlearn/denoising/denoiser_training.h"
 #include "matlearn/denoising/hdr_transfer.h"
@@ -23,40 +21,20 @@ using namespace matlearn;
 
 namespace {
 
-// A vase and a chair in two materials, two views at 32 px, with the colour in floats: at
-// `samples` with render.seed `seed`, into `folder`.
-void render_pair_dataset(const fs::path& folder, int samples, int seed) {
-  const std::string yaml = R"(materials:
-  all: [wood/raw:1, metal/polished:2]
-objects:
-  - {builtin: vase}
-  - {builtin: chair}
-camera: {grid: [1, 2], phi_deg: [60, 60]}
-render: {resolution: 32, hdr_images: true, material_resolution: 32}
-)";
-  const matdataset::DatasetConfig config = matdataset::parse_config(
-      yaml, "test pairs", fs::current_path(),
-      {{"output", "\"" + folder.string() + "\"", "test"}, {"render.samples", std::to_string(samples), "test"},
-       {"render.seed", std::to_string(seed), "test"}});
-  matdataset::run_dataset(config, matdataset::plan_dataset(config), {});
-}
-
-// The example pairs, rendered once per test run.
-const fs::path& pairs_folder() {
-  static const fs::path folder = [] {
+// The example pairs at 32 px (2 samples against 64), rendered once per test run.
+const matdataset::ExamplePairs& example_pairs() {
+  static const matdataset::ExamplePairs pairs = [] {
     const fs::path root = fs::temp_directory_path() / "matpredict_denoiser_pairs";
     fs::remove_all(root);
-    render_pair_dataset(root / "reference", 64, 1);
-    render_pair_dataset(root / "spp_2", 2, 102);
-    return root;
+    return matdataset::render_example_pairs(root, 32, 64, 2);
   }();
-  return folder;
+  return pairs;
 }
 
 DenoiserTrainingSettings small_run(const fs::path& weights) {
   DenoiserTrainingSettings settings;
-  settings.reference = pairs_folder() / "reference";
-  settings.noisy = {pairs_folder() / "spp_2"};
+  settings.reference = example_pairs().reference;
+  settings.noisy = {example_pairs().noisy};
   settings.weights = weights;
   settings.steps = 4;
   settings.batch = 2;
@@ -89,17 +67,17 @@ CATCH_TEST_CASE("The learning rate warms up over 2 % of the steps, then falls al
 }
 
 CATCH_TEST_CASE("A training pair holds the noisy frame's maps as the renderer's AOVs and the reference's colour", "[learn]") {
-  const std::vector<matdataset::SampleId> frames = paired_frames(pairs_folder() / "reference", {pairs_folder() / "spp_2"});
+  const std::vector<matdataset::SampleId> frames = paired_frames(example_pairs().reference, {example_pairs().noisy});
   CATCH_REQUIRE(frames.size() == 8);
   const matdataset::SampleId& id = frames[0];
-  const DenoiserPair pair = read_denoiser_pair(pairs_folder() / "spp_2", pairs_folder() / "reference", id);
+  const DenoiserPair pair = read_denoiser_pair(example_pairs().noisy, example_pairs().reference, id);
   CATCH_REQUIRE(pair.input.sizes() == torch::IntArrayRef({9, 32, 32}));
   CATCH_REQUIRE(pair.target.sizes() == torch::IntArrayRef({3, 32, 32}));
-  const fs::path noisy = pairs_folder() / "spp_2" / id.object / id.variant;
+  const fs::path noisy = example_pairs().noisy / id.object / id.variant;
   const matbase::FloatImage color = matdataset::decode(noisy / "images_hdr" / (id.stem + ".exr"));
   const matbase::FloatImage albedo = matdataset::decode(noisy / "albedo" / (id.stem + ".png"));
   const matbase::FloatImage reference =
-      matdataset::decode(pairs_folder() / "reference" / id.object / id.variant / "images_hdr" / (id.stem + ".exr"));
+      matdataset::decode(example_pairs().reference / id.object / id.variant / "images_hdr" / (id.stem + ".exr"));
   std::vector<float> rgb;
   for (size_t p = 0; p < color.values.size() / 4; ++p)
     for (size_t c = 0; c < 3; ++c) rgb.push_back(color.values[4 * p + c]);
@@ -118,11 +96,11 @@ CATCH_TEST_CASE("A training pair holds the noisy frame's maps as the renderer's 
     }
   CATCH_CHECK(covered > 0);
   // A noisy dataset that is not there, or holds none of the reference's frames: refused, named.
-  CATCH_CHECK_THROWS_WITH(paired_frames(pairs_folder() / "reference", {pairs_folder() / "nowhere"}),
+  CATCH_CHECK_THROWS_WITH(paired_frames(example_pairs().reference, {example_pairs().reference.parent_path() / "nowhere"}),
                           Catch::Contains("nowhere"));
-  const fs::path empty = pairs_folder() / "empty";
+  const fs::path empty = example_pairs().reference.parent_path() / "empty";
   fs::create_directories(empty);
-  CATCH_CHECK_THROWS_WITH(paired_frames(pairs_folder() / "reference", {empty}),
+  CATCH_CHECK_THROWS_WITH(paired_frames(example_pairs().reference, {empty}),
                           Catch::Contains("no frame of it is in every noisy dataset"));
 }
 

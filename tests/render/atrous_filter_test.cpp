@@ -195,14 +195,8 @@ struct Comparison {
 
 Comparison render_ball(const Material& ball, int spp, bool denoised) {
   Scene scene;
-  scene.add_mesh(test_scenes::horizontal_square(6.0), {scene.add_material(test_scenes::lambert(0.6f))});
-  scene.add_mesh(test_scenes::uv_sphere(0.4, 32, {0.0, 0.0, 0.4}), {scene.add_material(ball)});
-  RectLamp lamp;
-  lamp.light_to_world[3] = glm::dvec4(0.5, -0.5, 2.0, 1.0);
-  lamp.size_x = lamp.size_y = 1.5;
-  lamp.power = 150.0;
-  scene.add_lamp(lamp);
-  const Camera camera = Camera::look_at({0.0, -2.2, 1.2}, {0, 0, 0.35}, {0, 0, 1}, 0.6, 40, 32);
+  test_scenes::add_ball_on_floor(scene, ball, 1.5);
+  const Camera camera = test_scenes::ball_on_floor_camera();
   RenderSettings settings;
   settings.aovs = AovAlpha;
   settings.samples_per_pixel = 2048;

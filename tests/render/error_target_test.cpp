@@ -28,20 +28,12 @@ PixelSums pixel(uint32_t n, double first, double second) {
   return s;
 }
 
-// A ball on a floor under a small area lamp, 40 x 32.
+// A ball on a floor under a small area lamp (30 cm), 40 x 32.
 struct BallScene {
   Scene scene;
-  Camera camera = Camera::look_at({0.0, -2.2, 1.2}, {0, 0, 0.35}, {0, 0, 1}, 0.6, 40, 32);
+  Camera camera = test_scenes::ball_on_floor_camera();
 
-  explicit BallScene(const Material& ball) {
-    scene.add_mesh(test_scenes::horizontal_square(6.0), {scene.add_material(test_scenes::lambert(0.6f))});
-    scene.add_mesh(test_scenes::uv_sphere(0.4, 32, {0.0, 0.0, 0.4}), {scene.add_material(ball)});
-    RectLamp lamp;
-    lamp.light_to_world[3] = glm::dvec4(0.5, -0.5, 2.0, 1.0);
-    lamp.size_x = lamp.size_y = 0.3;
-    lamp.power = 150.0;
-    scene.add_lamp(lamp);
-  }
+  explicit BallScene(const Material& ball) { test_scenes::add_ball_on_floor(scene, ball, 0.3); }
 
   FrameBuffers render_with(RenderSettings settings, RenderStats* stats = nullptr) {
     settings.aovs = AovAlpha;

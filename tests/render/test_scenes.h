@@ -7,7 +7,9 @@
 
 #include "matbase/pi.h"
 #include "matgeom/mesh.h"
+#include "matrender/camera.h"
 #include "matrender/frame.h"
+#include "matrender/lamp.h"
 #include "matrender/material.h"
 #include "matrender/render.h"
 #include "matrender/scene.h"
@@ -44,6 +46,13 @@ inline matgeom::TriangleMesh uv_sphere(double radius, int rings, const glm::dvec
       if (i + 1 < rings) m.triangles.push_back({a + 1, b, b + 1});
     }
   return m;
+}
+
+// A ball of radius 0.4 on a 6 m floor of albedo 0.6, under a square area lamp of side
+// `lamp_size` and 150 W, 2 m up and to the side, and the camera that sees them at 40 x 32.
+inline void add_ball_on_floor(matrender::Scene& scene, const matrender::Material& ball, double lamp_size);
+inline matrender::Camera ball_on_floor_camera() {
+  return matrender::Camera::look_at({0.0, -2.2, 1.2}, {0, 0, 0.35}, {0, 0, 1}, 0.6, 40, 32);
 }
 
 inline matrender::Material lambert(float albedo) {
@@ -104,6 +113,16 @@ inline bool all_finite(const std::vector<float>& values) {
   for (float v : values)
     if (!std::isfinite(v)) return false;
   return true;
+}
+
+inline void add_ball_on_floor(matrender::Scene& scene, const matrender::Material& ball, double lamp_size) {
+  scene.add_mesh(horizontal_square(6.0), {scene.add_material(lambert(0.6f))});
+  scene.add_mesh(uv_sphere(0.4, 32, {0.0, 0.0, 0.4}), {scene.add_material(ball)});
+  matrender::RectLamp lamp;
+  lamp.light_to_world[3] = glm::dvec4(0.5, -0.5, 2.0, 1.0);
+  lamp.size_x = lamp.size_y = lamp_size;
+  lamp.power = 150.0;
+  scene.add_lamp(lamp);
 }
 
 // Renders and tells whether every pixel came out finite with no sample discarded.
