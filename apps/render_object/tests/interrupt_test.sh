@@ -12,7 +12,9 @@ trap 'rm -f "$log"' EXIT
 status=0
 
 # interrupt SIGNAL EXPECTED_CODE WAIT_FOR ARGS...: starts a render, waits until stderr shows
-# WAIT_FOR (a regex; empty: a second), sends SIGNAL and checks the outcome.
+# WAIT_FOR (a regex; empty: three seconds, time enough on a loaded machine for the program to
+# have started and installed its handlers, which a second was not), sends SIGNAL and checks the
+# outcome.
 interrupt() {
   local signal=$1 expected=$2 wait_for=$3
   shift 3
@@ -21,7 +23,7 @@ interrupt() {
   local pid=$!
   local seen=0
   if [ -z "$wait_for" ]; then
-    sleep 1
+    sleep 3
     seen=1
   fi
   for _ in $(seq 400); do
@@ -57,6 +59,6 @@ interrupt TERM 143 "render" --object vase --resolution 512x512 --spp 1024
 # One pixel's samples take minutes here: progress must come from within the pixel.
 interrupt INT 130 "render +0%" --object vase --resolution 8x8 --spp 16777216
 # While a library material's 8192 x 8192 maps are made (tens of seconds), before any progress
-# line: the signal is sent a second after the start.
+# line: the signal is sent three seconds after the start.
 interrupt TERM 143 "" --object vase --material wood --material-resolution 8192 --resolution 8x8 --spp 1
 exit "$status"
