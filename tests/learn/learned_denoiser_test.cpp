@@ -58,6 +58,10 @@ struct RandomFrame {
   DenoiserFrame view() const { return {width, height, color.data(), albedo.data(), normal.data(), coverage.data()}; }
 };
 
+// The transfer function and its inverse on one value.
+float transfer(float v) { return hdr_transfer(torch::tensor({v})).item<float>(); }
+float transfer_inverse(float t) { return hdr_transfer_inverse(torch::tensor({t})).item<float>(); }
+
 bool finite_non_negative(const std::vector<float>& values) {
   for (const float v : values)
     if (!(std::isfinite(v) && v >= 0.0f)) return false;
@@ -92,23 +96,17 @@ CATCH_TEST_CASE("The HDR transfer function is equation 1 and its inverse undoes 
   const double scale = std::log1p(65504.0 * 256.0);
   for (const double v : {0.0, 1e-4, 1.0 / 256.0, 0.18, 1.0, 37.0, 65504.0}) {
     CATCH_CAPTURE(v);
-    CATCH_CHECK(hdr_transfer(static_cast<float>(v)) == Approx(std::log1p(256.0 * v) / scale).margin(1e-7));
-    CATCH_CHECK(hdr_transfer_inverse(hdr_transfer(static_cast<float>(v))) == Approx(v).epsilon(1e-4).margin(1e-7));
+    CATCH_CHECK(transfer(static_cast<float>(v)) == Approx(std::log1p(256.0 * v) / scale).margin(1e-6));
+    CATCH_CHECK(transfer_inverse(transfer(static_cast<float>(v))) == Approx(v).epsilon(1e-4).margin(1e-6));
   }
-  CATCH_CHECK(hdr_transfer(0.0f) == 0.0f);
-  CATCH_CHECK(hdr_transfer(65504.0f) == Approx(1.0f));
+  CATCH_CHECK(transfer(0.0f) == 0.0f);
+  CATCH_CHECK(transfer(65504.0f) == Approx(1.0f));
   // Out of range and non-finite values go to the nearest end, never NaN.
-  CATCH_CHECK(hdr_transfer(-3.0f) == 0.0f);
-  CATCH_CHECK(hdr_transfer(std::numeric_limits<float>::infinity()) == Approx(1.0f));
-  CATCH_CHECK(hdr_transfer(std::numeric_limits<float>::quiet_NaN()) == 0.0f);
-  CATCH_CHECK(hdr_transfer_inverse(2.0f) == Approx(65504.0f));
-  CATCH_CHECK(hdr_transfer_inverse(-1.0f) == 0.0f);
-  // The tensor versions are the same function.
-  const torch::Tensor values = torch::tensor({0.0f, 0.01f, 0.5f, 3.0f, 1000.0f});
-  const torch::Tensor transferred = hdr_transfer(values);
-  for (int64_t i = 0; i < values.numel(); ++i)
-    CATCH_CHECK(transferred[i].item<float>() == Approx(hdr_transfer(values[i].item<float>())).margin(1e-7));
-  CATCH_CHECK(torch::allclose(hdr_transfer_inverse(transferred), values, 1e-4, 1e-7));
+  CATCH_CHECK(transfer(-3.0f) == 0.0f);
+  CATCH_CHECK(transfer(std::numeric_limits<float>::infinity()) == Approx(1.0f));
+  CATCH_CHECK(transfer(std::numeric_limits<float>::quiet_NaN()) == 0.0f);
+  CATCH_CHECK(transfer_inverse(2.0f) == Approx(65504.0f));
+  CATCH_CHECK(transfer_inverse(-1.0f) == 0.0f);
 }
 
 CATCH_TEST_CASE("Auto-exposure puts the log-average luminance of the lit blocks at 0.18", "[learn]") {

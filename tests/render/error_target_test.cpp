@@ -66,6 +66,7 @@ TEST_CASE("A frame's error is predicted from its pixels' halves: (A - B)^2 / 4 o
   const FrameErrorEstimate estimate = predict_frame_error(sums);
   CHECK(estimate.pixels == 2);
   CHECK(estimate.mean == Approx(1.0));
+  CHECK(estimate.mean_squared_error == Approx(0.025));
   CHECK(estimate.relative_rmse == Approx(std::sqrt(0.025)));
   // A black frame, or none covered: 0, never a division by 0.
   CHECK(predict_frame_error({pixel(16, 0.0, 0.0)}).relative_rmse == 0.0);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -26,16 +25,6 @@ torch::Tensor hdr_transfer(const torch::Tensor& exposed) {
 torch::Tensor hdr_transfer_inverse(const torch::Tensor& transferred) {
   const torch::Tensor t = torch::nan_to_num(transferred, 0.0, 1.0, 0.0).clamp(0.0, 1.0);
   return torch::expm1(t * kTransferScale) * kTransferToe;
-}
-
-float hdr_transfer(float exposed) {
-  const float v = std::isnan(exposed) ? 0.0f : std::clamp(exposed, 0.0f, kTransferMax);
-  return static_cast<float>(std::log1p(static_cast<double>(v) / kTransferToe) / kTransferScale);
-}
-
-float hdr_transfer_inverse(float transferred) {
-  const float t = std::isnan(transferred) ? 0.0f : std::clamp(transferred, 0.0f, 1.0f);
-  return static_cast<float>(std::expm1(static_cast<double>(t) * kTransferScale) * kTransferToe);
 }
 
 float auto_exposure(const float* rgb, int width, int height) {

@@ -8,6 +8,7 @@ namespace {
 
 // Pixels farther than this from a pixel do not inform its spread.
 constexpr int kSpreadRadius = 2;
+
 bool covered(const PixelSums& s) { return s.coverage > 0.0 && s.samples >= 2; }
 
 // (A - B)^2 / 4 summed over the channels: the squared error of the pixel's mean, estimated.
@@ -37,7 +38,8 @@ FrameErrorEstimate predict_frame_error(const std::vector<PixelSums>& sums) {
   if (estimate.pixels == 0) return estimate;
   const double pixels = static_cast<double>(estimate.pixels);
   estimate.mean = colour / pixels;
-  estimate.relative_rmse = estimate.mean > 0.0 ? std::sqrt(squared / pixels) / estimate.mean : 0.0;
+  estimate.mean_squared_error = squared / pixels;
+  estimate.relative_rmse = estimate.mean > 0.0 ? std::sqrt(estimate.mean_squared_error) / estimate.mean : 0.0;
   return estimate;
 }
 
@@ -82,8 +84,7 @@ bool plan_error_target_round(const std::vector<PixelSums>& sums, int width, int 
                    [](const Candidate& a, const Candidate& b) { return a.gain * b.cost > b.gain * a.cost; });
   const double pixels = static_cast<double>(estimate.pixels);
   const double absolute = target_error * estimate.mean;
-  double excess = pixels * (estimate.relative_rmse * estimate.mean) * (estimate.relative_rmse * estimate.mean) -
-                  pixels * absolute * absolute;
+  double excess = pixels * (estimate.mean_squared_error - absolute * absolute);
   for (const Candidate& c : candidates) {
     if (excess <= 0.0) break;
     counts[c.pixel] = 2 * sums[c.pixel].samples;

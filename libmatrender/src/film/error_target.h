@@ -29,8 +29,9 @@
 namespace matrender {
 
 struct FrameErrorEstimate {
-  double relative_rmse = 0.0;  // predicted; 0 when no pixel is covered or the frame is black
-  double mean = 0.0;           // the covered pixels' mean colour (over the channels)
+  double relative_rmse = 0.0;       // predicted; 0 when no pixel is covered or the frame is black
+  double mean_squared_error = 0.0;  // predicted, a covered pixel's channel on average
+  double mean = 0.0;                // the covered pixels' mean colour (over the channels)
   uint64_t pixels = 0;         // covered pixels
 };
 

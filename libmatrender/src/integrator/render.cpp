@@ -62,10 +62,14 @@ void check_render(const Camera& camera, const RenderSettings& settings) {
 // The memory the frame needs, with the AOVs the denoiser reads.
 void check_frame_memory(const Camera& camera, const RenderSettings& settings, const Denoiser* denoiser) {
   const double pixels = static_cast<double>(camera.width) * static_cast<double>(camera.height);
-  const bool adaptive = settings.noise_threshold > 0.0 || settings.target_error > 0.0;
+  // Adaptive sampling keeps every pixel's sums and a converged flag, a target error its sums and
+  // its sample count for the next round.
+  const double per_pixel = settings.target_error > 0.0      ? sizeof(PixelSums) + sizeof(uint32_t)
+                           : settings.noise_threshold > 0.0 ? sizeof(PixelSums) + 1
+                                                            : 0.0;
   matbase::require_memory(FrameBuffers::bytes_for(camera.width, camera.height, rendered_aovs(settings, denoiser)) +
-                              (adaptive ? pixels * (sizeof(PixelSums) + 1) : 0.0),
-                          std::string(adaptive ? "the colour and AOV buffers and adaptive sampling's sums" : "the colour and AOV buffers") +
+                              pixels * per_pixel,
+                          std::string(per_pixel > 0.0 ? "the colour and AOV buffers and every pixel's sums" : "the colour and AOV buffers") +
                               " of a " + std::to_string(camera.width) + " x " + std::to_string(camera.height) + " image",
                           "render");
 }

@@ -28,12 +28,10 @@ constexpr float kExposureKey = 0.18f;
 constexpr int kExposureBlock = 16;
 constexpr float kDarkBlock = 1e-8f;
 
-// Equation 1 on exposed values (e v), values below 0 taken as 0 and above kTransferMax as it;
-// and its inverse on [0, 1] (values outside taken as the nearest end).
+// Equation 1 on exposed values (e v), NaN and values below 0 taken as 0 and above kTransferMax
+// as it; and its inverse on [0, 1] (values outside taken as the nearest end).
 torch::Tensor hdr_transfer(const torch::Tensor& exposed);
 torch::Tensor hdr_transfer_inverse(const torch::Tensor& transferred);
-float hdr_transfer(float exposed);
-float hdr_transfer_inverse(float transferred);
 
 // Equation 2 for an RGB image (width x height x 3, interleaved, linear); non-finite and negative
 // values count as 0.
