@@ -84,6 +84,8 @@ PickSite LightSampler::site(const glm::vec3& p, const ReceivingDirections& recei
     rects_.importance(p, receiving, site.weights.data());
     for (size_t i = rect_count_; i < sampled_count_; ++i)
       site.weights[i] = with_light(lights_[i], [&](const auto& light) { return light.importance(p, receiving); });
+    for (size_t i = 0; i < sampled_count_; ++i) site.total_importance += site.weights[i];
+    return site;
   }
   for (size_t i = 0; i < sampled_count_; ++i) site.total_importance += importance(i, site);
   return site;
@@ -108,25 +110,29 @@ std::optional<LightSampler::Pick> LightSampler::pick(const PickSite& site, float
     return Pick{index, 1.0f / static_cast<float>(sampled_count_)};
   }
   if (!(site.total_importance > 0.0f)) return std::nullopt;
-  // Walk the lights' intervals of the total until u's falls in one.
-  const float target = *u * site.total_importance;
-  float below = 0.0f;
-  size_t last_lit = sampled_count_;
-  for (size_t i = 0; i < sampled_count_; ++i) {
-    const float weight = importance(i, site);
-    if (!(weight > 0.0f)) continue;
-    last_lit = i;
-    if (target < below + weight || i + 1 == sampled_count_) {
-      *u = std::clamp((target - below) / weight, 0.0f, 0x1.fffffep-1f);
-      return Pick{i, weight / site.total_importance};
+  // Walk the lights' intervals of the total until u's falls in one. The kept weights are read
+  // in a loop of their own: through importance() the walk tested for them at every light.
+  const auto walk = [&](const auto& weight_of) -> std::optional<Pick> {
+    const float target = *u * site.total_importance;
+    float below = 0.0f;
+    size_t last_lit = sampled_count_;
+    for (size_t i = 0; i < sampled_count_; ++i) {
+      const float weight = weight_of(i);
+      if (!(weight > 0.0f)) continue;
+      last_lit = i;
+      if (target < below + weight || i + 1 == sampled_count_) {
+        *u = std::clamp((target - below) / weight, 0.0f, 0x1.fffffep-1f);
+        return Pick{i, weight / site.total_importance};
+      }
+      below += weight;
     }
-    below += weight;
-  }
-  // Rounding left u past the last interval: it belongs to the last light that has one.
-  if (last_lit == sampled_count_) return std::nullopt;
-  const float weight = importance(last_lit, site);
-  *u = 0x1.fffffep-1f;
-  return Pick{last_lit, weight / site.total_importance};
+    // Rounding left u past the last interval: it belongs to the last light that has one.
+    if (last_lit == sampled_count_) return std::nullopt;
+    *u = 0x1.fffffep-1f;
+    return Pick{last_lit, weight_of(last_lit) / site.total_importance};
+  };
+  if (sampled_count_ <= PickSite::kKeptWeights) return walk([&](size_t i) { return site.weights[i]; });
+  return walk([&](size_t i) { return importance(i, site); });
 }
 
 std::optional<LightSample> LightSampler::sample(const PickSite& site, glm::vec2 u) const {
