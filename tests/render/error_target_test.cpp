@@ -1,11 +1,13 @@
 // Rendering to an error (RenderSettings::target_error): the prediction from a pixel's two halves
-// on sums built by hand, the rounds' plan, and a lamp-lit ball rendered to a target against two
+// on sums built by hand, undenoised and through a denoiser that changes nothing, the rounds' plan,
+// and a lamp-lit ball rendered to a target, undenoised and with the a-trous filter, against two
 // independent high-sample references (their own noise taken out of the measured error).
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <vector>
 
+#include "film/denoised_error.h"
 #include "film/error_target.h"
 #include "matrender/camera.h"
 #include "matrender/lamp.h"
@@ -149,3 +151,54 @@ TEST_CASE("Rendering to an error gives the same image on 1 and 2 threads, and ex
   settings.cycles_parity = true;
   CHECK(render_settings_problem(settings)->find("target_error and cycles_parity exclude each other") == 0);
 }
+
+TEST_CASE("The denoised error of a denoiser that changes nothing is the halves' error at n^(-1/3)", "[render]") {
+  // Four covered pixels whose halves differ by 0.2 and 0.4: each half's squared error
+  // (A - B)^2 / 2, the halves' own noise, is all that remains of the cross terms; a doubling then
+  // takes 2^(-2/3) off it. The undenoised prediction, (A - B)^2 / 4, is 2^(-1/3) below that.
+  struct Nothing : Denoiser {
+    uint32_t guide_aovs() const override { return AovAlpha; }
+    void denoise(FrameBuffers&, int) const override {}
+  };
+  const std::vector<PixelSums> sums = {pixel(16, 0.9, 1.1), pixel(32, 1.2, 0.8), pixel(16, 1.1, 0.9),
+                                       pixel(64, 0.8, 1.2)};
+  FrameBuffers accumulating;
+  accumulating.resize(2, 2, AovAlpha);
+  const FrameErrorEstimate denoised = predict_denoised_error(sums, accumulating, Nothing(), glm::mat3(1.0f), 1);
+  const FrameErrorEstimate raw = predict_frame_error(sums);
+  CHECK(denoised.pixels == 4);
+  CHECK(denoised.mean == Approx(1.0));
+  CHECK(raw.mean_squared_error == Approx((0.01 + 0.04 + 0.01 + 0.04) / 4.0));
+  CHECK(denoised.mean_squared_error == Approx(2.0 * raw.mean_squared_error * std::pow(2.0, -2.0 / 3.0)));
+  CHECK(denoised.relative_rmse == Approx(std::sqrt(denoised.mean_squared_error)));
+}
+
+TEST_CASE("With a denoiser, a target error holds for the denoised frame against independent references",
+          "[render]") {
+  BallScene ball_scene(test_scenes::lambert(0.5f));
+  RenderSettings settings;
+  settings.samples_per_pixel = 8192;
+  settings.seed = 11;
+  const FrameBuffers first = ball_scene.render_with(settings);
+  settings.seed = 12;
+  const FrameBuffers second = ball_scene.render_with(settings);
+  const double reference_mse = 0.5 * mean_squared_difference(first, second);
+  const double mean = mean_colour(first);
+  settings.denoise = Denoising::Filter;
+  settings.samples_per_pixel = 4096;
+  settings.seed = 13;
+  for (const double target : {0.03, 0.015}) {
+    settings.target_error = target;
+    RenderStats stats;
+    settings.threads = 2;
+    const FrameBuffers frame = ball_scene.render_with(settings, &stats);
+    const double measured = std::sqrt(std::max(0.0, mean_squared_difference(frame, first) - reference_mse)) / mean;
+    CAPTURE(target, measured, stats.predicted_error, stats.camera_samples / 1280.0);
+    CHECK(stats.predicted_error <= target);
+    CHECK(measured == Approx(target).epsilon(0.25));
+    // The halves are denoised on the render's threads: the same image on one.
+    settings.threads = 1;
+    CHECK(ball_scene.render_with(settings).color == frame.color);
+  }
+}
+

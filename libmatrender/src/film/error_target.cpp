@@ -9,8 +9,6 @@ namespace {
 // Pixels farther than this from a pixel do not inform its spread.
 constexpr int kSpreadRadius = 2;
 
-bool covered(const PixelSums& s) { return s.coverage > 0.0 && s.samples >= 2; }
-
 // (A - B)^2 / 4 summed over the channels: the squared error of the pixel's mean, estimated.
 double squared_error_of_mean(const PixelSums& s) {
   const double half = static_cast<double>(s.samples) / 2.0;
@@ -30,7 +28,7 @@ FrameErrorEstimate predict_frame_error(const std::vector<PixelSums>& sums) {
   double squared = 0.0, colour = 0.0;
   FrameErrorEstimate estimate;
   for (const PixelSums& s : sums) {
-    if (!covered(s)) continue;
+    if (!counts_in_frame_error(s)) continue;
     squared += squared_error_of_mean(s) / 3.0;
     colour += (s.color.x + s.color.y + s.color.z) / (3.0 * static_cast<double>(s.samples));
     ++estimate.pixels;
@@ -51,7 +49,7 @@ bool plan_error_target_round(const std::vector<PixelSums>& sums, int width, int 
   const size_t n = sums.size();
   std::vector<double> spread(n, 0.0);
   for (size_t p = 0; p < n; ++p)
-    if (covered(sums[p])) spread[p] = static_cast<double>(sums[p].samples) * squared_error_of_mean(sums[p]) / 3.0;
+    if (counts_in_frame_error(sums[p])) spread[p] = static_cast<double>(sums[p].samples) * squared_error_of_mean(sums[p]) / 3.0;
   // The pixels that may double, with the squared error doubling takes off their mean (half of
   // sigma^2 / n) and the samples it costs (n).
   struct Candidate {
@@ -63,13 +61,13 @@ bool plan_error_target_round(const std::vector<PixelSums>& sums, int width, int 
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
       const size_t p = static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x);
-      if (!covered(sums[p]) || sums[p].samples >= cap) continue;
+      if (!counts_in_frame_error(sums[p]) || sums[p].samples >= cap) continue;
       double total = 0.0;
       int count = 0;
       for (int qy = std::max(0, y - kSpreadRadius); qy <= std::min(height - 1, y + kSpreadRadius); ++qy)
         for (int qx = std::max(0, x - kSpreadRadius); qx <= std::min(width - 1, x + kSpreadRadius); ++qx) {
           const size_t q = static_cast<size_t>(qy) * static_cast<size_t>(width) + static_cast<size_t>(qx);
-          if (!covered(sums[q])) continue;
+          if (!counts_in_frame_error(sums[q])) continue;
           total += spread[q];
           ++count;
         }

@@ -35,6 +35,15 @@ struct FrameErrorEstimate {
   uint64_t pixels = 0;         // covered pixels
 };
 
+// A pixel about to double: what it has becomes its first half.
+inline void keep_first_half(PixelSums& s) {
+  s.first_half = s.color;
+  s.first_half_luminance_squares = s.luminance_squares;
+}
+
+// Whether a pixel counts in the frame's error: a surface covers it, and it has two halves.
+inline bool counts_in_frame_error(const PixelSums& s) { return s.coverage > 0.0 && s.samples >= 2; }
+
 // The frame's error predicted from its pixels' sums (their halves: PixelSums::first_half).
 FrameErrorEstimate predict_frame_error(const std::vector<PixelSums>& sums);
 

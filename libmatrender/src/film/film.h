@@ -27,6 +27,7 @@ struct PixelSums {
   glm::dvec3 second_estimate{0.0};  // adaptive sampling: the colour of the samples of its second half
   double luminance_squares = 0.0;   // summed squared Rec.709 luminance of the samples, for the variance
   glm::dvec3 first_half{0.0};       // rendering to an error: the colour of the first half of the samples
+  double first_half_luminance_squares = 0.0;  // and their luminance squares (a half's variance)
   double coverage = 0.0;            // summed 1 - transparency of the camera rays
   OcclusionTally occlusion;
   OcclusionSite last_hit;  // where occlusion rays the pixel still misses at the end start

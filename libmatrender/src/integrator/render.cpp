@@ -8,6 +8,7 @@
 
 #include "film/adaptive_sampling.h"
 #include "film/camera_rays.h"
+#include "film/denoised_error.h"
 #include "film/error_target.h"
 #include "film/film.h"
 #include "film/pixel_filter.h"
@@ -64,7 +65,9 @@ void check_frame_memory(const Camera& camera, const RenderSettings& settings, co
   const double pixels = static_cast<double>(camera.width) * static_cast<double>(camera.height);
   // Adaptive sampling keeps every pixel's sums and a converged flag, a target error its sums and
   // its sample count for the next round.
-  const double per_pixel = settings.target_error > 0.0      ? sizeof(PixelSums) + sizeof(uint32_t)
+  // With a denoiser, a target error also denoises the two halves (film/denoised_error.h).
+  const double halves = denoiser ? denoised_error_bytes_per_pixel(*denoiser) : 0.0;
+  const double per_pixel = settings.target_error > 0.0      ? sizeof(PixelSums) + sizeof(uint32_t) + halves
                            : settings.noise_threshold > 0.0 ? sizeof(PixelSums) + 1
                                                             : 0.0;
   matbase::require_memory(FrameBuffers::bytes_for(camera.width, camera.height, rendered_aovs(settings, denoiser)) +
@@ -110,12 +113,20 @@ uint32_t error_target_first_round(const RenderSettings& settings) {
   return std::min(std::max<uint32_t>(2, power_of_two_at_most(asked)), error_target_cap(settings));
 }
 
-// Samples every pixel to the target error in rounds (film/error_target.h); returns the frame's
-// predicted error when sampling stopped. Pixels no surface covers stop after the first round;
-// the samples pixels did not take are passed for the progress.
-double sample_to_target_error(const RenderSettings& settings, TileSchedule& schedule, RenderControl& control,
-                              const PixelEvaluator& evaluator, Film& film, int width, int height,
-                              std::vector<SampleCounts>& tile_counts) {
+// What a target error is for: the frame as sampled, or the frame a denoiser will make of it.
+struct ErrorTargetFrame {
+  const Denoiser* denoiser;       // nullptr: none
+  const FrameBuffers& accumulating;  // the film's frame, for the denoiser's guides
+  glm::mat3 world_to_camera;
+};
+
+// Samples every pixel to the target error in rounds (film/error_target.h, film/denoised_error.h);
+// returns the predicted error, of the denoised frame with a denoiser, when sampling stopped.
+// Pixels no surface covers stop after the first round; the samples pixels did not take are
+// passed for the progress.
+double sample_to_target_error(const RenderSettings& settings, const ErrorTargetFrame& target_frame,
+                              TileSchedule& schedule, RenderControl& control, const PixelEvaluator& evaluator,
+                              Film& film, int width, int height, std::vector<SampleCounts>& tile_counts) {
   const size_t pixel_count = static_cast<size_t>(width) * static_cast<size_t>(height);
   const uint32_t cap = error_target_cap(settings);
   std::vector<PixelSums> sums(pixel_count);
@@ -127,21 +138,39 @@ double sample_to_target_error(const RenderSettings& settings, TileSchedule& sche
   for_each_pixel(schedule, control, width, tile_counts,
                  [&](int x, int y, size_t i, SampleCounts& tile, RenderControl::Batch& progress) {
                    take_to(x, y, i, counts[i] / 2, tile, progress);
-                   sums[i].first_half = sums[i].color;
+                   keep_first_half(sums[i]);
                    take_to(x, y, i, counts[i], tile, progress);
                  });
-  while (!control.was_cancelled() && plan_error_target_round(sums, width, height, settings.target_error, cap, counts))
+  // The target of the next round's plan, which predicts the undenoised frame's error: with a
+  // denoiser, the target scaled by what denoising takes off the prediction now; nothing once the
+  // denoised prediction meets the target.
+  double predicted_error = 0.0;
+  const auto plan_target = [&]() -> std::optional<double> {
+    if (!target_frame.denoiser) {
+      predicted_error = predict_frame_error(sums).relative_rmse;
+      return settings.target_error;
+    }
+    const double raw = predict_frame_error(sums).relative_rmse;
+    predicted_error = predict_denoised_error(sums, target_frame.accumulating, *target_frame.denoiser,
+                                             target_frame.world_to_camera, settings.threads)
+                          .relative_rmse;
+    if (predicted_error <= settings.target_error) return std::nullopt;
+    return settings.target_error * raw / predicted_error;
+  };
+  for (std::optional<double> target = plan_target();
+       target && !control.was_cancelled() && plan_error_target_round(sums, width, height, *target, cap, counts);
+       target = plan_target())
     for_each_pixel(schedule, control, width, tile_counts,
                    [&](int x, int y, size_t i, SampleCounts& tile, RenderControl::Batch& progress) {
                      if (counts[i] == sums[i].samples) return;
-                     sums[i].first_half = sums[i].color;
+                     keep_first_half(sums[i]);
                      take_to(x, y, i, counts[i], tile, progress);
                    });
   for_each_pixel(schedule, control, width, tile_counts, [&](int, int, size_t i, SampleCounts& tile, RenderControl::Batch& progress) {
     control.pass(progress, static_cast<uint64_t>(settings.samples_per_pixel) - std::min<uint64_t>(sums[i].samples, settings.samples_per_pixel));
     film.resolve(i, sums[i], tile.occlusion);
   });
-  return predict_frame_error(sums).relative_rmse;
+  return predicted_error;
 }
 
 }  // namespace
@@ -200,8 +229,8 @@ RenderStats render(Scene& scene, const Camera& camera, const RenderSettings& set
   std::vector<SampleCounts> tile_counts(schedule.tiles().size());
   double predicted_error = 0.0;
   if (settings.target_error > 0.0) {
-    predicted_error =
-        sample_to_target_error(settings, schedule, control, evaluator, film, camera.width, camera.height, tile_counts);
+    predicted_error = sample_to_target_error(settings, {denoiser.get(), frame, world_to_camera}, schedule, control,
+                                             evaluator, film, camera.width, camera.height, tile_counts);
   } else if (!adaptive) {
     for_each_pixel(schedule, control, camera.width, tile_counts,
                    [&](int x, int y, size_t i, SampleCounts& counts, RenderControl::Batch& progress) {
