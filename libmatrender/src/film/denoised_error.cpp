@@ -1,5 +1,6 @@
 #include "film/denoised_error.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
