@@ -100,6 +100,26 @@ TEST_CASE("A round doubles the pixels that take most error off per sample, just 
   CHECK(power_of_two_at_most(1) == 1);
 }
 
+TEST_CASE("A pixel beside covered ones that met no surface doubles while it has under half their samples",
+          "[render]") {
+  // A 4 x 1 frame: a noisy covered pixel of 64 samples, its uncovered neighbours of 16 and of 32,
+  // and an uncovered pixel beside no covered one. The noisy pixel doubles to 128: the neighbour of
+  // 16 doubles (32 < 128 / 2 = 64 would still hold after), the one of 32 too (32 < 64); the far
+  // one stays.
+  std::vector<PixelSums> sums = {PixelSums(), pixel(64, 0.6, 1.4), PixelSums(), PixelSums()};
+  sums[0].samples = 16;
+  sums[2].samples = 32;
+  sums[3].samples = 16;
+  std::vector<uint32_t> counts = {16, 64, 32, 16};
+  REQUIRE(plan_error_target_round(sums, 4, 1, 0.01, 1024, counts));
+  CHECK(counts == std::vector<uint32_t>{32, 128, 64, 16});
+  // They ride along with the covered pixels' rounds: with the covered pixel at the cap there is
+  // no round.
+  counts = {16, 64, 32, 16};
+  CHECK_FALSE(plan_error_target_round(sums, 4, 1, 0.01, 64, counts));
+  CHECK(counts == std::vector<uint32_t>{16, 64, 32, 16});
+}
+
 TEST_CASE("A lamp-lit ball rendered to a target error has that error against independent references", "[render]") {
   for (const float roughness : {1.0f, 0.3f}) {
     Material ball = test_scenes::lambert(0.5f);

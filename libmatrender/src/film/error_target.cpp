@@ -88,6 +88,25 @@ bool plan_error_target_round(const std::vector<PixelSums>& sums, int width, int 
     counts[c.pixel] = 2 * sums[c.pixel].samples;
     excess -= c.gain;
   }
+  // A pixel no sample of which met a surface but beside covered ones may be covered a little (the
+  // pixel filter reaches 1.5 px past a silhouette), and its error is then not in the prediction:
+  // it doubles while it has fewer than half the samples the fewest of its covered 8-neighbours
+  // will have, so that its coverage is looked for nearly as finely as theirs is measured. (Left
+  // at the first round, a lit silhouette against black took its error out of the prediction:
+  // a spot-lit vase measured 10 to 35 % above it. At parity with the neighbours instead of half,
+  // frames fell up to 27 % below their target.)
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const size_t p = static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x);
+      if (counts_in_frame_error(sums[p]) || sums[p].samples < 2 || sums[p].samples >= cap) continue;
+      uint32_t fewest = 0;
+      for (int qy = std::max(0, y - 1); qy <= std::min(height - 1, y + 1); ++qy)
+        for (int qx = std::max(0, x - 1); qx <= std::min(width - 1, x + 1); ++qx) {
+          const size_t q = static_cast<size_t>(qy) * static_cast<size_t>(width) + static_cast<size_t>(qx);
+          if (counts_in_frame_error(sums[q]) && (fewest == 0 || counts[q] < fewest)) fewest = counts[q];
+        }
+      if (2 * sums[p].samples < fewest) counts[p] = 2 * sums[p].samples;
+    }
   return true;
 }
 

@@ -20,7 +20,9 @@
 // sample by doubling (sigma_p^2 / (2 n_p^2)) double, just enough of them for the prediction to
 // reach the target. That is the greedy form of the allocation that minimises the frame's error
 // for a total, n_p in proportion to sigma_p (Cauchy-Schwarz), and doubling only some pixels lands
-// on the target rather than up to a factor sqrt(2) below it. A pixel takes at most the cap.
+// on the target rather than up to a factor sqrt(2) below it. A pixel takes at most the cap. A
+// pixel whose samples met no surface but beside covered ones doubles along while it has under
+// half their samples (a silhouette may cover it a little; plan_error_target_round says why).
 #include <cstdint>
 #include <vector>
 
