@@ -62,8 +62,8 @@ std::vector<RenderSettingDeclaration> declare_settings() {
              "render to an error, not to a sample count: the relative RMSE over the pixels a surface covers "
              "(the RMSE of their colour over its mean) the frame may have; each pixel's error is estimated from its two "
              "half estimates and its neighbours', and pixels sample in rounds until the frame's predicted error is "
-             "at or below it, `spp` the most a pixel takes; 0 = off. docs/conventions.md, \"Rendering to an error\", "
-             "gives the rule"),
+             "at or below it, `spp` the most a pixel takes; with `denoise`, the denoised frame's error; 0 = off. "
+             "docs/conventions.md, \"Rendering to an error\", gives the rule"),
       {"denoise", SettingForm::Choice, SettingScope::Scene, &S::denoise, 0.0, 0.0, false, {},
        {"false", "filter", "learned"},
        "denoise the colour after rendering: `false`, not at all; `filter`, the a-trous filter guided by the base "
