@@ -21,6 +21,7 @@ Scene::Scene(Scene&&) noexcept = default;
 Scene& Scene::operator=(Scene&&) noexcept = default;
 
 uint32_t Scene::add_material(Material material) {
+  data_->material_shading.emplace_back(material);
   data_->materials.push_back(std::move(material));
   return static_cast<uint32_t>(data_->materials.size() - 1);
 }

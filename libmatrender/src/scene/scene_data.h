@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "accel/embree_scene.h"
+#include "bsdf/principled.h"
 #include "lights/world_light.h"
 #include "matrender/background.h"
 #include "matrender/lamp.h"
@@ -41,9 +42,19 @@ struct MeshData {
   bool changed = false;  // moved or shown or hidden since the BVH was built
 };
 
+// What shading reads of a material at every hit, made once when the material is added (its
+// parameter table holds strided values beside their textures): the inputs before any texture,
+// and whether a texture varies any of them.
+struct MaterialShading {
+  explicit MaterialShading(const Material& material) : untextured(material), textured(material.textured()) {}
+  PrincipledInputs untextured;
+  bool textured;
+};
+
 class SceneData {
  public:
   std::vector<Material> materials;
+  std::vector<MaterialShading> material_shading;  // of each material, in the same order
   std::vector<MeshData> meshes;
   std::vector<Lamp> lamps;
   Background background = glm::vec3(0.0f);

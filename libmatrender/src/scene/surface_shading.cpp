@@ -82,7 +82,8 @@ SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm:
   const uint32_t part = mesh.triangle_parts.empty() ? 0 : mesh.triangle_parts[hit.triangle];
   const uint32_t material_index = mesh.part_materials[part];
   const Material& material = scene.materials[material_index];
-  SurfacePoint sp(material);
+  const MaterialShading& shading = scene.material_shading[material_index];
+  SurfacePoint sp(shading.untextured);
   sp.part = static_cast<int32_t>(part);
   sp.mesh = hit.mesh;
   sp.material = material_index;
@@ -103,7 +104,7 @@ SurfacePoint shade_surface(const SceneData& scene, const RayHit& hit, const glm:
   }
 
   // Only textures read the UV.
-  const bool textured_parameters = material.textured();
+  const bool textured_parameters = shading.textured;
   const bool textured = textured_parameters || material.normal_map;
   if (textured && !mesh.uvs.empty()) sp.uv = b0 * mesh.uvs[tri.x] + b1 * mesh.uvs[tri.y] + b2 * mesh.uvs[tri.z];
   if (!std::isfinite(sp.uv.x) || !std::isfinite(sp.uv.y)) sp.uv = glm::vec2(0.0f);

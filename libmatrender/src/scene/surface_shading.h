@@ -14,9 +14,9 @@ namespace matrender {
 
 struct SurfacePoint {
   SurfacePoint() = default;
-  // With the material's constant inputs, built in place: a point is made at every path vertex,
-  // and defaults that are overwritten at once cost a copy of the whole table.
-  explicit SurfacePoint(const Material& surface_material) : inputs(surface_material) {}
+  // With the material's inputs before textures, built in place: a point is made at every path
+  // vertex, and defaults that are overwritten at once cost a copy of the whole table.
+  explicit SurfacePoint(const PrincipledInputs& untextured) : inputs(untextured) {}
 
   glm::vec3 position{0.0f};
   glm::vec3 geometric_normal{0.0f, 0.0f, 1.0f};  // flipped to face the incoming ray
