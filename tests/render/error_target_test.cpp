@@ -58,6 +58,28 @@ double mean_colour(const FrameBuffers& frame) {
   return sum / static_cast<double>(frame.color.size());
 }
 
+// Two independent 8192-sample renders of a scene: the first is the reference, and half their
+// squared difference is its own squared error, which the measured error leaves out.
+struct References {
+  FrameBuffers first;
+  double own_mse = 0.0;
+  double mean = 0.0;
+
+  References(BallScene& scene, RenderSettings settings) {
+    settings.samples_per_pixel = 8192;
+    settings.seed = 11;
+    first = scene.render_with(settings);
+    settings.seed = 12;
+    own_mse = 0.5 * mean_squared_difference(first, scene.render_with(settings));
+    mean = mean_colour(first);
+  }
+
+  // A frame's relative RMSE against the converged image.
+  double error_of(const FrameBuffers& frame) const {
+    return std::sqrt(std::max(0.0, mean_squared_difference(frame, first) - own_mse)) / mean;
+  }
+};
+
 }  // namespace
 
 TEST_CASE("A frame's error is predicted from its pixels' halves: (A - B)^2 / 4 over the covered pixels", "[render]") {
@@ -130,14 +152,7 @@ TEST_CASE("A lamp-lit ball rendered to a target error has that error against ind
     }
     BallScene ball_scene(ball);
     RenderSettings settings;
-    settings.samples_per_pixel = 8192;
-    settings.seed = 11;
-    const FrameBuffers first = ball_scene.render_with(settings);
-    settings.seed = 12;
-    const FrameBuffers second = ball_scene.render_with(settings);
-    // The references' own squared error is half their squared difference (independent seeds).
-    const double reference_mse = 0.5 * mean_squared_difference(first, second);
-    const double mean = mean_colour(first);
+    const References references(ball_scene, settings);
     // The first round's 16 samples give the ball about 5 % (matte) and 7 % (glossy): a target
     // below that is met by sampling on.
     for (const double target : {0.03, 0.015}) {
@@ -146,8 +161,8 @@ TEST_CASE("A lamp-lit ball rendered to a target error has that error against ind
       settings.seed = 13;
       RenderStats stats;
       const FrameBuffers frame = ball_scene.render_with(settings, &stats);
-      const double measured = std::sqrt(std::max(0.0, mean_squared_difference(frame, first) - reference_mse)) / mean;
-      CAPTURE(roughness, target, measured, stats.predicted_error, std::sqrt(reference_mse) / mean,
+      const double measured = references.error_of(frame);
+      CAPTURE(roughness, target, measured, stats.predicted_error, std::sqrt(references.own_mse) / references.mean,
               stats.camera_samples / 1280.0);
       CHECK(stats.predicted_error <= target);
       CHECK(measured == Approx(target).epsilon(0.25));
@@ -197,13 +212,7 @@ TEST_CASE("With a denoiser, a target error holds for the denoised frame against 
           "[render]") {
   BallScene ball_scene(test_scenes::lambert(0.5f));
   RenderSettings settings;
-  settings.samples_per_pixel = 8192;
-  settings.seed = 11;
-  const FrameBuffers first = ball_scene.render_with(settings);
-  settings.seed = 12;
-  const FrameBuffers second = ball_scene.render_with(settings);
-  const double reference_mse = 0.5 * mean_squared_difference(first, second);
-  const double mean = mean_colour(first);
+  const References references(ball_scene, settings);
   settings.denoise = Denoising::Filter;
   settings.samples_per_pixel = 4096;
   settings.seed = 13;
@@ -212,7 +221,7 @@ TEST_CASE("With a denoiser, a target error holds for the denoised frame against 
     RenderStats stats;
     settings.threads = 2;
     const FrameBuffers frame = ball_scene.render_with(settings, &stats);
-    const double measured = std::sqrt(std::max(0.0, mean_squared_difference(frame, first) - reference_mse)) / mean;
+    const double measured = references.error_of(frame);
     CAPTURE(target, measured, stats.predicted_error, stats.camera_samples / 1280.0);
     CHECK(stats.predicted_error <= target);
     CHECK(measured == Approx(target).epsilon(0.25));
