@@ -6,6 +6,7 @@
 
 #include "matbase/pi.h"
 #include "matgeom/tangents.h"
+#include "matrender/asset.h"
 #include "matrender/paper_setup.h"
 
 namespace bench {
@@ -35,13 +36,15 @@ matgeom::TriangleMesh displaced_sphere(size_t triangles) {
   return m;
 }
 
-matrender::Material bench_material() {
-  matrender::Material m;
-  m.set(matrender::MaterialParameter::BaseColor, glm::vec3(0.7f, 0.5f, 0.3f));
-  m.set(matrender::MaterialParameter::Roughness, 0.35f);
-  m.set(matrender::MaterialParameter::Metallic, 0.0f);
+matmaterial::MaterialInputs bench_material_inputs() {
+  matmaterial::MaterialInputs m("bench");
+  m.set(matmaterial::MaterialParameter::BaseColor, glm::dvec3(0.7, 0.5, 0.3));
+  m.set(matmaterial::MaterialParameter::Roughness, 0.35);
+  m.set(matmaterial::MaterialParameter::Metallic, 0.0);
   return m;
 }
+
+matrender::Material bench_material() { return matrender::material_from_desc(bench_material_inputs(), {}); }
 
 namespace {
 

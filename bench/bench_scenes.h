@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "matgeom/mesh.h"
+#include "matmaterial/material_inputs.h"
 #include "matrender/camera.h"
 #include "matrender/lamp.h"
 #include "matrender/material.h"
@@ -17,7 +18,9 @@ namespace bench {
 // A bumpy closed sphere of radius about 0.3 m with close to `triangles` triangles.
 matgeom::TriangleMesh displaced_sphere(size_t triangles);
 
-// The benchmarks' plain material: an orange-brown dielectric, roughness 0.35, no textures.
+// The benchmarks' plain material: an orange-brown dielectric, roughness 0.35, no textures; as an
+// object file's material, and as the renderer's.
+matmaterial::MaterialInputs bench_material_inputs();
 matrender::Material bench_material();
 
 // Built-in `object` (seed 0) in the library material `spec` ("metal:1"), its maps at

@@ -19,6 +19,7 @@
 #include "accel/embree_scene.h"
 #include "bench_scenes.h"
 #include "matgeom/builtin/builtin_objects.h"
+#include "matgeom/io/mesh_io.h"
 #include "matrender/asset.h"
 #include "matrender/paper_setup.h"
 #include "matrender/render.h"
@@ -221,7 +222,25 @@ int main(int argc, char** argv) {
   app.add_option("--vase-spp", vase_spp, "Samples per pixel of the samples/s table")->capture_default_str();
   app.add_option("--reference-spp", reference_spp, "Samples per pixel of the reference image")->capture_default_str();
   app.add_option("--max-spp", max_spp, "Largest spp of the error table")->capture_default_str();
+  std::string sphere_file;
+  app.add_option("--write-sphere", sphere_file,
+                 "Write the traversal table's first sphere (--triangles) in its material as an object file "
+                 "(.glb, .ply, .obj) and exit: render_object --mesh renders it under the same rig and view, for "
+                 "callgrind's counts (scripts/callgrind.sh)");
   CLI11_PARSE(app, argc, argv);
+  if (!sphere_file.empty()) {
+    matgeom::ObjectAsset sphere;
+    sphere.mesh = bench::displaced_sphere(sizes.front());
+    sphere.materials = {bench::bench_material_inputs()};
+    try {
+      matgeom::write_object(sphere, sphere_file);
+    } catch (const std::exception& e) {
+      fmt::print(stderr, "render_bench: {}\n", e.what());
+      return 1;
+    }
+    fmt::print("wrote {} ({} triangles)\n", sphere_file, sphere.mesh.triangle_count());
+    return 0;
+  }
 
   traversal_table(sizes, resolution, spp, rounds);
   VaseScene vase = textured_vase(resolution);
