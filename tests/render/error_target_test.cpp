@@ -199,8 +199,8 @@ TEST_CASE("The denoised error of a denoiser that changes nothing is the halves' 
                                        pixel(64, 0.8, 1.2)};
   FrameBuffers accumulating;
   accumulating.resize(2, 2, AovAlpha);
-  const FrameErrorEstimate denoised = predict_denoised_error(sums, accumulating, Nothing(), glm::mat3(1.0f), 1);
   const FrameErrorEstimate raw = predict_frame_error(sums);
+  const FrameErrorEstimate denoised = predict_denoised_error(sums, raw, accumulating, Nothing(), glm::mat3(1.0f), 1);
   CHECK(denoised.pixels == 4);
   CHECK(denoised.mean == Approx(1.0));
   CHECK(raw.mean_squared_error == Approx((0.01 + 0.04 + 0.01 + 0.04) / 4.0));

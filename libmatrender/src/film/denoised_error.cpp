@@ -11,13 +11,18 @@ namespace {
 // says why).
 constexpr double kDenoisedErrorExponent = 1.0 / 3.0;
 
+// The summed colour of a pixel's first (0) or second (1) half of samples.
+glm::dvec3 half_colour(const PixelSums& whole, int half) {
+  return half == 0 ? whole.first_half : whole.color - whole.first_half;
+}
+
 // One half of a pixel's samples as sums of their own: its colour, coverage and luminance
 // squares (the a-trous filter's variance guide). The surface sums, which the albedo and normal
 // guides come from, stay the whole's: they carry little noise.
 PixelSums half_of(const PixelSums& whole, int half) {
   PixelSums part = whole;
   part.samples = whole.samples / 2;
-  part.color = half == 0 ? whole.first_half : whole.color - whole.first_half;
+  part.color = half_colour(whole, half);
   part.coverage = 0.5 * whole.coverage;
   part.luminance_squares = half == 0 ? whole.first_half_luminance_squares
                                      : whole.luminance_squares - whole.first_half_luminance_squares;
@@ -26,8 +31,7 @@ PixelSums half_of(const PixelSums& whole, int half) {
 
 // The mean colour of a pixel's half.
 glm::dvec3 half_mean(const PixelSums& whole, int half) {
-  const glm::dvec3 sum = half == 0 ? whole.first_half : whole.color - whole.first_half;
-  return sum / (static_cast<double>(whole.samples) / 2.0);
+  return half_colour(whole, half) / (static_cast<double>(whole.samples) / 2.0);
 }
 
 // The film's unresolved surface sums that resolve() divides in place, for the AOVs of `aovs`.
@@ -53,9 +57,10 @@ std::vector<float> denoised_half(const std::vector<PixelSums>& sums, int half, c
 
 }  // namespace
 
-FrameErrorEstimate predict_denoised_error(const std::vector<PixelSums>& sums, const FrameBuffers& accumulating,
-                                          const Denoiser& denoiser, const glm::mat3& world_to_camera, int threads) {
-  FrameErrorEstimate estimate = predict_frame_error(sums);
+FrameErrorEstimate predict_denoised_error(const std::vector<PixelSums>& sums, const FrameErrorEstimate& undenoised,
+                                          const FrameBuffers& accumulating, const Denoiser& denoiser,
+                                          const glm::mat3& world_to_camera, int threads) {
+  FrameErrorEstimate estimate = undenoised;
   if (estimate.pixels == 0) return estimate;
   const std::array<std::vector<float>, 2> denoised = {
       denoised_half(sums, 0, accumulating, denoiser, world_to_camera, threads),

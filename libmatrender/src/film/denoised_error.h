@@ -31,11 +31,14 @@
 
 namespace matrender {
 
-// The denoised frame's error predicted from the pixels' sums. `accumulating` is the frame the
-// film sums into (its material parameter and tangent-space normal sums, not yet resolved): the
-// denoiser's guides come from every sample so far, the colour from one half at a time.
-FrameErrorEstimate predict_denoised_error(const std::vector<PixelSums>& sums, const FrameBuffers& accumulating,
-                                          const Denoiser& denoiser, const glm::mat3& world_to_camera, int threads);
+// The denoised frame's error predicted from the pixels' sums and the undenoised prediction
+// (predict_frame_error, whose covered pixels and mean colour it shares). `accumulating` is the
+// frame the film sums into (its material parameter and tangent-space normal sums, not yet
+// resolved): the denoiser's guides come from every sample so far, the colour from one half at a
+// time.
+FrameErrorEstimate predict_denoised_error(const std::vector<PixelSums>& sums, const FrameErrorEstimate& undenoised,
+                                          const FrameBuffers& accumulating, const Denoiser& denoiser,
+                                          const glm::mat3& world_to_camera, int threads);
 
 // The bytes predict_denoised_error needs beside the frame, per pixel.
 double denoised_error_bytes_per_pixel(const Denoiser& denoiser);

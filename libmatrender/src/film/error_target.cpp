@@ -9,6 +9,14 @@ namespace {
 // Pixels farther than this from a pixel do not inform its spread.
 constexpr int kSpreadRadius = 2;
 
+// Calls visit(q) for the index q of every pixel within `radius` of pixel (x, y), itself included.
+template <class Visit>
+void for_each_neighbour(int x, int y, int radius, int width, int height, Visit&& visit) {
+  for (int qy = std::max(0, y - radius); qy <= std::min(height - 1, y + radius); ++qy)
+    for (int qx = std::max(0, x - radius); qx <= std::min(width - 1, x + radius); ++qx)
+      visit(static_cast<size_t>(qy) * static_cast<size_t>(width) + static_cast<size_t>(qx));
+}
+
 // (A - B)^2 / 4 summed over the channels: the squared error of the pixel's mean, estimated.
 double squared_error_of_mean(const PixelSums& s) {
   const double half = static_cast<double>(s.samples) / 2.0;
@@ -64,13 +72,11 @@ bool plan_error_target_round(const std::vector<PixelSums>& sums, int width, int 
       if (!counts_in_frame_error(sums[p]) || sums[p].samples >= cap) continue;
       double total = 0.0;
       int count = 0;
-      for (int qy = std::max(0, y - kSpreadRadius); qy <= std::min(height - 1, y + kSpreadRadius); ++qy)
-        for (int qx = std::max(0, x - kSpreadRadius); qx <= std::min(width - 1, x + kSpreadRadius); ++qx) {
-          const size_t q = static_cast<size_t>(qy) * static_cast<size_t>(width) + static_cast<size_t>(qx);
-          if (!counts_in_frame_error(sums[q])) continue;
-          total += spread[q];
-          ++count;
-        }
+      for_each_neighbour(x, y, kSpreadRadius, width, height, [&](size_t q) {
+        if (!counts_in_frame_error(sums[q])) return;
+        total += spread[q];
+        ++count;
+      });
       const double samples = sums[p].samples;
       candidates.push_back({p, 0.5 * total / count / samples, samples});
     }
@@ -100,11 +106,9 @@ bool plan_error_target_round(const std::vector<PixelSums>& sums, int width, int 
       const size_t p = static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x);
       if (counts_in_frame_error(sums[p]) || sums[p].samples < 2 || sums[p].samples >= cap) continue;
       uint32_t fewest = 0;
-      for (int qy = std::max(0, y - 1); qy <= std::min(height - 1, y + 1); ++qy)
-        for (int qx = std::max(0, x - 1); qx <= std::min(width - 1, x + 1); ++qx) {
-          const size_t q = static_cast<size_t>(qy) * static_cast<size_t>(width) + static_cast<size_t>(qx);
-          if (counts_in_frame_error(sums[q]) && (fewest == 0 || counts[q] < fewest)) fewest = counts[q];
-        }
+      for_each_neighbour(x, y, 1, width, height, [&](size_t q) {
+        if (counts_in_frame_error(sums[q]) && (fewest == 0 || counts[q] < fewest)) fewest = counts[q];
+      });
       if (2 * sums[p].samples < fewest) counts[p] = 2 * sums[p].samples;
     }
   return true;

@@ -122,8 +122,8 @@ struct ErrorTargetFrame {
 
 // Samples every pixel to the target error in rounds (film/error_target.h, film/denoised_error.h);
 // returns the predicted error, of the denoised frame with a denoiser, when sampling stopped.
-// Pixels no surface covers stop after the first round; the samples pixels did not take are
-// passed for the progress.
+// Pixels no surface covers stop after the first round unless they are beside covered ones; the
+// samples pixels did not take are passed for the progress.
 double sample_to_target_error(const RenderSettings& settings, const ErrorTargetFrame& target_frame,
                               TileSchedule& schedule, RenderControl& control, const PixelEvaluator& evaluator,
                               Film& film, int width, int height, std::vector<SampleCounts>& tile_counts) {
@@ -146,16 +146,16 @@ double sample_to_target_error(const RenderSettings& settings, const ErrorTargetF
   // denoised prediction meets the target.
   double predicted_error = 0.0;
   const auto plan_target = [&]() -> std::optional<double> {
+    const FrameErrorEstimate raw = predict_frame_error(sums);
     if (!target_frame.denoiser) {
-      predicted_error = predict_frame_error(sums).relative_rmse;
+      predicted_error = raw.relative_rmse;
       return settings.target_error;
     }
-    const double raw = predict_frame_error(sums).relative_rmse;
-    predicted_error = predict_denoised_error(sums, target_frame.accumulating, *target_frame.denoiser,
+    predicted_error = predict_denoised_error(sums, raw, target_frame.accumulating, *target_frame.denoiser,
                                              target_frame.world_to_camera, settings.threads)
                           .relative_rmse;
     if (predicted_error <= settings.target_error) return std::nullopt;
-    return settings.target_error * raw / predicted_error;
+    return settings.target_error * raw.relative_rmse / predicted_error;
   };
   for (std::optional<double> target = plan_target();
        target && !control.was_cancelled() && plan_error_target_round(sums, width, height, *target, cap, counts);
